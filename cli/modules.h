@@ -1,0 +1,25 @@
+// The solver modules compiled into this `granlub`, in the order `granlub run` uses them.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "granlub/case.h"
+#include "granlub/sweep.h"
+
+namespace granlub::cli {
+
+struct SolverModule {
+    std::string name;         // subcommand and results folder name
+    std::string description;
+    std::function<int(const Case&, const RunOptions&)> run;
+};
+
+const std::vector<SolverModule>& solver_modules();
+// Common sections plus every compiled module's section.
+Schema full_schema();
+// `granlub compare` if postproc is compiled in; otherwise throws.
+int compare(const Case& c, const RunOptions& o);
+bool have_compare();
+
+}  // namespace granlub::cli

@@ -1,0 +1,102 @@
+// The case model: cases/NAME/case.toml parsed, validated and resolved into operating points.
+// Contract: ../shared/docs/architecture.md ("The case file"). SI units everywhere.
+#pragma once
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "granlub/schema.h"
+
+namespace granlub {
+
+enum class Control { Fill, Load };
+std::string to_string(Control c);
+
+struct Grains {
+    double diameter = 0;        // m
+    double density = 0;         // kg/m^3
+    double restitution = 0;     // e_p, grain-grain
+    double friction = 0;        // Coulomb coefficient, grain-grain (particle solvers)
+    double youngs_modulus = 0;  // Pa (soft-sphere reference models only)
+    double poisson_ratio = 0;
+    double mass() const;        // of one grain, kg
+};
+
+struct Wall {
+    double restitution = 0;  // e_w
+    double friction = 0;     // grain-wall Coulomb coefficient
+    double roughness = 0;    // R in [0, 1]
+};
+
+struct Cell {
+    double gap = 0;                 // H, m
+    double length = 0;              // periodic length along the flow, m
+    double width = 0;               // trough width, m; 0 = periodic
+    double annulus_radius = 0;      // mean radius for the centripetal force, m; 0 = none
+    double max_solid_fraction = 0;  // nu_max of the continuum closures
+};
+
+// One resolved operating point. `id` is stable: it is made only from the keys given as lists
+// (plus the speed), so adding a value to one list does not rename the other points.
+struct OperatingPoint {
+    std::string id;
+    std::size_t index = 0;
+    double speed = 0;           // U of the bottom wall, m/s
+    Control control = Control::Fill;
+    double solid_fraction = 0;  // target mean solid fraction (used with control = fill)
+    double normal_stress = 0;   // Pa, target normal stress (used with control = load)
+    Wall bottom;                // wall data with this point's roughness
+    Wall top;
+};
+
+struct Case {
+    std::filesystem::path file;  // .../case.toml
+    std::filesystem::path dir;   // its directory
+    std::string name;
+    std::string title;
+    Grains grains;
+    Wall bottom;  // as declared (before any roughness sweep)
+    Wall top;
+    Cell cell;
+    double gravity = 0;  // m/s^2 along -y
+    std::vector<OperatingPoint> points;
+    std::map<std::string, Section> sections;  // every declared section, resolved
+    std::string file_hash;                    // hash of the file's bytes (provenance)
+
+    const Section& section(std::string_view name) const;
+    // Points selected by --point (all when `id` is empty); throws naming the valid ids.
+    std::vector<const OperatingPoint*> select(std::string_view id) const;
+    // Hash of everything a solver's results depend on: the common sections plus the solver's own
+    // section. Results whose hash differs are stale.
+    std::string inputs_hash(std::string_view solver_section) const;
+};
+
+// All sections a case may have: the common ones (case, grains, walls, cell, operating,
+// body_forces) plus whatever the solver modules add.
+class Schema {
+public:
+    static Schema common();            // the common sections only
+    Schema& add(SectionSpec section);  // a solver's section
+    const SectionSpec* find(std::string_view name) const;
+    const std::vector<SectionSpec>& sections() const { return sections_; }
+
+private:
+    std::vector<SectionSpec> sections_;
+};
+
+// Load cases/NAME (a directory holding case.toml) or a .toml file directly.
+Case load_case(const std::filesystem::path& dir_or_file, const Schema& schema);
+// Parse TOML text; `source` names it in error messages. Used by load_case, tests and the fuzzer.
+Case parse_case(std::string_view text, const std::string& source, const Schema& schema);
+
+// The resolved case as text: every key with its value, "(default)" where not given, then the
+// operating points. What `granlub check` prints.
+std::string describe(const Case& c);
+
+// Stable 64-bit FNV-1a of bytes, as 16 hex digits.
+std::string hash_hex(std::string_view bytes);
+
+}  // namespace granlub

@@ -1,0 +1,109 @@
+// The results model: results/<solver>/<point>/{profile.csv, summary.json}.
+// Contract: ../shared/docs/architecture.md ("Results").
+//
+// profile.csv: '#' comment lines (provenance), a header row, one row per station across the gap.
+//   Required columns: y_over_H, u_over_U, solid_fraction, temperature_over_U2; statistical
+//   solvers add <column>_stderr; solvers may add further columns.
+// summary.json: {"format", "solver", "case", "point", "inputs", "outputs", "run", "provenance"}.
+//   outputs: name -> {"value", "stderr" (null when not statistical), "unit"}.
+//   Standard outputs (see kStandardOutputs): normal and shear stress on each wall (Pa, positive
+//   magnitudes), slip at each wall (m/s: U - u(0) at the bottom, u(H) at the top),
+//   mean_solid_fraction, max_solid_fraction.
+// summary.json is written last and is the completion marker: a run that dies leaves at most a
+// profile.csv without a current summary, which counts as incomplete.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace granlub {
+
+struct Case;
+struct OperatingPoint;
+
+struct Profile {
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> columns;
+
+    Profile& add(std::string name, std::vector<double> values);  // throws on length mismatch
+    bool has(std::string_view name) const;
+    const std::vector<double>& column(std::string_view name) const;  // throws naming the columns
+    std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+};
+
+struct Scalar {
+    double value = 0;
+    std::optional<double> stderr_;  // standard error, for statistical solvers
+    std::string unit;
+};
+
+inline constexpr const char* kStandardOutputs[] = {
+    "normal_stress_bottom", "normal_stress_top", "shear_stress_bottom", "shear_stress_top",
+    "slip_bottom",          "slip_top",          "mean_solid_fraction", "max_solid_fraction"};
+inline constexpr const char* kProfileColumns[] = {"y_over_H", "u_over_U", "solid_fraction",
+                                                  "temperature_over_U2"};
+
+struct Provenance {
+    std::string version;      // granlub version (git describe)
+    std::string case_file;    // path of case.toml
+    std::string case_hash;    // hash of the case file's bytes
+    std::string inputs_hash;  // Case::inputs_hash(solver): what the results depend on
+    nlohmann::json settings;  // the solver's resolved settings
+    std::optional<std::uint64_t> seed;
+    std::string utc_time;     // ISO 8601, filled at write time when empty
+};
+
+struct Summary {
+    std::string solver;
+    std::string case_name;
+    std::string point;
+    nlohmann::json inputs;  // the point's inputs (filled by make_summary)
+    std::map<std::string, Scalar> outputs;
+    nlohmann::json run;     // steps or iterations, wall_clock_s, solver-specific counters
+    Provenance provenance;
+
+    Summary& set(const std::string& name, double value, const std::string& unit,
+                 std::optional<double> stderr_ = std::nullopt);
+    double value(const std::string& name) const;  // throws naming the outputs
+};
+
+// A summary with solver, case, point, inputs and provenance filled in.
+Summary make_summary(const Case& c, const OperatingPoint& p, const std::string& solver,
+                     std::optional<std::uint64_t> seed = std::nullopt);
+
+std::filesystem::path result_dir(const std::filesystem::path& results_root, const std::string& solver,
+                                 const std::string& point);
+
+// Atomic writes: temp file in the same directory, flushed, then renamed over the target.
+void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
+
+std::string profile_csv(const Profile& p, const std::vector<std::string>& comments = {});
+Profile parse_profile_csv(std::string_view text, const std::string& source);
+Profile read_profile(const std::filesystem::path& path);
+
+nlohmann::json summary_json(const Summary& s);
+Summary summary_from_json(const nlohmann::json& j, const std::string& source);
+Summary read_summary(const std::filesystem::path& path);
+
+// Writes profile.csv then summary.json (the completion marker), both atomically. Refuses NaN or
+// infinite numbers and a profile without the required columns.
+void write_result(const std::filesystem::path& dir, const Profile& profile, const Summary& summary);
+
+enum class ResultState { Missing, Complete, Stale, Corrupt };
+struct ResultStatus {
+    ResultState state = ResultState::Missing;
+    std::string reason;
+};
+// "Complete and current": both files parse and summary.inputs_hash == inputs_hash.
+ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash);
+
+std::string version();   // git describe at configure time
+std::string utc_now();   // ISO 8601
+
+}  // namespace granlub

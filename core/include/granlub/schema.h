@@ -1,0 +1,135 @@
+// Declaring case keys: every key is declared once, here-style, with its type, default, range,
+// unit and a one-line doc. The declaration drives validation, `granlub check` output and the
+// key tables in the READMEs (idea borrowed from deal.II's ParameterHandler).
+//
+// A module declares its own section in one function, one line per key:
+//
+//   SectionSpec s("continuum", "GKL continuum solver");
+//   s.choice("g0", "ogawa", {"ogawa", "ls", "cs", "ma", "torq"}, "radial distribution g0");
+//   s.integer("cells", 200, Range::at_least(8), "", "finite-volume cells across the gap");
+//   s.real("tolerance", 1e-10, Range::positive(), "", "Newton tolerance on the scaled residual");
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace granlub {
+
+// Closed/open numeric interval; the text form is used in error messages ("allowed: (0, 1]").
+struct Range {
+    double lo = -std::numeric_limits<double>::infinity();
+    double hi = std::numeric_limits<double>::infinity();
+    bool lo_open = false;
+    bool hi_open = false;
+
+    static Range any() { return {}; }
+    static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+    static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+    static Range unit() { return {0.0, 1.0, false, false}; }            // [0, 1]
+    static Range at_least(double v) { return {v, std::numeric_limits<double>::infinity(), false, false}; }
+    static Range closed(double a, double b) { return {a, b, false, false}; }
+    static Range open_closed(double a, double b) { return {a, b, true, false}; }  // (a, b]
+    static Range open(double a, double b) { return {a, b, true, true}; }
+
+    bool contains(double v) const;
+    std::string text() const;
+};
+
+enum class KeyType { Real, Integer, Boolean, String, Choice };
+
+// A value as stored after parsing. Sweepable keys hold a list of reals.
+using Value = std::variant<double, std::int64_t, bool, std::string, std::vector<double>>;
+
+struct KeySpec {
+    std::string name;
+    KeyType type = KeyType::Real;
+    std::optional<Value> default_value;  // empty: required, unless optional_key
+    bool optional_key = false;           // may be absent with no default (e.g. per-wall overrides)
+    bool sweepable = false;              // a list of values is swept (only in [operating])
+    Range range;
+    std::vector<std::string> choices;    // for Choice
+    std::string unit;                    // SI unit, "" = dimensionless
+    std::string doc;
+
+    std::string allowed_text() const;    // "a real number in (0, 1]", "one of "a", "b"", ...
+    std::string type_name() const;
+};
+
+class Section;
+
+struct SectionSpec {
+    std::string name;
+    std::string doc;
+    std::vector<KeySpec> keys;
+    std::vector<std::string> subtables;  // allowed nested tables, e.g. walls.top / walls.bottom
+    // Cross-key checks of this section; call Section::fail(key, why) to reject.
+    std::function<void(const Section&)> validate;
+
+    SectionSpec() = default;
+    SectionSpec(std::string name_, std::string doc_) : name(std::move(name_)), doc(std::move(doc_)) {}
+
+    SectionSpec& real(const std::string& key, double def, Range r, const std::string& unit, const std::string& doc);
+    SectionSpec& real_required(const std::string& key, Range r, const std::string& unit, const std::string& doc);
+    SectionSpec& real_optional(const std::string& key, Range r, const std::string& unit, const std::string& doc);
+    SectionSpec& sweep(const std::string& key, std::optional<double> def, Range r, const std::string& unit,
+                       const std::string& doc);
+    SectionSpec& integer(const std::string& key, std::int64_t def, Range r, const std::string& doc);
+    SectionSpec& integer_optional(const std::string& key, Range r, const std::string& doc);
+    SectionSpec& boolean(const std::string& key, bool def, const std::string& doc);
+    SectionSpec& string(const std::string& key, std::string def, const std::string& doc);
+    SectionSpec& choice(const std::string& key, std::string def, std::vector<std::string> allowed,
+                        const std::string& doc);
+
+    const KeySpec* find(const std::string& key) const;
+};
+
+// Where a value came from, for error messages.
+struct SourcePos {
+    int line = 0;
+    int column = 0;
+};
+
+// The resolved values of one section.
+class Section {
+public:
+    Section() = default;
+    Section(const SectionSpec* spec, std::string file) : spec_(spec), file_(std::move(file)) {}
+
+    double real(const std::string& key) const;
+    std::optional<double> maybe_real(const std::string& key) const;
+    std::int64_t integer(const std::string& key) const;
+    std::optional<std::int64_t> maybe_integer(const std::string& key) const;
+    bool boolean(const std::string& key) const;
+    const std::string& string(const std::string& key) const;  // String and Choice keys
+    const std::vector<double>& list(const std::string& key) const;  // sweepable keys
+    bool has(const std::string& key) const;
+    bool is_default(const std::string& key) const;
+    std::optional<SourcePos> where(const std::string& key) const;
+
+    // Throws CaseError "<file>:<line>:<col>: [section] key = value: why".
+    [[noreturn]] void fail(const std::string& key, const std::string& why) const;
+
+    const SectionSpec& spec() const { return *spec_; }
+    const std::string& name() const { return spec_->name; }
+    const std::map<std::string, Value>& values() const { return values_; }
+
+    // Used by the parser.
+    void set(const std::string& key, Value v, std::optional<SourcePos> pos, bool defaulted);
+
+private:
+    const Value& get(const std::string& key, KeyType expect) const;
+    const SectionSpec* spec_ = nullptr;
+    std::string file_;
+    std::map<std::string, Value> values_;
+    std::map<std::string, SourcePos> pos_;
+    std::map<std::string, bool> defaulted_;
+};
+
+std::string value_text(const Value& v);
+
+}  // namespace granlub

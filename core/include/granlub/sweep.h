@@ -1,0 +1,42 @@
+// Running a solver over the operating points of a case: selection (--point), resume (skip
+// points whose results are complete and current unless --force), timing, atomic result writing
+// and one printed line per point. Every solver's `granlub <solver>` command goes through this.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "granlub/case.h"
+#include "granlub/results.h"
+
+namespace granlub {
+
+struct RunOptions {
+    std::string point;                        // empty: all points
+    bool force = false;                       // recompute complete points
+    std::optional<std::uint64_t> seed;        // statistical solvers
+    int np = 1;                               // MPI ranks (dem)
+    int threads = 0;                          // 0: solver default
+    bool vtk = false;                         // write ParaView files where supported
+    std::filesystem::path results_root;       // empty: <case dir>/results
+};
+
+std::filesystem::path results_root(const Case& c, const RunOptions& o);
+
+struct PointResult {
+    Profile profile;
+    Summary summary;     // start from make_summary(); outputs and run filled by the solver
+    std::string line;    // short one-line report, e.g. "nu=0.612 tau=1512 Pa slip=0.177 U"
+};
+
+// solve(point, dir) computes one point; `dir` is the point's result folder (created), where a
+// solver may leave extra files (logs, decks, VTK). Throws SolverError on failure.
+using PointSolver = std::function<PointResult(const OperatingPoint&, const std::filesystem::path& dir)>;
+
+// Returns the process exit code: 0 if every selected point is complete afterwards, 1 otherwise.
+// Failures of one point are reported and the sweep goes on with the next.
+int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve);
+
+}  // namespace granlub
