@@ -20,6 +20,8 @@ struct RunOptions {
     int np = 1;                               // MPI ranks (dem)
     int threads = 0;                          // 0: solver default
     bool vtk = false;                         // write ParaView files where supported
+    bool full = false;                        // full-fidelity run lengths (the *_full case keys)
+                                              // instead of the quick defaults
     std::filesystem::path results_root;       // empty: <case dir>/results
 };
 
