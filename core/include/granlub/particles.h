@@ -1,0 +1,103 @@
+// Particle sets shared by the particle solvers (plugins/liggghts, plugins/yade): the box a case
+// point gives them, a deterministic non-overlapping insertion to a requested fill, and the
+// initial-configuration file both engines start from, so that their differences come from the
+// physics alone (architecture.md, "Data flow").
+//
+// Geometry (architecture.md): x along the flow, periodic with length cell.length; y across the
+// gap, moving wall at y = 0, stationary wall at y = H; z across the width, walls at z = +-W/2 or
+// periodic when cell.width = 0 (then the particle solvers use a periodic depth, see ParticleBox).
+//
+// Initial-configuration file: <results_root>/initial/<point>/particles.csv
+//   '#' comment lines (provenance: granlub version, case, point, seed, box, N, fill, `key`),
+//   then the header "x,y,z,vx,vy,vz,radius" and one row per grain, SI units, 17 significant digits.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace granlub {
+
+struct Case;
+struct OperatingPoint;
+
+// Structure of arrays: one contiguous array per quantity, all of size().
+struct ParticleSet {
+    std::vector<double> x, y, z;     // centre, m
+    std::vector<double> vx, vy, vz;  // velocity, m/s
+    std::vector<double> radius;      // m
+
+    std::size_t size() const { return x.size(); }
+    void reserve(std::size_t n);
+    void clear();
+    void push_back(double x_, double y_, double z_, double vx_, double vy_, double vz_, double r);
+};
+
+// The region the grains live in. x in [0, length) periodic; y in [0, gap] between the walls;
+// z in [-width/2, width/2], bounded by side walls unless periodic_z.
+struct ParticleBox {
+    double length = 0;
+    double gap = 0;
+    double width = 0;
+    bool periodic_z = false;
+    double volume() const { return length * gap * width; }
+};
+
+// Depth used across z when the case's cell.width = 0 (periodic), in grain diameters. Both
+// particle solvers use it, so their boxes are the same.
+inline constexpr double kPeriodicDepthDiameters = 10.0;
+
+// The box of a case: cell.length x cell.gap x cell.width, or a periodic depth of
+// `periodic_depth` (0: kPeriodicDepthDiameters grain diameters) when cell.width = 0.
+ParticleBox particle_box(const Case& c, double periodic_depth = 0);
+
+// Number of grains of diameter d giving mean solid fraction nu in the box (rounded to nearest).
+std::size_t grains_for_fill(const ParticleBox& box, double diameter, double solid_fraction);
+
+struct InsertionOptions {
+    std::uint64_t seed = 1;
+    double wall_speed = 0;       // U: initial mean velocity is the linear Couette profile U (1 - y/H)
+    double velocity_noise = 0.1; // Gaussian noise per component, standard deviation as a fraction of U
+};
+
+// Deterministic, overlap-free placement of n equal grains (diameter d) in the box:
+// sites of a face-centred-cubic lattice (hexagonal x-z layers stacked ABC along y) with the
+// largest spacing a >= d that still gives at least n sites; n sites are drawn at random, and
+// each grain is displaced at random by at most (a - d)/2 (so no two grains and no grain and wall
+// overlap). Throws CaseError when n grains cannot fit (the message gives the largest fill that
+// can be inserted). Same box, n and options = same particles, bit for bit, on every platform.
+ParticleSet insert_grains(const ParticleBox& box, double diameter, std::size_t n, const InsertionOptions& opt);
+
+// Smallest centre distance between any two grains (periodic in x, and z when periodic_z) minus
+// the sum of their radii; negative means overlap. O(n) with a cell list. For checks and tests.
+double min_gap(const ParticleSet& p, const ParticleBox& box);
+
+// Sum of grain volumes / box volume.
+double solid_fraction(const ParticleSet& p, const ParticleBox& box);
+
+// <results_root>/initial/<point>/particles.csv
+std::filesystem::path initial_particles_path(const std::filesystem::path& results_root, const std::string& point);
+
+void write_particles_csv(const std::filesystem::path& path, const ParticleSet& p,
+                         const std::vector<std::string>& comments = {});  // atomic
+// Throws Error naming the file and line on a malformed file.
+ParticleSet read_particles_csv(const std::filesystem::path& path);
+// The comment lines of a particles file, without the leading "# ".
+std::vector<std::string> read_particles_comments(const std::filesystem::path& path);
+
+struct InitialParticles {
+    ParticleSet particles;
+    ParticleBox box;
+    std::filesystem::path file;
+    bool reused = false;  // true: an existing file with the same key was read
+};
+
+// The initial configuration of a case point: reads <results_root>/initial/<point>/particles.csv
+// when it exists and was made from the same inputs (its "key" comment matches: box, d, N,
+// U, noise, seed); otherwise inserts the grains to the point's solid_fraction and writes the file.
+// The first particle solver to run a point creates it, the other reuses it.
+InitialParticles initial_particles(const Case& c, const OperatingPoint& p, const std::filesystem::path& results_root,
+                                   const InsertionOptions& opt, double periodic_depth = 0);
+
+}  // namespace granlub

@@ -1,0 +1,322 @@
+// Particle sets, overlap-free insertion and the initial-configuration file (see particles.h).
+#include "granlub/particles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <random>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "granlub/case.h"
+#include "granlub/error.h"
+#include "granlub/results.h"
+
+namespace granlub {
+
+void ParticleSet::reserve(std::size_t n) {
+    for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &radius}) v->reserve(n);
+}
+
+void ParticleSet::clear() {
+    for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &radius}) v->clear();
+}
+
+void ParticleSet::push_back(double x_, double y_, double z_, double vx_, double vy_, double vz_, double r) {
+    x.push_back(x_);
+    y.push_back(y_);
+    z.push_back(z_);
+    vx.push_back(vx_);
+    vy.push_back(vy_);
+    vz.push_back(vz_);
+    radius.push_back(r);
+}
+
+ParticleBox particle_box(const Case& c, double periodic_depth) {
+    ParticleBox b;
+    b.length = c.cell.length;
+    b.gap = c.cell.gap;
+    if (c.cell.width > 0) {
+        b.width = c.cell.width;
+    } else {
+        b.periodic_z = true;
+        b.width = periodic_depth > 0 ? periodic_depth : kPeriodicDepthDiameters * c.grains.diameter;
+    }
+    return b;
+}
+
+std::size_t grains_for_fill(const ParticleBox& box, double diameter, double nu) {
+    const double vg = std::numbers::pi * diameter * diameter * diameter / 6.0;
+    return static_cast<std::size_t>(std::llround(nu * box.volume() / vg));
+}
+
+namespace {
+
+// Uniform doubles and normals from std::mt19937_64, whose output sequence the standard fixes;
+// the std:: distributions are implementation-defined, so they are not used (determinism).
+class Rng {
+public:
+    explicit Rng(std::uint64_t seed) : g_(seed) {}
+    double uniform() { return static_cast<double>(g_() >> 11) * 0x1.0p-53; }  // [0, 1)
+    std::uint64_t below(std::uint64_t n) { return static_cast<std::uint64_t>(uniform() * static_cast<double>(n)); }
+    double normal() {  // Box-Muller, one value per call
+        double u1 = uniform();
+        while (u1 <= 0.0) u1 = uniform();
+        const double u2 = uniform();
+        return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+    }
+
+private:
+    std::mt19937_64 g_;
+};
+
+// FCC sites: hexagonal x-z layers (rows along x, spacing a; rows sqrt(3)/2 a apart) stacked
+// ABC along y, sqrt(2/3) a apart. Each axis is then stretched to fill the box exactly, which
+// never brings two sites closer than a. `jitter` of room is kept at every wall.
+struct Lattice {
+    std::size_t nx = 0, ny = 0, nz = 0;
+    double ax = 0, ay = 0, az = 0;
+    double y0 = 0, z0 = 0, jitter = 0;
+    std::size_t count() const { return nx * ny * nz; }
+};
+
+Lattice make_lattice(const ParticleBox& box, double d, double a) {
+    Lattice l;
+    l.jitter = 0.5 * (a - d);
+    const double margin = l.jitter + 1e-9 * d;  // keeps a strict gap to every wall
+    l.nx = static_cast<std::size_t>(std::floor(box.length / a));
+    l.ax = l.nx > 0 ? box.length / static_cast<double>(l.nx) : 0.0;
+
+    const double hy = box.gap - d - 2.0 * margin;  // range of centre y
+    const double ay = a * std::sqrt(2.0 / 3.0);
+    l.ny = hy < 0 ? 0 : static_cast<std::size_t>(std::floor(hy / ay)) + 1;
+    l.ay = l.ny > 1 ? hy / static_cast<double>(l.ny - 1) : 0.0;
+    l.y0 = 0.5 * d + margin;
+
+    const double az = a * std::sqrt(3.0) / 2.0;
+    if (box.periodic_z) {
+        std::size_t nz = static_cast<std::size_t>(std::floor(box.width / az));
+        nz -= nz % 2;  // rows alternate their x offset: an even count keeps the period
+        l.nz = nz;
+        l.az = nz > 0 ? box.width / static_cast<double>(nz) : 0.0;
+        l.z0 = -0.5 * box.width;
+    } else {
+        // rows at z0 + (j + s) az with the stacking shift s in {0, 1/3, 2/3}
+        const double hz = box.width - d - 2.0 * margin;
+        const double k = hz / az - 2.0 / 3.0;
+        l.nz = k < 0 ? 0 : static_cast<std::size_t>(std::floor(k)) + 1;
+        l.az = l.nz > 0 ? hz / (static_cast<double>(l.nz) - 1.0 + 2.0 / 3.0) : 0.0;
+        l.z0 = -0.5 * box.width + 0.5 * d + margin;
+    }
+    return l;
+}
+
+void site(const Lattice& l, std::size_t s, double& x, double& y, double& z) {
+    const std::size_t i = s % l.nx;
+    const std::size_t j = (s / l.nx) % l.nz;
+    const std::size_t k = s / (l.nx * l.nz);
+    const double shift = static_cast<double>(k % 3);  // A, B, C layers
+    const double xoff = 0.5 * static_cast<double>(j % 2) + (k % 3 == 1 ? 0.5 : 0.0);
+    x = (static_cast<double>(i) + xoff) * l.ax;
+    z = l.z0 + (static_cast<double>(j) + shift / 3.0) * l.az;
+    y = l.y0 + static_cast<double>(k) * l.ay;
+}
+
+double wrap(double v, double period) {
+    v = std::fmod(v, period);
+    return v < 0 ? v + period : v;
+}
+
+}  // namespace
+
+ParticleSet insert_grains(const ParticleBox& box, double d, std::size_t n, const InsertionOptions& opt) {
+    if (!(d > 0) || !(box.length > 0) || !(box.gap > 0) || !(box.width > 0))
+        throw CaseError(fmt::format("particle insertion: grain diameter {:g} m and box {:g} x {:g} x {:g} m must "
+                                    "be positive",
+                                    d, box.length, box.gap, box.width));
+    const Lattice densest = make_lattice(box, d, d);
+    if (densest.count() < n) {
+        const double vg = std::numbers::pi * d * d * d / 6.0;
+        throw CaseError(fmt::format(
+            "particle insertion: {} grains (solid fraction {:.4f}) do not fit without overlaps in the "
+            "{:g} x {:g} x {:g} m box; at most {} grains (solid fraction {:.4f}) can be inserted",
+            n, static_cast<double>(n) * vg / box.volume(), box.length, box.gap, box.width, densest.count(),
+            static_cast<double>(densest.count()) * vg / box.volume()));
+    }
+    // Largest spacing with enough sites: count(a) does not increase with a, so bisect.
+    double lo = d, hi = 2.0 * d;
+    while (make_lattice(box, d, hi).count() >= n && hi < 1e3 * d) hi *= 2.0;
+    for (int it = 0; it < 100; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (make_lattice(box, d, mid).count() >= n ? lo : hi) = mid;
+    }
+    const Lattice l = make_lattice(box, d, lo);
+
+    Rng rng(opt.seed);
+    // First n entries of a Fisher-Yates shuffle of the sites, then sorted for a tidy file.
+    std::vector<std::size_t> sites(l.count());
+    for (std::size_t s = 0; s < sites.size(); ++s) sites[s] = s;
+    for (std::size_t s = 0; s < n; ++s) std::swap(sites[s], sites[s + rng.below(sites.size() - s)]);
+    sites.resize(n);
+    std::sort(sites.begin(), sites.end());
+
+    ParticleSet p;
+    p.reserve(n);
+    const double sigma = opt.velocity_noise * std::abs(opt.wall_speed);
+    for (std::size_t s : sites) {
+        double x, y, z;
+        site(l, s, x, y, z);
+        // uniform displacement in the ball of radius `jitter` (rejection sampling)
+        double dx, dy, dz;
+        do {
+            dx = 2.0 * rng.uniform() - 1.0;
+            dy = 2.0 * rng.uniform() - 1.0;
+            dz = 2.0 * rng.uniform() - 1.0;
+        } while (dx * dx + dy * dy + dz * dz > 1.0);
+        x = wrap(x + dx * l.jitter, box.length);
+        y += dy * l.jitter;
+        z += dz * l.jitter;
+        if (box.periodic_z) z = wrap(z + 0.5 * box.width, box.width) - 0.5 * box.width;
+        const double u = opt.wall_speed * (1.0 - y / box.gap);
+        const double vx = u + sigma * rng.normal();
+        const double vy = sigma * rng.normal();
+        const double vz = sigma * rng.normal();
+        p.push_back(x, y, z, vx, vy, vz, 0.5 * d);
+    }
+    return p;
+}
+
+double min_gap(const ParticleSet& p, const ParticleBox& box) {
+    double best = std::numeric_limits<double>::infinity();
+    const std::size_t n = p.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        best = std::min({best, p.y[i] - p.radius[i], box.gap - p.y[i] - p.radius[i]});
+        if (!box.periodic_z)
+            best = std::min({best, p.z[i] + 0.5 * box.width - p.radius[i], 0.5 * box.width - p.z[i] - p.radius[i]});
+        for (std::size_t j = i + 1; j < n; ++j) {  // O(n^2): for checks and tests only
+            double dx = p.x[j] - p.x[i];
+            dx -= box.length * std::round(dx / box.length);
+            const double dy = p.y[j] - p.y[i];
+            double dz = p.z[j] - p.z[i];
+            if (box.periodic_z) dz -= box.width * std::round(dz / box.width);
+            best = std::min(best, std::sqrt(dx * dx + dy * dy + dz * dz) - p.radius[i] - p.radius[j]);
+        }
+    }
+    return best;
+}
+
+double solid_fraction(const ParticleSet& p, const ParticleBox& box) {
+    double v = 0;
+    for (double r : p.radius) v += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+    return v / box.volume();
+}
+
+std::filesystem::path initial_particles_path(const std::filesystem::path& root, const std::string& point) {
+    return root / "initial" / point / "particles.csv";
+}
+
+void write_particles_csv(const std::filesystem::path& path, const ParticleSet& p,
+                         const std::vector<std::string>& comments) {
+    std::string out;
+    out.reserve(p.size() * 140 + 256);
+    for (const auto& c : comments) out += "# " + c + "\n";
+    out += "x,y,z,vx,vy,vz,radius\n";
+    for (std::size_t i = 0; i < p.size(); ++i)
+        out += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", p.x[i], p.y[i], p.z[i],
+                           p.vx[i], p.vy[i], p.vz[i], p.radius[i]);
+    std::filesystem::create_directories(path.parent_path());
+    write_file_atomic(path, out);
+}
+
+namespace {
+std::vector<std::string> read_lines(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(fmt::format("{}: cannot open the particles file", path.string()));
+    std::vector<std::string> lines;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        lines.push_back(line);
+    }
+    return lines;
+}
+}  // namespace
+
+std::vector<std::string> read_particles_comments(const std::filesystem::path& path) {
+    std::vector<std::string> out;
+    for (const auto& l : read_lines(path)) {
+        if (l.empty() || l[0] != '#') break;
+        out.push_back(l.size() >= 2 && l[1] == ' ' ? l.substr(2) : l.substr(1));
+    }
+    return out;
+}
+
+ParticleSet read_particles_csv(const std::filesystem::path& path) {
+    const auto lines = read_lines(path);
+    std::size_t k = 0;
+    while (k < lines.size() && !lines[k].empty() && lines[k][0] == '#') ++k;
+    if (k >= lines.size() || lines[k] != "x,y,z,vx,vy,vz,radius")
+        throw Error(fmt::format("{}:{}: expected the header \"x,y,z,vx,vy,vz,radius\"", path.string(), k + 1));
+    ParticleSet p;
+    p.reserve(lines.size() - k);
+    for (++k; k < lines.size(); ++k) {
+        if (lines[k].empty()) continue;
+        double v[7];
+        const char* s = lines[k].c_str();
+        for (int c = 0; c < 7; ++c) {
+            char* end = nullptr;
+            v[c] = std::strtod(s, &end);
+            const bool sep_ok = (c < 6) ? (*end == ',') : (*end == '\0');
+            if (end == s || !sep_ok || !std::isfinite(v[c]))
+                throw Error(fmt::format("{}:{}: expected 7 finite numbers separated by commas, got \"{}\"",
+                                        path.string(), k + 1, lines[k]));
+            s = end + 1;
+        }
+        if (!(v[6] > 0))
+            throw Error(fmt::format("{}:{}: radius {:g} must be positive", path.string(), k + 1, v[6]));
+        p.push_back(v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
+    }
+    return p;
+}
+
+InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, const std::filesystem::path& root,
+                                   const InsertionOptions& opt_in, double periodic_depth) {
+    InitialParticles out;
+    out.box = particle_box(c, periodic_depth);
+    out.file = initial_particles_path(root, pt.id);
+    InsertionOptions opt = opt_in;
+    opt.wall_speed = pt.speed;
+    const double d = c.grains.diameter;
+    const std::size_t n = grains_for_fill(out.box, d, pt.solid_fraction);
+    const std::string key = fmt::format("key: box={:.17g},{:.17g},{:.17g},{} d={:.17g} n={} U={:.17g} noise={:.17g} seed={}",
+                                        out.box.length, out.box.gap, out.box.width, out.box.periodic_z ? "pz" : "wz",
+                                        d, n, opt.wall_speed, opt.velocity_noise, opt.seed);
+    if (std::filesystem::exists(out.file)) {
+        const auto comments = read_particles_comments(out.file);
+        if (std::find(comments.begin(), comments.end(), key) != comments.end()) {
+            out.particles = read_particles_csv(out.file);
+            if (out.particles.size() == n) {
+                out.reused = true;
+                return out;
+            }
+        }
+    }
+    try {
+        out.particles = insert_grains(out.box, d, n, opt);
+    } catch (const CaseError& e) {
+        throw CaseError(fmt::format("{}: point {}: [operating] solid_fraction = {:g}: {}", c.file.string(), pt.id,
+                                    pt.solid_fraction, e.what()));
+    }
+    write_particles_csv(out.file, out.particles,
+                        {fmt::format("granlub {} initial configuration (FCC sites, random subset and jitter)", version()),
+                         fmt::format("case: {} ({}, hash {})", c.name, c.file.string(), c.file_hash),
+                         fmt::format("point: {}", pt.id),
+                         fmt::format("grains: {} of diameter {:g} m, solid fraction {:.6f}", n, d,
+                                     solid_fraction(out.particles, out.box)),
+                         key});
+    return out;
+}
+
+}  // namespace granlub
