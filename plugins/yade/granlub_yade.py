@@ -1,0 +1,529 @@
+# granlub's YADE driver: the only YADE-side code of the project (plugins/yade/README.md).
+#
+#   yade -n -j1 -x granlub_yade.py params.json
+#
+# params.json is written by `granlub yade` (plugins/yade/src/params.cpp); this script never
+# generates code from it. Two tasks:
+#   "couette"   the plane Couette cell of `granlub dem`: grains from the shared initial file,
+#               flat walls at y = 0 (moving at +U along x) and y = H, side walls at z = +-W/2
+#               (or periodic z), gravity along -y, centripetal body force v_x^2/R_a along -z.
+#               Writes wallforce.csv, samples.bin and, last, driver_summary.json.
+#   "collision" binary collisions (grain-grain and grain-wall for every wall material): the
+#               measured normal restitution of the contact law as run, in collision.json.
+#
+# Geometry inside YADE: YADE's cell is periodic in all three directions, so the gap is placed
+# inside a taller y period (yade.md section 2): YADE y = y + Y0 with walls outside [Y0, Y0 + H].
+# Walls are thin boxes, much longer than the x period, with allowBiggerThanPeriod and the
+# collider sorting along y, the wall-normal axis (yade.md section 5: utils.wall hangs a periodic
+# collider; sorting along x loses wall contacts). Outputs use granlub's coordinates.
+#
+# Exit codes: 0 done, 2 bad parameters (message on stderr), 1 any other failure.
+import json
+import math
+import os
+import random
+import struct
+import sys
+import time
+
+_RUN_AS_SCRIPT = __name__ == "__main__"  # `from yade import *` rebinds __name__ to "yade"
+from yade import *  # noqa: F401,F403  (O, engines, materials, utils: the launcher's namespace)
+import yade
+
+FORMAT = "granlub-yade/1"
+WALLS = ("bottom", "top", "side")
+
+
+class ParamError(Exception):
+    pass
+
+
+def need(d, key, where, kind=float, positive=False, non_negative=False):
+    if key not in d:
+        raise ParamError("%s: missing key '%s'" % (where, key))
+    v = d[key]
+    try:
+        v = kind(v)
+    except (TypeError, ValueError):
+        raise ParamError("%s.%s = %r: not a %s" % (where, key, d[key], kind.__name__))
+    if kind is float and not math.isfinite(v):
+        raise ParamError("%s.%s = %r: not finite" % (where, key, v))
+    if positive and not v > 0:
+        raise ParamError("%s.%s = %r: must be > 0" % (where, key, v))
+    if non_negative and not v >= 0:
+        raise ParamError("%s.%s = %r: must be >= 0" % (where, key, v))
+    return v
+
+
+def load_params(path):
+    try:
+        with open(path) as f:
+            p = json.load(f)
+    except (OSError, ValueError) as e:
+        raise ParamError("cannot read parameter file %s: %s" % (path, e))
+    if p.get("format") != FORMAT:
+        raise ParamError("%s: format is %r, this driver reads %r" % (path, p.get("format"), FORMAT))
+    if p.get("task") not in ("couette", "collision"):
+        raise ParamError("%s: task = %r (allowed: couette, collision)" % (path, p.get("task")))
+    if p.get("model") not in ("viscel", "hertz"):
+        raise ParamError("%s: model = %r (allowed: viscel, hertz)" % (path, p.get("model")))
+    g = p.get("grains", {})
+    for k in ("diameter", "density", "youngs_modulus"):
+        need(g, k, "grains", positive=True)
+    need(g, "poisson_ratio", "grains")
+    mats = p.get("materials", {})
+    for name in ("grain",) + WALLS:
+        m = mats.get(name)
+        if m is None:
+            raise ParamError("materials: missing '%s'" % name)
+        e = need(m, "restitution", "materials." + name)
+        if not 0 < e <= 1:
+            raise ParamError("materials.%s.restitution = %r: allowed (0, 1]" % (name, e))
+        need(m, "friction", "materials." + name, non_negative=True)
+    c = p.get("contact", {})
+    need(c, "dt", "contact", positive=True)
+    if p["model"] == "viscel":
+        need(c, "contact_time", "contact", positive=True)
+        et = need(c, "tangential_restitution", "contact")
+        if not 0 < et <= 1:
+            raise ParamError("contact.tangential_restitution = %r: allowed (0, 1]" % et)
+        need(c, "wall_mass", "contact", positive=True)
+    if p["task"] == "couette":
+        cell = p.get("cell", {})
+        for k in ("gap", "length", "width"):
+            need(cell, k, "cell", positive=True)
+        need(p, "wall_speed", "(top level)")
+        need(p, "gravity", "(top level)")
+        need(p, "annulus_radius", "(top level)", non_negative=True)
+        r = p.get("run", {})
+        need(r, "warmup_steps", "run", int, non_negative=True)
+        need(r, "average_steps", "run", int, positive=True)
+        every = need(r, "sample_every", "run", int, positive=True)
+        if r["average_steps"] % every:
+            raise ParamError("run.average_steps = %d is not a multiple of run.sample_every = %d"
+                             % (r["average_steps"], every))
+        need(r, "body_force_every", "run", int, positive=True)
+        if not os.path.isfile(p.get("initial_file", "")):
+            raise ParamError("initial_file %r: no such file" % p.get("initial_file"))
+    return p
+
+
+# ---------------------------------------------------------------------------------------------
+# Contact laws.
+
+
+def hertz_wall_material(E, nu):
+    """Young's modulus and Poisson ratio of the wall material for which YADE's Hertz-Mindlin
+    grain-wall contact has LIGGGHTS' grain-wall stiffness.
+
+    LIGGGHTS hertz/history (normal_model_hertz.h, tangential_model_history.h) treats a wall as a
+    body of infinite radius: R* = r, Y* = 1/((1-nu^2)/E + (1-nu_w^2)/E_w), G* = 1/(2(2-nu)(1+nu)/E
+    + 2(2-nu_w)(1+nu_w)/E_w), kn = 4/3 Y* sqrt(R* delta), kt = 8 G* sqrt(R* delta). The walls
+    are the grains' material (assumption shared with plugins/liggghts).
+    YADE (Ip2_FrictMat_FrictMat_MindlinPhys, Ig2_Box_Sphere_ScGeom) gives a box the sphere's radius,
+    so R = r/2, kno = 4/3 E' sqrt(R) with E' = Ea Eb / ((1-va^2) Eb + (1-vb^2) Ea) and
+    kso = 2 sqrt(4 R) G / (2 - v), G and v the means of the two materials.
+    Solve kno(Ew, vw) and kso(Ew, vw) = LIGGGHTS' values (bisection on vw)."""
+    Ystar = 1.0 / (2.0 * (1 - nu * nu) / E)
+    Gstar = 1.0 / (4.0 * (2 - nu) * (1 + nu) / E)
+    kn_target = 4.0 / 3.0 * Ystar  # times sqrt(r): compare coefficients at r = 1
+    kt_target = 8.0 * Gstar
+    Rb = 0.5  # YADE's box-sphere equivalent radius for r = 1
+
+    def Ew_for(vw):
+        # 4/3 E' sqrt(Rb) = kn_target  ->  E' = target; 1/E' = (1-nu^2)/E + (1-vw^2)/Ew
+        Ep = kn_target / (4.0 / 3.0 * math.sqrt(Rb))
+        inv = 1.0 / Ep - (1 - nu * nu) / E
+        if inv <= 0:
+            return None
+        return (1 - vw * vw) / inv
+
+    def kt_err(vw):
+        Ew = Ew_for(vw)
+        G = 0.5 * (E / (2 * (1 + nu)) + Ew / (2 * (1 + vw)))
+        v = 0.5 * (nu + vw)
+        return 2 * math.sqrt(4 * Rb) * G / (2 - v) - kt_target
+
+    lo, hi = -0.99, 0.499
+    if kt_err(lo) * kt_err(hi) > 0:
+        raise ParamError("no wall material reproduces LIGGGHTS' grain-wall Hertz-Mindlin stiffness "
+                         "for E = %g, nu = %g" % (E, nu))
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if kt_err(lo) * kt_err(mid) <= 0:
+            hi = mid
+        else:
+            lo = mid
+    vw = 0.5 * (lo + hi)
+    return Ew_for(vw), vw
+
+
+def viscel_restitution(p, en, wall):
+    """Measured restitution of a ViscElMat contact with parameter en (one binary collision)."""
+    return collide(p, {"grain": en, "bottom": en, "top": en, "side": en}, "bottom" if wall else None)
+
+
+def calibrate_viscel(p):
+    """ViscElMat's linear spring-dashpot (Pournin 2001) with the attractive part of the force
+    clipped gives e slightly off en (yade.md section 3: en 0.9 -> 0.9003, 0.6 -> 0.6250). The
+    restitution of the model is velocity-independent, so en is found once per pair by a secant
+    search on the measured e of one binary collision. Returns en per material."""
+    en = {}
+    cache = {}
+    for name in ("grain",) + WALLS:
+        target = p["materials"][name]["restitution"]
+        wall = name != "grain"
+        key = (target, wall)
+        if key in cache:
+            en[name] = cache[key]
+            continue
+        if target >= 1.0:
+            en[name] = cache[key] = 1.0
+            continue
+        x0, x1 = target, max(1e-3, target - 0.02)
+        f0 = viscel_restitution(p, x0, wall) - target
+        f1 = viscel_restitution(p, x1, wall) - target
+        for _ in range(30):
+            if abs(f1) < 1e-6 or f1 == f0:
+                break
+            x2 = min(0.9999, max(1e-4, x1 - f1 * (x1 - x0) / (f1 - f0)))
+            x0, f0 = x1, f1
+            x1, f1 = x2, viscel_restitution(p, x2, wall) - target
+        if abs(f1) > 1e-4:
+            raise RuntimeError("restitution calibration failed for %s: target %g, reached %g"
+                               % (name, target, f1 + target))
+        en[name] = cache[key] = x1
+    return en
+
+
+def build_materials(p, en_override=None):
+    """Materials grain/bottom/top/side and the engines' InteractionLoop functors."""
+    g = p["grains"]
+    mats = p["materials"]
+    E, nu, rho = g["youngs_modulus"], g["poisson_ratio"], g["density"]
+    ids = {}
+    if p["model"] == "viscel":
+        c = p["contact"]
+        for name in ("grain",) + WALLS:
+            ids[name] = O.materials.append(ViscElMat(tc=c["contact_time"], en=0.9,
+                                                     et=c["tangential_restitution"],
+                                                     frictionAngle=0.0, density=rho, label=name))
+    else:
+        Ew, vw = hertz_wall_material(E, nu)
+        for name in ("grain",) + WALLS:
+            ids[name] = O.materials.append(FrictMat(young=E if name == "grain" else Ew,
+                                                    poisson=nu if name == "grain" else vw,
+                                                    frictionAngle=0.0, density=rho, label=name))
+    gid = ids["grain"]
+
+    def pairs(value_of):
+        m = [(gid, gid, value_of("grain"))]
+        for w in WALLS:
+            m.append((gid, ids[w], value_of(w)))
+        return m
+
+    def fric(name):
+        return math.atan(mats[name]["friction"])
+
+    if p["model"] == "viscel":
+        # Law2_ScGeom_ViscElPhys_Basic: kn = m*(pi^2 + ln^2 en)/tc^2, cn = -2 m* ln(en)/tc
+        # (Pournin et al. 2001); the tangential dashpot with et -> 0 stops sliding at zero slip,
+        # as in Walton's operator with beta0 = 0 (yade.md section 3).
+        en = en_override if en_override is not None else {n: mats[n]["restitution"] for n in mats}
+        ip2 = Ip2_ViscElMat_ViscElMat_ViscElPhys(en=MatchMaker(matches=pairs(lambda n: en[n]), algo="avg"),
+                                                 frictAngle=MatchMaker(matches=pairs(fric), algo="avg"))
+        law = Law2_ScGeom_ViscElPhys_Basic()
+    else:
+        # Hertz-Mindlin with Tsuji et al. (1992) damping, the LIGGGHTS hertz/history form:
+        # alpha = -sqrt(5/6) 2 ln e / sqrt(ln^2 e + pi^2) sqrt(2 E* sqrt(R*)), cn = alpha sqrt(m*) delta^1/4.
+        e = lambda n: mats[n]["restitution"]
+        ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(matches=pairs(e), algo="avg"),
+                                                es=MatchMaker(matches=pairs(e), algo="avg"),
+                                                frictAngle=MatchMaker(matches=pairs(fric), algo="avg"))
+        law = Law2_ScGeom_MindlinPhys_Mindlin()
+    return ids, ip2, law
+
+
+def wall_box(center, half, mat, p):
+    b = utils.box(center=center, extents=half, fixed=True, material=mat, color=(0.5, 0.5, 0.5))
+    if p["model"] == "viscel":
+        # ViscElMat needs a wall mass: with mass 0 the reduced mass becomes m/2 and e is wrong
+        # (yade.md section 3: 0.9285 instead of 0.9).
+        b.state.mass = p["contact"]["wall_mass"]
+    return O.bodies.append(b)
+
+
+# ---------------------------------------------------------------------------------------------
+# Binary collisions.
+
+
+def collide(p, en, wall_name, vn=1.0):
+    """One head-on collision, no gravity, in a fresh scene; returns e = -v_n'/v_n."""
+    O.reset()
+    d = p["grains"]["diameter"]
+    r = 0.5 * d
+    ids, ip2, law = build_materials(p, en if p["model"] == "viscel" else None)
+    gap = 0.05 * d
+    if wall_name is None:
+        a = O.bodies.append(utils.sphere((0, 0, 0), r, material=ids["grain"], color=(0, 0, 1)))
+        b = O.bodies.append(utils.sphere((d + gap, 0, 0), r, material=ids["grain"], color=(0, 0, 1)))
+        O.bodies[a].state.vel = Vector3(0.5 * vn, 0, 0)
+        O.bodies[b].state.vel = Vector3(-0.5 * vn, 0, 0)
+        measure = lambda: (O.bodies[b].state.vel[0] - O.bodies[a].state.vel[0]) / vn
+    else:
+        a = O.bodies.append(utils.sphere((0, r + gap, 0), r, material=ids["grain"], color=(0, 0, 1)))
+        wall_box((0, -0.5 * d, 0), (10 * d, 0.5 * d, 10 * d), ids[wall_name], p)
+        O.bodies[a].state.vel = Vector3(0, -vn, 0)
+        measure = lambda: O.bodies[a].state.vel[1] / vn
+    O.engines = [ForceResetter(),
+                 InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [ip2], [law]),
+                 NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]
+    O.dt = p["contact"]["dt"]  # the run's time step, so a calibration includes its discretisation
+    # approach, contact, separation: run until the contact is gone after having existed
+    touched = False
+    for _ in range(200000):
+        O.run(10, True)
+        n = len([i for i in O.interactions if i.isReal])
+        if n:
+            touched = True
+        elif touched:
+            break
+    else:
+        raise RuntimeError("binary collision did not end")
+    return measure()
+
+
+def run_collision(p):
+    out = p["output_dir"]
+    result = {"format": FORMAT, "task": "collision", "model": p["model"], "yade_version": yade.config.version}
+    en = calibrate_viscel(p) if p["model"] == "viscel" and p["contact"].get("calibrate", True) else None
+    if en is not None:
+        result["en"] = en
+    vn = float(p.get("impact_speed", 1.0))
+    e = {"grain": collide(p, en, None, vn)}
+    for w in WALLS:
+        e[w] = collide(p, en, w, vn)
+    result["restitution"] = e
+    result["impact_speed"] = vn
+    write_json(os.path.join(out, "collision.json"), result)
+
+
+# ---------------------------------------------------------------------------------------------
+# The Couette cell.
+
+
+def read_initial(path):
+    """x,y,z,vx,vy,vz,radius rows after '#' comments (core/include/granlub/particles.h)."""
+    rows = []
+    header = None
+    with open(path) as f:
+        for n, line in enumerate(f, 1):
+            line = line.strip()
+            if not line or line.startswith("#"):
+                continue
+            if header is None:
+                header = line.split(",")
+                if header != ["x", "y", "z", "vx", "vy", "vz", "radius"]:
+                    raise ParamError("%s:%d: header %r, expected x,y,z,vx,vy,vz,radius" % (path, n, line))
+                continue
+            try:
+                v = [float(t) for t in line.split(",")]
+            except ValueError:
+                raise ParamError("%s:%d: not a row of numbers" % (path, n))
+            if len(v) != 7:
+                raise ParamError("%s:%d: %d values, expected 7" % (path, n, len(v)))
+            rows.append(v)
+    if not rows:
+        raise ParamError("%s: no grains" % path)
+    return rows
+
+
+def write_json(path, obj):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        json.dump(obj, f, indent=1, sort_keys=True)
+        f.write("\n")
+    os.replace(tmp, path)
+
+
+def run_couette(p):
+    t_start = time.time()
+    out = p["output_dir"]
+    cell = p["cell"]
+    H, L, W = cell["gap"], cell["length"], cell["width"]
+    periodic_z = bool(cell.get("periodic_z", False))
+    U, g, Ra = p["wall_speed"], p["gravity"], p["annulus_radius"]
+    d = p["grains"]["diameter"]
+    run = p["run"]
+    en = calibrate_viscel(p) if p["model"] == "viscel" and p["contact"].get("calibrate", True) else None
+    grains = read_initial(p["initial_file"])
+
+    O.reset()
+    t = d  # wall half thickness
+    Y0 = H  # granlub y = 0 sits at YADE y = Y0; the y period is 3H (yade.md section 2)
+    Ly = 3 * H
+    if periodic_z:
+        Lz, Z0 = W, 0.5 * W
+        wall_z = 1000 * W
+    else:
+        Lz, Z0 = W + 4 * t + 2 * d, 0.5 * W + 2 * t + d
+        wall_z = 0.5 * W + 2 * t
+    O.periodic = True
+    O.cell.setBox(L, Ly, Lz)
+    ids, ip2, law = build_materials(p, en)
+    big = 1000 * L
+    bottom = wall_box((0.5 * L, Y0 - t, Z0), (big, t, wall_z), ids["bottom"], p)
+    top = wall_box((0.5 * L, Y0 + H + t, Z0), (big, t, wall_z), ids["top"], p)
+    sides = []
+    if not periodic_z:
+        for s in (-1, 1):
+            sides.append(wall_box((0.5 * L, Y0 + 0.5 * H, Z0 + s * (0.5 * W + t)), (big, 0.5 * H + 2 * t, t),
+                                  ids["side"], p))
+    O.bodies[bottom].state.vel = Vector3(U, 0, 0)  # moved by NewtonIntegrator (kinematic body)
+
+    first = len(O.bodies)
+    for (x, y, z, vx, vy, vz, r) in grains:
+        if not (r > 0 and r <= y <= H - r):
+            raise ParamError("initial grain at y = %g (radius %g) is not between the walls" % (y, r))
+        if not periodic_z and not (-0.5 * W + r <= z <= 0.5 * W - r):
+            raise ParamError("initial grain at z = %g (radius %g) is not between the side walls" % (z, r))
+        b = utils.sphere((x % L, y + Y0, z + Z0), r, material=ids["grain"], color=(0, 0, 1))
+        b.state.vel = Vector3(vx, vy, vz)
+        O.bodies.append(b)
+    n = len(grains)
+    gids = range(first, first + n)
+    masses = [O.bodies[i].state.mass for i in gids]
+
+    state = {"fb": [0.0] * 3, "ft": [0.0] * 3, "steps": 0, "samples": 0, "avg": False}
+    every = run["sample_every"]
+    total = run["warmup_steps"] + run["average_steps"]
+
+    fcsv = open(os.path.join(out, "wallforce.csv"), "w")
+    fcsv.write("# force of the grains on the walls, mean over each sample interval, N\n")
+    fcsv.write("step,time,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top\n")
+    fbin = open(os.path.join(out, "samples.bin"), "wb")
+
+    def averaging():
+        # After NewtonIntegrator, every step of the averaging window: the force of the grains on
+        # each wall is summed every step (contact forces last only a few steps), and every
+        # sample_every steps the interval mean and a snapshot of the grains are written.
+        if not state["avg"]:
+            return
+        fb = O.forces.f(bottom)
+        ft = O.forces.f(top)
+        for k in range(3):
+            state["fb"][k] += fb[k]
+            state["ft"][k] += ft[k]
+        state["steps"] += 1
+        if state["steps"] == every:
+            sample()
+
+    def sample():
+        m = state["steps"]
+        fcsv.write("%d,%.17g,%s\n" % (O.iter + 1, O.time + O.dt, ",".join(
+            "%.17g" % (v / m) for v in state["fb"] + state["ft"])))
+        state["fb"], state["ft"], state["steps"] = [0.0] * 3, [0.0] * 3, 0
+        buf = []
+        for i in gids:
+            s = O.bodies[i].state
+            q, v = s.pos, s.vel
+            buf.extend((q[0] % L, q[1] - Y0, q[2] - Z0, v[0], v[1], v[2]))
+        fbin.write(struct.pack("<%dd" % len(buf), *buf))
+        state["samples"] += 1
+
+    def housekeeping():
+        # keep the moving wall within a few periods of the cell (its extent is 1000 periods)
+        bx = O.bodies[bottom].state.pos
+        if bx[0] > 10 * L:
+            O.bodies[bottom].state.pos = Vector3(bx[0] - 10 * L, bx[1], bx[2])
+        write_text(os.path.join(out, "progress"), "%d %d\n" % (O.iter, total))
+
+    def centripetal():
+        # S&T 2001: a grain moving at v_x around an annulus of radius R_a feels v_x^2/R_a outward,
+        # along -z here (architecture.md). A permanent force, refreshed every body_force_every steps.
+        if Ra <= 0:
+            return
+        inv = 1.0 / Ra
+        for k, i in enumerate(gids):
+            vx = O.bodies[i].state.vel[0]
+            O.forces.setPermF(i, Vector3(0, 0, -masses[k] * vx * vx * inv))
+
+    O.engines = [ForceResetter(),
+                 InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], allowBiggerThanPeriod=True, sortAxis=1),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [ip2], [law]),
+                 NewtonIntegrator(damping=0.0, gravity=(0, -g, 0)),
+                 PyRunner(command="granlub_averaging()", iterPeriod=1),
+                 PyRunner(command="granlub_centripetal()", iterPeriod=run["body_force_every"]),
+                 PyRunner(command="granlub_housekeeping()", iterPeriod=max(every, 1000))]
+    # PyRunner commands run in the launcher's __main__ namespace
+    import __main__
+    __main__.granlub_averaging = averaging
+    __main__.granlub_centripetal = centripetal
+    __main__.granlub_housekeeping = housekeeping
+    O.dt = p["contact"]["dt"]
+    centripetal()
+
+    t_run = time.time()
+    if run["warmup_steps"] > 0:  # O.run(0, True) never returns (yade.md section 5)
+        O.run(run["warmup_steps"], True)
+    state["avg"] = True
+    steps_avg = run["average_steps"]
+    O.run(steps_avg, True)
+    wall_clock_run = time.time() - t_run
+    fcsv.close()
+    fbin.close()
+    if state["samples"] != steps_avg // every:
+        raise RuntimeError("wrote %d samples, expected %d" % (state["samples"], steps_avg // every))
+
+    max_overlap = 0.0
+    for i in O.interactions:
+        if i.isReal:
+            max_overlap = max(max_overlap, i.geom.penetrationDepth)
+    summary = {
+        "format": FORMAT, "task": "couette", "model": p["model"],
+        "yade_version": yade.config.version, "grains": n, "dt": O.dt,
+        "warmup_steps": run["warmup_steps"], "average_steps": steps_avg,
+        "sample_every": run["sample_every"], "samples": state["samples"],
+        "sample_columns": ["x", "y", "z", "vx", "vy", "vz"],
+        "steps": O.iter, "simulated_time": O.time,
+        "max_overlap_over_d": max_overlap / d,
+        "wall_clock_s": time.time() - t_start, "wall_clock_run_s": wall_clock_run,
+        "threads": int(os.environ.get("OMP_NUM_THREADS", "1")),
+    }
+    if en is not None:
+        summary["en"] = en
+    write_json(os.path.join(out, "driver_summary.json"), summary)
+
+
+def write_text(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def main(argv):
+    if len(argv) != 2:
+        sys.stderr.write("usage: yade -n -j1 -x granlub_yade.py params.json\n")
+        return 2
+    try:
+        p = load_params(argv[1])
+        os.makedirs(p["output_dir"], exist_ok=True)
+        random.seed(p.get("seed", 1))  # nothing here draws random numbers; keep any later use fixed
+        if p["task"] == "collision":
+            run_collision(p)
+        else:
+            run_couette(p)
+    except ParamError as e:
+        sys.stderr.write("granlub_yade.py: bad parameters: %s\n" % e)
+        return 2
+    return 0
+
+
+if _RUN_AS_SCRIPT:
+    rc = main(sys.argv)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    if rc:
+        sys.exit(rc)
