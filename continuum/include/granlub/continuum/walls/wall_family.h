@@ -1,0 +1,43 @@
+// Wall boundary-condition families (guide §4). The structure of the GKL wall conditions
+// (S&T 2001 Eqs. 13-15) is fixed; a family supplies only the four dimensionless coefficient
+// functions b5..b8(nu) of guide §5. Families live in src/walls/, one file each, and are chosen by
+// the [continuum] wall_model key through the registry table in src/walls/registry.cpp.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "granlub/continuum/closures/lun84.h"
+
+namespace granlub::continuum {
+
+// One wall's parameters: restitution e_w, roughness factors R5..R8 and the slip-dissipation
+// fraction f_t of the R7 term.
+struct WallParams {
+    double restitution = 0.9;
+    double r5 = 0.5, r6 = 0.5, r7 = 0.5, r8 = 0.5;
+    double slip_dissipation = 0.0;  // f_t
+};
+
+struct WallCoefficients {
+    D1 b5, b6, b7, b8;  // values and d/dnu
+};
+
+class WallFamily {
+public:
+    virtual ~WallFamily() = default;
+    virtual WallCoefficients coefficients(const Lun84State<D1>& s, const WallParams& w, double numax) const = 0;
+};
+
+struct WallEntry {
+    const char* name;  // the case-file value of [continuum] wall_model
+    const char* doc;
+    std::unique_ptr<WallFamily> (*make)();
+};
+
+const std::vector<WallEntry>& wall_registry();
+std::vector<std::string> wall_names();
+// Shared instance of a registered family; throws granlub::Error naming the allowed families.
+std::shared_ptr<const WallFamily> make_wall_family(const std::string& name);
+
+}  // namespace granlub::continuum

@@ -1,0 +1,380 @@
+// Vertex-centred FV + Newton (guide §6.1). See fv_solver.h for the method.
+#include "granlub/continuum/fv_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "block_tridiagonal.h"
+#include "granlub/continuum/homogeneous.h"
+#include "granlub/error.h"
+
+namespace granlub::continuum {
+namespace {
+
+using D7 = Dual<7>;
+// Local stencil slots of the Jacobian row of node i.
+enum Slot { kUm = 0, kSm = 1, kUc = 2, kSc = 3, kUp = 4, kSp = 5, kLam = 6 };
+
+// Node closures with derivatives taken w.r.t. the logit unknown s.
+struct Node {
+    double nu, dnu, M, dM, K, dK, C, dC;
+};
+struct WallNode {
+    double b5, db5, b6, db6, b7, db7, b8, db8;
+};
+
+// The values one node's residual needs.
+template <class S>
+struct Local {
+    S um, uc, up, nm, nc, np, Mm, Mc, Mp, Km, Kc, Kp, Cc, Pi, b5, b6, b7, b8;
+};
+
+enum class Kind { Interior, Bottom, Top };
+
+// Flux balance of node i's control volume (guide §6.1). Bottom/top are the wall half-cells.
+template <class S>
+void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, double L, S& Ru, S& Rn) {
+    const double L2 = L * L;
+    if (kind == Kind::Interior) {
+        const S du = (l.up - l.um) / (2 * h);
+        const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
+        Ru = (0.5 * (l.Mc + l.Mp) * (l.up - l.uc) - 0.5 * (l.Mm + l.Mc) * (l.uc - l.um)) / h;
+        Rn = (0.5 * (l.Kc + l.Kp) * (l.np - l.nc) - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm)) / h - h * src;
+    } else if (kind == Kind::Bottom) {
+        const S us = 1.0 - l.uc;
+        const S du = -w->r5 * L * l.b5 * us;
+        const S dn = -(w->r6 * L * l.b6 + w->r7 * L * l.Pi * l.b7 * us * us + w->r8 * l.Pi * l.b8 * us * du);
+        const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
+        Ru = 0.5 * (l.Mc + l.Mp) * (l.up - l.uc) / h - l.Mc * du;
+        Rn = 0.5 * (l.Kc + l.Kp) * (l.np - l.nc) / h - l.Kc * dn - 0.5 * h * src;
+    } else {
+        const S us = l.uc;
+        const S du = -w->r5 * L * l.b5 * us;
+        const S dn = w->r6 * L * l.b6 + w->r7 * L * l.Pi * l.b7 * us * us + w->r8 * l.Pi * l.b8 * us * du;
+        const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
+        Ru = l.Mc * du - 0.5 * (l.Mm + l.Mc) * (l.uc - l.um) / h;
+        Rn = l.Kc * dn - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm) / h - 0.5 * h * src;
+    }
+}
+
+class Fv {
+public:
+    Fv(const Problem& p, int cells)
+        : p_(p), N_(static_cast<std::size_t>(cells)), n_(N_ + 1), h_(1.0 / cells), cap_(p.closures->cap()),
+          fill_(p.mode == Mode::Fill), nodes_(n_), F_(n_), Fl_(n_), x_(n_), y_(n_), J_(n_) {}
+
+    std::size_t nodes() const { return n_; }
+    double h() const { return h_; }
+    double cap() const { return cap_; }
+    bool fill() const { return fill_; }
+
+    double nu_of(double s) const { return cap_ / (1.0 + std::exp(-s)); }
+
+    // Residual (and Jacobian when `jac`) at unknowns u, s, lambda; returns the max norm.
+    double evaluate(const std::vector<double>& u, const std::vector<double>& s, double lam, bool jac) {
+        const double Pi = fill_ ? std::exp(lam) : p_.Pi;
+        for (std::size_t i = 0; i < n_; ++i) {
+            const double nu = nu_of(s[i]);
+            const double dnu = nu * (1.0 - nu / cap_);
+            const auto c = node_coefficients(*p_.closures, nu);
+            nodes_[i] = {nu, dnu, c.M, c.dM * dnu, c.K, c.dK * dnu, c.C, c.dC * dnu};
+        }
+        wall_[0] = wall_node(p_.bottom, nodes_[0]);
+        wall_[1] = wall_node(p_.top, nodes_[N_]);
+        double norm = 0;
+        for (std::size_t i = 0; i < n_; ++i) {
+            const Kind kind = i == 0 ? Kind::Bottom : (i == N_ ? Kind::Top : Kind::Interior);
+            const WallParams* w = kind == Kind::Bottom ? &p_.bottom.params : (kind == Kind::Top ? &p_.top.params : nullptr);
+            const WallNode& wn = wall_[kind == Kind::Top ? 1 : 0];
+            const std::size_t im = i == 0 ? 0 : i - 1, ip = i == N_ ? N_ : i + 1;
+            if (!jac) {
+                Local<double> l{u[im], u[i], u[ip], nodes_[im].nu, nodes_[i].nu, nodes_[ip].nu,
+                                nodes_[im].M, nodes_[i].M, nodes_[ip].M, nodes_[im].K, nodes_[i].K, nodes_[ip].K,
+                                nodes_[i].C, Pi, wn.b5, wn.b6, wn.b7, wn.b8};
+                double ru, rn;
+                node_residual(kind, l, w, h_, p_.Lambda, ru, rn);
+                F_[i] = {ru, rn};
+            } else {
+                const Node& a = nodes_[im];
+                const Node& c = nodes_[i];
+                const Node& b = nodes_[ip];
+                Local<D7> l{D7::variable(u[im], kUm), D7::variable(u[i], kUc), D7::variable(u[ip], kUp),
+                            D7::lifted(a.nu, kSm, a.dnu), D7::lifted(c.nu, kSc, c.dnu), D7::lifted(b.nu, kSp, b.dnu),
+                            D7::lifted(a.M, kSm, a.dM), D7::lifted(c.M, kSc, c.dM), D7::lifted(b.M, kSp, b.dM),
+                            D7::lifted(a.K, kSm, a.dK), D7::lifted(c.K, kSc, c.dK), D7::lifted(b.K, kSp, b.dK),
+                            D7::lifted(c.C, kSc, c.dC), D7::lifted(Pi, kLam, fill_ ? Pi : 0.0),
+                            D7::lifted(wn.b5, kSc, wn.db5), D7::lifted(wn.b6, kSc, wn.db6),
+                            D7::lifted(wn.b7, kSc, wn.db7), D7::lifted(wn.b8, kSc, wn.db8)};
+                D7 ru, rn;
+                node_residual(kind, l, w, h_, p_.Lambda, ru, rn);
+                F_[i] = {ru.v, rn.v};
+                const auto blk = [&](int su, int ss) {
+                    Eigen::Matrix2d m;
+                    m << ru.d[su], ru.d[ss], rn.d[su], rn.d[ss];
+                    return m;
+                };
+                // At the walls the stencil reuses node i for the missing neighbour: fold those columns back.
+                J_.diag[i] = blk(kUc, kSc);
+                J_.lower[i] = blk(kUm, kSm);
+                J_.upper[i] = blk(kUp, kSp);
+                if (i == 0) { J_.diag[i] += J_.lower[i]; J_.lower[i].setZero(); }
+                if (i == N_) { J_.diag[i] += J_.upper[i]; J_.upper[i].setZero(); }
+                Fl_[i] = {ru.d[kLam], rn.d[kLam]};
+            }
+            norm = std::max({norm, std::abs(F_[i][0]), std::abs(F_[i][1])});
+            if (!std::isfinite(F_[i][0]) || !std::isfinite(F_[i][1])) return std::numeric_limits<double>::infinity();
+        }
+        if (fill_) {
+            g_ = mean_nu() - p_.nu_mean;
+            norm = std::max(norm, std::abs(g_));
+        }
+        return norm;
+    }
+
+    double mean_nu() const {
+        double m = 0;
+        for (std::size_t i = 0; i < n_; ++i) m += weight(i) * nodes_[i].nu;
+        return m;
+    }
+    double weight(std::size_t i) const { return (i == 0 || i == N_) ? 0.5 * h_ : h_; }
+
+    // Newton step for the last evaluate(..., jac = true). False when the matrix is singular.
+    bool step(std::vector<double>& du, std::vector<double>& ds, double& dlam) {
+        if (!J_.factorise()) return false;
+        for (std::size_t i = 0; i < n_; ++i) x_[i] = -F_[i];
+        J_.solve(x_);
+        dlam = 0;
+        if (fill_) {
+            // Bordered system [J c; r 0]: x = x1 - dlam x2, r.x = -g  (guide §6.1 "Fill mode")
+            for (std::size_t i = 0; i < n_; ++i) y_[i] = Fl_[i];
+            J_.solve(y_);
+            double rx1 = 0, rx2 = 0;
+            for (std::size_t i = 0; i < n_; ++i) {
+                const double r = weight(i) * nodes_[i].dnu;
+                rx1 += r * x_[i][1];
+                rx2 += r * y_[i][1];
+            }
+            if (!(std::abs(rx2) > 0)) return false;
+            dlam = (rx1 + g_) / rx2;
+            for (std::size_t i = 0; i < n_; ++i) x_[i] -= dlam * y_[i];
+        }
+        for (std::size_t i = 0; i < n_; ++i) {
+            du[i] = x_[i][0];
+            ds[i] = x_[i][1];
+        }
+        return true;
+    }
+
+private:
+    WallNode wall_node(const WallBC& w, const Node& n) const {
+        const auto b = wall_coefficients(p_, w, n.nu);
+        return {b.b5.v, b.b5.d[0] * n.dnu, b.b6.v, b.b6.d[0] * n.dnu,
+                b.b7.v, b.b7.d[0] * n.dnu, b.b8.v, b.b8.d[0] * n.dnu};
+    }
+
+    const Problem& p_;
+    std::size_t N_, n_;
+    double h_, cap_;
+    bool fill_;
+    std::vector<Node> nodes_;
+    WallNode wall_[2]{};
+    std::vector<Eigen::Vector2d> F_, Fl_, x_, y_;
+    double g_ = 0;
+    detail::BlockTridiagonal J_;
+};
+
+}  // namespace
+
+NewtonReport newton_fv(const Problem& p, const SolverSettings& st, Solution& sol) {
+    NewtonReport rep;
+    Fv fv(p, st.cells);
+    const std::size_t n = fv.nodes();
+    if (sol.nodes() != n) throw Error("newton_fv: the initial guess is not on the solver's mesh");
+    const double cap = fv.cap();
+    std::vector<double> u = sol.u, s(n), du(n), ds(n), ut(n), stry(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double nu = std::clamp(sol.nu[i], 1e-9 * cap, (1 - 1e-12) * cap);
+        s[i] = std::log(nu / (cap - nu));
+    }
+    double lam = std::log(sol.Pi > 0 ? sol.Pi : p.Pi);
+    double norm = fv.evaluate(u, s, lam, true);
+    for (int it = 0;; ++it) {
+        rep.iterations = it;
+        rep.residual = norm;
+        if (norm < st.tolerance) {
+            rep.converged = true;
+            break;
+        }
+        if (it >= st.max_iterations) {
+            rep.why = "Newton did not converge in " + std::to_string(st.max_iterations) + " iterations";
+            break;
+        }
+        if (!std::isfinite(norm)) {
+            rep.why = "the residual is not finite";
+            break;
+        }
+        double dlam = 0;
+        if (!fv.step(du, ds, dlam)) {
+            rep.why = "singular Newton matrix";
+            break;
+        }
+        // Damping: keep logit and velocity steps moderate, then backtrack (Armijo on the max norm).
+        double step_u = 0, step_s = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            step_u = std::max(step_u, std::abs(du[i]));
+            step_s = std::max(step_s, std::abs(ds[i]));
+        }
+        double alpha = std::min({1.0, 0.5 / std::max(step_u, 1e-300), 3.0 / std::max(step_s, 1e-300),
+                                 1.0 / std::max(std::abs(dlam), 1e-300)});
+        bool accepted = false;
+        double tnorm = norm;
+        for (int k = 0; k < 40; ++k) {
+            for (std::size_t i = 0; i < n; ++i) {
+                ut[i] = u[i] + alpha * du[i];
+                stry[i] = s[i] + alpha * ds[i];
+            }
+            tnorm = fv.evaluate(ut, stry, lam + alpha * dlam, false);
+            if (tnorm <= (1.0 - 1e-4 * alpha) * norm) {
+                accepted = true;
+                break;
+            }
+            alpha *= 0.5;
+        }
+        const double step_max = alpha * std::max({step_u, step_s, std::abs(dlam)});
+        if (!accepted) {
+            // Round-off floor: a full-size step that no longer reduces the residual.
+            if (norm < 1e3 * st.tolerance) {
+                rep.converged = true;
+                break;
+            }
+            rep.why = "the line search could not reduce the residual";
+            break;
+        }
+        u.swap(ut);
+        s.swap(stry);
+        lam += alpha * dlam;
+        norm = fv.evaluate(u, s, lam, true);
+        if (step_max < 1e-13 && norm < 1e3 * st.tolerance) {
+            rep.iterations = it + 1;
+            rep.residual = norm;
+            rep.converged = true;
+            break;
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        sol.u[i] = u[i];
+        sol.nu[i] = fv.nu_of(s[i]);
+    }
+    sol.Pi = fv.fill() ? std::exp(lam) : p.Pi;
+    sol.residual = rep.residual;
+    if (rep.converged) {
+        // Guard against the spurious "empty channel" branch (guide §6.4).
+        const double m = fv.mean_nu();
+        if (m < 0.01) {
+            rep.converged = false;
+            rep.why = "Newton fell onto the empty-channel branch (mean nu < 0.01)";
+        }
+    }
+    return rep;
+}
+
+double fv_residual_norm(const Problem& p, const Solution& s) {
+    Fv fv(p, static_cast<int>(s.nodes() - 1));
+    const double cap = fv.cap();
+    std::vector<double> lg(s.nodes());
+    for (std::size_t i = 0; i < s.nodes(); ++i) lg[i] = std::log(s.nu[i] / (cap - s.nu[i]));
+    return fv.evaluate(s.u, lg, std::log(s.Pi), false);
+}
+
+namespace {
+
+Solution initial_guess(const Problem& p, int cells) {
+    const UniformShear h = p.mode == Mode::Load ? uniform_shear_load(p) : uniform_shear_fill(p);
+    return uniform_solution(h, cells);
+}
+
+std::string describe(const Problem& p) {
+    std::ostringstream m;
+    if (p.mode == Mode::Load) m << "Pi = rho U^2/P = " << p.Pi;
+    else m << "mean nu = " << p.nu_mean;
+    m << ", Lambda = H/d = " << p.Lambda;
+    return m.str();
+}
+
+}  // namespace
+
+Solution solve_fv(const Problem& p, const SolverSettings& st) {
+    int total = 0;
+    std::string first_why;
+    double first_res = 0;
+    try {
+        Solution s = initial_guess(p, st.cells);
+        const auto rep = newton_fv(p, st, s);
+        total += rep.iterations;
+        if (rep.converged) {
+            s.iterations = total;
+            return s;
+        }
+        first_why = rep.why;
+        first_res = rep.residual;
+    } catch (const SolverError& e) {
+        first_why = e.what();
+    }
+    // Automatic continuation (guide §6.1): from an easy problem (Lambda <= 5, moderate Pi or
+    // mean nu) to the target, in ln Lambda and ln Pi (Load) or mean nu (Fill), halving the step
+    // when Newton fails or needs many iterations.
+    Problem start = p;
+    start.Lambda = std::min(p.Lambda, 5.0);
+    if (p.mode == Mode::Load) start.Pi = std::clamp(p.Pi, 0.3, 3.0);
+    else start.nu_mean = std::clamp(p.nu_mean, 0.3, 0.6);
+    const auto at = [&](double t) {
+        Problem q = p;
+        q.Lambda = std::exp((1 - t) * std::log(start.Lambda) + t * std::log(p.Lambda));
+        if (p.mode == Mode::Load) q.Pi = std::exp((1 - t) * std::log(start.Pi) + t * std::log(p.Pi));
+        else q.nu_mean = (1 - t) * start.nu_mean + t * p.nu_mean;
+        return q;
+    };
+    Solution s;
+    try {
+        s = initial_guess(start, st.cells);
+    } catch (const SolverError& e) {
+        throw SolverError(first_why + "; continuation could not start: " + e.what());
+    }
+    auto rep = newton_fv(start, st, s);
+    total += rep.iterations;
+    if (!rep.converged) {
+        std::ostringstream m;
+        m << first_why << " (residual " << first_res << "), and continuation could not start at " << describe(start)
+          << ": " << rep.why << " (residual " << rep.residual
+          << "); try more [continuum] max_iterations or check the operating point";
+        throw SolverError(m.str());
+    }
+    double t = 0, dt = 0.1;
+    int steps = 0;
+    while (t < 1.0) {
+        if (++steps > st.max_continuation_steps || dt < 1e-5) {
+            std::ostringstream m;
+            m << first_why << " (residual " << first_res << "); continuation stalled at " << describe(at(t))
+              << " after " << steps - 1 << " steps (last Newton residual " << rep.residual << ": " << rep.why
+              << "); try more [continuum] cells, a larger max_continuation_steps, or a less extreme operating point";
+            throw SolverError(m.str());
+        }
+        const double tn = std::min(1.0, t + dt);
+        Solution trial = s;
+        rep = newton_fv(at(tn), st, trial);
+        total += rep.iterations;
+        if (rep.converged && rep.iterations <= 8) {
+            s = std::move(trial);
+            t = tn;
+            if (rep.iterations <= 4) dt *= 1.5;
+        } else {
+            dt *= 0.5;
+        }
+    }
+    s.iterations = total;
+    s.continuation_steps = steps;
+    return s;
+}
+
+}  // namespace granlub::continuum

@@ -1,0 +1,93 @@
+#include "granlub/continuum/problem.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granlub::continuum {
+
+bool Problem::symmetric() const {
+    const auto& a = bottom.params;
+    const auto& b = top.params;
+    return bottom.family == top.family && a.restitution == b.restitution && a.r5 == b.r5 && a.r6 == b.r6 &&
+           a.r7 == b.r7 && a.r8 == b.r8 && a.slip_dissipation == b.slip_dissipation;
+}
+
+NodeCoefficients node_coefficients(const Closures& c, double nu) {
+    const auto s = c.state(nu);
+    const D1 M = s.M(), K = s.K(), C = s.C();
+    return {M.v, M.d[0], K.v, K.d[0], C.v, C.d[0]};
+}
+
+WallCoefficients wall_coefficients(const Problem& p, const WallBC& w, double nu) {
+    return w.family->coefficients(p.closures->state(nu), w.params, p.closures->numax());
+}
+
+double wall_du(const Problem& p, bool top, double u, double nu) {
+    const WallBC& w = top ? p.top : p.bottom;
+    const double b5 = wall_coefficients(p, w, nu).b5.v;
+    return top ? -w.params.r5 * p.Lambda * b5 * u : -w.params.r5 * p.Lambda * b5 * (1.0 - u);
+}
+
+Observables observe(const Problem& p, const Solution& s) {
+    Observables o;
+    const std::size_t n = s.nodes();
+    const double h = 1.0 / static_cast<double>(n - 1);
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i) sum += (i == 0 || i + 1 == n ? 0.5 : 1.0) * s.nu[i];
+    o.nu_mean = sum * h;
+    // centre by linear interpolation (a node when N is even)
+    const double xc = 0.5 * static_cast<double>(n - 1);
+    const auto ic = static_cast<std::size_t>(std::floor(xc));
+    const double fc = xc - static_cast<double>(ic);
+    const std::size_t jc = std::min(ic + 1, n - 1);
+    o.nu_centre = (1 - fc) * s.nu[ic] + fc * s.nu[jc];
+    o.nu_bottom = s.nu.front();
+    o.nu_top = s.nu.back();
+    o.nu_max_node = *std::max_element(s.nu.begin(), s.nu.end());
+    o.slip_bottom = 1.0 - s.u.front();
+    o.slip_top = s.u.back();
+    o.du_bottom = wall_du(p, false, s.u.front(), s.nu.front());
+    o.du_top = wall_du(p, true, s.u.back(), s.nu.back());
+    const double scale = std::sqrt(s.Pi) / p.Lambda;
+    o.tau_bottom = scale * node_coefficients(*p.closures, o.nu_bottom).M * std::abs(o.du_bottom);
+    o.tau_top = scale * node_coefficients(*p.closures, o.nu_top).M * std::abs(o.du_top);
+    const auto T = [&](double nu) { return 1.0 / p.closures->state(nu).fp.v; };
+    o.T_bottom = T(o.nu_bottom);
+    o.T_top = T(o.nu_top);
+    const double Tc0 = T(s.nu[ic]), Tc1 = T(s.nu[jc]);
+    o.T_centre = (1 - fc) * Tc0 + fc * Tc1;
+    return o;
+}
+
+double energy_balance_defect(const Problem& p, const Solution& s) {
+    const std::size_t n = s.nodes();
+    const double h = 1.0 / static_cast<double>(n - 1);
+    const double L = p.Lambda, Pi = s.Pi;
+    double integral = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        double du;
+        if (i == 0) du = wall_du(p, false, s.u[0], s.nu[0]);
+        else if (i + 1 == n) du = wall_du(p, true, s.u[i], s.nu[i]);
+        else du = (s.u[i + 1] - s.u[i - 1]) / (2 * h);
+        const auto c = node_coefficients(*p.closures, s.nu[i]);
+        const double S = Pi * c.M * du * du - L * L * c.C;
+        integral += (i == 0 || i + 1 == n ? 0.5 : 1.0) * h * S;
+    }
+    // wall gradients nu' from the energy wall conditions
+    const auto dnu = [&](bool top) {
+        const WallBC& w = top ? p.top : p.bottom;
+        const double nu = top ? s.nu.back() : s.nu.front();
+        const double us = top ? s.u.back() : 1.0 - s.u.front();
+        const double du = wall_du(p, top, top ? s.u.back() : s.u.front(), nu);
+        const auto b = wall_coefficients(p, w, nu);
+        const auto& r = w.params;
+        const double e = r.r6 * L * b.b6.v + r.r7 * L * Pi * b.b7.v * us * us + r.r8 * Pi * b.b8.v * us * du;
+        // bottom: nu' = -e with u_s = 1 - u; top: nu' = +e' with u_s = u (guide §5)
+        return top ? e : -e;
+    };
+    const double K0 = node_coefficients(*p.closures, s.nu.front()).K;
+    const double KN = node_coefficients(*p.closures, s.nu.back()).K;
+    return integral - (KN * dnu(true) - K0 * dnu(false));
+}
+
+}  // namespace granlub::continuum

@@ -1,0 +1,29 @@
+// Wall family JJ: Johnson & Jackson 1987 in GKL form (guide §4.3). Traction and dissipation are
+// JJ's [SRC: MFiX bc_theta.f]; mapping them onto the GKL R-scaled terms is our [ASSUMPTION]:
+//   b5 = (pi sqrt3/(6 nu_max)) nu g0 / f_mu                 (R5 = specularity phi')
+//   b6 = (pi sqrt3/(4 nu_max)) (1 - e_w^2) nu g0 / G
+//   b7 = f_t (pi sqrt3/(6 nu_max)) nu g0 f_p / G            (f_t = 0 default)
+//   b8 = f_mu f_p / G
+// With R5 = phi' and R6 = R8 = 1 this is exactly JJ.
+#include <cmath>
+#include <numbers>
+
+#include "granlub/continuum/walls/wall_family.h"
+
+namespace granlub::continuum {
+namespace {
+class JohnsonJackson final : public WallFamily {
+public:
+    WallCoefficients coefficients(const Lun84State<D1>& s, const WallParams& w, double numax) const override {
+        const double a = std::numbers::pi * std::sqrt(3.0) / (6.0 * numax);
+        const double ew = w.restitution;
+        const D1 ng = s.nu * s.g;
+        return {a * ng / s.fmu, 1.5 * a * (1.0 - ew * ew) * ng / s.G, w.slip_dissipation * a * ng * s.fp / s.G,
+                s.fmu * s.fp / s.G};
+    }
+};
+}  // namespace
+
+std::unique_ptr<WallFamily> make_wall_johnson_jackson() { return std::make_unique<JohnsonJackson>(); }
+
+}  // namespace granlub::continuum
