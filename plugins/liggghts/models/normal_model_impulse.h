@@ -1,0 +1,116 @@
+/* ----------------------------------------------------------------------
+    granlub: normal part of the Sawyer & Tichy (2001) impulse operator for
+    LIGGGHTS 3.8 (pair gran and fix wall/gran).
+
+    Sawyer, W.G. & Tichy, J.A. 2001, "Lubrication with grain flow: continuum
+    theory, particle simulations, comparison with experiment", J. Tribol.
+    123:777-784, Eqs. 18-24 (wall), same construction between grains.
+
+    When two surfaces overlap and approach (v_n < 0), a time-averaged impulsive
+    force acts along the line of centres for one time step:
+
+        F_n = m_eff (1 + e) |v_n| / dt            (S&T 2001, Eq. 19)
+
+    m_eff = m_i m_j / (m_i + m_j) between grains, m_i against a wall, e from
+    `coefficientRestitution`. With velocity Verlet the impulse F_n dt reaches
+    the velocities as two half kicks, and the next force evaluation sees
+    v_n' = -e v_n exactly. There is no stiffness: kn = kt = 0.
+
+    Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
+    LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree.
+------------------------------------------------------------------------- */
+
+#ifdef NORMAL_MODEL
+NORMAL_MODEL(IMPULSE,impulse,50)
+#else
+#ifndef NORMAL_MODEL_IMPULSE_H_
+#define NORMAL_MODEL_IMPULSE_H_
+
+#include "contact_models.h"
+#include "normal_model_base.h"
+#include "global_properties.h"
+#include "force.h"
+#include "update.h"
+#include "error.h"
+
+namespace LIGGGHTS {
+namespace ContactModels
+{
+  template<>
+  class NormalModel<IMPULSE> : public NormalModelBase
+  {
+  public:
+    NormalModel(LAMMPS * lmp, IContactHistorySetup * hsetup, class ContactModelBase * c) :
+      NormalModelBase(lmp, hsetup, c),
+      coeffRest(NULL)
+    {}
+
+    inline void registerSettings(Settings &) {}
+    inline void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+
+    inline void connectToProperties(PropertyRegistry & registry)
+    {
+      registry.registerProperty("coeffRest", &MODEL_PARAMS::createCoeffRest);
+      registry.connect("coeffRest", coeffRest, "model impulse");
+      // the operator works on the real grains' masses; coarse-graining would rescale them
+      if (force->cg_active())
+        error->cg(FLERR, "model impulse");
+    }
+
+    // no elastic law; only fix heat/gran/conduction asks for this
+    inline double stressStrainExponent() { return 1.; }
+
+    inline void surfacesIntersect(SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
+    {
+      if (sidata.contact_flags)
+        *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+
+      // approaching only: v_n = (v_i - v_j).e_n < 0 (e_n points from j to i)
+      const double vn = sidata.vn;
+      double Fn = 0.0;
+      if (vn < 0.0) {
+        const double e = coeffRest[sidata.itype][sidata.jtype];
+        Fn = sidata.meff * (1.0 + e) * (-vn) / update->dt;   // S&T 2001, Eq. 19
+      }
+      sidata.Fn = Fn;
+      sidata.kn = 0.0;
+      sidata.kt = 0.0;
+      sidata.gamman = 0.0;
+      sidata.gammat = 0.0;
+      if (Fn == 0.0) return;
+
+      if (sidata.is_wall) {
+        const double Fa = Fn * sidata.area_ratio;
+        i_forces.delta_F[0] += Fa * sidata.en[0];
+        i_forces.delta_F[1] += Fa * sidata.en[1];
+        i_forces.delta_F[2] += Fa * sidata.en[2];
+      } else {
+        const double fx = Fn * sidata.en[0];
+        const double fy = Fn * sidata.en[1];
+        const double fz = Fn * sidata.en[2];
+        i_forces.delta_F[0] += fx;
+        i_forces.delta_F[1] += fy;
+        i_forces.delta_F[2] += fz;
+        j_forces.delta_F[0] -= fx;
+        j_forces.delta_F[1] -= fy;
+        j_forces.delta_F[2] -= fz;
+      }
+    }
+
+    inline void surfacesClose(SurfacesCloseData & scdata, ForceData &, ForceData &)
+    {
+      if (scdata.contact_flags)
+        *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
+    }
+
+    inline void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+  private:
+    double ** coeffRest;
+  };
+}
+}
+
+#endif // NORMAL_MODEL_IMPULSE_H_
+#endif

@@ -1,0 +1,159 @@
+/* ----------------------------------------------------------------------
+    granlub: tangential part of the Sawyer & Tichy (2001) impulse operator
+    for LIGGGHTS 3.8, with Walton's tangential restitution as an option.
+
+    Sawyer & Tichy 2001, J. Tribol. 123:777, Eqs. 20-23: Coulomb friction
+    mu |F_n| opposes the contact-point slip only until the slip is gone. Over
+    one step this is the tangential impulse
+
+        J_t = min( mu F_n dt ,  (1 + beta0) |v_s| / k )
+        k   = 1/m_i + 1/m_j + r_i^2/I_i + r_j^2/I_j ,   I = (2/5) m r^2
+
+    applied against the slip direction, with v_s the slip velocity of the
+    contact points (translation plus spin x radius, grains as rigid spheres
+    touching at r_i and r_j from their centres; 1/m_j = r_j^2/I_j = 0 for a
+    wall). The second term is the impulse that makes the slip
+    v_s' = -beta0 v_s: beta0 = 0 (default) stops the slip exactly (S&T's
+    "until the slip vanishes", the stick limit); beta0 in [-1, 1] is Walton's
+    tangential restitution for sticking impacts (Walton 1993, in "Particulate
+    Two-Phase Flow", ch. 25; Foerster et al. 1994, Phys. Fluids 6:1108).
+    For a sphere hitting a wall with spin 0 the stick limit gives 5/7 of the
+    tangential velocity; the Coulomb limit gives v_t - mu (1 + e) |v_n|.
+
+    Setting:  beta0 value  (keyword after the model names, default 0)
+
+    Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
+    LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree.
+------------------------------------------------------------------------- */
+
+#ifdef TANGENTIAL_MODEL
+TANGENTIAL_MODEL(TANGENTIAL_IMPULSE,impulse,50)
+#else
+#ifndef TANGENTIAL_MODEL_IMPULSE_H_
+#define TANGENTIAL_MODEL_IMPULSE_H_
+
+#include "contact_models.h"
+#include "tangential_model_base.h"
+#include "global_properties.h"
+#include "update.h"
+#include "error.h"
+#include <cmath>
+
+namespace LIGGGHTS {
+namespace ContactModels
+{
+  template<>
+  class TangentialModel<TANGENTIAL_IMPULSE> : public TangentialModelBase
+  {
+  public:
+    static const int MASK = CM_CONNECT_TO_PROPERTIES | CM_SURFACES_INTERSECT;
+
+    TangentialModel(LAMMPS * lmp, IContactHistorySetup * hsetup, class ContactModelBase * cmb) :
+      TangentialModelBase(lmp, hsetup, cmb),
+      coeffFrict(NULL),
+      beta0(0.0)
+    {}
+
+    inline void registerSettings(Settings & settings)
+    {
+      settings.registerDoubleSetting("beta0", beta0, 0.0);
+    }
+
+    inline void postSettings(IContactHistorySetup *, ContactModelBase *)
+    {
+      if (!(beta0 >= -1.0 && beta0 <= 1.0))
+        error->all(FLERR, "tangential impulse: beta0 must lie in [-1, 1] (0 = stick limit)");
+    }
+
+    inline void connectToProperties(PropertyRegistry & registry)
+    {
+      registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
+      registry.connect("coeffFrict", coeffFrict, "tangential_model impulse");
+    }
+
+    inline void surfacesIntersect(const SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
+    {
+      if (sidata.contact_flags)
+        *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+      const double Fn = sidata.Fn;
+      if (Fn <= 0.0) return;  // no normal impulse this step: no friction impulse
+
+      const double enx = sidata.en[0], eny = sidata.en[1], enz = sidata.en[2];
+      const double ri = sidata.radi;
+      const double rj = sidata.is_wall ? 0.0 : sidata.radj;
+
+      // slip of the contact points: v_i - v_j - (v_n) e_n + e_n x (r_i w_i + r_j w_j)
+      const double vr1 = sidata.v_i[0] - sidata.v_j[0];
+      const double vr2 = sidata.v_i[1] - sidata.v_j[1];
+      const double vr3 = sidata.v_i[2] - sidata.v_j[2];
+      const double vn = vr1 * enx + vr2 * eny + vr3 * enz;
+      double w1 = ri * sidata.omega_i[0], w2 = ri * sidata.omega_i[1], w3 = ri * sidata.omega_i[2];
+      if (!sidata.is_wall) {
+        w1 += rj * sidata.omega_j[0];
+        w2 += rj * sidata.omega_j[1];
+        w3 += rj * sidata.omega_j[2];
+      }
+      const double vs1 = vr1 - vn * enx + (eny * w3 - enz * w2);
+      const double vs2 = vr2 - vn * eny + (enz * w1 - enx * w3);
+      const double vs3 = vr3 - vn * enz + (enx * w2 - eny * w1);
+      const double vs = std::sqrt(vs1 * vs1 + vs2 * vs2 + vs3 * vs3);
+      if (vs <= 0.0) return;
+
+      // impulse per unit slip change: translation plus rotation (I = 2/5 m r^2 -> r^2/I = 5/(2m))
+      double k = 1.0 / sidata.mi + 2.5 / sidata.mi;
+      if (!sidata.is_wall) k += 1.0 / sidata.mj + 2.5 / sidata.mj;
+
+      const double dt = update->dt;
+      const double J_coulomb = coeffFrict[sidata.itype][sidata.jtype] * Fn * dt;  // S&T Eq. 20
+      const double J_stick = (1.0 + beta0) * vs / k;                            // S&T Eqs. 21-22
+      const double Ft = (J_coulomb < J_stick ? J_coulomb : J_stick) / dt;        // S&T Eq. 23
+      const double s = -Ft / vs;
+      const double Ft1 = s * vs1, Ft2 = s * vs2, Ft3 = s * vs3;
+
+      // torque on i: (-r_i e_n) x F_t ; on j: (r_j e_n) x (-F_t), the same sign
+      const double tor1 = eny * Ft3 - enz * Ft2;
+      const double tor2 = enz * Ft1 - enx * Ft3;
+      const double tor3 = enx * Ft2 - eny * Ft1;
+
+      if (sidata.is_wall) {
+        const double a = sidata.area_ratio;
+        i_forces.delta_F[0] += Ft1 * a;
+        i_forces.delta_F[1] += Ft2 * a;
+        i_forces.delta_F[2] += Ft3 * a;
+        i_forces.delta_torque[0] += -ri * tor1 * a;
+        i_forces.delta_torque[1] += -ri * tor2 * a;
+        i_forces.delta_torque[2] += -ri * tor3 * a;
+      } else {
+        i_forces.delta_F[0] += Ft1;
+        i_forces.delta_F[1] += Ft2;
+        i_forces.delta_F[2] += Ft3;
+        j_forces.delta_F[0] -= Ft1;
+        j_forces.delta_F[1] -= Ft2;
+        j_forces.delta_F[2] -= Ft3;
+        i_forces.delta_torque[0] += -ri * tor1;
+        i_forces.delta_torque[1] += -ri * tor2;
+        i_forces.delta_torque[2] += -ri * tor3;
+        j_forces.delta_torque[0] += -rj * tor1;
+        j_forces.delta_torque[1] += -rj * tor2;
+        j_forces.delta_torque[2] += -rj * tor3;
+      }
+    }
+
+    inline void surfacesClose(SurfacesCloseData & scdata, ForceData &, ForceData &)
+    {
+      if (scdata.contact_flags)
+        *scdata.contact_flags &= ~CONTACT_TANGENTIAL_MODEL;
+    }
+
+    inline void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+  private:
+    double ** coeffFrict;
+    double beta0;
+  };
+}
+}
+
+#endif // TANGENTIAL_MODEL_IMPULSE_H_
+#endif

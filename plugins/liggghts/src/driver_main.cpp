@@ -1,0 +1,19 @@
+// granlub-liggghts: LIGGGHTS 3.8 with granlub's contact models loaded. Same arguments as the
+// `liggghts` executable (it is LIGGGHTS' own main plus the registration call), so it is a drop-in
+// replacement, also under mpirun.
+#include <mpi.h>
+
+#include "input.h"
+#include "lammps.h"
+
+#include "granlub_liggghts.h"
+
+int main(int argc, char** argv) {
+    MPI_Init(&argc, &argv);
+    granlub_liggghts_register();  // explicit, so the linker can never drop the plugin
+    LAMMPS_NS::LAMMPS* lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
+    lammps->input->file();
+    delete lammps;
+    MPI_Finalize();
+    return 0;
+}

@@ -1,0 +1,68 @@
+// Registers granlub's contact models with Debian's unmodified libliggghts.so.3 (LIGGGHTS 3.8.0):
+// the model names go into ContactModels::Factory, and one pair-style and one wall creator per
+// combination listed in models/style_contact_model_user.whitelist go into the pair and wall
+// factories under ("gran", GranStyle<...>::HASHCODE). Recipe and pitfalls:
+// ../shared/docs/liggghts-plugin.md, section 1.
+#include <mpi.h>
+
+// LIGGGHTS 3.8.0 ships fix_insert_stream_predefined.h as a stub that needs this first.
+#include "fix_insert_stream.h"
+#include "contact_models.h"
+#include "pair_gran_base.h"
+#include "fix_wall_gran_base.h"
+
+#include "granlub_liggghts.h"
+
+using namespace LAMMPS_NS;
+using namespace LIGGGHTS;
+using namespace LIGGGHTS::ContactModels;
+
+// ABI guard: Debian builds LIGGGHTS without NONSPHERICAL_ACTIVE_FLAG / SUPERQUADRIC_ACTIVE_FLAG,
+// which change the layout of the contact data the library fills in and hands to our models.
+static_assert(sizeof(SurfacesCloseData) == 168,
+              "SurfacesCloseData layout differs from Debian's libliggghts 3.8.0: build without "
+              "NONSPHERICAL_ACTIVE_FLAG and SUPERQUADRIC_ACTIVE_FLAG");
+
+namespace {
+
+template <typename T>
+PairStyles::IGranularPairStyle* create_pair(LAMMPS* lmp, PairGran* parent, const int64_t hash) {
+    return new T(lmp, parent, hash);
+}
+
+template <typename T>
+Walls::IGranularWall* create_wall(LAMMPS* lmp, FixWallGran* parent, const int64_t hash) {
+    return new T(lmp, parent, hash);
+}
+
+template <int M, int T, int C, int R, int S>
+void add_combination() {
+    typedef GranStyle<M, T, C, R, S> Style;
+    typedef ContactModel<Style> Model;
+    // the factory keys are int; every id is < 64, so the hash fits
+    const int hash = static_cast<int>(Style::HASHCODE);
+    PairStyles::Factory::instance().addStyle("gran", hash, &create_pair<PairStyles::Granular<Model> >);
+    Walls::Factory::instance().addStyle("gran", hash, &create_wall<Walls::Granular<Model> >);
+}
+
+bool registered = false;
+
+}  // namespace
+
+extern "C" int granlub_liggghts_register(void) {
+    if (registered) return 0;
+    registered = true;
+    Factory& models = Factory::instance();
+    models.addNormalModel("impulse", IMPULSE);
+    models.addTangentialModel("impulse", TANGENTIAL_IMPULSE);
+    int n = 0;
+#define GRAN_MODEL(M, T, C, R, S) \
+    add_combination<M, T, C, R, S>(); \
+    ++n;
+#include "style_contact_model_user.whitelist"
+#undef GRAN_MODEL
+    return n;
+}
+
+// For LD_PRELOAD with the stock `liggghts` binary: runs after libliggghts' own initialisers.
+__attribute__((constructor)) static void granlub_liggghts_autoregister() { granlub_liggghts_register(); }
