@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,7 +53,10 @@ struct OperatingPoint {
     Wall top;
 };
 
+class Schema;
+
 struct Case {
+    std::shared_ptr<const Schema> schema;  // owns the declarations the sections point into
     std::filesystem::path file;  // .../case.toml
     std::filesystem::path dir;   // its directory
     std::string name;
@@ -95,6 +99,9 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
 // The resolved case as text: every key with its value, "(default)" where not given, then the
 // operating points. What `granlub check` prints.
 std::string describe(const Case& c);
+
+// True for the sections every case shares (case, grains, walls, cell, operating, body_forces).
+bool common_sections_contains(std::string_view name);
 
 // Stable 64-bit FNV-1a of bytes, as 16 hex digits.
 std::string hash_hex(std::string_view bytes);

@@ -1,0 +1,105 @@
+// granlub: one command, one subcommand per job. Exit codes: 0 done, 1 a solver failed on some
+// point, 2 bad input (case file, options).
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "granlub/case.h"
+#include "granlub/error.h"
+#include "granlub/results.h"
+#include "modules.h"
+#include "run_all.h"
+
+namespace {
+
+struct Args {
+    std::string case_path;
+    granlub::RunOptions opt;
+    std::string results;
+    std::vector<std::string> solvers;
+};
+
+void add_case(CLI::App* sub, Args& a) {
+    sub->add_option("CASE", a.case_path, "case directory (holding case.toml) or a case .toml file")->required();
+    sub->add_option("--results", a.results, "results folder (default: CASE/results)");
+}
+
+void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
+    sub->add_option("--point", a.opt.point, "only this operating point (see `granlub check CASE` for ids)");
+    sub->add_flag("--force", a.opt.force, "recompute points whose results are complete and current");
+    sub->add_flag("--full", a.opt.full, "full-fidelity run lengths (the case's *_full keys)");
+    sub->add_flag("--vtk", a.opt.vtk, "also write ParaView files");
+    if (stochastic) {
+        sub->add_option("--seed", a.opt.seed, "random seed (default: the case's seed)");
+        sub->add_option("--threads", a.opt.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    }
+    if (mpi) sub->add_option("--np", a.opt.np, "MPI ranks for LIGGGHTS")->check(CLI::PositiveNumber);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"granlub: granular flow lubrication by particle, continuum and cellular-automaton solvers, "
+                 "compared on the same case"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", granlub::version());
+    Args a;
+
+    auto* check = app.add_subcommand("check", "validate a case and print it resolved, with its operating points");
+    add_case(check, a);
+
+    std::vector<std::pair<CLI::App*, const granlub::cli::SolverModule*>> solver_cmds;
+    for (const auto& m : granlub::cli::solver_modules()) {
+        auto* sub = app.add_subcommand(m.name, m.description);
+        add_case(sub, a);
+        add_run_options(sub, a, m.name != "continuum", m.name == "dem");
+        solver_cmds.emplace_back(sub, &m);
+    }
+
+    CLI::App* compare = nullptr;
+    if (granlub::cli::have_compare()) {
+        compare = app.add_subcommand("compare", "compare every solver's results for a case: results/report/");
+        add_case(compare, a);
+    }
+
+    auto* run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");
+    add_case(run, a);
+    add_run_options(run, a, true, true);
+    std::vector<std::string> names;
+    for (const auto& m : granlub::cli::solver_modules()) names.push_back(m.name);
+    run->add_option("--solvers", a.solvers, fmt::format("solvers to run (default: all: {})", fmt::join(names, ",")))
+        ->delimiter(',')
+        ->check(CLI::IsMember(names));
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    a.opt.results_root = a.results;
+
+    try {
+        const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
+        if (check->parsed()) {
+            fmt::print("{}", granlub::describe(c));
+            return 0;
+        }
+        for (const auto& [sub, m] : solver_cmds)
+            if (sub->parsed()) return m->run(c, a.opt);
+        if (compare && compare->parsed()) return granlub::cli::compare(c, a.opt);
+        if (run->parsed()) return granlub::cli::run_all(c, a.opt, a.solvers);
+    } catch (const granlub::CaseError& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 2;
+    } catch (const granlub::Error& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    }
+    return 0;
+}

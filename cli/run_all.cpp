@@ -1,0 +1,87 @@
+#include "run_all.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "granlub/error.h"
+#include "granlub/results.h"
+#include "modules.h"
+
+namespace granlub::cli {
+
+namespace {
+
+std::string cell(const Summary& s, const char* name, double scale, const char* fmtstr) {
+    auto it = s.outputs.find(name);
+    if (it == s.outputs.end()) return "-";
+    std::string v = fmt::format(fmt::runtime(fmtstr), it->second.value * scale);
+    if (it->second.stderr_) v += fmt::format(fmt::runtime(std::string("±") + fmtstr), *it->second.stderr_ * scale);
+    return v;
+}
+
+void closing_table(const Case& c, const RunOptions& o, const std::vector<const SolverModule*>& mods) {
+    const auto root = results_root(c, o);
+    fmt::print("\n{:<10} {:<14} {:>16} {:>20} {:>20} {:>14}\n", "solver", "point", "mean nu", "normal stress Pa",
+               "shear stress Pa", "slip/U bottom");
+    for (const auto* m : mods) {
+        for (const auto& p : c.points) {
+            const auto dir = result_dir(root, m->name, p.id);
+            const auto st = result_status(dir, c.inputs_hash(m->name));
+            if (st.state != ResultState::Complete) {
+                fmt::print("{:<10} {:<14} {}\n", m->name, p.id,
+                           st.state == ResultState::Missing ? "no result" : "not current: " + st.reason);
+                continue;
+            }
+            const Summary s = read_summary(dir / "summary.json");
+            fmt::print("{:<10} {:<14} {:>16} {:>20} {:>20} {:>14}\n", m->name, p.id,
+                       cell(s, "mean_solid_fraction", 1, "{:.3f}"), cell(s, "normal_stress_bottom", 1, "{:.4g}"),
+                       cell(s, "shear_stress_bottom", 1, "{:.4g}"), cell(s, "slip_bottom", 1 / p.speed, "{:.3f}"));
+        }
+    }
+}
+
+}  // namespace
+
+int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& solvers) {
+    std::vector<const SolverModule*> mods;
+    for (const auto& m : solver_modules())
+        if (solvers.empty() || std::find(solvers.begin(), solvers.end(), m.name) != solvers.end()) mods.push_back(&m);
+    if (mods.empty()) throw Error("no solver selected (and none compiled in)");
+
+    const std::size_t stages = mods.size() + (have_compare() ? 1 : 0);
+    std::size_t stage = 0;
+    int rc = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    for (const auto* m : mods) {
+        fmt::print("== [{}/{}] {} on {} ({} point(s)), {:.0f} s elapsed\n", ++stage, stages, m->name, c.name,
+                   c.select(o.point).size(), elapsed());
+        std::fflush(stdout);
+        try {
+            if (m->run(c, o) != 0) rc = 1;
+        } catch (const Error& e) {
+            fmt::print(stderr, "{}: FAILED: {}\n", m->name, e.what());
+            rc = 1;
+        }
+    }
+    if (have_compare()) {
+        fmt::print("== [{}/{}] compare, {:.0f} s elapsed\n", ++stage, stages, elapsed());
+        std::fflush(stdout);
+        try {
+            if (compare(c, o) != 0) rc = 1;
+        } catch (const Error& e) {
+            fmt::print(stderr, "compare: FAILED: {}\n", e.what());
+            rc = 1;
+        }
+    }
+    closing_table(c, o, mods);
+    fmt::print("\n{} in {:.0f} s{}\n", rc == 0 ? "done" : "finished with failures", elapsed(),
+               have_compare() ? fmt::format("; report: {}", (results_root(c, o) / "report" / "index.html").string())
+                              : "");
+    return rc;
+}
+
+}  // namespace granlub::cli

@@ -1,0 +1,12 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "granlub/case.h"
+#include "granlub/sweep.h"
+
+namespace granlub::cli {
+// `granlub run`: the selected solvers (all when empty), then compare; one overall progress line
+// per stage and a closing table. Returns 0 if every stage succeeded.
+int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& solvers);
+}

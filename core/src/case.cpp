@@ -1,0 +1,424 @@
+// Case files: parse with toml++, validate every key against its declaration, resolve defaults,
+// expand the [operating] sweep into points with stable ids.
+#include "granlub/case.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "common_sections.h"
+#include "granlub/error.h"
+
+namespace granlub {
+
+std::string to_string(Control c) { return c == Control::Fill ? "fill" : "load"; }
+
+double Grains::mass() const { return density * std::numbers::pi * diameter * diameter * diameter / 6.0; }
+
+std::string hash_hex(std::string_view bytes) {
+    std::uint64_t h = 1469598103934665603ULL;  // FNV-1a 64
+    for (unsigned char ch : bytes) {
+        h ^= ch;
+        h *= 1099511628211ULL;
+    }
+    return fmt::format("{:016x}", h);
+}
+
+// ---------------------------------------------------------------------------------------------
+Schema Schema::common() {
+    Schema s;
+    for (auto& sec : common_sections()) s.sections_.push_back(std::move(sec));
+    return s;
+}
+
+Schema& Schema::add(SectionSpec section) {
+    if (find(section.name)) throw Error(fmt::format("internal: section [{}] declared twice", section.name));
+    sections_.push_back(std::move(section));
+    return *this;
+}
+
+const SectionSpec* Schema::find(std::string_view name) const {
+    for (const auto& s : sections_)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+namespace {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t prev = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t cur = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, prev + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            prev = cur;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string suggestion(const std::string& bad, const std::vector<std::string>& names) {
+    std::string best;
+    std::size_t best_d = 3;
+    for (const auto& n : names) {
+        std::size_t d = edit_distance(bad, n);
+        if (d < best_d) best_d = d, best = n;
+    }
+    return best.empty() ? "" : fmt::format("did you mean '{}'? ", best);
+}
+
+std::string where(const std::string& file, const toml::source_region& r) {
+    if (r.begin.line == 0) return file;
+    return fmt::format("{}:{}:{}", file, r.begin.line, r.begin.column);
+}
+
+std::string node_text(const toml::node& n) {
+    std::ostringstream os;
+    if (auto* s = n.as_string()) os << '"' << s->get() << '"';
+    else if (n.is_table()) os << "(a table)";
+    else n.visit([&](const auto& v) { os << v; });
+    std::string t = os.str();
+    if (t.size() > 60) t = t.substr(0, 57) + "...";
+    return t;
+}
+
+[[noreturn]] void bad_value(const std::string& file, const std::string& section, const KeySpec& k,
+                            const toml::node& n, const std::string& why) {
+    throw CaseError(fmt::format("{}: [{}] {} = {}: {} (allowed: {})", where(file, n.source()), section, k.name,
+                                node_text(n), why, k.allowed_text()));
+}
+
+double number(const std::string& file, const std::string& section, const KeySpec& k, const toml::node& n) {
+    double v;
+    if (auto* i = n.as_integer()) v = static_cast<double>(i->get());
+    else if (auto* f = n.as_floating_point()) v = f->get();
+    else bad_value(file, section, k, n, fmt::format("expected {}", k.type_name()));
+    if (!std::isfinite(v)) bad_value(file, section, k, n, "not a finite number");
+    if (!k.range.contains(v)) bad_value(file, section, k, n, "out of range");
+    return v;
+}
+
+Value parse_value(const std::string& file, const std::string& section, const KeySpec& k, const toml::node& n) {
+    switch (k.type) {
+        case KeyType::Real: {
+            if (k.sweepable) {
+                if (auto* arr = n.as_array()) {
+                    if (arr->empty()) bad_value(file, section, k, n, "empty list: a sweep needs at least one value");
+                    std::vector<double> out;
+                    for (const auto& e : *arr) {
+                        double v = number(file, section, k, e);
+                        if (std::find(out.begin(), out.end(), v) != out.end())
+                            bad_value(file, section, k, e, fmt::format("{} appears twice in the sweep", v));
+                        out.push_back(v);
+                    }
+                    return out;
+                }
+                return std::vector<double>{number(file, section, k, n)};
+            }
+            return number(file, section, k, n);
+        }
+        case KeyType::Integer: {
+            auto* i = n.as_integer();
+            if (!i) bad_value(file, section, k, n, "expected an integer");
+            double v = static_cast<double>(i->get());
+            if (!k.range.contains(v)) bad_value(file, section, k, n, "out of range");
+            return std::int64_t{i->get()};
+        }
+        case KeyType::Boolean: {
+            auto* b = n.as_boolean();
+            if (!b) bad_value(file, section, k, n, "expected true or false");
+            return b->get();
+        }
+        case KeyType::String:
+        case KeyType::Choice: {
+            auto* s = n.as_string();
+            if (!s) bad_value(file, section, k, n, "expected a string");
+            std::string v = s->get();
+            if (k.type == KeyType::Choice && std::find(k.choices.begin(), k.choices.end(), v) == k.choices.end())
+                bad_value(file, section, k, n, fmt::format("unknown value; {}", suggestion(v, k.choices)));
+            return v;
+        }
+    }
+    throw Error("internal: unhandled key type");
+}
+
+// Fills `out` with the table's values, defaults for keys not given; rejects unknown keys.
+void read_section(const std::string& file, const SectionSpec& spec, const toml::table* t,
+                  const toml::source_region& header, Section& out, std::set<std::string>& given_as_list) {
+    std::vector<std::string> names;
+    for (const auto& k : spec.keys) names.push_back(k.name);
+    if (t) {
+        for (const auto& [key, node] : *t) {
+            const std::string name(key.str());
+            if (std::find(spec.subtables.begin(), spec.subtables.end(), name) != spec.subtables.end()) continue;
+            const KeySpec* k = spec.find(name);
+            if (!k) {
+                std::vector<std::string> all = names;
+                all.insert(all.end(), spec.subtables.begin(), spec.subtables.end());
+                throw CaseError(fmt::format("{}: [{}] {}: unknown key; {}(allowed: {})", where(file, node.source()),
+                                            spec.name, name, suggestion(name, all), fmt::join(all, ", ")));
+            }
+            Value v = parse_value(file, spec.name, *k, node);
+            if (k->sweepable && node.is_array()) given_as_list.insert(name);
+            out.set(name, std::move(v),
+                    SourcePos{static_cast<int>(node.source().begin.line), static_cast<int>(node.source().begin.column)},
+                    false);
+        }
+    }
+    for (const auto& k : spec.keys) {
+        if (out.has(k.name)) continue;
+        if (k.default_value) {
+            out.set(k.name, *k.default_value, std::nullopt, true);
+        } else if (!k.optional_key) {
+            throw CaseError(fmt::format("{}: [{}] {}: required key is missing ({}{}; {})", where(file, header),
+                                        spec.name, k.name, k.allowed_text(), k.unit.empty() ? "" : "", k.doc));
+        }
+    }
+}
+
+// "2.0" for whole numbers so that ids read as numbers with a decimal point, else shortest form.
+std::string id_number(double v, bool force_decimal) {
+    std::string s = fmt::format("{}", v);
+    if (force_decimal && s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+Case parse_case(std::string_view text, const std::string& source, const Schema& schema_in) {
+    auto owned = std::make_shared<const Schema>(schema_in);
+    const Schema& schema = *owned;
+    toml::table root;
+    try {
+        root = toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        throw CaseError(fmt::format("{}: TOML syntax error: {}", where(source, e.source()), e.description()));
+    }
+
+    Case c;
+    c.schema = owned;
+    c.file = source;
+    c.dir = std::filesystem::path(source).parent_path();
+    c.file_hash = hash_hex(text);
+
+    std::vector<std::string> known;
+    for (const auto& s : schema.sections())
+        if (s.name.find('.') == std::string::npos) known.push_back(s.name);
+    for (const auto& [key, node] : root) {
+        const std::string name(key.str());
+        if (std::find(known.begin(), known.end(), name) == known.end())
+            throw CaseError(fmt::format("{}: [{}]: unknown section; {}(allowed: {})", where(source, node.source()), name,
+                                        suggestion(name, known), fmt::join(known, ", ")));
+        if (!node.is_table())
+            throw CaseError(fmt::format("{}: {} = {}: '{}' is a section and must be a table, e.g. [{}]",
+                                        where(source, node.source()), name, node_text(node), name, name));
+    }
+
+    std::set<std::string> swept_lists;
+    for (const auto& spec : schema.sections()) {
+        const toml::table* t = nullptr;
+        toml::source_region header{};
+        const auto dot = spec.name.find('.');
+        if (dot == std::string::npos) {
+            t = root[spec.name].as_table();
+        } else {
+            const auto parent = spec.name.substr(0, dot);
+            const auto child = spec.name.substr(dot + 1);
+            if (auto* p = root[parent].as_table()) {
+                if (auto* node = p->get(child)) {
+                    t = node->as_table();
+                    if (!t)
+                        throw CaseError(fmt::format("{}: [{}] {} = {}: must be a table, e.g. [{}]",
+                                                    where(source, node->source()), parent, child, node_text(*node),
+                                                    spec.name));
+                }
+            }
+        }
+        if (t) header = t->source();
+        Section sec(&spec, source);
+        std::set<std::string> lists;
+        read_section(source, spec, t, header, sec, lists);
+        if (spec.name == "operating") swept_lists = lists;
+        c.sections.emplace(spec.name, std::move(sec));
+    }
+
+    // Resolve the common sections into typed structs.
+    const Section& cs = c.sections.at("case");
+    c.name = cs.string("name").empty() ? c.dir.filename().string() : cs.string("name");
+    if (c.name.empty()) c.name = "case";
+    c.title = cs.string("title");
+
+    const Section& g = c.sections.at("grains");
+    c.grains = {g.real("diameter"), g.real("density"), g.real("restitution"),
+                g.real("friction"), g.real("youngs_modulus"), g.real("poisson_ratio")};
+
+    const Section& w = c.sections.at("walls");
+    const Wall base{w.real("restitution"), w.real("friction"), w.real("roughness")};
+    auto wall = [&](const char* side) {
+        const Section& s = c.sections.at(fmt::format("walls.{}", side));
+        return Wall{s.maybe_real("restitution").value_or(base.restitution),
+                    s.maybe_real("friction").value_or(base.friction), s.maybe_real("roughness").value_or(base.roughness)};
+    };
+    c.bottom = wall("bottom");
+    c.top = wall("top");
+
+    const Section& cell = c.sections.at("cell");
+    c.cell = {cell.real("gap"), cell.real("length"), cell.real("width"), cell.real("annulus_radius"),
+              cell.real("max_solid_fraction")};
+    c.gravity = c.sections.at("body_forces").real("gravity");
+
+    // Cross-key checks.
+    const double d = c.grains.diameter;
+    if (c.cell.gap < 2 * d)
+        cell.fail("gap", fmt::format("the gap must hold at least two grains: gap >= 2 d = {} m", 2 * d));
+    if (c.cell.length < 2 * d)
+        cell.fail("length", fmt::format("the periodic length must be at least 2 d = {} m", 2 * d));
+    if (c.cell.width != 0 && c.cell.width < 2 * d)
+        cell.fail("width", fmt::format("the width must be 0 (periodic) or at least 2 d = {} m", 2 * d));
+    if (c.cell.annulus_radius != 0 && c.cell.annulus_radius <= c.cell.width / 2)
+        cell.fail("annulus_radius", fmt::format("the annulus radius must exceed half the width ({} m)", c.cell.width / 2));
+
+    const Section& op = c.sections.at("operating");
+    const Control control = op.string("control") == "fill" ? Control::Fill : Control::Load;
+    if (control == Control::Fill && !op.has("solid_fraction"))
+        op.fail("solid_fraction", "control = \"fill\" needs [operating] solid_fraction");
+    if (control == Control::Load && !op.has("normal_stress"))
+        op.fail("normal_stress", "control = \"load\" needs [operating] normal_stress");
+    if (op.has("solid_fraction"))
+        for (double nu : op.list("solid_fraction"))
+            if (nu >= c.cell.max_solid_fraction)
+                op.fail("solid_fraction", fmt::format("every mean solid fraction must be below [cell] "
+                                                      "max_solid_fraction = {}", c.cell.max_solid_fraction));
+
+    for (const auto& spec : schema.sections())
+        if (spec.validate) spec.validate(c.sections.at(spec.name));
+
+    // Expand the sweep: speed outermost, then solid_fraction, normal_stress, roughness.
+    const auto& speeds = op.list("speed");
+    const std::vector<double> none{std::nan("")};
+    const auto& nus = op.has("solid_fraction") ? op.list("solid_fraction") : none;
+    const auto& ps = op.has("normal_stress") ? op.list("normal_stress") : none;
+    const auto& rs = op.has("roughness") ? op.list("roughness") : none;
+    for (double U : speeds)
+        for (double nu : nus)
+            for (double P : ps)
+                for (double R : rs) {
+                    OperatingPoint p;
+                    p.index = c.points.size();
+                    p.speed = U;
+                    p.control = control;
+                    p.solid_fraction = std::isnan(nu) ? 0.0 : nu;
+                    p.normal_stress = std::isnan(P) ? 0.0 : P;
+                    p.bottom = c.bottom;
+                    p.top = c.top;
+                    if (!std::isnan(R)) p.bottom.roughness = p.top.roughness = R;
+                    p.id = "U" + id_number(U, true);
+                    if (swept_lists.count("solid_fraction")) p.id += "_nu" + id_number(nu, false);
+                    if (swept_lists.count("normal_stress")) p.id += "_P" + id_number(P, false);
+                    if (swept_lists.count("roughness")) p.id += "_R" + id_number(R, false);
+                    c.points.push_back(std::move(p));
+                }
+    return c;
+}
+
+Case load_case(const std::filesystem::path& dir_or_file, const Schema& schema) {
+    std::filesystem::path file = dir_or_file;
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) file /= "case.toml";
+    if (!std::filesystem::exists(file, ec)) {
+        if (std::filesystem::is_directory(dir_or_file, ec))
+            throw CaseError(fmt::format("{}: no case.toml in this directory (a case is a directory holding "
+                                        "case.toml, e.g. cases/sawyer2001)",
+                                        dir_or_file.string()));
+        throw CaseError(fmt::format("{}: no such case directory or file (a case is a directory holding "
+                                    "case.toml, e.g. cases/sawyer2001)",
+                                    dir_or_file.string()));
+    }
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw CaseError(fmt::format("{}: cannot be read", file.string()));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return parse_case(ss.str(), file.string(), schema);
+}
+
+const Section& Case::section(std::string_view which) const {
+    auto it = sections.find(std::string(which));
+    if (it == sections.end()) throw Error(fmt::format("internal: case has no section [{}]", which));
+    return it->second;
+}
+
+std::vector<const OperatingPoint*> Case::select(std::string_view id) const {
+    std::vector<const OperatingPoint*> out;
+    for (const auto& p : points)
+        if (id.empty() || p.id == id) out.push_back(&p);
+    if (out.empty()) {
+        std::vector<std::string> ids;
+        for (const auto& p : points) ids.push_back(p.id);
+        throw Error(fmt::format("{}: no operating point '{}' (points: {})", file.string(), id, fmt::join(ids, ", ")));
+    }
+    return out;
+}
+
+namespace {
+void dump_section(std::ostringstream& os, const Section& s) {
+    for (const auto& k : s.spec().keys)
+        if (s.has(k.name)) os << k.name << '=' << value_text(s.values().at(k.name)) << '\n';
+}
+}  // namespace
+
+std::string Case::inputs_hash(std::string_view solver_section) const {
+    std::ostringstream os;
+    for (const auto& [sname, s] : sections) {
+        const bool common = common_sections_contains(sname);
+        if (!common && sname != solver_section) continue;
+        os << '[' << sname << "]\n";
+        dump_section(os, s);
+    }
+    return hash_hex(os.str());
+}
+
+bool common_sections_contains(std::string_view section) {
+    static const std::set<std::string, std::less<>> names = [] {
+        std::set<std::string, std::less<>> n;
+        for (const auto& s : common_sections()) n.insert(s.name);
+        return n;
+    }();
+    return names.count(section) > 0;
+}
+
+std::string describe(const Case& c) {
+    std::ostringstream os;
+    os << fmt::format("# {} (hash {})\n# values marked (default) were not given in the file\n", c.file.string(),
+                      c.file_hash);
+    std::vector<const Section*> order;  // declaration order: common sections first
+    for (const auto& spec : c.schema->sections()) order.push_back(&c.section(spec.name));
+    for (const Section* s : order) {
+        os << "\n[" << s->name() << "]\n";
+        for (const auto& k : s->spec().keys) {
+            std::string val = s->has(k.name) ? value_text(s->values().at(k.name)) : "(not set)";
+            std::string note = s->is_default(k.name) ? "(default) " : "";
+            std::string unit = k.unit.empty() ? "" : "[" + k.unit + "] ";
+            os << fmt::format("{:<20} = {:<22} # {}{}{}\n", k.name, val, note, unit, k.doc);
+        }
+    }
+    os << fmt::format("\n# {} operating point(s)\n", c.points.size());
+    for (const auto& p : c.points) {
+        os << fmt::format("#   {:<16} U = {} m/s, control = {}", p.id, p.speed, to_string(p.control));
+        if (p.solid_fraction > 0) os << fmt::format(", solid_fraction = {}", p.solid_fraction);
+        if (p.normal_stress > 0) os << fmt::format(", normal_stress = {} Pa", p.normal_stress);
+        os << fmt::format(", roughness bottom/top = {}/{}\n", p.bottom.roughness, p.top.roughness);
+    }
+    return os.str();
+}
+
+}  // namespace granlub

@@ -1,0 +1,67 @@
+// The sections every case shares. One line per key: type, default, range, unit, doc.
+// Solver sections are declared by their modules (e.g. continuum/src/section.cpp).
+#include <fmt/format.h>
+
+#include "common_sections.h"
+
+namespace granlub {
+
+std::vector<SectionSpec> common_sections() {
+    std::vector<SectionSpec> s;
+
+    SectionSpec c("case", "identification");
+    c.string("name", "", "short name; default: the case directory's name");
+    c.string("title", "", "one-line description");
+    s.push_back(c);
+
+    SectionSpec g("grains", "the granular material");
+    g.real_required("diameter", Range::positive(), "m", "grain diameter d");
+    g.real_required("density", Range::positive(), "kg/m^3", "grain material density rho_p");
+    g.real_required("restitution", Range::open_closed(0, 1), "", "grain-grain normal restitution e_p");
+    g.real("friction", 0.5, Range::non_negative(), "", "grain-grain Coulomb friction coefficient (particle solvers)");
+    g.real("youngs_modulus", 63e9, Range::positive(), "Pa", "Young's modulus (soft-sphere models; glass)");
+    g.real("poisson_ratio", 0.23, Range{-1.0, 0.5, true, true}, "", "Poisson's ratio (soft-sphere models; glass)");
+    s.push_back(g);
+
+    SectionSpec w("walls", "both walls; [walls.bottom] and [walls.top] override per wall");
+    w.real_required("restitution", Range::open_closed(0, 1), "", "grain-wall normal restitution e_w");
+    w.real("friction", 0.5, Range::non_negative(), "", "grain-wall Coulomb friction coefficient");
+    w.real_required("roughness", Range::unit(), "", "wall roughness R: 0 smooth, 1 rough");
+    w.subtables = {"bottom", "top"};
+    s.push_back(w);
+    for (const char* side : {"bottom", "top"}) {
+        SectionSpec ws(fmt::format("walls.{}", side),
+                       fmt::format("the {} wall; keys not given take [walls]'s values", side));
+        ws.real_optional("restitution", Range::open_closed(0, 1), "", "grain-wall normal restitution e_w");
+        ws.real_optional("friction", Range::non_negative(), "", "grain-wall Coulomb friction coefficient");
+        ws.real_optional("roughness", Range::unit(), "", "wall roughness R");
+        s.push_back(ws);
+    }
+
+    SectionSpec cell("cell", "the shear cell");
+    cell.real_required("gap", Range::positive(), "m", "gap H between the walls");
+    cell.real_required("length", Range::positive(), "m", "periodic length along the flow");
+    cell.real("width", 0.0, Range::non_negative(), "m", "trough width between side walls; 0 = periodic");
+    cell.real("annulus_radius", 0.0, Range::non_negative(), "m",
+              "mean radius of the annulus for the centripetal body force; 0 = none");
+    cell.real("max_solid_fraction", 0.65, Range::open_closed(0, 0.74048), "",
+              "maximum solid fraction nu_max of the continuum closures");
+    s.push_back(cell);
+
+    SectionSpec op("operating", "operating points; list-valued keys are swept (Cartesian product)");
+    op.sweep("speed", std::nullopt, Range::positive(), "m/s", "sliding speed U of the bottom wall");
+    op.keys.back().optional_key = false;  // required
+    op.choice("control", "fill", {"fill", "load"},
+              "fill: mean solid fraction given, stresses out; load: normal stress given");
+    op.sweep("solid_fraction", std::nullopt, Range::open(0, 1), "", "mean solid fraction (control = fill)");
+    op.sweep("normal_stress", std::nullopt, Range::positive(), "Pa", "normal stress on the walls (control = load)");
+    op.sweep("roughness", std::nullopt, Range::unit(), "", "roughness of both walls, overriding [walls]");
+    s.push_back(op);
+
+    SectionSpec bf("body_forces", "body forces");
+    bf.real("gravity", 9.81, Range::non_negative(), "m/s^2", "gravity along -y (toward the moving wall); 0 = none");
+    s.push_back(bf);
+    return s;
+}
+
+}  // namespace granlub

@@ -1,0 +1,314 @@
+// Result files: profile.csv and summary.json, written atomically; "complete and current" test.
+#include "granlub/results.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "granlub/case.h"
+#include "granlub/error.h"
+
+#ifndef GRANLUB_VERSION_STRING
+#define GRANLUB_VERSION_STRING "unknown"
+#endif
+
+namespace granlub {
+
+std::string version() { return GRANLUB_VERSION_STRING; }
+
+std::string utc_now() {
+    std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+// ---------------------------------------------------------------------------------------------
+Profile& Profile::add(std::string name, std::vector<double> values) {
+    if (!columns.empty() && values.size() != rows())
+        throw Error(fmt::format("internal: profile column '{}' has {} rows, others have {}", name, values.size(), rows()));
+    if (has(name)) throw Error(fmt::format("internal: profile column '{}' added twice", name));
+    names.push_back(std::move(name));
+    columns.push_back(std::move(values));
+    return *this;
+}
+
+bool Profile::has(std::string_view name) const {
+    for (const auto& n : names)
+        if (n == name) return true;
+    return false;
+}
+
+const std::vector<double>& Profile::column(std::string_view name) const {
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return columns[i];
+    throw Error(fmt::format("profile has no column '{}' (columns: {})", name, fmt::join(names, ", ")));
+}
+
+Summary& Summary::set(const std::string& name, double v, const std::string& unit, std::optional<double> se) {
+    outputs[name] = Scalar{v, se, unit};
+    return *this;
+}
+
+double Summary::value(const std::string& name) const {
+    auto it = outputs.find(name);
+    if (it == outputs.end()) {
+        std::vector<std::string> names;
+        for (const auto& [n, s] : outputs) names.push_back(n);
+        throw Error(fmt::format("summary of {} {} has no output '{}' (outputs: {})", solver, point, name,
+                                fmt::join(names, ", ")));
+    }
+    return it->second.value;
+}
+
+Summary make_summary(const Case& c, const OperatingPoint& p, const std::string& solver,
+                     std::optional<std::uint64_t> seed) {
+    Summary s;
+    s.solver = solver;
+    s.case_name = c.name;
+    s.point = p.id;
+    s.inputs = {{"speed", p.speed},
+                {"control", to_string(p.control)},
+                {"solid_fraction", p.solid_fraction},
+                {"normal_stress", p.normal_stress},
+                {"roughness_bottom", p.bottom.roughness},
+                {"roughness_top", p.top.roughness},
+                {"restitution_bottom", p.bottom.restitution},
+                {"restitution_top", p.top.restitution},
+                {"gap", c.cell.gap},
+                {"diameter", c.grains.diameter}};
+    s.provenance.version = version();
+    s.provenance.case_file = c.file.string();
+    s.provenance.case_hash = c.file_hash;
+    s.provenance.inputs_hash = c.inputs_hash(solver);
+    s.provenance.seed = seed;
+    s.provenance.settings = nlohmann::json::object();
+    auto it = c.sections.find(solver);
+    if (it != c.sections.end()) {
+        for (const auto& [k, v] : it->second.values()) {
+            std::visit([&](const auto& x) { s.provenance.settings[k] = x; }, v);
+        }
+    }
+    return s;
+}
+
+std::filesystem::path result_dir(const std::filesystem::path& root, const std::string& solver,
+                                 const std::string& point) {
+    return root / solver / point;
+}
+
+// ---------------------------------------------------------------------------------------------
+void write_file_atomic(const std::filesystem::path& path, std::string_view bytes) {
+    std::error_code ec;
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+    const std::string tmp = fmt::format("{}.tmp.{}", path.string(), ::getpid());
+    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) throw Error(fmt::format("{}: cannot write: {}", path.string(), std::strerror(errno)));
+    std::size_t off = 0;
+    while (off < bytes.size()) {
+        ssize_t n = ::write(fd, bytes.data() + off, bytes.size() - off);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            int e = errno;
+            ::close(fd);
+            ::unlink(tmp.c_str());
+            throw Error(fmt::format("{}: write failed: {}", path.string(), std::strerror(e)));
+        }
+        off += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+        ::unlink(tmp.c_str());
+        throw Error(fmt::format("{}: write failed: {}", path.string(), std::strerror(errno)));
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        int e = errno;
+        ::unlink(tmp.c_str());
+        throw Error(fmt::format("{}: cannot rename into place: {}", path.string(), std::strerror(e)));
+    }
+}
+
+std::string profile_csv(const Profile& p, const std::vector<std::string>& comments) {
+    std::string out;
+    for (const auto& c : comments) out += "# " + c + "\n";
+    out += fmt::format("{}\n", fmt::join(p.names, ","));
+    for (std::size_t r = 0; r < p.rows(); ++r) {
+        for (std::size_t c = 0; c < p.columns.size(); ++c)
+            out += fmt::format("{}{:.10g}", c ? "," : "", p.columns[c][r]);
+        out += '\n';
+    }
+    return out;
+}
+
+Profile parse_profile_csv(std::string_view text, const std::string& source) {
+    Profile p;
+    std::istringstream in{std::string(text)};
+    std::string line;
+    int lineno = 0;
+    bool header = false;
+    while (std::getline(in, line)) {
+        ++lineno;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty() || line[0] == '#') continue;
+        std::vector<std::string> cells;
+        std::size_t start = 0;
+        while (true) {
+            auto comma = line.find(',', start);
+            cells.push_back(line.substr(start, comma - start));
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+        if (!header) {
+            for (auto& c : cells) p.names.push_back(c);
+            p.columns.assign(cells.size(), {});
+            header = true;
+            continue;
+        }
+        if (cells.size() != p.names.size())
+            throw Error(fmt::format("{}:{}: {} values, the header has {} columns", source, lineno, cells.size(),
+                                    p.names.size()));
+        for (std::size_t c = 0; c < cells.size(); ++c) {
+            char* end = nullptr;
+            double v = std::strtod(cells[c].c_str(), &end);
+            if (cells[c].empty() || end == cells[c].c_str() || *end != '\0')
+                throw Error(fmt::format("{}:{}: column '{}': '{}' is not a number", source, lineno, p.names[c], cells[c]));
+            p.columns[c].push_back(v);
+        }
+    }
+    if (!header) throw Error(fmt::format("{}: empty profile (no header row)", source));
+    for (const char* col : kProfileColumns)
+        if (!p.has(col))
+            throw Error(fmt::format("{}: missing required column '{}' (has: {})", source, col, fmt::join(p.names, ", ")));
+    if (p.rows() < 2) throw Error(fmt::format("{}: a profile needs at least 2 rows, has {}", source, p.rows()));
+    return p;
+}
+
+namespace {
+std::string slurp(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(fmt::format("{}: cannot be read", path.string()));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+}  // namespace
+
+Profile read_profile(const std::filesystem::path& path) { return parse_profile_csv(slurp(path), path.string()); }
+
+nlohmann::json summary_json(const Summary& s) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [name, v] : s.outputs) {
+        out[name] = {{"value", v.value}, {"unit", v.unit}};
+        out[name]["stderr"] = v.stderr_ ? nlohmann::json(*v.stderr_) : nlohmann::json(nullptr);
+    }
+    nlohmann::json prov = {{"granlub_version", s.provenance.version},
+                           {"case_file", s.provenance.case_file},
+                           {"case_hash", s.provenance.case_hash},
+                           {"inputs_hash", s.provenance.inputs_hash},
+                           {"settings", s.provenance.settings},
+                           {"utc_time", s.provenance.utc_time.empty() ? utc_now() : s.provenance.utc_time}};
+    prov["seed"] = s.provenance.seed ? nlohmann::json(*s.provenance.seed) : nlohmann::json(nullptr);
+    return {{"format", "granlub-summary-1"}, {"solver", s.solver}, {"case", s.case_name}, {"point", s.point},
+            {"inputs", s.inputs},            {"outputs", out},     {"run", s.run},        {"provenance", prov}};
+}
+
+Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
+    try {
+        if (!j.is_object() || j.value("format", "") != "granlub-summary-1")
+            throw Error(fmt::format("{}: not a granlub summary (format is not granlub-summary-1)", source));
+        Summary s;
+        s.solver = j.at("solver").get<std::string>();
+        s.case_name = j.at("case").get<std::string>();
+        s.point = j.at("point").get<std::string>();
+        s.inputs = j.at("inputs");
+        s.run = j.value("run", nlohmann::json::object());
+        for (const auto& [name, v] : j.at("outputs").items()) {
+            Scalar sc;
+            sc.value = v.at("value").get<double>();
+            sc.unit = v.value("unit", "");
+            if (v.contains("stderr") && !v.at("stderr").is_null()) sc.stderr_ = v.at("stderr").get<double>();
+            s.outputs[name] = sc;
+        }
+        const auto& p = j.at("provenance");
+        s.provenance.version = p.at("granlub_version").get<std::string>();
+        s.provenance.case_file = p.value("case_file", "");
+        s.provenance.case_hash = p.at("case_hash").get<std::string>();
+        s.provenance.inputs_hash = p.at("inputs_hash").get<std::string>();
+        s.provenance.settings = p.value("settings", nlohmann::json::object());
+        s.provenance.utc_time = p.value("utc_time", "");
+        if (p.contains("seed") && !p.at("seed").is_null()) s.provenance.seed = p.at("seed").get<std::uint64_t>();
+        for (const char* name : kStandardOutputs)
+            if (!s.outputs.count(name)) throw Error(fmt::format("{}: missing standard output '{}'", source, name));
+        return s;
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(fmt::format("{}: malformed summary: {}", source, e.what()));
+    }
+}
+
+Summary read_summary(const std::filesystem::path& path) {
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(slurp(path));
+    } catch (const nlohmann::json::parse_error& e) {
+        throw Error(fmt::format("{}: not valid JSON: {}", path.string(), e.what()));
+    }
+    return summary_from_json(j, path.string());
+}
+
+void write_result(const std::filesystem::path& dir, const Profile& profile, const Summary& summary) {
+    for (const char* col : kProfileColumns)
+        if (!profile.has(col))
+            throw Error(fmt::format("internal: {} {}: profile lacks column '{}'", summary.solver, summary.point, col));
+    for (std::size_t c = 0; c < profile.columns.size(); ++c)
+        for (double v : profile.columns[c])
+            if (!std::isfinite(v))
+                throw SolverError(fmt::format("{} {}: profile column '{}' has a non-finite value; nothing written",
+                                              summary.solver, summary.point, profile.names[c]));
+    for (const char* name : kStandardOutputs)
+        if (!summary.outputs.count(name))
+            throw Error(fmt::format("internal: {} {}: summary lacks output '{}'", summary.solver, summary.point, name));
+    for (const auto& [name, v] : summary.outputs)
+        if (!std::isfinite(v.value) || (v.stderr_ && !std::isfinite(*v.stderr_)))
+            throw SolverError(fmt::format("{} {}: output '{}' is not finite; nothing written", summary.solver,
+                                          summary.point, name));
+    // The summary is the completion marker: remove a previous one first, so that a crash between
+    // the two writes cannot pair a new profile with an old summary.
+    std::error_code ec;
+    std::filesystem::remove(dir / "summary.json", ec);
+    write_file_atomic(dir / "profile.csv",
+                      profile_csv(profile, {fmt::format("granlub {} profile: case {} point {}", summary.solver,
+                                                        summary.case_name, summary.point),
+                                            fmt::format("granlub {} inputs_hash {}", summary.provenance.version,
+                                                        summary.provenance.inputs_hash)}));
+    write_file_atomic(dir / "summary.json", summary_json(summary).dump(2) + "\n");
+}
+
+ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash) {
+    std::error_code ec;
+    const auto sp = dir / "summary.json";
+    const auto pp = dir / "profile.csv";
+    if (!std::filesystem::exists(sp, ec)) return {ResultState::Missing, sp.string() + " does not exist"};
+    if (!std::filesystem::exists(pp, ec)) return {ResultState::Corrupt, pp.string() + " does not exist"};
+    try {
+        Summary s = read_summary(sp);
+        read_profile(pp);
+        if (s.provenance.inputs_hash != inputs_hash)
+            return {ResultState::Stale, fmt::format("{}: computed for inputs {}, the case now gives {}", sp.string(),
+                                                    s.provenance.inputs_hash, inputs_hash)};
+    } catch (const Error& e) {
+        return {ResultState::Corrupt, e.what()};
+    }
+    return {ResultState::Complete, ""};
+}
+
+}  // namespace granlub
