@@ -1,0 +1,175 @@
+#include "collect.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "granlub/error.h"
+
+namespace granlub::postproc {
+namespace {
+
+// Profile column behind a compared quantity, and whether it is divided by nu_max.
+std::pair<const char*, bool> source_column(const std::string& quantity) {
+    if (quantity == "u_over_U") return {"u_over_U", false};
+    if (quantity == "nu_over_numax") return {"solid_fraction", true};
+    if (quantity == "T_over_U2") return {"temperature_over_U2", false};
+    throw Error("internal: unknown profile quantity '" + quantity + "'");
+}
+
+// Checks core does not make: the file belongs here and can be plotted. Empty = fine.
+std::string check_run(const Case& c, const Run& r) {
+    const auto sp = (r.dir / "summary.json").string();
+    const auto pp = (r.dir / "profile.csv").string();
+    const Summary& s = *r.summary;
+    if (s.solver != r.solver)
+        return fmt::format("{}: says solver \"{}\" but lies in the \"{}\" results folder", sp, s.solver, r.solver);
+    if (s.point != r.point->id)
+        return fmt::format("{}: says point \"{}\" but lies in the \"{}\" folder", sp, s.point, r.point->id);
+    if (s.case_name != c.name) return fmt::format("{}: says case \"{}\", this case is \"{}\"", sp, s.case_name, c.name);
+    for (const auto& [name, sc] : s.outputs) {
+        if (!std::isfinite(sc.value)) return fmt::format("{}: output \"{}\" is not a finite number", sp, name);
+        if (sc.stderr_ && !(*sc.stderr_ >= 0 && std::isfinite(*sc.stderr_)))
+            return fmt::format("{}: output \"{}\" has stderr {} (allowed: finite, >= 0)", sp, name, *sc.stderr_);
+    }
+    if (!(s.value("max_solid_fraction") > 0))
+        return fmt::format("{}: max_solid_fraction = {} (allowed: > 0)", sp, s.value("max_solid_fraction"));
+    const Profile& p = *r.profile;
+    if (p.rows() < 2) return fmt::format("{}: {} station(s) across the gap (need at least 2)", pp, p.rows());
+    const auto& y = p.column("y_over_H");
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        if (!(y[i] >= -1e-9 && y[i] <= 1 + 1e-9))
+            return fmt::format("{}: row {}: y_over_H = {} (allowed: [0, 1])", pp, i + 1, y[i]);
+        if (i > 0 && !(y[i] > y[i - 1]))
+            return fmt::format("{}: row {}: y_over_H = {} does not increase (previous {})", pp, i + 1, y[i], y[i - 1]);
+    }
+    for (std::size_t k = 0; k < p.names.size(); ++k) {
+        for (std::size_t i = 0; i < p.columns[k].size(); ++i) {
+            const double v = p.columns[k][i];
+            if (!std::isfinite(v)) return fmt::format("{}: row {}: {} is not a finite number", pp, i + 1, p.names[k]);
+            if (p.names[k].ends_with("_stderr") && v < 0)
+                return fmt::format("{}: row {}: {} = {} (allowed: >= 0)", pp, i + 1, p.names[k], v);
+        }
+    }
+    return {};
+}
+
+}  // namespace
+
+std::vector<double> Run::column(const std::string& quantity) const {
+    const auto [name, per_max] = source_column(quantity);
+    std::vector<double> v = profile->column(name);
+    if (per_max)
+        for (double& x : v) x /= nu_max();
+    return v;
+}
+
+std::vector<double> Run::column_stderr(const std::string& quantity) const {
+    const auto [name, per_max] = source_column(quantity);
+    const std::string se = std::string(name) + "_stderr";
+    if (!profile->has(se)) return {};
+    std::vector<double> v = profile->column(se);
+    if (per_max)
+        for (double& x : v) x /= nu_max();
+    return v;
+}
+
+std::optional<double> Run::scalar(const std::string& name) const {
+    if (!usable()) return std::nullopt;
+    if (name == "nu_bar_over_numax") return summary->value("mean_solid_fraction") / nu_max();
+    if (name == "slip_bottom_over_U" || name == "slip_top_over_U") {
+        const auto base = name.substr(0, name.size() - 7);
+        return point->speed > 0 ? std::optional(summary->value(base) / point->speed) : std::nullopt;
+    }
+    const auto it = summary->outputs.find(name);
+    return it == summary->outputs.end() ? std::nullopt : std::optional(it->second.value);
+}
+
+std::optional<double> Run::scalar_stderr(const std::string& name) const {
+    if (!usable()) return std::nullopt;
+    auto se = [&](const std::string& n) -> std::optional<double> {
+        const auto it = summary->outputs.find(n);
+        return it == summary->outputs.end() ? std::nullopt : it->second.stderr_;
+    };
+    if (name == "nu_bar_over_numax") {
+        const auto s = se("mean_solid_fraction");
+        return s ? std::optional(*s / nu_max()) : std::nullopt;
+    }
+    if (name == "slip_bottom_over_U" || name == "slip_top_over_U") {
+        const auto s = se(name.substr(0, name.size() - 7));
+        return s && point->speed > 0 ? std::optional(*s / point->speed) : std::nullopt;
+    }
+    return se(name);
+}
+
+Run load_run(const Case& c, const std::filesystem::path& root, const std::string& solver, const OperatingPoint& p) {
+    Run r;
+    r.solver = solver;
+    r.point = &p;
+    r.dir = result_dir(root, solver, p.id);
+    r.status = result_status(r.dir, c.inputs_hash(solver));
+    if (r.status.state != ResultState::Complete) return r;
+    try {
+        r.summary = read_summary(r.dir / "summary.json");
+        r.profile = read_profile(r.dir / "profile.csv");
+        if (auto why = check_run(c, r); !why.empty()) r.status = {ResultState::Corrupt, why};
+    } catch (const Error& e) {
+        r.status = {ResultState::Corrupt, e.what()};
+    }
+    if (r.status.state != ResultState::Complete) r.profile.reset(), r.summary.reset();
+    return r;
+}
+
+const Run& Collection::run(const std::string& solver, const std::string& point) const {
+    return runs.at({solver, point});
+}
+
+std::vector<const Run*> Collection::usable(const std::string& point) const {
+    std::vector<const Run*> out;
+    for (const auto& s : solvers) {
+        const Run& r = run(s, point);
+        if (r.usable()) out.push_back(&r);
+    }
+    return out;
+}
+
+bool Collection::any_usable(const std::string& solver) const {
+    return std::any_of(points.begin(), points.end(), [&](const OperatingPoint* p) { return run(solver, p->id).usable(); });
+}
+
+std::size_t Collection::count(ResultState state) const {
+    return static_cast<std::size_t>(
+        std::count_if(runs.begin(), runs.end(), [&](const auto& kv) { return kv.second.status.state == state; }));
+}
+
+Collection collect(const Case& c, const RunOptions& o) {
+    Collection col;
+    col.root = results_root(c, o);
+    col.points = c.select(o.point);
+    std::vector<std::string> others;
+    std::error_code ec;
+    for (const char* s : kKnownSolvers) {
+        if (std::filesystem::is_directory(col.root / s, ec))
+            col.solvers.emplace_back(s);
+        else
+            col.missing_solvers.emplace_back(s);
+    }
+    if (std::filesystem::is_directory(col.root, ec)) {
+        for (const auto& e : std::filesystem::directory_iterator(col.root, ec)) {
+            const std::string name = e.path().filename().string();
+            if (!e.is_directory() || name == "report" || name == "initial" || name.starts_with(".") ||
+                name.find(".partial") != std::string::npos ||
+                std::find(std::begin(kKnownSolvers), std::end(kKnownSolvers), name) != std::end(kKnownSolvers))
+                continue;
+            others.push_back(name);
+        }
+    }
+    std::sort(others.begin(), others.end());
+    col.solvers.insert(col.solvers.end(), others.begin(), others.end());
+    for (const auto& s : col.solvers)
+        for (const OperatingPoint* p : col.points) col.runs.emplace(std::pair(s, p->id), load_run(c, col.root, s, *p));
+    return col;
+}
+
+}  // namespace granlub::postproc

@@ -1,0 +1,77 @@
+// Finding and loading every solver's results for the case's operating points. Reads result
+// files only (core/results.h); checks beyond core's result_status (solver/point/case names,
+// station order, a positive max_solid_fraction) so that a bad file is named, not plotted.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "granlub/case.h"
+#include "granlub/results.h"
+#include "granlub/sweep.h"
+
+namespace granlub::postproc {
+
+// The solvers granlub knows, in report order; any other folder under results/ (except report/
+// and initial/) is treated as a solver too and listed after these.
+inline constexpr const char* kKnownSolvers[] = {"continuum", "automaton", "dem", "yade"};
+
+struct Run {
+    std::string solver;
+    const OperatingPoint* point = nullptr;
+    std::filesystem::path dir;
+    ResultStatus status;             // Complete only when both files load and pass the checks
+    std::optional<Profile> profile;  // present when Complete
+    std::optional<Summary> summary;
+
+    bool usable() const { return status.state == ResultState::Complete && profile && summary; }
+    // Normalised profile columns: y/H ascending, u/U, nu/nu_max (nu_max from this run's
+    // summary), T/U^2, and their standard errors (empty when the solver gives none).
+    const std::vector<double>& y() const { return profile->column("y_over_H"); }
+    std::vector<double> column(const std::string& quantity) const;         // "u_over_U", "nu_over_numax", ...
+    std::vector<double> column_stderr(const std::string& quantity) const;  // empty when absent
+    double nu_max() const { return summary->value("max_solid_fraction"); }
+    // A summary output; "nu_bar_over_numax" and "slip_bottom_over_U"/"slip_top_over_U" derived.
+    std::optional<double> scalar(const std::string& name) const;
+    std::optional<double> scalar_stderr(const std::string& name) const;
+};
+
+struct Collection {
+    std::filesystem::path root;                  // results root
+    std::vector<const OperatingPoint*> points;   // compared points, case order
+    std::vector<std::string> solvers;            // with a results folder, report order
+    std::vector<std::string> missing_solvers;    // known solvers without a results folder
+    std::map<std::pair<std::string, std::string>, Run> runs;  // (solver, point id) -> run, every solver x point
+
+    const Run& run(const std::string& solver, const std::string& point) const;
+    std::vector<const Run*> usable(const std::string& point) const;  // solvers order
+    bool any_usable(const std::string& solver) const;
+    std::size_t count(ResultState state) const;
+};
+
+Collection collect(const Case& c, const RunOptions& o);
+
+// One run's status without loading it into a collection (for summary_table).
+Run load_run(const Case& c, const std::filesystem::path& root, const std::string& solver, const OperatingPoint& p);
+
+// The quantities compared, in report order.
+struct Quantity {
+    const char* key;    // column/derived-output name
+    const char* label;  // axis label with unit
+    const char* short_label;
+};
+inline constexpr Quantity kProfileQuantities[] = {
+    {"u_over_U", "u/U", "u/U"}, {"nu_over_numax", "ν/ν_max", "ν/ν_max"}, {"T_over_U2", "T/U²", "T/U²"}};
+inline constexpr Quantity kScalarQuantities[] = {
+    {"normal_stress_bottom", "normal stress, moving wall (Pa)", "σ_yy bottom"},
+    {"normal_stress_top", "normal stress, stationary wall (Pa)", "σ_yy top"},
+    {"shear_stress_bottom", "shear stress, moving wall (Pa)", "τ_xy bottom"},
+    {"shear_stress_top", "shear stress, stationary wall (Pa)", "τ_xy top"},
+    {"slip_bottom_over_U", "slip at the moving wall / U", "slip bottom / U"},
+    {"slip_top_over_U", "slip at the stationary wall / U", "slip top / U"},
+    {"nu_bar_over_numax", "mean ν / ν_max", "ν̄/ν_max"}};
+
+}  // namespace granlub::postproc

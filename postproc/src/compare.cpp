@@ -1,0 +1,143 @@
+// `granlub compare`: collect the results, compute the metrics, draw the figures, write the report
+// into a staging folder and swap it in whole, so results/report/ is never half old, half new.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "collect.h"
+#include "figures.h"
+#include "gnuplot.h"
+#include "granlub/error.h"
+#include "granlub/postproc/command.h"
+#include "metrics.h"
+#include "paraview.h"
+#include "report_builder.h"
+#include "svg_plot.h"
+#include "text.h"
+
+namespace granlub::postproc {
+namespace {
+
+// Renders each figure to SVG, writes it with its gnuplot sources into plots/, and returns the
+// references the report inlines.
+std::vector<FigureRef> emit(const std::vector<Figure>& figs, const std::filesystem::path& plots) {
+    std::vector<FigureRef> refs;
+    for (const auto& f : figs) {
+        FigureRef r{f.name, f.title, f.caption, render_svg(f)};
+        write_file_atomic(plots / (f.name + ".svg"), r.svg);
+        write_gnuplot(f, plots);
+        refs.push_back(std::move(r));
+    }
+    return refs;
+}
+
+void replace_dir(const std::filesystem::path& staging, const std::filesystem::path& target) {
+    std::error_code ec;
+    const auto old = target.parent_path() / fmt::format(".report.old-{}", ::getpid());
+    if (std::filesystem::exists(target, ec)) std::filesystem::rename(target, old);
+    std::filesystem::rename(staging, target);
+    std::filesystem::remove_all(old, ec);
+}
+
+std::string text_table(const Table& t) {
+    // Column widths in characters (UTF-8 aware enough for the labels used here).
+    auto width = [](const std::string& s) {
+        std::size_t n = 0;
+        for (unsigned char ch : s) n += (ch & 0xC0) != 0x80;
+        return n;
+    };
+    std::vector<std::size_t> w(t.header.size());
+    for (std::size_t k = 0; k < w.size(); ++k) w[k] = width(t.header[k]);
+    for (const auto& row : t.rows)
+        for (std::size_t k = 0; k < row.size() && k < w.size(); ++k) w[k] = std::max(w[k], width(row[k].text));
+    std::string out;
+    auto line = [&](auto get) {
+        for (std::size_t k = 0; k < w.size(); ++k) {
+            const std::string s = get(k);
+            out += s + std::string(w[k] - width(s) + 2, ' ');
+        }
+        while (!out.empty() && out.back() == ' ') out.pop_back();
+        out += '\n';
+    };
+    line([&](std::size_t k) { return t.header[k]; });
+    for (const auto& row : t.rows) line([&](std::size_t k) { return k < row.size() ? row[k].text : std::string(); });
+    return out;
+}
+
+}  // namespace
+
+int compare(const Case& c, const RunOptions& o) {
+    const Collection col = collect(c, o);
+    std::size_t problems = 0;
+    for (const auto& [key, r] : col.runs) {
+        if (r.status.state == ResultState::Stale || r.status.state == ResultState::Corrupt) {
+            ++problems;
+            fmt::print(stderr, "granlub compare: leaving out {} {} ({}): {}\n", r.solver, r.point->id,
+                       state_name(r.status.state), r.status.reason);
+        }
+    }
+    const std::size_t usable = col.count(ResultState::Complete);
+    if (usable == 0)
+        throw Error(fmt::format("{}: no usable results to compare ({} stale or corrupt); run a solver first, e.g. "
+                                "`granlub continuum {}`",
+                                col.root.string(), problems, c.dir.string()));
+
+    const auto target = col.root / "report";
+    const auto staging = col.root / fmt::format(".report.partial-{}", ::getpid());
+    std::error_code ec;
+    std::filesystem::remove_all(staging, ec);
+    try {
+        const auto plots = staging / "plots";
+        std::filesystem::create_directories(plots);
+        const auto metrics = compute_metrics(col);
+        ReportFigures figs;
+        for (std::size_t i = 0; i < col.points.size(); ++i)
+            if (!col.usable(col.points[i]->id).empty())
+                figs.profiles[col.points[i]->id] = emit(profile_figures(col, i), plots);
+        figs.stress = emit(stress_figures(col), plots);
+        figs.slip = emit(slip_figures(col), plots);
+        figs.solid_fraction = emit({solid_fraction_figure(col, c.cell.max_solid_fraction)}, plots);
+        const auto vtm = write_paraview(col, c.cell.gap, staging / "paraview");
+        const Report rep = build_report(c, col, metrics, figs, vtm);
+        write_file_atomic(staging / "metrics.csv", metrics_csv(metrics));
+        write_file_atomic(staging / "report.md", render_markdown(rep));
+        write_file_atomic(staging / "index.html", render_html(rep));  // last: the completion marker
+        replace_dir(staging, target);
+    } catch (...) {
+        std::filesystem::remove_all(staging, ec);
+        throw;
+    }
+    std::vector<std::string> compared;
+    for (const auto& s : col.solvers)
+        if (col.any_usable(s)) compared.push_back(s);
+    std::string missing;
+    for (const auto& s : col.solvers)
+        if (!col.any_usable(s)) missing += (missing.empty() ? "" : ", ") + s;
+    for (const auto& s : col.missing_solvers) missing += (missing.empty() ? "" : ", ") + s;
+    std::string names;
+    for (const auto& s : compared) names += (names.empty() ? "" : ", ") + s;
+    fmt::print("compare: {} ({} of {} runs usable; solvers: {}{})\n", (target / "index.html").string(), usable,
+               col.runs.size(), names, missing.empty() ? "" : "; missing: " + missing);
+    return problems ? 1 : 0;
+}
+
+std::string summary_table(const Case& c, const RunOptions& o) {
+    const Collection col = collect(c, o);
+    Table t = key_numbers(col);
+    // Rows for what is not usable, so the table also says what failed.
+    for (const auto& s : col.solvers)
+        for (const OperatingPoint* p : col.points) {
+            const Run& r = col.run(s, p->id);
+            if (!r.usable()) {
+                std::vector<Cell> row{{s, ""}, {p->id, ""}, {state_name(r.status.state), ""}};
+                t.rows.push_back(std::move(row));
+            }
+        }
+    for (const auto& s : col.missing_solvers) t.rows.push_back({{s, ""}, {"(all)", ""}, {"no results", ""}});
+    return text_table(t);
+}
+
+}  // namespace granlub::postproc

@@ -1,0 +1,45 @@
+// A plot described once and rendered twice: as inline SVG (svg_plot.h, what the report shows)
+// and as gnuplot data + script (gnuplot.h, so a user can restyle and re-render the figure).
+#pragma once
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace granlub::postproc {
+
+enum class Mark { Line, Points };
+
+struct Series {
+    std::string label;            // legend entry; empty = not in the legend
+    std::vector<double> x, y;
+    std::vector<double> err;      // +- error per point (empty: none): a band for lines, bars for points
+    int style = 0;                // colour, dash and marker index (one per solver, see style_of)
+    Mark mark = Mark::Line;
+    bool dashed = false;          // lines: dashed instead of the style's own pattern (fits)
+    bool open = false;            // points: open marker (e.g. the top wall)
+};
+
+struct Axis {
+    std::string label;            // with unit, e.g. "U (m/s)"
+    bool log = false;
+    std::optional<double> lo, hi;  // fixed limits; otherwise from the data
+    std::vector<std::pair<double, std::string>> categories;  // categorical tick labels
+};
+
+struct Figure {
+    std::string name;     // file stem and SVG id prefix: [a-z0-9_-]
+    std::string title;
+    std::string caption;  // one sentence under the figure in the report
+    Axis x, y;
+    std::vector<Series> series;
+};
+
+// Okabe & Ito (2008) colour-blind-safe palette, with dash patterns and markers so figures also
+// read in greyscale.
+const char* style_colour(int style);
+const char* style_dash(int style);     // SVG stroke-dasharray ("" = solid)
+int style_gnuplot_dashtype(int style);  // gnuplot dt
+int style_gnuplot_pointtype(int style, bool open);
+
+}  // namespace granlub::postproc

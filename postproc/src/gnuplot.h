@@ -1,0 +1,16 @@
+// Plot sources for the user: each Figure as <name>.dat (one gnuplot `index` block per series)
+// plus <name>.gp, a plain gnuplot script that re-renders it (to <name>.gnuplot.svg by default).
+// The report never runs gnuplot; these are for restyling.
+#pragma once
+#include <filesystem>
+
+#include "figure.h"
+
+namespace granlub::postproc {
+
+std::string gnuplot_data(const Figure& f);
+std::string gnuplot_script(const Figure& f);
+// Writes both files (atomically) into dir.
+void write_gnuplot(const Figure& f, const std::filesystem::path& dir);
+
+}  // namespace granlub::postproc

@@ -1,0 +1,272 @@
+#include "report_builder.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "granlub/results.h"
+#include "text.h"
+
+namespace granlub::postproc {
+namespace {
+
+std::string value_pm(const std::optional<double>& v, const std::optional<double>& se, int digits = 4) {
+    if (!v) return "";
+    if (se && *se > 0) return fmt::format("{} ± {}", num(*v, digits), num(*se, 2));
+    return num(*v, digits);
+}
+
+std::string state_class(ResultState s) {
+    switch (s) {
+        case ResultState::Complete: return "ok";
+        case ResultState::Missing: return "missing";
+        case ResultState::Stale: return "stale";
+        case ResultState::Corrupt: return "corrupt";
+    }
+    return "";
+}
+
+std::string list_text(const std::vector<std::string>& v) {
+    std::string s;
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
+    return s;
+}
+
+const MetricRow* find_row(const std::vector<MetricRow>& rows, const std::string& kind, const std::string& point,
+                          const std::string& quantity, const std::string& a, const std::string& b) {
+    for (const auto& r : rows)
+        if (r.kind == kind && r.point == point && r.quantity == quantity && r.solver_a == a && r.solver_b == b) return &r;
+    return nullptr;
+}
+
+const char* short_label(const std::string& key) {
+    for (const auto& q : kScalarQuantities)
+        if (key == q.key) return q.short_label;
+    for (const auto& q : kProfileQuantities)
+        if (key == q.key) return q.short_label;
+    return "";
+}
+
+void difference_tables(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
+    for (const OperatingPoint* p : col.points) {
+        const auto runs = col.usable(p->id);
+        if (runs.size() < 2) continue;
+        rep.heading(fmt::format("Point {}", p->id), 3);
+        Table prof;
+        prof.header = {"solvers (a − b)"};
+        for (const auto& q : kProfileQuantities) prof.header.push_back(std::string(q.short_label) + ": RMS (max at y/H; noise)");
+        Table sc;
+        sc.header = {"solvers (a − b)"};
+        for (const auto& q : kScalarQuantities) sc.header.push_back(q.short_label);
+        for (std::size_t i = 0; i < runs.size(); ++i) {
+            for (std::size_t j = i + 1; j < runs.size(); ++j) {
+                const auto& a = runs[i]->solver;
+                const auto& b = runs[j]->solver;
+                const std::string pair = a + " − " + b;
+                std::vector<Cell> prow{{pair, ""}}, srow{{pair, ""}};
+                for (const auto& q : kProfileQuantities) {
+                    const MetricRow* r = find_row(metrics, "profile", p->id, q.key, a, b);
+                    if (!r) {
+                        prow.push_back({});
+                        continue;
+                    }
+                    std::string t = fmt::format("{} (max {} at {}", num(*r->rms, 3), num(*r->max, 3), num(*r->y_at_max, 2));
+                    t += r->noise_rms ? fmt::format("; noise {})", num(*r->noise_rms, 2)) : ")";
+                    prow.push_back({t, r->noise_rms && *r->rms > 2 * *r->noise_rms ? "significant" : ""});
+                }
+                for (const auto& q : kScalarQuantities) {
+                    const MetricRow* r = find_row(metrics, "scalar", p->id, q.key, a, b);
+                    if (!r) {
+                        srow.push_back({});
+                        continue;
+                    }
+                    std::string t = value_pm(r->difference, r->combined_stderr, 3);
+                    if (r->z) t += fmt::format(" (z = {:.1f})", *r->z);
+                    srow.push_back({t, r->significant() ? "significant" : ""});
+                }
+                prof.rows.push_back(std::move(prow));
+                sc.rows.push_back(std::move(srow));
+            }
+        }
+        rep.text("Normalised profiles: RMS and max |a − b| over the y/H range both solvers cover; noise = RMS of the "
+                 "combined standard error (bold: RMS > 2 × noise).");
+        rep.table(std::move(prof));
+        rep.text("Scalars: a − b ± combined standard error, stresses in Pa (bold: |z| > 2).");
+        rep.table(std::move(sc));
+    }
+}
+
+}  // namespace
+
+std::string state_name(ResultState s) {
+    switch (s) {
+        case ResultState::Complete: return "complete";
+        case ResultState::Missing: return "missing";
+        case ResultState::Stale: return "stale";
+        case ResultState::Corrupt: return "corrupt";
+    }
+    return "";
+}
+
+Table status_table(const Collection& col) {
+    Table t;
+    t.header = {"solver"};
+    for (const OperatingPoint* p : col.points) t.header.push_back(p->id);
+    for (const auto& s : col.solvers) {
+        std::vector<Cell> row{{s, ""}};
+        for (const OperatingPoint* p : col.points) {
+            const auto st = col.run(s, p->id).status.state;
+            row.push_back({state_name(st), state_class(st)});
+        }
+        t.rows.push_back(std::move(row));
+    }
+    for (const auto& s : col.missing_solvers) {
+        std::vector<Cell> row{{s, ""}};
+        for (std::size_t i = 0; i < col.points.size(); ++i) row.push_back({"no results", "missing"});
+        t.rows.push_back(std::move(row));
+    }
+    return t;
+}
+
+Table key_numbers(const Collection& col) {
+    Table t;
+    t.header = {"solver", "point", "ν̄/ν_max", "σ_yy bottom (Pa)", "τ_xy bottom (Pa)", "τ_xy top (Pa)", "slip bottom / U",
+                "slip top / U", "wall clock (s)"};
+    for (const OperatingPoint* p : col.points) {
+        for (const auto& s : col.solvers) {
+            const Run& r = col.run(s, p->id);
+            if (!r.usable()) continue;
+            std::vector<Cell> row{{s, ""}, {p->id, ""}};
+            for (const char* q : {"nu_bar_over_numax", "normal_stress_bottom", "shear_stress_bottom", "shear_stress_top",
+                                  "slip_bottom_over_U", "slip_top_over_U"})
+                row.push_back({value_pm(r.scalar(q), r.scalar_stderr(q)), ""});
+            const auto& run = r.summary->run;
+            row.push_back({run.is_object() && run.contains("wall_clock_s") && run["wall_clock_s"].is_number()
+                               ? num(run["wall_clock_s"].get<double>(), 3)
+                               : "",
+                           ""});
+            t.rows.push_back(std::move(row));
+        }
+    }
+    return t;
+}
+
+Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
+                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files) {
+    Report rep;
+    rep.title = fmt::format("Cross-code comparison: {}", c.title.empty() ? c.name : c.title);
+    std::vector<std::string> with_results, without;
+    for (const auto& s : col.solvers) (col.any_usable(s) ? with_results : without).push_back(s);
+    for (const auto& s : col.missing_solvers) without.push_back(s);
+    rep.text(fmt::format("Case {} ({}), {} operating point(s). Written {} by granlub {}.", c.name, c.file.string(),
+                         col.points.size(), utc_now(), version()));
+    rep.text(fmt::format("Solvers compared: {}.", with_results.empty() ? "none" : list_text(with_results)));
+    if (!without.empty()) rep.text(fmt::format("Missing solvers (no usable results): {}.", list_text(without)));
+
+    rep.heading("Results found");
+    rep.table(status_table(col));
+    Table problems;
+    problems.header = {"solver", "point", "state", "why (left out of the comparison)"};
+    for (const auto& [key, r] : col.runs)
+        if (r.status.state == ResultState::Stale || r.status.state == ResultState::Corrupt)
+            problems.rows.push_back({{r.solver, ""}, {r.point->id, ""}, {state_name(r.status.state), state_class(r.status.state)},
+                                     {r.status.reason, ""}});
+    if (!problems.rows.empty()) {
+        rep.text("Stale results were computed for other inputs (rerun the solver); corrupt ones cannot be read. "
+                 "Neither is compared:");
+        rep.table(std::move(problems));
+    }
+    rep.heading("Key numbers", 3);
+    rep.table(key_numbers(col));
+
+    rep.heading("How to read this report");
+    rep.text("Geometry: y/H = 0 is the moving wall (speed U), y/H = 1 the stationary wall. Profiles are "
+             "dimensionless: u/U, ν/ν_max with each model's own ν_max taken from its summary (the automaton "
+             "reports lattice occupancy with ν_max = 1), and T/U². Shaded bands and error bars are ±1 standard "
+             "error of the statistical solvers (particle solvers, automaton); the continuum solver is deterministic "
+             "and has none.");
+    rep.text("Wall stresses are shown against U on log–log axes with the power law σ = c Uⁿ fitted per solver over "
+             "the points that differ only in speed: rapid (Bagnold) flow at fixed solid fraction gives n = 2, "
+             "quasi-static flow n → 0. A difference between two solvers is significant when it exceeds twice the "
+             "combined standard error (|z| > 2, shown bold); between deterministic results every difference is a "
+             "model difference.");
+
+    rep.heading("Profiles across the gap");
+    for (const OperatingPoint* p : col.points) {
+        const auto it = figs.profiles.find(p->id);
+        if (it == figs.profiles.end()) continue;
+        rep.heading(fmt::format("Point {}", p->id), 3);
+        rep.figures(it->second);
+    }
+
+    rep.heading("Wall stresses against speed");
+    rep.figures(figs.stress);
+    Table ex;
+    ex.header = {"solver", "points"};
+    for (const char* q : kStressOutputs) ex.header.push_back(std::string("n, ") + short_label(q));
+    for (const auto& group : speed_groups(col.points)) {
+        const std::string g = group.label.empty() ? "all" : group.label;
+        for (const auto& s : col.solvers) {
+            std::vector<Cell> row{{s, ""}, {g, ""}};
+            bool any = false;
+            for (const char* q : kStressOutputs) {
+                const MetricRow* r = find_row(metrics, "exponent", g, q, s, "");
+                any = any || r;
+                row.push_back({r ? fmt::format("{} ({} speeds)", value_pm(r->a, r->a_stderr, 3), *r->fit_points) : "", ""});
+            }
+            if (any) ex.rows.push_back(std::move(row));
+        }
+    }
+    if (ex.rows.empty())
+        rep.text("No stress–speed exponent: it needs at least two speeds with results from the same solver.");
+    else
+        rep.table(std::move(ex));
+
+    rep.heading("Slip against wall roughness");
+    rep.figures(figs.slip);
+    rep.heading("Mean solid fraction");
+    rep.figures(figs.solid_fraction);
+
+    rep.heading("Differences between solvers");
+    if (std::count_if(col.points.begin(), col.points.end(), [&](const OperatingPoint* p) { return col.usable(p->id).size() >= 2; }) == 0)
+        rep.text("No point has results from two solvers: nothing to compare yet.");
+    rep.text("Every number is also in metrics.csv (one row per pair, point and quantity).");
+    difference_tables(rep, col, metrics);
+
+    rep.heading("Provenance of every run");
+    Table prov;
+    prov.header = {"solver", "point", "granlub", "written (UTC)", "seed", "inputs hash", "case hash", "run", "settings"};
+    for (const OperatingPoint* p : col.points)
+        for (const auto& s : col.solvers) {
+            const Run& r = col.run(s, p->id);
+            if (!r.usable()) continue;
+            const Provenance& pv = r.summary->provenance;
+            prov.rows.push_back({{s, ""},
+                                 {p->id, ""},
+                                 {pv.version, ""},
+                                 {pv.utc_time, ""},
+                                 {pv.seed ? std::to_string(*pv.seed) : "", ""},
+                                 {pv.inputs_hash, "code"},
+                                 {pv.case_hash, "code"},
+                                 {r.summary->run.dump(), "code"},
+                                 {pv.settings.dump(), "code"}});
+        }
+    rep.table(std::move(prov));
+
+    rep.heading("Files");
+    std::vector<std::pair<std::string, std::string>> files = {
+        {"metrics.csv: every metric, one row per pair, point and quantity", "metrics.csv"},
+        {"report.md: this report in Markdown", "report.md"},
+        {"plots/: every figure as SVG, with its data (.dat) and gnuplot script (.gp)", "plots/"}};
+    for (const auto& f : paraview_files)
+        files.emplace_back(fmt::format("paraview/{}: profiles of every solver, one block per solver (ParaView)",
+                                       f.filename().string()),
+                           "paraview/" + f.filename().string());
+    rep.links(std::move(files));
+
+    rep.heading("The case");
+    rep.pre(describe(c));
+    return rep;
+}
+
+}  // namespace granlub::postproc

@@ -1,0 +1,31 @@
+// What the report says, in order: what was found, the figures, the metric tables, provenance of
+// every run and the case itself.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "collect.h"
+#include "metrics.h"
+#include "report.h"
+
+namespace granlub::postproc {
+
+struct ReportFigures {
+    std::map<std::string, std::vector<FigureRef>> profiles;  // by point id
+    std::vector<FigureRef> stress, slip, solid_fraction;
+};
+
+Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
+                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files);
+
+// Key numbers per solver and point (nu_bar/nu_max, wall stresses, slip/U, wall clock); used by
+// the report and by summary_table().
+Table key_numbers(const Collection& col);
+// Result state per solver (rows, missing solvers included) and point (columns).
+Table status_table(const Collection& col);
+
+std::string state_name(ResultState s);
+
+}  // namespace granlub::postproc

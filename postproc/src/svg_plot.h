@@ -1,0 +1,22 @@
+// Renders a Figure as a standalone SVG document (valid XML, no external resources), sized for a
+// paper figure: 540 x 380 px, 13 px text.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "figure.h"
+
+namespace granlub::postproc {
+
+std::string render_svg(const Figure& f);
+
+// Tick positions and labels for an axis from lo to hi ("nice" 1-2-5 steps, or decades on log
+// axes). Exposed for the tests.
+struct Tick {
+    double value;
+    std::string label;  // empty: minor tick
+};
+std::vector<Tick> linear_ticks(double lo, double hi);
+std::vector<Tick> log_ticks(double lo, double hi);
+
+}  // namespace granlub::postproc
