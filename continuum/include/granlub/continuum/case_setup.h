@@ -1,0 +1,32 @@
+// From a resolved case to the dimensionless problem of one operating point, and from its
+// solution back to the result files (dimensional SI in summary.json, dimensionless profile.csv).
+#pragma once
+#include <memory>
+#include <string>
+
+#include "granlub/case.h"
+#include "granlub/continuum/problem.h"
+#include "granlub/sweep.h"
+
+namespace granlub::continuum {
+
+enum class Method { FiniteVolume, Shooting };
+
+// The [continuum] section, resolved once per case.
+struct Settings {
+    Method method = Method::FiniteVolume;
+    std::string g0_name, wall_name;
+    SolverSettings solver;
+    std::shared_ptr<const Closures> closures;
+    std::shared_ptr<const WallFamily> family;
+    double slip_dissipation = 0;  // f_t
+};
+
+// Throws CaseError naming the key for values the section spec cannot check alone.
+Settings settings_from_case(const Case& c);
+// Throws SolverError when the point cannot have a sheared steady state (e.g. R5 = 0).
+Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p);
+// Solves one point and fills profile.csv / summary.json contents.
+PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& p);
+
+}  // namespace granlub::continuum

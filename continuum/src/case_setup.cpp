@@ -1,0 +1,135 @@
+#include "granlub/continuum/case_setup.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "granlub/continuum/fv_solver.h"
+#include "granlub/continuum/shooting_solver.h"
+#include "granlub/error.h"
+
+namespace granlub::continuum {
+
+Settings settings_from_case(const Case& c) {
+    const Section& sec = c.section("continuum");
+    Settings s;
+    s.method = sec.string("method") == "shooting" ? Method::Shooting : Method::FiniteVolume;
+    s.g0_name = sec.string("g0");
+    s.wall_name = sec.string("wall_model");
+    s.solver.cells = static_cast<int>(sec.integer("cells"));
+    s.solver.tolerance = sec.real("tolerance");
+    s.solver.max_iterations = static_cast<int>(sec.integer("max_iterations"));
+    s.solver.max_continuation_steps = static_cast<int>(sec.integer("max_continuation_steps"));
+    Lun84Params lp;
+    lp.restitution = c.grains.restitution;
+    lp.alpha = sec.real("viscosity_alpha");
+    lp.dufour = sec.boolean("dufour");
+    try {
+        s.closures = std::make_shared<Closures>(lp, make_g0(s.g0_name, c.cell.max_solid_fraction));
+        s.family = make_wall_family(s.wall_name);
+    } catch (const CaseError&) {
+        throw;
+    } catch (const Error& e) {
+        sec.fail("g0", e.what());
+    }
+    s.slip_dissipation = sec.real("slip_dissipation");
+    return s;
+}
+
+namespace {
+// R_k at one wall: [continuum] r<k>_<side>, else r<k>, else the point's wall roughness.
+double roughness_factor(const Section& sec, const std::string& rk, const char* side, double wall_r) {
+    if (auto v = sec.maybe_real(rk + "_" + side)) return *v;
+    if (auto v = sec.maybe_real(rk)) return *v;
+    return wall_r;
+}
+}  // namespace
+
+Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
+    const Section& sec = c.section("continuum");
+    Problem q;
+    q.closures = s.closures;
+    q.Lambda = c.cell.gap / c.grains.diameter;
+    q.mode = p.control == Control::Load ? Mode::Load : Mode::Fill;
+    q.Pi = q.mode == Mode::Load ? c.grains.density * p.speed * p.speed / p.normal_stress : 0.0;
+    q.nu_mean = p.solid_fraction;
+    const auto wall = [&](const Wall& w, const char* side) {
+        WallBC bc;
+        bc.family = s.family;
+        bc.params.restitution = w.restitution;
+        bc.params.r5 = roughness_factor(sec, "r5", side, w.roughness);
+        bc.params.r6 = roughness_factor(sec, "r6", side, w.roughness);
+        bc.params.r7 = roughness_factor(sec, "r7", side, w.roughness);
+        bc.params.r8 = roughness_factor(sec, "r8", side, w.roughness);
+        bc.params.slip_dissipation = s.slip_dissipation;
+        if (!(bc.params.r5 > 0))
+            throw SolverError(fmt::format(
+                "R5 = 0 at the {} wall (roughness {}): a smooth wall exerts no traction, so the GKL model has no "
+                "sheared steady state (plug flow, T -> 0); set [continuum] r5_{} > 0 or use a rough wall",
+                side, w.roughness, side));
+        return bc;
+    };
+    q.bottom = wall(p.bottom, "bottom");
+    q.top = wall(p.top, "top");
+    if (q.mode == Mode::Fill && !(q.nu_mean < s.closures->cap()))
+        throw SolverError(fmt::format("solid_fraction = {} is not below the closures' limit {} (g0 = {}); "
+                                      "lower [operating] solid_fraction or raise [cell] max_solid_fraction",
+                                      q.nu_mean, s.closures->cap(), s.g0_name));
+    return q;
+}
+
+PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& p) {
+    const Problem q = problem_for(c, s, p);
+    const auto t0 = std::chrono::steady_clock::now();
+    Solution sol = s.method == Method::Shooting ? solve_shooting(q, s.solver) : solve_fv(q, s.solver);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const Observables o = observe(q, sol);
+
+    const double U = p.speed, rho = c.grains.density;
+    const double P = rho * U * U / sol.Pi;  // = normal_stress in Load mode
+    const double T_scale = P / rho;         // T = (P/rho) / f_p
+    const double tau_b = P * o.tau_bottom, tau_t = P * o.tau_top;
+
+    PointResult r;
+    std::vector<double> T_over_U2(sol.nodes());
+    for (std::size_t i = 0; i < sol.nodes(); ++i) T_over_U2[i] = 1.0 / (sol.Pi * s.closures->state(sol.nu[i]).fp.v);
+    r.profile.add("y_over_H", sol.y).add("u_over_U", sol.u).add("solid_fraction", sol.nu)
+        .add("temperature_over_U2", T_over_U2);
+
+    Summary& m = r.summary;
+    m = make_summary(c, p, "continuum");
+    m.set("normal_stress_bottom", P, "Pa").set("normal_stress_top", P, "Pa");
+    m.set("shear_stress_bottom", tau_b, "Pa").set("shear_stress_top", tau_t, "Pa");
+    m.set("slip_bottom", U * o.slip_bottom, "m/s").set("slip_top", U * o.slip_top, "m/s");
+    m.set("mean_solid_fraction", o.nu_mean, "").set("max_solid_fraction", s.closures->numax(), "");
+    m.set("solid_fraction_centre", o.nu_centre, "").set("solid_fraction_bottom", o.nu_bottom, "")
+        .set("solid_fraction_top", o.nu_top, "");
+    m.set("temperature_bottom", T_scale * o.T_bottom, "m^2/s^2").set("temperature_top", T_scale * o.T_top, "m^2/s^2")
+        .set("temperature_centre", T_scale * o.T_centre, "m^2/s^2");
+    m.set("stress_ratio", o.tau_bottom, "").set("pi_number", sol.Pi, "");
+    m.run["iterations"] = sol.iterations;
+    m.run["final_residual"] = sol.residual;
+    m.run["continuation_steps"] = sol.continuation_steps;
+    m.run["solve_time_s"] = secs;
+    m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
+    m.run["g0"] = s.g0_name;
+    m.run["wall_model"] = s.wall_name;
+    m.run["cells"] = s.solver.cells;
+    m.run["body_forces"] = "not modelled: GKL has p_yy uniform across the gap (S&T 2001 Eq. 6b)";
+    nlohmann::json warnings = nlohmann::json::array();
+    if (o.nu_max_node > s.closures->numax())
+        warnings.push_back(fmt::format("solid fraction {:.4f} exceeds nu_max = {} (g0 = {} has no nu_max limit)",
+                                       o.nu_max_node, s.closures->numax(), s.g0_name));
+    m.run["warnings"] = warnings;
+    for (const auto& [name, v] : m.outputs)
+        if (!std::isfinite(v.value))
+            throw SolverError(fmt::format("the solution has a non-finite {} (residual {:.3g}); try more cells", name,
+                                          sol.residual));
+
+    r.line = fmt::format("nu={:.4f} P={:.0f} Pa tau={:.1f} Pa slip={:.3f}/{:.3f} m/s it={}", o.nu_mean, P, tau_b,
+                         U * o.slip_bottom, U * o.slip_top, sol.iterations);
+    return r;
+}
+
+}  // namespace granlub::continuum

@@ -1,0 +1,32 @@
+// The [continuum] case section: one line per key (type, default, range, unit, doc).
+#include "granlub/continuum/command.h"
+#include "granlub/continuum/g0/radial_distribution.h"
+#include "granlub/continuum/walls/wall_family.h"
+
+namespace granlub::continuum {
+
+SectionSpec section() {
+    SectionSpec s("continuum", "GKL continuum solver (Sawyer & Tichy 2001; closures of Lun et al. 1984)");
+    s.choice("method", "fv", {"fv", "shooting"},
+             "fv: finite volumes + Newton (default); shooting: GSL shooting cross-check (small gaps only)");
+    s.choice("g0", "ogawa", g0_names(), "radial distribution g0(nu) (guide §2.5); nu_max is [cell] max_solid_fraction");
+    s.choice("wall_model", "k", wall_names(), "wall-condition family for B5..B8: k (kinetic) or jj (Johnson-Jackson)");
+    s.real("viscosity_alpha", 1.0, Range::closed(0.0, 4.0), "",
+           "LSJC viscosity factor (2 + alpha)/3; 1 = original theory, 1.6 = MFiX");
+    s.boolean("dufour", true, "include the grad-nu heat-flux term of LSJC (sign uncertain, effect < 1e-4)");
+    s.real("slip_dissipation", 0.0, Range::unit(), "", "fraction f_t of slip work dissipated at the wall (R7 term)");
+    for (const char* r : {"r5", "r6", "r7", "r8"}) {
+        const std::string n(r);
+        s.real_optional(n, Range::unit(), "", "roughness factor " + n + " at both walls; default: the wall's roughness");
+        for (const char* side : {"bottom", "top"})
+            s.real_optional(n + "_" + side, Range::unit(), "", "roughness factor " + n + " at the " + side +
+                                                               " wall; default: " + n + ", else the wall's roughness");
+    }
+    s.integer("cells", 200, Range::at_least(100), "finite-volume cells across the gap (profile has cells + 1 rows)");
+    s.real("tolerance", 1e-10, Range::positive(), "", "Newton tolerance on the max-norm flux-balance residual");
+    s.integer("max_iterations", 50, Range::at_least(1), "Newton iterations per solve");
+    s.integer("max_continuation_steps", 200, Range::at_least(1), "continuation steps when the direct solve fails");
+    return s;
+}
+
+}  // namespace granlub::continuum
