@@ -1,0 +1,142 @@
+#include "synthetic.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "granlub/results.h"
+
+namespace granlub::test {
+
+SyntheticCase make_case(const std::string& name, const std::string& extra_toml) {
+    SyntheticCase s;
+    s.dir = std::filesystem::path(GRANLUB_BINARY_DIR) / "tests" / "postproc-tmp" / name;
+    std::filesystem::remove_all(s.dir);
+    std::filesystem::create_directories(s.dir);
+    std::ofstream(s.dir / "case.toml") << R"([case]
+name = "synthetic"
+title = "Synthetic results with known answers"
+
+[grains]
+diameter = 1.0e-3
+density = 2500.0
+restitution = 0.9
+
+[walls]
+restitution = 0.8
+roughness = 0.5
+
+[cell]
+gap = 5.0e-3
+length = 20.0e-3
+width = 0.0
+max_solid_fraction = 0.65
+
+[operating]
+speed = [1.0, 2.0, 4.0]
+control = "fill"
+solid_fraction = 0.52
+normal_stress = 1000.0
+)" << extra_toml;
+    s.c = load_case(s.dir, Schema::common());
+    s.o.results_root = s.dir / "results";
+    return s;
+}
+
+void write_solver(const SyntheticCase& s, const std::string& solver) {
+    for (const OperatingPoint& p : s.c.points) {
+        const double U = p.speed;
+        std::vector<double> y, u, nu, T, se;
+        Summary sum = make_summary(s.c, p, solver, solver == "continuum" ? std::nullopt : std::optional<std::uint64_t>(7));
+        if (solver == "continuum") {
+            for (int k = 0; k <= 40; ++k) y.push_back(k / 40.0);
+            for (double v : y) u.push_back(0.9 - 0.8 * v), nu.push_back(0.65 * (0.8 + 0.1 * v)), T.push_back(0.01);
+            sum.set("normal_stress_bottom", 1000 * U * U, "Pa").set("normal_stress_top", 900 * U * U, "Pa");
+            sum.set("shear_stress_bottom", 400 * U * U, "Pa").set("shear_stress_top", 400 * U * U, "Pa");
+            sum.set("slip_bottom", 0.1 * U, "m/s").set("slip_top", 0.1 * U, "m/s");
+            sum.set("mean_solid_fraction", 0.55, "").set("max_solid_fraction", 0.65, "");
+        } else if (solver == "dem") {
+            for (int k = 0; k < 20; ++k) y.push_back((k + 0.5) / 20.0);
+            for (double v : y)
+                u.push_back(0.95 - 0.8 * v), nu.push_back(0.65 * (0.8 + 0.1 * v)), T.push_back(0.012), se.push_back(0.01);
+            const double f = std::pow(U, 1.5);
+            sum.set("normal_stress_bottom", 1100 * f, "Pa", 0.05 * 1100 * f)
+                .set("normal_stress_top", 1000 * f, "Pa", 0.05 * 1000 * f);
+            sum.set("shear_stress_bottom", 450 * f, "Pa", 0.05 * 450 * f).set("shear_stress_top", 450 * f, "Pa", 0.05 * 450 * f);
+            sum.set("slip_bottom", 0.12 * U, "m/s", 0.01 * U).set("slip_top", 0.12 * U, "m/s", 0.01 * U);
+            sum.set("mean_solid_fraction", 0.56, "", 0.005).set("max_solid_fraction", 0.65, "");
+        } else {
+            for (int k = 0; k < 10; ++k) y.push_back((k + 0.5) / 10.0);
+            for (double v : y) u.push_back(0.9 - 0.8 * v), nu.push_back(0.8 + 0.1 * v), T.push_back(0.01);
+            sum.set("normal_stress_bottom", 900 * U * U, "Pa").set("normal_stress_top", 810 * U * U, "Pa");
+            sum.set("shear_stress_bottom", 360 * U * U, "Pa").set("shear_stress_top", 360 * U * U, "Pa");
+            sum.set("slip_bottom", 0.1 * U, "m/s").set("slip_top", 0.1 * U, "m/s");
+            sum.set("mean_solid_fraction", 0.85, "").set("max_solid_fraction", 1.0, "");
+        }
+        Profile prof;
+        prof.add("y_over_H", y).add("u_over_U", u).add("solid_fraction", nu).add("temperature_over_U2", T);
+        if (!se.empty()) {
+            prof.add("u_over_U_stderr", se).add("solid_fraction_stderr", se).add("temperature_over_U2_stderr", se);
+        }
+        sum.run = {{"steps", 1000}, {"wall_clock_s", 0.5}};
+        write_result(result_dir(s.o.results_root, solver, p.id), prof, sum);
+    }
+}
+
+std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + p.string());
+    std::ostringstream os;
+    os << in.rdbuf();
+    return os.str();
+}
+
+namespace {
+std::vector<std::string> split_csv(const std::string& line) {
+    std::vector<std::string> cells;
+    std::string cur;
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char ch = line[i];
+        if (quoted) {
+            if (ch == '"' && i + 1 < line.size() && line[i + 1] == '"') cur += '"', ++i;
+            else if (ch == '"') quoted = false;
+            else cur += ch;
+        } else if (ch == '"') {
+            quoted = true;
+        } else if (ch == ',') {
+            cells.push_back(cur), cur.clear();
+        } else {
+            cur += ch;
+        }
+    }
+    cells.push_back(cur);
+    return cells;
+}
+}  // namespace
+
+std::map<std::string, std::string> read_metrics_row(const std::filesystem::path& csv, const std::string& kind,
+                                                    const std::string& point, const std::string& quantity,
+                                                    const std::string& a, const std::string& b) {
+    std::istringstream in(slurp(csv));
+    std::string line;
+    std::vector<std::string> header;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        auto cells = split_csv(line);
+        if (header.empty()) {
+            header = cells;
+            continue;
+        }
+        if (cells.size() != header.size()) throw std::runtime_error("metrics.csv: ragged row: " + line);
+        std::map<std::string, std::string> row;
+        for (std::size_t i = 0; i < cells.size(); ++i) row[header[i]] = cells[i];
+        if (row["kind"] == kind && row["point"] == point && row["quantity"] == quantity && row["solver_a"] == a &&
+            row["solver_b"] == b)
+            return row;
+    }
+    return {};
+}
+
+}  // namespace granlub::test
