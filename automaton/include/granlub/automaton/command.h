@@ -1,0 +1,16 @@
+// `granlub automaton CASE [--point ID] [--seed N] [--vtk] [--full]`: the Jasti-Higgs lattice
+// cellular automaton on every operating point of a case (ca-model.md; automaton/README.md).
+#pragma once
+#include "granlub/case.h"
+#include "granlub/schema.h"
+#include "granlub/sweep.h"
+
+namespace granlub::automaton {
+
+// The [automaton] case section, one line per key.
+SectionSpec section();
+
+// Runs the selected points through run_sweep(); returns the exit code.
+int run(const Case& c, const RunOptions& o);
+
+}  // namespace granlub::automaton

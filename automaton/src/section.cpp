@@ -1,0 +1,56 @@
+// The [automaton] section: every switch of ca-model.md §2.6 with the spec's default.
+#include "granlub/automaton/command.h"
+
+namespace granlub::automaton {
+
+SectionSpec section() {
+    SectionSpec s("automaton", "lattice cellular automaton (Jasti & Higgs 2006; ca-model.md)");
+    s.choice("mode", "jh", {"jh", "vector"},
+             "rules: jh = JH06 as specified (scalar u_p); vector = momentum-consistent variant [ASSUMED]");
+    s.real_optional("fill", Range::open_closed(0, 1), "",
+                    "fraction of lattice cells holding a grain; default solid_fraction / max_solid_fraction [ASSUMED]");
+    s.integer("steps", 10000, Range::at_least(1), "time steps per replica (quick runs; JH06 used 10 000)");
+    s.integer("steps_full", 50000, Range::at_least(1), "time steps per replica with --full");
+    s.integer("t_avg_start", 2000, Range::at_least(0), "first step of the sampling window (a multiple of block)");
+    s.integer("block", 500, Range::at_least(1), "block length (steps) for the steady-state test and standard errors");
+    s.integer("sample_every", 1, Range::at_least(1), "sample the rows every this many steps");
+    s.integer("replicas", 4, Range::at_least(1), "independent replicas averaged (quick runs)");
+    s.integer("replicas_full", 16, Range::at_least(1), "independent replicas with --full");
+    s.integer("threads", 0, Range::at_least(0), "threads for the replicas; 0 = one per core (--threads overrides)");
+    s.integer("seed", 1, Range::at_least(0), "random seed (--seed overrides); same seed = same numbers");
+    s.real("s0_max", 0.1, Range::open_closed(0, 1), "", "initial u_p/U uniform on (0, s0_max] [ASSUMED]");
+    s.integer("tf_max", 50, Range::at_least(1), "slowest time factor; grains with u_p < U/tf_max are at rest [ASSUMED]");
+    s.choice("tf_rounding", "round", {"round", "ceil", "accumulate"},
+             "time factor from u_p: round(U/u_p), ceil(U/u_p), or a continuous progress counter [ASSUMED]");
+    s.choice("wall_speed", "sequential", {"sequential", "by_incidence"},
+             "wall speed law: Eq. 6 then Eq. 7, or Eq. 7 for normal / Eq. 6 for oblique impacts [ASSUMED]");
+    s.real_optional("p_drag", Range::unit(), "",
+                    "probability of the +x drag notch at the moving wall; default = bottom-wall roughness [ASSUMED]");
+    s.integer("pp_deflect", 90, Range::closed(45, 90), "mover deflection at a grain hit: 90 (billiard) or 45 degrees [RECON]");
+    s.choice("struck_dir", "line", {"line", "keep"},
+             "struck grain's new direction: along the line of centres, or unchanged [ASSUMED]");
+    s.real("pp_jitter", 22.5, Range::closed(0, 90), "deg", "vector mode: spread of the line of centres [ASSUMED]");
+    s.choice("vec_blocked", "deflect", {"deflect", "wait"},
+             "vector mode, grains not approaching: deflect the mover by 45 degrees, or end its update [ASSUMED]");
+    s.real("steady_tol_u", 0.02, Range::positive(), "", "block test: max |change of u/U| between consecutive blocks");
+    s.real("steady_tol_nu", 0.02, Range::positive(), "", "block test: max |change of occupancy| between blocks");
+    s.integer("timeseries_every", 10, Range::at_least(0), "write <u_p>, u(row 0), u(top row) every this many steps (0 = none)");
+    s.integer("vtk_every", 100, Range::at_least(1), "lattice snapshot interval (steps) with --vtk");
+    s.validate = [](const Section& sec) {
+        const auto deflect = sec.integer("pp_deflect");
+        if (deflect != 45 && deflect != 90) sec.fail("pp_deflect", "allowed: 45 or 90");
+        const auto block = sec.integer("block");
+        if (sec.integer("t_avg_start") % block != 0)
+            sec.fail("t_avg_start", "must be a multiple of block = " + std::to_string(block));
+        for (const char* steps : {"steps", "steps_full"})
+            if (sec.integer(steps) < sec.integer("t_avg_start") + block)
+                sec.fail(steps, "must be at least t_avg_start + block = " +
+                                    std::to_string(sec.integer("t_avg_start") + block) +
+                                    " so that the sampling window holds a block");
+        if (sec.integer("sample_every") > block)
+            sec.fail("sample_every", "must not exceed block = " + std::to_string(block));
+    };
+    return s;
+}
+
+}  // namespace granlub::automaton
