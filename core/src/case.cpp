@@ -85,6 +85,7 @@ std::string node_text(const toml::node& n) {
     std::ostringstream os;
     if (auto* s = n.as_string()) os << '"' << s->get() << '"';
     else if (n.is_table()) os << "(a table)";
+    else if (auto* f = n.as_floating_point()) os << fmt::format("{}", f->get());  // shortest round-trip
     else n.visit([&](const auto& v) { os << v; });
     std::string t = os.str();
     if (t.size() > 60) t = t.substr(0, 57) + "...";

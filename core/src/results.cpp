@@ -96,8 +96,9 @@ Summary make_summary(const Case& c, const OperatingPoint& p, const std::string& 
     s.provenance.settings = nlohmann::json::object();
     auto it = c.sections.find(solver);
     if (it != c.sections.end()) {
-        for (const auto& [k, v] : it->second.values()) {
-            std::visit([&](const auto& x) { s.provenance.settings[k] = x; }, v);
+        for (const auto& kv : it->second.values()) {
+            const std::string& key = kv.first;
+            std::visit([&](const auto& x) { s.provenance.settings[key] = x; }, kv.second);
         }
     }
     return s;

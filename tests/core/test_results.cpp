@@ -1,0 +1,172 @@
+// Result files: round trip, refusal of non-finite data, atomicity, and the resume test.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <boost/test/unit_test.hpp>
+
+#include "case_text.h"
+#include "granlub/case.h"
+#include "granlub/error.h"
+#include "granlub/results.h"
+
+using namespace granlub;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TmpDir {
+    fs::path path;
+    explicit TmpDir(const std::string& name) : path(fs::temp_directory_path() / ("granlub_test_" + name)) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TmpDir() { fs::remove_all(path); }
+};
+
+Case test_case() { return parse_case(granlub::test::kValidCase, "t.toml", Schema::common()); }
+
+Profile small_profile() {
+    Profile p;
+    p.add("y_over_H", {0.0, 0.5, 1.0})
+        .add("u_over_U", {0.9, 0.5, 0.1})
+        .add("solid_fraction", {0.50, 0.55, 0.50})
+        .add("temperature_over_U2", {0.02, 0.015, 0.02})
+        .add("u_over_U_stderr", {0.01, 0.01, 0.01});
+    return p;
+}
+
+Summary small_summary(const Case& c, std::uint64_t seed = 7) {
+    Summary s = make_summary(c, c.points[0], "toy", seed);
+    s.set("normal_stress_bottom", 1000.0, "Pa", 12.5)
+        .set("normal_stress_top", 990.0, "Pa", 13.0)
+        .set("shear_stress_bottom", 300.0, "Pa")
+        .set("shear_stress_top", 301.0, "Pa")
+        .set("slip_bottom", 0.1, "m/s")
+        .set("slip_top", 0.1, "m/s")
+        .set("mean_solid_fraction", 0.52, "")
+        .set("max_solid_fraction", 0.65, "");
+    s.run = {{"steps", 1000}};
+    return s;
+}
+
+bool tmp_files_left(const fs::path& dir) {
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().filename().string().find(".tmp.") != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(round_trip) {
+    TmpDir t("roundtrip");
+    const Case c = test_case();
+    write_result(t.path, small_profile(), small_summary(c));
+    const Profile p = read_profile(t.path / "profile.csv");
+    BOOST_TEST(p.names == small_profile().names, boost::test_tools::per_element());
+    BOOST_TEST(p.column("u_over_U") == small_profile().column("u_over_U"), boost::test_tools::per_element());
+    const Summary s = read_summary(t.path / "summary.json");
+    BOOST_TEST(s.solver == "toy");
+    BOOST_TEST(s.point == "U1.0");
+    BOOST_TEST(s.value("normal_stress_bottom") == 1000.0);
+    BOOST_TEST(*s.outputs.at("normal_stress_bottom").stderr_ == 12.5);
+    BOOST_TEST(!s.outputs.at("shear_stress_bottom").stderr_.has_value());
+    BOOST_TEST(s.provenance.seed.value() == 7u);
+    BOOST_TEST(s.provenance.case_hash == c.file_hash);
+    BOOST_TEST(s.provenance.inputs_hash == c.inputs_hash("toy"));
+    BOOST_TEST(!s.provenance.version.empty());
+    BOOST_TEST(s.provenance.utc_time.size() == 20u);  // 2026-11-21T12:00:00Z
+    BOOST_TEST(s.inputs.at("speed").get<double>() == 1.0);
+    BOOST_TEST(s.run.at("steps").get<int>() == 1000);
+}
+
+BOOST_AUTO_TEST_CASE(non_finite_values_write_nothing) {
+    TmpDir t("nan");
+    const Case c = test_case();
+    Profile p = small_profile();
+    p.columns[1][1] = std::nan("");
+    BOOST_CHECK_THROW(write_result(t.path, p, small_summary(c)), SolverError);
+    Summary s = small_summary(c);
+    s.set("slip_top", INFINITY, "m/s");
+    BOOST_CHECK_THROW(write_result(t.path, small_profile(), s), SolverError);
+    BOOST_TEST(fs::is_empty(t.path));
+}
+
+BOOST_AUTO_TEST_CASE(incomplete_outputs_are_refused) {
+    TmpDir t("incomplete");
+    const Case c = test_case();
+    Summary s = small_summary(c);
+    s.outputs.erase("slip_top");
+    BOOST_CHECK_THROW(write_result(t.path, small_profile(), s), Error);
+    Profile p;
+    p.add("y_over_H", {0, 1}).add("u_over_U", {1, 0});
+    BOOST_CHECK_THROW(write_result(t.path, p, small_summary(c)), Error);
+    BOOST_TEST(fs::is_empty(t.path));
+}
+
+BOOST_AUTO_TEST_CASE(failure_mid_write_leaves_nothing_complete_looking) {
+    TmpDir t("midwrite");
+    const Case c = test_case();
+    const std::string hash = c.inputs_hash("toy");
+    write_result(t.path, small_profile(), small_summary(c));
+    BOOST_TEST((result_status(t.path, hash).state == ResultState::Complete));
+    // Make the second file impossible to put in place (a non-empty directory where summary.json
+    // goes): the profile is rewritten, the summary rename fails.
+    fs::remove(t.path / "summary.json");
+    fs::create_directories(t.path / "summary.json" / "blocker");
+    BOOST_CHECK_THROW(write_result(t.path, small_profile(), small_summary(c)), Error);
+    BOOST_TEST((result_status(t.path, hash).state != ResultState::Complete));
+    BOOST_TEST(!tmp_files_left(t.path));
+    // A failed write of a single file leaves neither the target nor a temp file.
+    BOOST_CHECK_THROW(write_file_atomic(t.path / "summary.json", "x"), Error);
+    BOOST_TEST(!tmp_files_left(t.path));
+}
+
+BOOST_AUTO_TEST_CASE(atomic_write_replaces_whole_file) {
+    TmpDir t("atomic");
+    write_file_atomic(t.path / "a.txt", "first version, long content\n");
+    write_file_atomic(t.path / "a.txt", "second\n");
+    std::ifstream in(t.path / "a.txt");
+    std::string all((std::istreambuf_iterator<char>(in)), {});
+    BOOST_TEST(all == "second\n");
+    BOOST_TEST(!tmp_files_left(t.path));
+}
+
+BOOST_AUTO_TEST_CASE(resume_detection) {
+    TmpDir t("resume");
+    const Case c = test_case();
+    const std::string hash = c.inputs_hash("toy");
+    BOOST_TEST((result_status(t.path, hash).state == ResultState::Missing));
+    write_result(t.path, small_profile(), small_summary(c));
+    BOOST_TEST((result_status(t.path, hash).state == ResultState::Complete));
+    // A changed case makes the result stale.
+    const Case changed =
+        parse_case(granlub::test::with("density = 2500.0", "density = 2600.0"), "t.toml", Schema::common());
+    const auto stale = result_status(t.path, changed.inputs_hash("toy"));
+    BOOST_TEST((stale.state == ResultState::Stale));
+    BOOST_TEST(stale.reason.find("computed for inputs") != std::string::npos);
+    // Truncated JSON, a broken profile or a missing profile are corrupt, not complete.
+    { std::ofstream(t.path / "summary.json") << "{\"format\": \"granlub-summary-1\", "; }
+    BOOST_TEST((result_status(t.path, hash).state == ResultState::Corrupt));
+    write_result(t.path, small_profile(), small_summary(c));
+    { std::ofstream(t.path / "profile.csv") << "y_over_H,u_over_U\n0,abc\n"; }
+    const auto bad = result_status(t.path, hash);
+    BOOST_TEST((bad.state == ResultState::Corrupt));
+    BOOST_TEST(bad.reason.find("'abc' is not a number") != std::string::npos, bad.reason);
+    fs::remove(t.path / "profile.csv");
+    BOOST_TEST((result_status(t.path, hash).state == ResultState::Corrupt));
+}
+
+BOOST_AUTO_TEST_CASE(malformed_files_give_clear_errors) {
+    BOOST_CHECK_EXCEPTION(parse_profile_csv("y_over_H,u_over_U,solid_fraction\n0,1,0.5\n1,0,0.5\n", "p.csv"), Error,
+                          [](const Error& e) {
+                              return std::string(e.what()).find("missing required column 'temperature_over_U2'") !=
+                                     std::string::npos;
+                          });
+    BOOST_CHECK_EXCEPTION(
+        parse_profile_csv("y_over_H,u_over_U,solid_fraction,temperature_over_U2\n0,1,0.5\n", "p.csv"), Error,
+        [](const Error& e) { return std::string(e.what()).find("p.csv:2: 3 values, the header has 4") != std::string::npos; });
+    BOOST_CHECK_EXCEPTION(summary_from_json(nlohmann::json{{"format", "other"}}, "s.json"), Error, [](const Error& e) {
+        return std::string(e.what()).find("not a granlub summary") != std::string::npos;
+    });
+}

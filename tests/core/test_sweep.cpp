@@ -1,0 +1,69 @@
+// The sweep driver every solver uses: skip complete points, recompute stale or forced ones,
+// report failures per point without writing anything for them.
+#include <filesystem>
+
+#include <boost/test/unit_test.hpp>
+
+#include "case_text.h"
+#include "granlub/error.h"
+#include "granlub/sweep.h"
+
+using namespace granlub;
+namespace fs = std::filesystem;
+
+namespace {
+
+PointResult toy_result(const Case& c, const OperatingPoint& p) {
+    PointResult r;
+    r.profile.add("y_over_H", {0, 1}).add("u_over_U", {1, 0}).add("solid_fraction", {0.5, 0.5}).add(
+        "temperature_over_U2", {0.01, 0.01});
+    r.summary = make_summary(c, p, "toy");
+    for (const char* name : kStandardOutputs) r.summary.set(name, p.speed, "");
+    r.line = "ok";
+    return r;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(skip_force_stale_and_failures) {
+    const fs::path root = fs::temp_directory_path() / "granlub_test_sweep";
+    fs::remove_all(root);
+    const Case c = parse_case(granlub::test::kValidCase, "t.toml", Schema::common());
+    RunOptions o;
+    o.results_root = root;
+    int calls = 0;
+    auto solve = [&](const OperatingPoint& p, const fs::path& dir) {
+        ++calls;
+        BOOST_TEST(fs::is_directory(dir));
+        return toy_result(c, p);
+    };
+    BOOST_TEST(run_sweep(c, "toy", o, solve) == 0);
+    BOOST_TEST(calls == 2);
+    BOOST_TEST(run_sweep(c, "toy", o, solve) == 0);
+    BOOST_TEST(calls == 2);  // both complete: skipped
+    o.force = true;
+    o.point = "U2.0";
+    BOOST_TEST(run_sweep(c, "toy", o, solve) == 0);
+    BOOST_TEST(calls == 3);  // forced, one point
+    o = RunOptions{};
+    o.results_root = root;
+    const Case changed =
+        parse_case(granlub::test::with("density = 2500.0", "density = 2600.0"), "t.toml", Schema::common());
+    auto solve_changed = [&](const OperatingPoint& p, const fs::path&) {
+        ++calls;
+        return toy_result(changed, p);
+    };
+    BOOST_TEST(run_sweep(changed, "toy", o, solve_changed) == 0);
+    BOOST_TEST(calls == 5);  // stale: both recomputed
+
+    // One point fails: the sweep goes on, returns 1, and leaves that point without a result.
+    fs::remove_all(root);
+    auto flaky = [&](const OperatingPoint& p, const fs::path&) -> PointResult {
+        if (p.id == "U1.0") throw SolverError("U1.0: no convergence (residual 1e-3); try more cells");
+        return toy_result(c, p);
+    };
+    BOOST_TEST(run_sweep(c, "toy", o, flaky) == 1);
+    BOOST_TEST(!fs::exists(root / "toy" / "U1.0" / "summary.json"));
+    BOOST_TEST(fs::exists(root / "toy" / "U2.0" / "summary.json"));
+    fs::remove_all(root);
+}
