@@ -30,6 +30,19 @@ std::string with_group(const std::string& solver, const std::string& group) {
     return group.empty() ? solver : fmt::format("{}, {}", solver, group);
 }
 
+void sort_by_x(Series& s) {
+    std::vector<std::size_t> idx(s.x.size());
+    for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+    std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return s.x[a] < s.x[b]; });
+    Series t = s;
+    for (std::size_t i = 0; i < idx.size(); ++i) {
+        t.x[i] = s.x[idx[i]];
+        t.y[i] = s.y[idx[i]];
+        if (!s.err.empty()) t.err[i] = s.err[idx[i]];
+    }
+    s = std::move(t);
+}
+
 }  // namespace
 
 int solver_style(const Collection& col, const std::string& solver) {
@@ -137,27 +150,37 @@ std::vector<Figure> stress_figures(const Collection& col) {
 
 std::vector<Figure> slip_figures(const Collection& col) {
     std::vector<Figure> figs;
-    const auto groups = roughness_groups(col.points);
     for (const bool bottom : {true, false}) {
+        const auto R = [bottom](const OperatingPoint& p) { return bottom ? p.bottom.roughness : p.top.roughness; };
+        // Against roughness when the case sweeps it; otherwise (one roughness) against U, which
+        // is then the only thing that varies.
+        const bool swept = std::any_of(col.points.begin(), col.points.end(),
+                                       [&](const OperatingPoint* p) { return R(*p) != R(*col.points.front()); });
+        const auto groups = swept ? roughness_groups(col.points) : speed_groups(col.points);
         const std::string q = bottom ? "slip_bottom_over_U" : "slip_top_over_U";
+        const std::string wall = bottom ? "moving wall" : "stationary wall";
         Figure f;
         f.name = bottom ? "slip_bottom" : "slip_top";
-        f.title = bottom ? "Slip at the moving wall" : "Slip at the stationary wall";
-        f.caption = bottom ? "Slip (U − u(0)) / U against the moving wall's roughness R; bars ±1 standard error."
-                           : "Slip u(H) / U against the stationary wall's roughness R; bars ±1 standard error.";
-        f.x.label = bottom ? "roughness R of the moving wall" : "roughness R of the stationary wall";
-        f.y.label = bottom ? "slip / U at the moving wall" : "slip / U at the stationary wall";
+        f.title = "Slip at the " + wall;
+        f.caption = (bottom ? "Slip (U − u(0)) / U" : "Slip u(H) / U") +
+                    (swept ? std::string(" against the ") + wall + "'s roughness R"
+                           : fmt::format(" against U (the case has one roughness, R = {})",
+                                         col.points.empty() ? std::string("?") : num(R(*col.points.front())))) +
+                    "; bars ±1 standard error.";
+        f.x.label = swept ? "roughness R of the " + wall : std::string("wall speed U (m/s)");
+        f.y.label = "slip / U at the " + wall;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
                 Series pts;
                 for (const OperatingPoint* p : groups[g].points) {
                     const Run& r = col.run(solver, p->id);
                     if (!r.usable()) continue;
-                    pts.x.push_back(bottom ? p->bottom.roughness : p->top.roughness);
+                    pts.x.push_back(swept ? R(*p) : p->speed);
                     pts.y.push_back(*r.scalar(q));
                     pts.err.push_back(r.scalar_stderr(q).value_or(0.0));
                 }
                 if (pts.x.empty()) continue;
+                sort_by_x(pts);
                 pts.label = with_group(solver, groups[g].label);
                 pts.style = solver_style(col, solver);
                 pts.mark = Mark::Points;

@@ -19,7 +19,7 @@ std::vector<Figure> profile_figures(const Collection& col, std::size_t point_ind
 // Wall normal and shear stress against U on log-log axes, one figure per stress output, with the
 // fitted power law per solver and speed group.
 std::vector<Figure> stress_figures(const Collection& col);
-// Slip / U at each wall against that wall's roughness.
+// Slip / U at each wall against that wall's roughness (against U when the case has one roughness).
 std::vector<Figure> slip_figures(const Collection& col);
 // Mean solid fraction / nu_max per solver and point (and the fill target).
 Figure solid_fraction_figure(const Collection& col, double case_nu_max);

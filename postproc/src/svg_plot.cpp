@@ -71,9 +71,12 @@ Range1 axis_range(const Axis& a, const std::vector<Series>& series, bool is_x) {
             const double d = lo == 0 ? 1 : std::abs(lo) * 0.1;
             lo -= d, hi += d;
         }
+        // Snap to the enclosing ticks, then leave a small margin so no marker sits on the frame.
         const double step = nice_step(hi - lo, 5);
-        if (!a.lo) lo = std::floor(lo / step + 1e-9) * step;
-        if (!a.hi) hi = std::ceil(hi / step - 1e-9) * step;
+        const double slo = a.lo ? lo : std::floor(lo / step + 1e-9) * step;
+        const double shi = a.hi ? hi : std::ceil(hi / step - 1e-9) * step;
+        lo = a.lo ? lo : slo - 0.03 * (shi - slo);
+        hi = a.hi ? hi : shi + 0.03 * (shi - slo);
     }
     r.lo = lo;
     r.hi = hi;
@@ -124,6 +127,12 @@ std::string stroke(const Series& s) {
                                 s.dashed ? 1.4 : 1.9);
     if (*dash) a += fmt::format(" stroke-dasharray=\"{}\"", dash);
     return a;
+}
+
+std::size_t utf8_length(const std::string& s) {
+    std::size_t n = 0;
+    for (unsigned char ch : s) n += (ch & 0xC0) != 0x80;
+    return n;
 }
 
 bool finite_point(const Series& s, std::size_t i, const Mapper& m) {
@@ -265,9 +274,9 @@ std::string render_svg(const Figure& f) {
     std::vector<const Series*> entries;
     std::size_t longest = 0;
     for (const auto& s : f.series)
-        if (!s.label.empty()) entries.push_back(&s), longest = std::max(longest, s.label.size());
+        if (!s.label.empty()) entries.push_back(&s), longest = std::max(longest, utf8_length(s.label));
     if (!entries.empty()) {
-        const double lw = 40 + 6.9 * static_cast<double>(longest), lh = 8 + 18 * static_cast<double>(entries.size());
+        const double lw = 44 + 7.6 * static_cast<double>(longest), lh = 8 + 18 * static_cast<double>(entries.size());
         const std::array<std::pair<double, double>, 4> corners = {
             {{kX1 - lw - 6, kY0 + 6}, {kX0 + 6, kY0 + 6}, {kX1 - lw - 6, kY1 - lh - 6}, {kX0 + 6, kY1 - lh - 6}}};
         std::size_t best = 0, best_count = std::numeric_limits<std::size_t>::max();
@@ -276,10 +285,13 @@ std::string render_svg(const Figure& f) {
             for (const auto& s : f.series)
                 for (std::size_t i = 0; i < s.x.size(); ++i) {
                     if (!finite_point(s, i, m)) continue;
-                    const double x = m.px(s.x[i]), y = m.py(s.y[i]);
-                    if (x >= corners[c].first - 4 && x <= corners[c].first + lw + 4 && y >= corners[c].second - 4 &&
-                        y <= corners[c].second + lh + 4)
-                        ++count;
+                    const double e = i < s.err.size() ? s.err[i] : 0.0;
+                    for (double v : {s.y[i], s.y[i] + e, s.y[i] - e}) {  // the marker and its bar ends
+                        const double x = m.px(s.x[i]), y = m.py(v);
+                        if (x >= corners[c].first - 6 && x <= corners[c].first + lw + 6 &&
+                            y >= corners[c].second - 6 && y <= corners[c].second + lh + 6)
+                            ++count;
+                    }
                 }
             if (count < best_count) best = c, best_count = count;
         }
