@@ -365,7 +365,7 @@ std::vector<const OperatingPoint*> Case::select(std::string_view id) const {
     if (out.empty()) {
         std::vector<std::string> ids;
         for (const auto& p : points) ids.push_back(p.id);
-        throw Error(fmt::format("{}: no operating point '{}' (points: {})", file.string(), id, fmt::join(ids, ", ")));
+        throw CaseError(fmt::format("{}: no operating point '{}' (points: {})", file.string(), id, fmt::join(ids, ", ")));
     }
     return out;
 }
