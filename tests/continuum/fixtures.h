@@ -1,0 +1,61 @@
+// Shared set-up for the continuum suites: the dimensionless problems of continuum-theory.md.
+#pragma once
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "granlub/continuum/problem.h"
+
+namespace granlub::continuum::testing {
+
+struct Spec {
+    double d = 0.787e-3, rho = 2550, H = 4e-3, U = 2.0, P = 5.5e3;
+    double ep = 0.9, ew = 0.9, R = 0.5, numax = 0.65;
+    std::string g0 = "ogawa", wall = "k";
+    Mode mode = Mode::Load;
+    double nu_mean = 0.595;
+    double alpha = 1.0;
+    bool dufour = true;
+};
+
+inline std::shared_ptr<const Closures> make_closures(const std::string& g0, double ep, double numax = 0.65,
+                                                double alpha = 1.0, bool dufour = true) {
+    return std::make_shared<Closures>(Lun84Params{ep, alpha, dufour},
+                                      std::shared_ptr<const RadialDistribution>(make_g0(g0, numax)));
+}
+
+inline Problem problem(const Spec& s) {
+    Problem p;
+    p.closures = make_closures(s.g0, s.ep, s.numax, s.alpha, s.dufour);
+    p.Lambda = s.H / s.d;
+    p.Pi = s.rho * s.U * s.U / s.P;
+    p.mode = s.mode;
+    p.nu_mean = s.nu_mean;
+    WallBC w{make_wall_family(s.wall), WallParams{s.ew, s.R, s.R, s.R, s.R, 0.0}};
+    p.bottom = w;
+    p.top = w;
+    return p;
+}
+
+// S&T 2001 case (guide §1) at speed U and load P.
+inline Spec sawyer(double U, double P = 5.5e3) {
+    Spec s;
+    s.U = U;
+    s.P = P;
+    return s;
+}
+
+// Jasti & Higgs 2006 continuum case (guide §7.4): H = 4 mm, e_p = 0.85, e_w = 0.65, R = 0.65.
+inline Spec jasti(double P = 5.5e3) {
+    Spec s;
+    s.U = 2.0;
+    s.P = P;
+    s.ep = 0.85;
+    s.ew = 0.65;
+    s.R = 0.65;
+    return s;
+}
+
+inline double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
+}  // namespace granlub::continuum::testing
