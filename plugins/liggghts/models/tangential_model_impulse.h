@@ -20,6 +20,9 @@
     For a sphere hitting a wall with spin 0 the stick limit gives 5/7 of the
     tangential velocity; the Coulomb limit gives v_t - mu (1 + e) |v_n|.
 
+    As in model impulse, the slip includes the impulses (forces and torques
+    accumulated in f and torque) of the contacts resolved earlier in the step.
+
     Setting:  beta0 value  (keyword after the model names, default 0)
 
     Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
@@ -37,6 +40,7 @@ TANGENTIAL_MODEL(TANGENTIAL_IMPULSE,impulse,50)
 #include "global_properties.h"
 #include "update.h"
 #include "error.h"
+#include "atom.h"
 #include <cmath>
 
 namespace LIGGGHTS {
@@ -82,17 +86,34 @@ namespace ContactModels
       const double ri = sidata.radi;
       const double rj = sidata.is_wall ? 0.0 : sidata.radj;
 
-      // slip of the contact points: v_i - v_j - (v_n) e_n + e_n x (r_i w_i + r_j w_j)
-      const double vr1 = sidata.v_i[0] - sidata.v_j[0];
-      const double vr2 = sidata.v_i[1] - sidata.v_j[1];
-      const double vr3 = sidata.v_i[2] - sidata.v_j[2];
-      const double vn = vr1 * enx + vr2 * eny + vr3 * enz;
-      double w1 = ri * sidata.omega_i[0], w2 = ri * sidata.omega_i[1], w3 = ri * sidata.omega_i[2];
+      // velocities including the impulses of contacts resolved earlier in this step
+      // (sequential resolution, see model impulse); I = 2/5 m r^2
+      const double dt = update->dt;
+      const int i = sidata.i;
+      const double * const fi = atom->f[i];
+      const double * const ti = atom->torque[i];
+      const double ci = dt / sidata.mi, cwi = 2.5 * dt / (sidata.mi * ri * ri);
+      double vr1 = sidata.v_i[0] + ci * fi[0], vr2 = sidata.v_i[1] + ci * fi[1], vr3 = sidata.v_i[2] + ci * fi[2];
+      double w1 = ri * (sidata.omega_i[0] + cwi * ti[0]);
+      double w2 = ri * (sidata.omega_i[1] + cwi * ti[1]);
+      double w3 = ri * (sidata.omega_i[2] + cwi * ti[2]);
+      vr1 -= sidata.v_j[0];
+      vr2 -= sidata.v_j[1];
+      vr3 -= sidata.v_j[2];
       if (!sidata.is_wall) {
-        w1 += rj * sidata.omega_j[0];
-        w2 += rj * sidata.omega_j[1];
-        w3 += rj * sidata.omega_j[2];
+        const int j = sidata.j;
+        const double * const fj = atom->f[j];
+        const double * const tj = atom->torque[j];
+        const double cj = dt / sidata.mj, cwj = 2.5 * dt / (sidata.mj * rj * rj);
+        vr1 -= cj * fj[0];
+        vr2 -= cj * fj[1];
+        vr3 -= cj * fj[2];
+        w1 += rj * (sidata.omega_j[0] + cwj * tj[0]);
+        w2 += rj * (sidata.omega_j[1] + cwj * tj[1]);
+        w3 += rj * (sidata.omega_j[2] + cwj * tj[2]);
       }
+      // slip of the contact points: v_i - v_j - (v_n) e_n + e_n x (r_i w_i + r_j w_j)
+      const double vn = vr1 * enx + vr2 * eny + vr3 * enz;
       const double vs1 = vr1 - vn * enx + (eny * w3 - enz * w2);
       const double vs2 = vr2 - vn * eny + (enz * w1 - enx * w3);
       const double vs3 = vr3 - vn * enz + (enx * w2 - eny * w1);
@@ -103,7 +124,6 @@ namespace ContactModels
       double k = 1.0 / sidata.mi + 2.5 / sidata.mi;
       if (!sidata.is_wall) k += 1.0 / sidata.mj + 2.5 / sidata.mj;
 
-      const double dt = update->dt;
       const double J_coulomb = coeffFrict[sidata.itype][sidata.jtype] * Fn * dt;  // S&T Eq. 20
       const double J_stick = (1.0 + beta0) * vs / k;                            // S&T Eqs. 21-22
       const double Ft = (J_coulomb < J_stick ? J_coulomb : J_stick) / dt;        // S&T Eq. 23

@@ -1,0 +1,113 @@
+// `granlub dem`: the [dem] section and the per-point pipeline (command.h).
+#include "granlub/dem/command.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "deck.h"
+#include "engine.h"
+#include "granlub/coarse_grain.h"
+#include "granlub/error.h"
+#include "granlub/particles.h"
+#include "granlub/results.h"
+#include "outputs.h"
+#include "settings.h"
+
+namespace granlub::dem {
+
+namespace fs = std::filesystem;
+
+SectionSpec section() {
+    SectionSpec s("dem", "particle simulation in LIGGGHTS (granlub-liggghts)");
+    s.choice("model", "impulse", {"impulse", "hertz"},
+             "contact model: Sawyer & Tichy impulse operator, or LIGGGHTS' Hertz-Mindlin (soft-sphere reference)");
+    s.real("beta0", 0.0, Range::closed(-1, 1), "",
+           "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
+    s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
+    s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
+    s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");
+    s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
+           "impulse model: diameters travelled per step at max(U, sqrt(2 g H))");
+    s.real("hertz_step_fraction", 0.15, Range::open_closed(0, 0.3), "",
+           "hertz model: time step as a fraction of the Rayleigh time");
+    s.integer("sample_every", 100, Range::at_least(1),
+              "wall-force block length in steps (forces are summed every step)");
+    s.integer("snapshots", 50, Range::at_least(4), "particle snapshots over the run for coarse-graining");
+    s.integer("stations", 20, Range::at_least(2), "coarse-graining slabs across the gap");
+    s.integer("blocks", 10, Range::at_least(2), "blocks for the standard errors");
+    s.real("skin", 0.25, Range::positive(), "", "neighbour-list skin in grain diameters");
+    s.integer("seed", 1, Range::at_least(0), "seed of the initial configuration (--seed overrides)");
+    s.real("velocity_noise", 0.1, Range::non_negative(), "",
+           "initial velocity noise per component, standard deviation / U, on the linear Couette profile");
+    s.real("periodic_depth", 0.0, Range::non_negative(), "m",
+           "depth across z when [cell] width = 0 (periodic); 0 = 10 grain diameters");
+    s.real("fill_for_load", 0.55, Range::open(0, 0.74), "",
+           "control = load: solid fraction inserted when [operating] solid_fraction is not given");
+    return s;
+}
+
+namespace {
+
+PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, const fs::path& dir) {
+    OperatingPoint p = p0;
+    if (p.control == Control::Load)
+        throw SolverError(fmt::format("point {}: control = \"load\" (servo-controlled top wall) is not implemented in "
+                                      "granlub dem yet; use control = \"fill\"",
+                                      p.id));
+    const Settings s = resolve(c, p, o);
+    p.solid_fraction = s.insert_fill;
+
+    InsertionOptions ins;
+    ins.seed = s.seed;
+    ins.velocity_noise = s.velocity_noise;
+    const InitialParticles init = initial_particles(c, p, results_root(c, o), ins, s.box.width);
+
+    const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
+                                         utc_now());
+    write_file_atomic(dir / kData, data_file(init.particles, s.box, c.grains.density,
+                                             fmt::format("case {} point {} ({})", c.name, p.id, prov)));
+    write_file_atomic(dir / kDeck, deck(c, p, s, init.particles.size(), prov));
+    fs::remove(dir / kSnapshots);
+
+    const EngineRun er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
+
+    const WallSeries walls = read_wall_series(dir / kWallFile);
+    SliceCoarseGrainer cg({0.0, c.cell.gap, s.stations}, s.box.length * s.box.width);
+    if (read_snapshots(dir / kSnapshots, s.time_step, cg) < 2)
+        throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", (dir / kSnapshots).string()));
+    fs::remove(dir / kSnapshots);  // large; the deck regenerates it
+
+    DemOutputs out = make_outputs(c, p, s, walls, cg);
+    PointResult r;
+    r.profile = std::move(out.profile);
+    r.summary = make_summary(c, p0, "dem", s.seed);
+    r.summary.outputs = std::move(out.outputs);
+    r.summary.provenance.settings["resolved"] = s.to_json();
+    const double atoms = static_cast<double>(init.particles.size());
+    const double loop = er.loop_time_s > 0 ? er.loop_time_s : er.wall_clock_s;
+    r.summary.run = out.run;
+    r.summary.run["model"] = s.model == Model::Impulse ? "impulse" : "hertz";
+    r.summary.run["atoms"] = init.particles.size();
+    r.summary.run["steps"] = s.steps;
+    r.summary.run["time_step_s"] = s.time_step;
+    r.summary.run["simulated_time_s"] = static_cast<double>(s.steps) * s.time_step;
+    r.summary.run["wall_clock_s"] = er.wall_clock_s;
+    r.summary.run["loop_time_s"] = er.loop_time_s;
+    r.summary.run["atom_steps_per_s"] = atoms * static_cast<double>(s.steps) / loop;
+    r.summary.run["ranks"] = er.ranks;
+    r.summary.run["initial_configuration"] = init.file.string();
+    r.summary.run["initial_configuration_reused"] = init.reused;
+    r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s]", out.line, init.particles.size(), s.steps,
+                         r.summary.run["atom_steps_per_s"].get<double>());
+    return r;
+}
+
+}  // namespace
+
+int run(const Case& c, const RunOptions& o) {
+    return run_sweep(c, "dem", o, [&](const OperatingPoint& p, const fs::path& dir) { return solve(c, p, o, dir); });
+}
+
+}  // namespace granlub::dem

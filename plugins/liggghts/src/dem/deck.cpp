@@ -1,0 +1,134 @@
+// Writes the LIGGGHTS deck of one point (see deck.h). Conventions: architecture.md (x flow,
+// y across the gap with the moving wall at y = 0, z across the width) and
+// ../shared/docs/liggghts-plugin.md (walls, stress sampling, gotchas).
+#include "deck.h"
+
+#include <fmt/format.h>
+
+namespace granlub::dem {
+
+std::string data_file(const ParticleSet& p, const ParticleBox& box, double density, const std::string& title) {
+    std::string out = fmt::format("LIGGGHTS data file: {}\n\n{} atoms\n4 atom types\n\n", title, p.size());
+    out += fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n{:.17g} {:.17g} zlo zhi\n\nAtoms\n\n", box.length,
+                       box.gap, -0.5 * box.width, 0.5 * box.width);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        out += fmt::format("{} 1 {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", i + 1, 2.0 * p.radius[i], density, p.x[i],
+                           p.y[i], p.z[i]);
+    out += "\nVelocities\n\n";
+    for (std::size_t i = 0; i < p.size(); ++i)
+        out += fmt::format("{} {:.17g} {:.17g} {:.17g} 0 0 0\n", i + 1, p.vx[i], p.vy[i], p.vz[i]);
+    return out;
+}
+
+namespace {
+
+// 4 x 4 per-type-pair matrix: grain-grain, grain-bottom/top/side walls; wall-wall pairs never meet.
+std::string pair_matrix(double pp, double bottom, double top, double side) {
+    const double m[4][4] = {{pp, bottom, top, side}, {bottom, pp, pp, pp}, {top, pp, pp, pp}, {side, pp, pp, pp}};
+    std::string s;
+    for (const auto& row : m)
+        for (double v : row) s += fmt::format(" {:.17g}", v);
+    return s;
+}
+
+}  // namespace
+
+std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+                 const std::string& provenance) {
+    const bool impulse = s.model == Model::Impulse;
+    const auto& box = s.box;
+    const double U = p.speed;
+    const double A = box.length * box.width;
+    const std::string model = impulse ? fmt::format("model impulse tangential impulse") : "model hertz tangential history";
+    const std::string settings = impulse ? fmt::format(" beta0 {:.17g}", s.beta0) : "";
+    std::string d;
+    auto line = [&d](const std::string& l) { d += l + "\n"; };
+
+    line(fmt::format("# granlub dem: case {}, point {} ({})", c.name, p.id, provenance));
+    line(fmt::format("# Shear cell: x along the flow (periodic, L = {:g} m), y across the gap (H = {:g} m):", box.length,
+                     box.gap));
+    line(fmt::format("# bottom wall y = 0 sliding at U = {:g} m/s, top wall y = H fixed, z across the width{}.", U,
+                     box.periodic_z ? fmt::format(" (periodic, {:g} m)", box.width)
+                                    : fmt::format(" (side walls at +-{:g} m moving with the bottom)", 0.5 * box.width)));
+    line(fmt::format("# {} grains of d = {:g} m (solid fraction {:.4f}); contact model: {}.", grains, c.grains.diameter,
+                     s.insert_fill, impulse ? "Sawyer & Tichy 2001 impulse operator (granlub plugin)"
+                                            : "Hertz-Mindlin (LIGGGHTS built-in), soft-sphere reference"));
+    line("# Rerun by hand in this folder: granlub-liggghts -in in.granlub");
+    line("");
+    line("atom_style      granular");
+    line("atom_modify     map array");
+    line(fmt::format("boundary        p f {}", box.periodic_z ? "p" : "f"));
+    line("newton          off");
+    line("communicate     single vel yes");
+    line("units           si");
+    line("processors      * 1 1   # split along the flow only");
+    line(fmt::format("read_data       {}", kData));
+    line(fmt::format("neighbor        {:.17g} bin", s.skin));
+    line("neigh_modify    delay 0");
+    line("");
+    line("# materials; types: 1 grains, 2 bottom wall, 3 top wall, 4 side walls");
+    const auto& g = c.grains;
+    line(fmt::format("fix m1 all property/global youngsModulus peratomtype {0:.17g} {0:.17g} {0:.17g} {0:.17g}",
+                     g.youngs_modulus));
+    line(fmt::format("fix m2 all property/global poissonsRatio peratomtype {0:.17g} {0:.17g} {0:.17g} {0:.17g}",
+                     g.poisson_ratio));
+    line(fmt::format("fix m3 all property/global coefficientRestitution peratomtypepair 4{}",
+                     pair_matrix(g.restitution, p.bottom.restitution, p.top.restitution, p.bottom.restitution)));
+    line(fmt::format("fix m4 all property/global coefficientFriction peratomtypepair 4{}",
+                     pair_matrix(g.friction, p.bottom.friction, p.top.friction, p.bottom.friction)));
+    line("");
+    line(fmt::format("pair_style      gran {}{}", model, settings));
+    line("pair_coeff      * *");
+    line(fmt::format("timestep        {:.17g}", s.time_step));
+    line("");
+    line("# walls: primitive planes; `shear x U` moves the bottom and side walls along the flow;");
+    line("# store_force gives the force of each wall on each grain (f_force_<id>), summed every step");
+    line(fmt::format("fix wbot all wall/gran {} primitive type 2 yplane 0.0 shear x {:.17g} store_force yes{}", model, U,
+                     settings));
+    line(fmt::format("fix wtop all wall/gran {} primitive type 3 yplane {:.17g} store_force yes{}", model, box.gap,
+                     settings));
+    if (!box.periodic_z) {
+        line(fmt::format("fix wsid1 all wall/gran {} primitive type 4 zplane {:.17g} shear x {:.17g} store_force yes{}",
+                         model, -0.5 * box.width, U, settings));
+        line(fmt::format("fix wsid2 all wall/gran {} primitive type 4 zplane {:.17g} shear x {:.17g} store_force yes{}",
+                         model, 0.5 * box.width, U, settings));
+    }
+    line("");
+    line("# body forces: gravity along -y; centripetal acceleration u_x^2 / (R - z) toward the outer wall (-z),");
+    line("# with R the annulus mean radius (Sawyer & Tichy 2001, particle simulation)");
+    if (c.gravity > 0) line(fmt::format("fix grav all gravity {:.17g} vector 0 -1 0", c.gravity));
+    if (c.cell.annulus_radius > 0) {
+        line(fmt::format("variable fcent atom -mass*vx*vx/({:.17g}-z)", c.cell.annulus_radius));
+        line("fix cent all addforce 0.0 0.0 v_fcent");
+    }
+    line("fix integr all nve/sphere");
+    line("");
+    line("# wall forces (on the grains), averaged over blocks of sample_every steps, sampled every step");
+    line("# (impulse forces last one step). Columns: step, then fx fy fz of bottom, top[, side] walls.");
+    line("compute fbot all reduce sum f_force_wbot[1] f_force_wbot[2] f_force_wbot[3]");
+    line("compute ftop all reduce sum f_force_wtop[1] f_force_wtop[2] f_force_wtop[3]");
+    std::string cols = "c_fbot[1] c_fbot[2] c_fbot[3] c_ftop[1] c_ftop[2] c_ftop[3]";
+    if (!box.periodic_z) {
+        line("compute fsid all reduce sum f_force_wsid1[1] f_force_wsid2[1]");
+        cols += " c_fsid[1] c_fsid[2]";
+    }
+    line(fmt::format("fix walls all ave/time 1 {0} {0} {1} file {2}", s.sample_every, cols, kWallFile));
+    line(fmt::format("# wall area A = L W = {:.17g} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A", A));
+    line("");
+    line("# particle snapshots for coarse-graining across the gap");
+    line(fmt::format("dump cg all custom {} {} id y vx vy vz radius", s.snapshot_every, kSnapshots));
+    line("dump_modify cg sort id");
+    if (s.vtk) {
+        line("# ParaView: one VTK file per snapshot (open post/particles_*.vtk as a series)");
+        line(fmt::format("dump vtk all custom/vtk {} post/particles_*.vtk id type x y z vx vy vz omegax omegay omegaz "
+                         "radius",
+                         s.snapshot_every));
+    }
+    line("thermo_style    custom step atoms ke cpu");
+    line(fmt::format("thermo          {}", std::max<std::int64_t>(1, s.steps / 20)));
+    line("thermo_modify   norm no lost error");
+    line(fmt::format("run             {}", s.steps));
+    return d;
+}
+
+}  // namespace granlub::dem

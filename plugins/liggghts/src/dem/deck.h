@@ -1,0 +1,29 @@
+// The LIGGGHTS deck and data file of one operating point: readable, commented, rerunnable by
+// hand with `granlub-liggghts -in in.granlub` in the point's folder.
+#pragma once
+#include <string>
+
+#include "granlub/case.h"
+#include "granlub/particles.h"
+#include "settings.h"
+
+namespace granlub::dem {
+
+// File names inside the point's folder.
+inline constexpr const char* kDeck = "in.granlub";
+inline constexpr const char* kData = "grains.data";
+inline constexpr const char* kWallFile = "walls.txt";       // fix ave/time: wall forces per block
+inline constexpr const char* kSnapshots = "snapshots.txt";  // dump custom: id y vx vy vz radius
+inline constexpr const char* kLog = "log.liggghts";
+
+// Atom types: grains, bottom wall, top wall, side walls (restitution and friction per pair).
+enum AtomType { kGrain = 1, kBottom = 2, kTop = 3, kSide = 4 };
+
+// LIGGGHTS data file (atom_style granular: id type diameter density x y z; Velocities).
+std::string data_file(const ParticleSet& p, const ParticleBox& box, double density, const std::string& title);
+
+// The deck: geometry, materials, contact model, walls, body forces, sampling, run.
+std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+                 const std::string& provenance);
+
+}  // namespace granlub::dem

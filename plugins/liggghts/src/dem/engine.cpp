@@ -1,0 +1,158 @@
+// Process handling for LIGGGHTS runs (see engine.h). fork/exec, no shell: paths with spaces or
+// quotes cannot break the command.
+#include "engine.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "granlub/error.h"
+#include "granlub/progress.h"
+
+namespace granlub::dem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool executable(const fs::path& p) { return !p.empty() && ::access(p.c_str(), X_OK) == 0 && fs::is_regular_file(p); }
+
+fs::path on_path(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    if (!path) return {};
+    std::stringstream ss(path);
+    std::string dir;
+    while (std::getline(ss, dir, ':'))
+        if (!dir.empty() && executable(fs::path(dir) / name)) return fs::path(dir) / name;
+    return {};
+}
+
+std::string read_text(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::size_t count_lines(const fs::path& p) {
+    std::ifstream in(p);
+    std::size_t n = 0;
+    std::string l;
+    while (std::getline(in, l))
+        if (!l.empty() && l[0] != '#') ++n;
+    return n;
+}
+
+// The first "ERROR..." line of LIGGGHTS' output, or its last non-empty line.
+std::string error_line(const fs::path& out) {
+    std::ifstream in(out);
+    std::string l, last;
+    while (std::getline(in, l)) {
+        if (l.rfind("ERROR", 0) == 0) return l;
+        if (!l.empty()) last = l;
+    }
+    return last.empty() ? "(no output)" : last;
+}
+
+}  // namespace
+
+fs::path find_driver() {
+    std::vector<std::string> looked;
+    if (const char* env = std::getenv("GRANLUB_LIGGGHTS_DRIVER")) {
+        if (executable(env)) return env;
+        looked.push_back(fmt::format("$GRANLUB_LIGGGHTS_DRIVER = {}", env));
+    }
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const fs::path next = self.parent_path() / "granlub-liggghts";
+        if (executable(next)) return next;
+        looked.push_back(next.string());
+    }
+#ifdef GRANLUB_LIGGGHTS_DRIVER_BUILD
+    if (executable(GRANLUB_LIGGGHTS_DRIVER_BUILD)) return GRANLUB_LIGGGHTS_DRIVER_BUILD;
+    looked.push_back(GRANLUB_LIGGGHTS_DRIVER_BUILD);
+#endif
+    if (auto p = on_path("granlub-liggghts"); !p.empty()) return p;
+    looked.push_back("PATH");
+    std::string where;
+    for (const auto& l : looked) where += "\n  " + l;
+    throw SolverError("granlub dem: the LIGGGHTS driver granlub-liggghts was not found; looked in:" + where +
+                      "\nBuild it (cmake --build <build> --target granlub-liggghts; needs Debian's liggghts and "
+                      "libliggghts-dev) or set GRANLUB_LIGGGHTS_DRIVER to its path.");
+}
+
+EngineRun run_engine(const fs::path& dir, const std::string& deck, int np, std::int64_t total_steps,
+                     const std::string& progress_file, std::int64_t steps_per_line, const std::string& label) {
+    EngineRun r;
+    r.ranks = std::max(1, np);
+    const fs::path driver = find_driver();
+    if (r.ranks > 1) {
+        const fs::path mpirun = on_path("mpirun");
+        if (mpirun.empty())
+            throw SolverError(fmt::format("granlub dem --np {}: mpirun was not found on PATH (Debian: openmpi-bin)",
+                                          r.ranks));
+        r.command = {mpirun.string(), "-np", std::to_string(r.ranks), "--oversubscribe"};
+        if (::geteuid() == 0) r.command.push_back("--allow-run-as-root");
+    }
+    for (const auto& a : {driver.string(), std::string("-in"), deck, std::string("-log"), std::string("log.liggghts"),
+                          std::string("-echo"), std::string("none")})
+        r.command.push_back(a);
+
+    const fs::path out = dir / "liggghts.out";
+    fs::remove(dir / progress_file);
+    const auto t0 = std::chrono::steady_clock::now();
+    const pid_t pid = ::fork();
+    if (pid < 0) throw SolverError(fmt::format("granlub dem: cannot start {}: fork failed", driver.string()));
+    if (pid == 0) {
+        if (::chdir(dir.c_str()) != 0) ::_exit(126);
+        const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fd < 0) ::_exit(126);
+        ::dup2(fd, 1);
+        ::dup2(fd, 2);
+        ::close(fd);
+        std::vector<char*> argv;
+        for (auto& a : r.command) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    {
+        Progress progress(label, static_cast<std::uint64_t>(std::max<std::int64_t>(1, total_steps)));
+        const bool show = Progress::enabled();
+        while (true) {
+            const pid_t w = ::waitpid(pid, &status, WNOHANG);
+            if (w == pid) break;
+            if (w < 0) throw SolverError("granlub dem: lost the LIGGGHTS process (waitpid failed)");
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            if (show) {
+                const auto done = static_cast<std::int64_t>(count_lines(dir / progress_file)) * steps_per_line;
+                progress.update(static_cast<std::uint64_t>(std::min(done, total_steps)), "LIGGGHTS");
+            }
+        }
+    }
+    r.wall_clock_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        const std::string why = WIFEXITED(status) ? fmt::format("exit code {}", WEXITSTATUS(status))
+                                                  : fmt::format("signal {}", WTERMSIG(status));
+        throw SolverError(fmt::format("LIGGGHTS failed ({}) in {}: {}\n  command: {}\n  output: {}", why, dir.string(),
+                                      error_line(out), fmt::join(r.command, " "), out.string()));
+    }
+    static const std::regex loop(R"(Loop time of ([0-9.eE+-]+) on)");
+    const std::string text = read_text(dir / "log.liggghts");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), loop); it != std::sregex_iterator(); ++it)
+        r.loop_time_s = std::stod((*it)[1].str());
+    return r;
+}
+
+}  // namespace granlub::dem

@@ -1,0 +1,102 @@
+// [dem] keys and the derived run settings (see settings.h and command.h).
+#include "settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "granlub/error.h"
+
+namespace granlub::dem {
+
+double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fraction) {
+    const double v_ref = std::max(p.speed, std::sqrt(2.0 * c.gravity * c.cell.gap));
+    return step_fraction * c.grains.diameter / v_ref;
+}
+
+double rayleigh_time(const Grains& g) {
+    const double r = 0.5 * g.diameter;
+    const double G = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
+    return std::numbers::pi * r * std::sqrt(g.density / G) / (0.1631 * g.poisson_ratio + 0.8766);
+}
+
+Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
+    const Section& s = c.section("dem");
+    Settings st;
+    st.model = s.string("model") == "hertz" ? Model::Hertz : Model::Impulse;
+    st.beta0 = s.real("beta0");
+    st.box = particle_box(c, s.real("periodic_depth"));
+    st.np = std::max(1, o.np);
+    st.vtk = o.vtk;
+    st.seed = o.seed ? *o.seed : static_cast<std::uint64_t>(s.integer("seed"));
+    st.velocity_noise = s.real("velocity_noise");
+    st.time = o.full ? s.real("time_full") : s.real("time");
+
+    if (c.cell.annulus_radius > 0 && c.cell.annulus_radius <= 0.5 * st.box.width)
+        s.fail("annulus_radius", fmt::format("the annulus radius {:g} m must exceed half the cell width {:g} m "
+                                             "(the centripetal term divides by the local radius R - z)",
+                                             c.cell.annulus_radius, 0.5 * st.box.width));
+
+    // time step: derived from the case, or given and checked
+    const double given = s.real("time_step");
+    const double v_ref = std::max(p.speed, std::sqrt(2.0 * c.gravity * c.cell.gap));
+    if (st.model == Model::Impulse) {
+        st.time_step = given > 0 ? given : impulse_time_step(c, p, s.real("step_fraction"));
+        const double frac = st.time_step * v_ref / c.grains.diameter;
+        if (frac > kMaxStepFraction)
+            s.fail(given > 0 ? "time_step" : "step_fraction",
+                   fmt::format("a grain at {:g} m/s moves {:.3g} diameters per step of {:g} s; the impulse model finds "
+                               "contacts only by overlap, so at most {:g} diameters per step are allowed",
+                               v_ref, frac, st.time_step, kMaxStepFraction));
+    } else {
+        const double tr = rayleigh_time(c.grains);
+        st.time_step = given > 0 ? given : s.real("hertz_step_fraction") * tr;
+        if (st.time_step > 0.3 * tr)
+            s.fail(given > 0 ? "time_step" : "hertz_step_fraction",
+                   fmt::format("time step {:g} s is {:.2f} Rayleigh times ({:g} s) of the Hertz contacts; at most 0.3 "
+                               "is stable",
+                               st.time_step, st.time_step / tr, tr));
+    }
+    st.steps = static_cast<std::int64_t>(std::ceil(st.time / st.time_step - 1e-9));
+    st.sample_every = s.integer("sample_every");
+    if (st.steps < 20 * st.sample_every)
+        s.fail(o.full ? "time_full" : "time",
+               fmt::format("{:g} s is {} steps of {:g} s: fewer than 20 wall-stress samples of {} steps "
+                           "(sample_every); run longer",
+                           st.time, st.steps, st.time_step, st.sample_every));
+    const auto snaps = s.integer("snapshots");
+    st.snapshot_every = std::max<std::int64_t>(1, st.steps / snaps);
+    st.stations = static_cast<std::size_t>(s.integer("stations"));
+    st.blocks = static_cast<std::size_t>(s.integer("blocks"));
+    st.skin = s.real("skin") * c.grains.diameter;
+
+    if (p.control == Control::Load) {
+        st.insert_fill = p.solid_fraction > 0 ? p.solid_fraction : s.real("fill_for_load");
+    } else {
+        st.insert_fill = p.solid_fraction;
+    }
+    return st;
+}
+
+nlohmann::json Settings::to_json() const {
+    return {{"model", model == Model::Impulse ? "impulse" : "hertz"},
+            {"beta0", beta0},
+            {"time_step_s", time_step},
+            {"time_s", time},
+            {"steps", steps},
+            {"sample_every", sample_every},
+            {"snapshot_every", snapshot_every},
+            {"stations", stations},
+            {"blocks", blocks},
+            {"skin_m", skin},
+            {"seed", seed},
+            {"velocity_noise", velocity_noise},
+            {"insert_fill", insert_fill},
+            {"ranks", np},
+            {"box_m", {box.length, box.gap, box.width}},
+            {"periodic_z", box.periodic_z}};
+}
+
+}  // namespace granlub::dem

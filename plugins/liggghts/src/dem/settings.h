@@ -1,0 +1,52 @@
+// The resolved settings of one DEM run: [dem] keys, the point and the run options, with the
+// time step derived from the case and checked.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "granlub/case.h"
+#include "granlub/particles.h"
+#include "granlub/sweep.h"
+
+namespace granlub::dem {
+
+enum class Model { Impulse, Hertz };
+
+struct Settings {
+    Model model = Model::Impulse;
+    double beta0 = 0;             // Walton's tangential restitution (impulse); 0 = stick limit
+    double time_step = 0;         // s
+    double time = 0;              // simulated time, s
+    std::int64_t steps = 0;       // ceil(time / time_step)
+    std::int64_t sample_every = 0;    // wall-force block length, steps (forces summed every step)
+    std::int64_t snapshot_every = 0;  // particle snapshots for coarse-graining, steps
+    std::size_t stations = 0;     // coarse-graining slabs across the gap
+    std::size_t blocks = 0;       // blocks for standard errors
+    double skin = 0;              // neighbour skin, m
+    std::uint64_t seed = 1;
+    double velocity_noise = 0;
+    double insert_fill = 0;       // solid fraction inserted (point's, or fill_for_load)
+    bool vtk = false;
+    int np = 1;
+    ParticleBox box;
+
+    nlohmann::json to_json() const;
+};
+
+// Reads [dem], derives and checks the time step (throws CaseError naming the key).
+Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o);
+
+// Time step of the impulse model: a grain moving at the reference speed travels
+// `step_fraction` diameters per step. Reference speed: max(U, sqrt(2 g H)).
+double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fraction);
+// Rayleigh time of Hertz contacts between the case's grains (Li et al. 2005 form used by
+// LIGGGHTS' check/timestep/gran): pi r sqrt(rho/G) / (0.1631 nu + 0.8766).
+double rayleigh_time(const Grains& g);
+
+// Largest safe displacement per step for the impulse model, in diameters (contacts are found
+// only by overlap; more than this risks tunnelling and deep overlaps).
+inline constexpr double kMaxStepFraction = 0.05;
+
+}  // namespace granlub::dem
