@@ -6,7 +6,8 @@
 # generates code from it. Two tasks:
 #   "couette"   the plane Couette cell of `granlub dem`: grains from the shared initial file,
 #               flat walls at y = 0 (moving at +U along x) and y = H, side walls at z = +-W/2
-#               (or periodic z), gravity along -y, centripetal body force v_x^2/R_a along -z.
+#               (or periodic z), gravity along -y, centripetal body force v_x^2/(R_a - z) along -z.
+#               Side walls slide with the bottom wall, as in `granlub dem`.
 #               Writes wallforce.csv, samples.bin and, last, driver_summary.json.
 #   "collision" binary collisions (grain-grain and grain-wall for every wall material): the
 #               measured normal restitution of the contact law as run, in collision.json.
@@ -96,12 +97,11 @@ def load_params(path):
         need(p, "gravity", "(top level)")
         need(p, "annulus_radius", "(top level)", non_negative=True)
         r = p.get("run", {})
-        need(r, "warmup_steps", "run", int, non_negative=True)
-        need(r, "average_steps", "run", int, positive=True)
-        every = need(r, "sample_every", "run", int, positive=True)
-        if r["average_steps"] % every:
-            raise ParamError("run.average_steps = %d is not a multiple of run.sample_every = %d"
-                             % (r["average_steps"], every))
+        steps = need(r, "steps", "run", int, positive=True)
+        for k in ("sample_every", "snapshot_every"):
+            every = need(r, k, "run", int, positive=True)
+            if steps % every:
+                raise ParamError("run.steps = %d is not a multiple of run.%s = %d" % (steps, k, every))
         need(r, "body_force_every", "run", int, positive=True)
         if not os.path.isfile(p.get("initial_file", "")):
             raise ParamError("initial_file %r: no such file" % p.get("initial_file"))
@@ -375,12 +375,17 @@ def run_couette(p):
     big = 1000 * L
     bottom = wall_box((0.5 * L, Y0 - t, Z0), (big, t, wall_z), ids["bottom"], p)
     top = wall_box((0.5 * L, Y0 + H + t, Z0), (big, t, wall_z), ids["top"], p)
+    moving = [bottom]
     sides = []
     if not periodic_z:
-        for s in (-1, 1):
-            sides.append(wall_box((0.5 * L, Y0 + 0.5 * H, Z0 + s * (0.5 * W + t)), (big, 0.5 * H + 2 * t, t),
-                                  ids["side"], p))
-    O.bodies[bottom].state.vel = Vector3(U, 0, 0)  # moved by NewtonIntegrator (kinematic body)
+        # side walls slide with the bottom wall, as in the annular cell (cases/sawyer2001) and
+        # `granlub dem` (fix wall/gran ... zplane ... shear x U)
+        for sgn in (-1, 1):
+            sides.append(wall_box((0.5 * L, Y0 + 0.5 * H, Z0 + sgn * (0.5 * W + t)),
+                                  (big, 0.5 * H + 2 * t, t), ids["side"], p))
+        moving += sides
+    for w in moving:
+        O.bodies[w].state.vel = Vector3(U, 0, 0)  # kinematic: NewtonIntegrator moves it
 
     first = len(O.bodies)
     for (x, y, z, vx, vy, vz, r) in grains:
@@ -395,67 +400,76 @@ def run_couette(p):
     gids = range(first, first + n)
     masses = [O.bodies[i].state.mass for i in gids]
 
-    state = {"fb": [0.0] * 3, "ft": [0.0] * 3, "steps": 0, "samples": 0, "avg": False}
     every = run["sample_every"]
-    total = run["warmup_steps"] + run["average_steps"]
+    snap_every = run["snapshot_every"]
+    total = run["steps"]
+    state = {"f": [0.0] * 8, "steps": 0, "rows": 0, "snapshots": 0, "run_steps": 0}
 
     fcsv = open(os.path.join(out, "wallforce.csv"), "w")
-    fcsv.write("# force of the grains on the walls, mean over each sample interval, N\n")
-    fcsv.write("step,time,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top\n")
+    fcsv.write("# force of the grains on the walls (N), mean over each interval of %d steps; "
+               "side: x force on each side wall\n" % every)
+    fcsv.write("step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2\n")
     fbin = open(os.path.join(out, "samples.bin"), "wb")
 
     def averaging():
-        # After NewtonIntegrator, every step of the averaging window: the force of the grains on
-        # each wall is summed every step (contact forces last only a few steps), and every
-        # sample_every steps the interval mean and a snapshot of the grains are written.
-        if not state["avg"]:
-            return
+        # After NewtonIntegrator, every step: the force of the grains on each wall is summed
+        # every step (contacts last a few steps) and its mean written every sample_every steps;
+        # a snapshot of the grains every snapshot_every steps.
         fb = O.forces.f(bottom)
         ft = O.forces.f(top)
-        for k in range(3):
-            state["fb"][k] += fb[k]
-            state["ft"][k] += ft[k]
+        f = state["f"]
+        f[0] += fb[0]; f[1] += fb[1]; f[2] += fb[2]
+        f[3] += ft[0]; f[4] += ft[1]; f[5] += ft[2]
+        if sides:
+            f[6] += O.forces.f(sides[0])[0]
+            f[7] += O.forces.f(sides[1])[0]
         state["steps"] += 1
+        state["run_steps"] += 1
+        k = state["run_steps"]
         if state["steps"] == every:
-            sample()
+            fcsv.write("%d,%s\n" % (k, ",".join("%.17g" % (v / every) for v in f)))
+            state["f"], state["steps"] = [0.0] * 8, 0
+            state["rows"] += 1
+        if k % snap_every == 0:
+            snapshot()
 
-    def sample():
-        m = state["steps"]
-        fcsv.write("%d,%.17g,%s\n" % (O.iter + 1, O.time + O.dt, ",".join(
-            "%.17g" % (v / m) for v in state["fb"] + state["ft"])))
-        state["fb"], state["ft"], state["steps"] = [0.0] * 3, [0.0] * 3, 0
+    def snapshot():
+        # granlub coordinates; columns y, vx, vy, vz (what the slab coarse-graining needs)
         buf = []
         for i in gids:
             s = O.bodies[i].state
-            q, v = s.pos, s.vel
-            buf.extend((q[0] % L, q[1] - Y0, q[2] - Z0, v[0], v[1], v[2]))
+            v = s.vel
+            buf.extend((s.pos[1] - Y0, v[0], v[1], v[2]))
         fbin.write(struct.pack("<%dd" % len(buf), *buf))
-        state["samples"] += 1
+        state["snapshots"] += 1
 
     def housekeeping():
-        # keep the moving wall within a few periods of the cell (its extent is 1000 periods)
-        bx = O.bodies[bottom].state.pos
-        if bx[0] > 10 * L:
-            O.bodies[bottom].state.pos = Vector3(bx[0] - 10 * L, bx[1], bx[2])
+        # keep the moving walls within a few periods of the cell (their extent is 1000 periods)
+        for w in moving:
+            q = O.bodies[w].state.pos
+            if q[0] > 10 * L:
+                O.bodies[w].state.pos = Vector3(q[0] - 10 * L, q[1], q[2])
         write_text(os.path.join(out, "progress"), "%d %d\n" % (O.iter, total))
 
     def centripetal():
-        # S&T 2001: a grain moving at v_x around an annulus of radius R_a feels v_x^2/R_a outward,
-        # along -z here (architecture.md). A permanent force, refreshed every body_force_every steps.
+        # Sawyer & Tichy 2001: a grain moving at v_x around the annulus (mean radius R_a) feels
+        # m v_x^2 / (R_a - z) toward the outer wall, -z here; as `granlub dem` (fix addforce).
+        # A permanent force, refreshed every body_force_every steps (a Python loop per step
+        # would double the cost of a step).
         if Ra <= 0:
             return
-        inv = 1.0 / Ra
         for k, i in enumerate(gids):
-            vx = O.bodies[i].state.vel[0]
-            O.forces.setPermF(i, Vector3(0, 0, -masses[k] * vx * vx * inv))
+            s = O.bodies[i].state
+            vx = s.vel[0]
+            O.forces.setPermF(i, Vector3(0, 0, -masses[k] * vx * vx / (Ra - (s.pos[2] - Z0))))
 
     O.engines = [ForceResetter(),
                  InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], allowBiggerThanPeriod=True, sortAxis=1),
                  InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [ip2], [law]),
                  NewtonIntegrator(damping=0.0, gravity=(0, -g, 0)),
-                 PyRunner(command="granlub_averaging()", iterPeriod=1),
+                 PyRunner(command="granlub_averaging()", iterPeriod=1, initRun=True),
                  PyRunner(command="granlub_centripetal()", iterPeriod=run["body_force_every"]),
-                 PyRunner(command="granlub_housekeeping()", iterPeriod=max(every, 1000))]
+                 PyRunner(command="granlub_housekeeping()", iterPeriod=1000)]
     # PyRunner commands run in the launcher's __main__ namespace
     import __main__
     __main__.granlub_averaging = averaging
@@ -465,16 +479,13 @@ def run_couette(p):
     centripetal()
 
     t_run = time.time()
-    if run["warmup_steps"] > 0:  # O.run(0, True) never returns (yade.md section 5)
-        O.run(run["warmup_steps"], True)
-    state["avg"] = True
-    steps_avg = run["average_steps"]
-    O.run(steps_avg, True)
+    O.run(total, True)  # total > 0 is checked: O.run(0, True) never returns (yade.md section 5)
     wall_clock_run = time.time() - t_run
     fcsv.close()
     fbin.close()
-    if state["samples"] != steps_avg // every:
-        raise RuntimeError("wrote %d samples, expected %d" % (state["samples"], steps_avg // every))
+    if state["rows"] != total // every or state["snapshots"] != total // snap_every:
+        raise RuntimeError("wrote %d wall-force rows and %d snapshots, expected %d and %d"
+                           % (state["rows"], state["snapshots"], total // every, total // snap_every))
 
     max_overlap = 0.0
     for i in O.interactions:
@@ -483,13 +494,12 @@ def run_couette(p):
     summary = {
         "format": FORMAT, "task": "couette", "model": p["model"],
         "yade_version": yade.config.version, "grains": n, "dt": O.dt,
-        "warmup_steps": run["warmup_steps"], "average_steps": steps_avg,
-        "sample_every": run["sample_every"], "samples": state["samples"],
-        "sample_columns": ["x", "y", "z", "vx", "vy", "vz"],
         "steps": O.iter, "simulated_time": O.time,
+        "sample_every": every, "wall_rows": state["rows"],
+        "snapshot_every": snap_every, "snapshots": state["snapshots"],
+        "snapshot_columns": ["y", "vx", "vy", "vz"],
         "max_overlap_over_d": max_overlap / d,
         "wall_clock_s": time.time() - t_start, "wall_clock_run_s": wall_clock_run,
-        "threads": int(os.environ.get("OMP_NUM_THREADS", "1")),
     }
     if en is not None:
         summary["en"] = en

@@ -1,0 +1,16 @@
+// `granlub yade CASE [--point ID]`: the cross-check of `granlub dem` in YADE 2023.02a.
+// Each point: the shared initial configuration (granlub/particles.h), a JSON parameter file,
+// the project's driver script granlub_yade.py run by `yade -n -j1 -x` (timeout, exit code
+// checked, log kept), then the shared coarse-graining (granlub/coarse_grain.h) into
+// results/yade/<point>/{profile.csv, summary.json}. See plugins/yade/README.md.
+#pragma once
+#include "granlub/case.h"
+#include "granlub/schema.h"
+#include "granlub/sweep.h"
+
+namespace granlub::yade {
+
+SectionSpec section();                          // the [yade] case section
+int run(const Case& c, const RunOptions& o);    // all selected points, via run_sweep()
+
+}  // namespace granlub::yade

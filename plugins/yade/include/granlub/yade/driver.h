@@ -1,0 +1,48 @@
+// The YADE side of a run: where the launcher and the driver script are, the JSON parameter file
+// the driver reads (plugins/yade/granlub_yade.py, format "granlub-yade/1"), and one checked run.
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "granlub/case.h"
+#include "granlub/particles.h"
+#include "granlub/yade/settings.h"
+
+namespace granlub::yade {
+
+inline constexpr const char* kParamsFormat = "granlub-yade/1";
+
+struct DriverPaths {
+    std::filesystem::path yade;    // launcher: $GRANLUB_YADE, else `yade` on PATH
+    std::filesystem::path script;  // $GRANLUB_YADE_DRIVER, else plugins/yade/granlub_yade.py
+};
+// Throws SolverError saying what is missing and how to get it.
+DriverPaths locate_driver();
+
+// Parameter files. Materials: "grain" (grain-grain), "bottom", "top" (the point's walls) and
+// "side" (the side walls, which slide with the bottom wall and take its restitution and friction,
+// as in `granlub dem`).
+nlohmann::json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
+                              const std::filesystem::path& initial_file);
+nlohmann::json collision_params(const Case& c, const OperatingPoint& p, const Settings& s, double impact_speed);
+
+// Writes `params` to dir/params.json, copies the driver into dir (the folder can be rerun by
+// hand: cd dir && yade -n -j1 -x granlub_yade.py params.json), runs it with the log in
+// dir/yade.log and checks the exit code. Throws SolverError naming the point, what happened,
+// the log file and its last lines.
+void run_driver(const DriverPaths& paths, const std::filesystem::path& dir, nlohmann::json params,
+                const std::string& point, double timeout_s, const std::function<void()>& poll = {});
+
+// Binary collisions in YADE with the contact law of the run: measured normal restitution for
+// grain-grain and grain-wall, for head-on impacts at impact_speed. Files go to `dir`.
+struct Restitution {
+    double grain = 0, bottom = 0, top = 0, side = 0;
+    nlohmann::json en;  // viscel: the calibrated e_n per material (null otherwise)
+};
+Restitution measure_restitution(const Case& c, const OperatingPoint& p, const Settings& s,
+                                const std::filesystem::path& dir, double impact_speed = 1.0);
+
+}  // namespace granlub::yade

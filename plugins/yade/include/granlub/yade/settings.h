@@ -1,0 +1,46 @@
+// The [yade] settings of one run, resolved from the case, the point and the command line, and
+// checked before YADE starts. Run length, sampling and averaging follow `granlub dem`'s
+// definitions (wall forces summed every step and averaged over blocks of sample_every steps,
+// `snapshots` particle snapshots over the run, MSER-5 steady state, block standard errors).
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "granlub/case.h"
+#include "granlub/particles.h"
+#include "granlub/sweep.h"
+
+namespace granlub::yade {
+
+enum class Model { ViscEl, Hertz };
+std::string to_string(Model m);
+
+struct Settings {
+    Model model = Model::ViscEl;
+    double contact_time = 1e-5;            // viscel: t_c, s
+    double tangential_restitution = 0.01;  // viscel: e_t
+    double wall_mass = 1e3;                // viscel: kg
+    bool calibrate_restitution = true;     // viscel: e_n such that a binary collision gives e
+    double dt = 0;                         // s, resolved (never 0)
+    std::int64_t steps = 0;                // multiple of sample_every and of snapshot_every
+    std::int64_t sample_every = 100;       // steps per wall-force mean
+    std::int64_t snapshot_every = 0;       // steps between particle snapshots
+    std::int64_t body_force_every = 10;    // steps between centripetal-force refreshes
+    std::int64_t stations = 20;
+    std::int64_t blocks = 10;
+    double timeout = 0;                    // s; 0 = from the run size
+    // The initial configuration, shared with `granlub dem`: [dem] seed, velocity_noise and
+    // periodic_depth when the case has a [dem] section, else the core defaults; --seed overrides.
+    InsertionOptions insertion;
+    double periodic_depth = 0;
+};
+
+// Rayleigh time of the grains (as LIGGGHTS' check/timestep/gran and `granlub dem`):
+// t_R = pi r sqrt(rho/G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)).
+double rayleigh_time(const Grains& g);
+
+// Reads [yade] for point p; --full selects time_full, --seed overrides the seed.
+// Throws CaseError (file, key, value, what is allowed) for settings that cannot work.
+Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o);
+
+}  // namespace granlub::yade

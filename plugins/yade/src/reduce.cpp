@@ -1,0 +1,205 @@
+#include "granlub/yade/reduce.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <span>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "granlub/coarse_grain.h"
+#include "granlub/error.h"
+
+namespace granlub::yade {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+WallForces read_wall_forces(const fs::path& file) {
+    std::ifstream in(file);
+    if (!in) throw SolverError(fmt::format("{}: missing (the YADE run wrote no wall forces)", file.string()));
+    WallForces w;
+    std::vector<double>* cols[] = {&w.step,   &w.fx_bottom, &w.fy_bottom, &w.fz_bottom, &w.fx_top,
+                                   &w.fy_top, &w.fz_top,    &w.fx_side1,  &w.fx_side2};
+    constexpr std::size_t kCols = std::size(cols);
+    const std::string expected = "step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2";
+    std::string line;
+    bool header = false;
+    for (int n = 1; std::getline(in, line); ++n) {
+        if (line.empty() || line[0] == '#') continue;
+        if (!header) {
+            if (line != expected)
+                throw SolverError(fmt::format("{}:{}: header '{}', expected '{}'", file.string(), n, line, expected));
+            header = true;
+            continue;
+        }
+        std::istringstream ss(line);
+        std::string cell;
+        std::size_t k = 0;
+        while (std::getline(ss, cell, ',')) {
+            char* end = nullptr;
+            const double v = std::strtod(cell.c_str(), &end);
+            if (k >= kCols || end == cell.c_str() || *end != '\0' || !std::isfinite(v))
+                throw SolverError(fmt::format("{}:{}: malformed row '{}'", file.string(), n, line));
+            cols[k++]->push_back(v);
+        }
+        if (k != kCols) throw SolverError(fmt::format("{}:{}: {} values, expected {}", file.string(), n, k, kCols));
+    }
+    if (!header) throw SolverError(fmt::format("{}: no header row", file.string()));
+    return w;
+}
+
+namespace {
+
+json read_json(const fs::path& file, const std::string& what) {
+    std::ifstream in(file);
+    if (!in) throw SolverError(fmt::format("{}: missing ({})", file.string(), what));
+    try {
+        json j;
+        in >> j;
+        return j;
+    } catch (const json::exception& e) {
+        throw SolverError(fmt::format("{}: malformed: {}", file.string(), e.what()));
+    }
+}
+
+// Streams samples.bin into the coarse-grainer, one snapshot at a time (no whole-run buffer).
+void coarse_grain_samples(const fs::path& file, std::size_t n, std::size_t snapshots, double snapshot_dt,
+                          const std::vector<double>& radius, SliceCoarseGrainer& cg) {
+    constexpr std::size_t kCols = 4;  // y, vx, vy, vz
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw SolverError(fmt::format("{}: missing (the YADE run wrote no snapshots)", file.string()));
+    const auto bytes = fs::file_size(file);
+    if (bytes != snapshots * n * kCols * sizeof(double))
+        throw SolverError(fmt::format("{}: {} bytes, expected {} snapshots x {} grains x {} doubles", file.string(),
+                                      bytes, snapshots, n, kCols));
+    std::vector<double> buf(n * kCols);
+    ParticleSet p;
+    p.x.assign(n, 0.0), p.y.resize(n), p.z.assign(n, 0.0), p.vx.resize(n), p.vy.resize(n), p.vz.resize(n);
+    p.radius = radius;
+    for (std::size_t s = 0; s < snapshots; ++s) {
+        in.read(reinterpret_cast<char*>(buf.data()), static_cast<std::streamsize>(buf.size() * sizeof(double)));
+        if (!in) throw SolverError(fmt::format("{}: short read at snapshot {}", file.string(), s));
+        for (std::size_t i = 0; i < n; ++i) {
+            const double* r = &buf[i * kCols];  // little-endian doubles, as on every supported host
+            p.y[i] = r[0], p.vx[i] = r[1], p.vy[i] = r[2], p.vz[i] = r[3];
+        }
+        cg.add_snapshot(p, static_cast<double>(s + 1) * snapshot_dt);
+    }
+}
+
+std::vector<double> times(const std::vector<double>& v, double k) {
+    std::vector<double> o(v);
+    for (double& x : o) x *= k;
+    return o;
+}
+
+}  // namespace
+
+PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
+                         const std::vector<double>& radius, const fs::path& dir, Summary base) {
+    const json ds = read_json(dir / "driver_summary.json", "the YADE run did not finish");
+    const auto n = ds.at("grains").get<std::size_t>();
+    const auto snapshots = ds.at("snapshots").get<std::size_t>();
+    const double dt = ds.at("dt").get<double>();
+    if (n != radius.size())
+        throw SolverError(fmt::format("{}: {} grains, the initial file has {}", (dir / "driver_summary.json").string(),
+                                      n, radius.size()));
+    const WallForces w = read_wall_forces(dir / "wallforce.csv");
+    const auto expected_rows = static_cast<std::size_t>(s.steps / s.sample_every);
+    if (w.rows() != expected_rows)
+        throw SolverError(fmt::format("{}: {} rows, expected {}", (dir / "wallforce.csv").string(), w.rows(),
+                                      expected_rows));
+
+    SliceCoarseGrainer cg(Stations{0.0, box.gap, static_cast<std::size_t>(s.stations)}, box.length * box.width);
+    coarse_grain_samples(dir / "samples.bin", n, snapshots, dt * static_cast<double>(s.snapshot_every), radius, cg);
+    if (cg.snapshots() < 2) throw SolverError(fmt::format("point {}: fewer than 2 particle snapshots", p.id));
+
+    // Stresses on the grains' side of each wall, positive for a sheared, compressed layer: the
+    // grains push the bottom wall to -y and the top wall to +y, drag the bottom (and side) walls
+    // to -x and the top wall to +x.
+    const double A = box.length * box.width;
+    const std::vector<double> sig_b = times(w.fy_bottom, -1.0 / A), sig_t = times(w.fy_top, 1.0 / A);
+    const std::vector<double> tau_b = times(w.fx_bottom, -1.0 / A), tau_t = times(w.fx_top, 1.0 / A);
+
+    std::size_t start = 0;
+    bool steady = true;
+    for (const auto* v : {&sig_b, &sig_t, &tau_b, &tau_t}) {
+        const SteadyState ss = detect_steady_state(*v);
+        start = std::max(start, ss.start);
+        steady = steady && ss.steady;
+    }
+    const double t_start = start < w.rows() ? (w.step[start] - static_cast<double>(s.sample_every)) * dt : 0.0;
+    const auto blocks = static_cast<std::size_t>(s.blocks);
+    auto est = [&](const std::vector<double>& v) {
+        return block_average(std::span<const double>(v).subspan(std::min(start, v.size())), blocks);
+    };
+    Summary sum = std::move(base);
+    auto put = [&](const std::string& name, const BlockEstimate& e, const char* unit) {
+        sum.set(name, e.mean, unit, e.stderr_);
+        return e.mean;
+    };
+    const double P_b = put("normal_stress_bottom", est(sig_b), "Pa");
+    const double P_t = put("normal_stress_top", est(sig_t), "Pa");
+    const double T_b = put("shear_stress_bottom", est(tau_b), "Pa");
+    const double T_t = put("shear_stress_top", est(tau_t), "Pa");
+    if (!box.periodic_z) {  // side walls: shear stress on each (area L H), mean of both
+        std::vector<double> side(w.rows());
+        const double As = box.length * box.gap;
+        for (std::size_t i = 0; i < side.size(); ++i) side[i] = -0.5 * (w.fx_side1[i] + w.fx_side2[i]) / As;
+        put("shear_stress_side", est(side), "Pa");
+    }
+
+    // snapshots from the steady state on
+    const auto& ts = cg.times();
+    std::size_t first = 0;
+    while (first < ts.size() && ts[first] < t_start - 1e-12) ++first;
+    if (ts.size() - first < 2) first = ts.size() - 2;
+    Profile prof = cg.profile(p.speed, first, blocks);
+
+    const auto& u = prof.column("u_over_U");
+    const auto& ue = prof.column("u_over_U_stderr");
+    const double U = p.speed;
+    // slip: wall speed minus the mean velocity of the slab next to the wall (the wall layer)
+    sum.set("slip_bottom", U * (1.0 - u.front()), "m/s", U * ue.front());
+    sum.set("slip_top", U * u.back(), "m/s", U * ue.back());
+    const double nu = cg.mean_solid_fraction(first, cg.snapshots());
+    sum.set("mean_solid_fraction", nu, "");
+    sum.set("max_solid_fraction", c.cell.max_solid_fraction, "");  // as granlub dem: the case's nu_max
+
+    const auto steps = ds.at("steps").get<double>();
+    const double yade_run_s = ds.at("wall_clock_run_s").get<double>();
+    sum.run["engine"] = "YADE " + ds.value("yade_version", std::string("?"));
+    sum.run["model"] = to_string(s.model);
+    sum.run["grains"] = n;
+    sum.run["steps"] = ds.at("steps");
+    sum.run["time_step_s"] = dt;
+    sum.run["simulated_time_s"] = ds.at("simulated_time");
+    sum.run["steady_state_detected"] = steady;
+    sum.run["steady_state_start_s"] = t_start;
+    sum.run["wall_samples"] = w.rows();
+    sum.run["wall_samples_used"] = w.rows() - std::min(start, w.rows());
+    sum.run["snapshots"] = cg.snapshots();
+    sum.run["snapshots_used"] = cg.snapshots() - first;
+    sum.run["max_overlap_over_d"] = ds.at("max_overlap_over_d");
+    sum.run["yade_wall_clock_s"] = ds.at("wall_clock_s");
+    sum.run["loop_time_s"] = yade_run_s;
+    sum.run["atom_steps_per_s"] = yade_run_s > 0 ? static_cast<double>(n) * steps / yade_run_s : 0.0;
+    if (ds.contains("en")) sum.run["calibrated_en"] = ds["en"];
+    sum.run["command"] = "yade -n -j1 -x granlub_yade.py params.json";
+
+    PointResult r;
+    r.profile = std::move(prof);
+    r.summary = std::move(sum);
+    r.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa slip={:.3f}/{:.3f} U{}"
+                         "  [{} grains, {} steps, {:.3g} atom-steps/s]",
+                         nu, P_b, P_t, T_b, T_t, 1.0 - u.front(), u.back(),
+                         steady ? fmt::format(" (steady from {:.3g} s)", t_start)
+                                : " (NO steady state detected: run longer)",
+                         n, ds.at("steps").get<long long>(), r.summary.run["atom_steps_per_s"].get<double>());
+    return r;
+}
+
+}  // namespace granlub::yade

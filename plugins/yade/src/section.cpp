@@ -1,0 +1,35 @@
+// The [yade] case section: one line per key (type, default, range, unit, doc).
+#include "granlub/yade/command.h"
+
+namespace granlub::yade {
+
+SectionSpec section() {
+    SectionSpec s("yade", "YADE cross-check of the particle simulation (plugins/yade)");
+    s.choice("model", "viscel", {"viscel", "hertz"},
+             "contact law: viscel = ViscElMat spring-dashpot with small e_t (closest to the impulse "
+             "operator); hertz = Hertz-Mindlin with Tsuji damping, as [dem] model = \"hertz\"");
+    s.real("contact_time", 1e-5, Range::positive(), "s", "viscel: binary contact duration t_c");
+    s.real("tangential_restitution", 0.01, Range::open_closed(0, 1), "",
+           "viscel: tangential restitution e_t (small: sliding stops when slip vanishes)");
+    s.real("wall_mass", 1e3, Range::positive(), "kg",
+           "viscel: mass given to the walls (ViscElMat needs one for the right reduced mass)");
+    s.boolean("calibrate_restitution", true,
+              "viscel: search e_n so that a binary collision in YADE gives the case's restitution");
+    s.real("dt", 0.0, Range::non_negative(), "s",
+           "time step; 0 = contact_time/20 (viscel) or 0.15 Rayleigh times (hertz, as granlub dem)");
+    s.real("time", 4e-3, Range::positive(), "s",
+           "simulated time of a quick run (~40 s of YADE per sawyer2001 point with viscel)");
+    s.real("time_full", 0.2, Range::positive(), "s", "simulated time with --full");
+    s.integer("sample_every", 100, Range::at_least(1),
+              "wall-force block length in steps (forces are summed every step), as granlub dem");
+    s.integer("snapshots", 50, Range::at_least(2), "particle snapshots over the run for coarse-graining");
+    s.integer("body_force_every", 10, Range::at_least(1),
+              "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");
+    s.integer("stations", 20, Range::at_least(2), "coarse-graining slabs across the gap");
+    s.integer("blocks", 10, Range::at_least(2), "blocks for the standard errors (block averaging)");
+    s.real("timeout", 0.0, Range::non_negative(), "s",
+           "wall-clock limit of one YADE run; 0 = 120 s + 20 us per grain-step");
+    return s;
+}
+
+}  // namespace granlub::yade

@@ -1,0 +1,78 @@
+#include "granlub/yade/settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "granlub/error.h"
+
+namespace granlub::yade {
+
+std::string to_string(Model m) { return m == Model::ViscEl ? "viscel" : "hertz"; }
+
+double rayleigh_time(const Grains& g) {
+    const double G = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
+    return std::numbers::pi * 0.5 * g.diameter * std::sqrt(g.density / G) / (0.1631 * g.poisson_ratio + 0.8766);
+}
+
+// The Hertz time step of `granlub dem` (its hertz_step_fraction default), so both engines step alike.
+inline constexpr double kHertzStepFraction = 0.15;
+
+Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
+    const Section& s = c.section("yade");
+    Settings r;
+    r.model = s.string("model") == "hertz" ? Model::Hertz : Model::ViscEl;
+    r.contact_time = s.real("contact_time");
+    r.tangential_restitution = s.real("tangential_restitution");
+    r.wall_mass = s.real("wall_mass");
+    r.calibrate_restitution = s.boolean("calibrate_restitution");
+    r.sample_every = s.integer("sample_every");
+    r.body_force_every = s.integer("body_force_every");
+    r.stations = s.integer("stations");
+    r.blocks = s.integer("blocks");
+    r.timeout = s.real("timeout");
+
+    if (p.control == Control::Load)
+        c.section("operating").fail("control", "granlub yade runs the filled cell only (a servo-controlled top "
+                                               "wall is not implemented, as in granlub dem); use control = \"fill\"");
+
+    // Same initial grains as `granlub dem`: its insertion keys when the case has them.
+    r.insertion.wall_speed = p.speed;
+    if (c.sections.count("dem")) {
+        const Section& dem = c.section("dem");
+        if (dem.has("seed")) r.insertion.seed = static_cast<std::uint64_t>(dem.integer("seed"));
+        if (dem.has("velocity_noise")) r.insertion.velocity_noise = dem.real("velocity_noise");
+        if (dem.has("periodic_depth")) r.periodic_depth = dem.real("periodic_depth");
+    }
+    if (o.seed) r.insertion.seed = *o.seed;
+
+    const double tr = rayleigh_time(c.grains);
+    r.dt = s.real("dt");
+    if (r.dt == 0) r.dt = r.model == Model::ViscEl ? r.contact_time / 20.0 : kHertzStepFraction * tr;
+    if (r.model == Model::ViscEl && r.dt > r.contact_time / 10.0)
+        s.fail("dt", fmt::format("too large for contact_time = {:g} s: a contact needs at least 10 steps "
+                                 "(allowed: dt <= {:g} s, or 0 for contact_time/20)",
+                                 r.contact_time, r.contact_time / 10.0));
+    if (r.model == Model::Hertz && r.dt > 0.5 * tr)
+        s.fail("dt", fmt::format("too large for Hertz contacts of these grains (Rayleigh time {:g} s) "
+                                 "(allowed: dt <= {:g} s, or 0 for {} Rayleigh times)",
+                                 tr, 0.5 * tr, kHertzStepFraction));
+
+    const std::string time_key = o.full ? "time_full" : "time";
+    const double time = s.real(time_key);
+    const auto rows = static_cast<std::int64_t>(std::llround(time / (r.dt * static_cast<double>(r.sample_every))));
+    if (rows < 2 * r.blocks)
+        s.fail(time_key, fmt::format("gives {} wall-force block(s) of sample_every = {} steps of {:g} s; the "
+                                     "standard errors need at least 2 x blocks = {} (allowed: {} >= {:g} s)",
+                                     rows, r.sample_every, r.dt, 2 * r.blocks, time_key,
+                                     static_cast<double>(2 * r.blocks * r.sample_every) * r.dt));
+    r.steps = rows * r.sample_every;
+    const std::int64_t snapshots = s.integer("snapshots");
+    r.snapshot_every = r.sample_every * std::max<std::int64_t>(1, rows / snapshots);
+    r.steps -= r.steps % r.snapshot_every;  // whole snapshot intervals (drops < snapshots rows)
+    return r;
+}
+
+}  // namespace granlub::yade
