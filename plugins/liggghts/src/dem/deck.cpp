@@ -61,6 +61,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("newton          off");
     line("communicate     single vel yes");
     line("units           si");
+    line("hard_particles  yes     # glass: Young's modulus above LIGGGHTS' 1 GPa sanity limit");
     line("processors      * 1 1   # split along the flow only");
     line(fmt::format("read_data       {}", kData));
     line(fmt::format("neighbor        {:.17g} bin", s.skin));

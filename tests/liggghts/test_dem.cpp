@@ -1,0 +1,211 @@
+// `granlub dem` end to end on a small shear cell (a few hundred grains, a few thousand steps):
+// complete result files with finite stresses, momentum balance across the gap, determinism,
+// the Hertz reference, 2 MPI ranks, and clear errors for bad inputs.
+#define BOOST_TEST_MODULE liggghts_dem
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <regex>
+
+#include "granlub/case.h"
+#include "granlub/dem/command.h"
+#include "granlub/error.h"
+#include "granlub/particles.h"
+#include "granlub/results.h"
+#include "granlub/sweep.h"
+#include "settings.h"
+
+using namespace granlub;
+namespace fs = std::filesystem;
+
+namespace {
+
+// d = 1 mm grains in an 8 x 6 x 6 mm cell at solid fraction 0.4: 220 grains.
+const std::string kCase = R"(
+[case]
+name = "tiny"
+[grains]
+diameter = 1.0e-3
+density = 2500.0
+restitution = 0.9
+friction = 0.5
+[walls]
+restitution = 0.8
+roughness = 0.5
+[cell]
+gap = 6.0e-3
+length = 8.0e-3
+width = 6.0e-3
+annulus_radius = 0.05
+[operating]
+speed = [1.0]
+solid_fraction = 0.4
+[body_forces]
+gravity = 9.81
+[dem]
+time = 0.02
+sample_every = 20
+snapshots = 10
+stations = 6
+)";
+
+Schema schema() {
+    Schema s = Schema::common();
+    s.add(dem::section());
+    return s;
+}
+
+std::string edit(std::string text, const std::string& from, const std::string& to) {
+    return std::regex_replace(text, std::regex(from), to);
+}
+
+fs::path scratch(const std::string& name) {
+    const fs::path d = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_dem" / name;
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+struct Run {
+    int code = 1;
+    fs::path dir;
+};
+
+Run run(const std::string& text, const std::string& name, int np = 1) {
+    const Case c = parse_case(text, "tiny.toml", schema());
+    RunOptions o;
+    o.results_root = scratch(name);
+    o.np = np;
+    Run r;
+    r.code = dem::run(c, o);
+    r.dir = result_dir(o.results_root, "dem", c.points.front().id);
+    return r;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(short_shear_cell_writes_complete_finite_results) {
+    const Run r = run(kCase, "basic");
+    BOOST_TEST_REQUIRE(r.code == 0);
+    const Case c = parse_case(kCase, "tiny.toml", schema());
+    BOOST_TEST((result_status(r.dir, c.inputs_hash("dem")).state == ResultState::Complete));
+    const Summary s = read_summary(r.dir / "summary.json");
+    for (const char* name : kStandardOutputs) {
+        BOOST_TEST_REQUIRE(s.outputs.count(name) == 1u, name);
+        BOOST_TEST(std::isfinite(s.value(name)));
+    }
+    for (const char* name : {"normal_stress_bottom", "normal_stress_top", "shear_stress_bottom", "shear_stress_top"}) {
+        BOOST_TEST(s.value(name) > 0.0, name);
+        BOOST_TEST(s.outputs.at(name).stderr_.value_or(-1) > 0.0, name);
+    }
+    BOOST_TEST(std::abs(s.value("mean_solid_fraction") - 0.4) < 2e-3);
+    const double dt = s.run.at("time_step_s").get<double>();
+    BOOST_TEST(s.run.at("steps").get<long>() == std::lround(std::ceil(0.02 / dt - 1e-9)));
+    BOOST_TEST(s.run.at("atom_steps_per_s").get<double>() > 0.0);
+    const Profile p = read_profile(r.dir / "profile.csv");
+    BOOST_TEST(p.rows() == 6u);
+    for (const char* col : kProfileColumns) BOOST_TEST(p.has(col), col);
+    BOOST_TEST(p.has("u_over_U_stderr"));
+    // sheared: faster near the moving wall than near the fixed one
+    BOOST_TEST(p.column("u_over_U").front() > p.column("u_over_U").back());
+    // the readable deck and the initial configuration stay for reruns
+    std::ifstream deck(r.dir / "in.granlub");
+    std::stringstream ss;
+    ss << deck.rdbuf();
+    BOOST_TEST(ss.str().find("pair_style      gran model impulse tangential impulse") != std::string::npos);
+    BOOST_TEST(fs::exists(r.dir.parent_path().parent_path() / "initial" / "U1.0" / "particles.csv"));
+    BOOST_TEST(!fs::exists(r.dir / "snapshots.txt"));
+}
+
+BOOST_AUTO_TEST_CASE(wall_stresses_carry_the_weight_of_the_grains) {
+    // periodic across z (no side walls): in the mean, bottom minus top normal force = weight
+    const std::string text = edit(edit(kCase, "width = 6.0e-3", "width = 0.0"), "time = 0.02", "time = 0.06");
+    const Run r = run(edit(text, "\\[dem\\]", "[dem]\nperiodic_depth = 6.0e-3"), "weight");
+    BOOST_TEST_REQUIRE(r.code == 0);
+    const Summary s = read_summary(r.dir / "summary.json");
+    const double n = static_cast<double>(s.run.at("atoms").get<long>());
+    const double m = 2500.0 * std::numbers::pi / 6.0 * 1e-9;
+    const double weight_stress = n * m * 9.81 / (8e-3 * 6e-3);
+    const double diff = s.value("normal_stress_bottom") - s.value("normal_stress_top");
+    const double se = std::hypot(*s.outputs.at("normal_stress_bottom").stderr_, *s.outputs.at("normal_stress_top").stderr_);
+    BOOST_TEST_MESSAGE("weight " << weight_stress << " Pa, P_bot - P_top " << diff << " +- " << se);
+    BOOST_TEST(std::abs(diff - weight_stress) < 4.0 * se + 0.05 * weight_stress);
+}
+
+BOOST_AUTO_TEST_CASE(same_seed_same_numbers) {
+    const Run a = run(kCase, "seed_a");
+    const Run b = run(kCase, "seed_b");
+    BOOST_TEST_REQUIRE(a.code == 0);
+    BOOST_TEST_REQUIRE(b.code == 0);
+    const Summary sa = read_summary(a.dir / "summary.json"), sb = read_summary(b.dir / "summary.json");
+    BOOST_TEST(sa.value("normal_stress_top") == sb.value("normal_stress_top"));
+    BOOST_TEST(sa.value("shear_stress_bottom") == sb.value("shear_stress_bottom"));
+}
+
+BOOST_AUTO_TEST_CASE(hertz_reference_runs_with_the_grains_elastic_constants) {
+    const Run r = run(edit(kCase, "time = 0.02", "time = 0.002\nmodel = \"hertz\""), "hertz");
+    BOOST_TEST_REQUIRE(r.code == 0);
+    const Summary s = read_summary(r.dir / "summary.json");
+    BOOST_TEST(s.value("normal_stress_bottom") > 0.0);
+    BOOST_TEST(s.run.at("model").get<std::string>() == "hertz");
+    // glass (E = 63 GPa, nu = 0.23) at d = 1 mm: time step 0.15 Rayleigh times, ~1e-7 s
+    BOOST_TEST(s.run.at("time_step_s").get<double>() < 2e-7);
+    std::ifstream deck(r.dir / "in.granlub");
+    std::stringstream ss;
+    ss << deck.rdbuf();
+    BOOST_TEST(ss.str().find("model hertz tangential history") != std::string::npos);
+    BOOST_TEST(ss.str().find("youngsModulus peratomtype 63000000000") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(two_mpi_ranks_complete) {
+    const Run r = run(kCase, "np2", 2);
+    BOOST_TEST_REQUIRE(r.code == 0);
+    const Summary s = read_summary(r.dir / "summary.json");
+    BOOST_TEST(s.run.at("ranks").get<int>() == 2);
+    BOOST_TEST(s.value("normal_stress_bottom") > 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
+    try {  // unknown model name
+        parse_case(edit(kCase, "\\[dem\\]", "[dem]\nmodel = \"hooke\""), "tiny.toml", schema());
+        BOOST_FAIL("expected a CaseError");
+    } catch (const CaseError& e) {
+        const std::string w = e.what();
+        BOOST_TEST(w.find("model") != std::string::npos);
+        BOOST_TEST(w.find("impulse") != std::string::npos);
+    }
+    try {  // missing restitution
+        parse_case(edit(kCase, "restitution = 0.9\n", ""), "tiny.toml", schema());
+        BOOST_FAIL("expected a CaseError");
+    } catch (const CaseError& e) {
+        BOOST_TEST(std::string(e.what()).find("restitution") != std::string::npos);
+    }
+    {  // a fill too dense to insert: the point fails, no result is written
+        const std::string dense = edit(edit(kCase, "solid_fraction = 0.4", "solid_fraction = 0.72"), "annulus_radius = 0.05",
+                                       "annulus_radius = 0.05\nmax_solid_fraction = 0.74");
+        const Case c = parse_case(dense, "tiny.toml", schema());
+        try {
+            initial_particles(c, c.points.front(), scratch("dense_direct"), {});
+            BOOST_FAIL("expected a CaseError");
+        } catch (const CaseError& e) {
+            const std::string w = e.what();
+            BOOST_TEST(w.find("solid_fraction") != std::string::npos);
+            BOOST_TEST(w.find("at most") != std::string::npos);
+        }
+        const Run r = run(dense, "dense");
+        BOOST_TEST(r.code == 1);
+        BOOST_TEST(!fs::exists(r.dir / "summary.json"));
+    }
+    {  // a time step that lets grains tunnel
+        const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ntime_step = 1e-4"), "tiny.toml", schema());
+        try {
+            dem::resolve(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("expected a CaseError");
+        } catch (const CaseError& e) {
+            BOOST_TEST(std::string(e.what()).find("time_step") != std::string::npos);
+        }
+    }
+}
