@@ -65,9 +65,10 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
         bc.params.slip_dissipation = s.slip_dissipation;
         if (!(bc.params.r5 > 0))
             throw SolverError(fmt::format(
-                "R5 = 0 at the {} wall (roughness {}): a smooth wall exerts no traction, so the GKL model has no "
-                "sheared steady state (plug flow, T -> 0); set [continuum] r5_{} > 0 or use a rough wall",
-                side, w.roughness, side));
+                "R5 = 0 at the {} wall (from [continuum] r5_{}, r5, or the wall roughness {}): a smooth wall exerts "
+                "no traction, so the GKL model has no sheared steady state (plug flow, T -> 0); set [continuum] "
+                "r5_{} > 0 or use a rough wall",
+                side, side, w.roughness, side));
         return bc;
     };
     q.bottom = wall(p.bottom, "bottom");

@@ -1,0 +1,228 @@
+// `granlub continuum` end to end on small in-memory cases: result files, resume, --point,
+// determinism, the shooting method key, and the bad-input paths (clear CaseError/SolverError).
+#define BOOST_TEST_MODULE continuum_command
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include "granlub/case.h"
+#include "granlub/continuum/case_setup.h"
+#include "granlub/continuum/command.h"
+#include "granlub/error.h"
+#include "granlub/results.h"
+
+using namespace granlub;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kCase = R"(
+[case]
+name = "st_load"
+[grains]
+diameter = 0.787e-3
+density = 2550.0
+restitution = 0.9
+[walls]
+restitution = 0.9
+roughness = 0.5
+[cell]
+gap = 4.0e-3
+length = 30.0e-3
+max_solid_fraction = 0.65
+[operating]
+speed = [1.4, 2.0, 2.8]
+control = "load"
+normal_stress = 5.5e3
+)";
+
+Schema schema() {
+    Schema s = Schema::common();
+    s.add(continuum::section());
+    return s;
+}
+
+Case parse(const std::string& extra, const std::string& base = kCase) {
+    return parse_case(base + extra, "test.toml", schema());
+}
+
+std::string case_error(const std::string& extra) {
+    try {
+        parse(extra);
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        path = fs::temp_directory_path() / ("granlub_continuum_test_" + std::to_string(::getpid()));
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(run_writes_complete_results_and_resumes) {
+    TempDir tmp;
+    const Case c = parse("");
+    RunOptions o;
+    o.results_root = tmp.path;
+    BOOST_TEST(continuum::run(c, o) == 0);
+    const double expect_nu[3] = {0.61039, 0.57768, 0.53034};
+    const double expect_tau[3] = {1512.30, 1506.21, 1496.09};
+    int k = 0;
+    for (const char* id : {"U1.4", "U2.0", "U2.8"}) {
+        BOOST_TEST_CONTEXT("point " << id) {
+            const fs::path dir = tmp.path / "continuum" / id;
+            const Profile p = read_profile(dir / "profile.csv");
+            BOOST_TEST(p.rows() >= 101u);
+            for (const char* col : kProfileColumns) BOOST_TEST(p.has(col));
+            BOOST_TEST(p.column("y_over_H").front() == 0.0);
+            BOOST_TEST(p.column("y_over_H").back() == 1.0);
+            const Summary s = read_summary(dir / "summary.json");
+            for (const char* name : kStandardOutputs) BOOST_TEST(std::isfinite(s.value(name)));
+            BOOST_TEST(std::abs(s.value("mean_solid_fraction") - expect_nu[k]) < 2e-5);
+            BOOST_TEST(std::abs(s.value("shear_stress_bottom") - expect_tau[k]) / expect_tau[k] < 1e-4);
+            BOOST_TEST(s.value("normal_stress_bottom") == 5.5e3);
+            BOOST_TEST(s.value("normal_stress_top") == 5.5e3);
+            BOOST_TEST(std::abs(s.value("slip_bottom") - s.value("slip_top")) < 1e-9);
+            BOOST_TEST(s.value("solid_fraction_centre") > s.value("solid_fraction_bottom"));
+            BOOST_TEST(s.value("temperature_bottom") > s.value("temperature_centre"));
+            BOOST_TEST(s.run.at("iterations").get<int>() >= 1);
+            BOOST_TEST(s.run.at("final_residual").get<double>() < 1e-10);
+            BOOST_TEST((result_status(dir, c.inputs_hash("continuum")).state == ResultState::Complete));
+        }
+        ++k;
+    }
+    // resume: complete points are skipped (the files are not rewritten)
+    const auto stamp = fs::last_write_time(tmp.path / "continuum" / "U2.0" / "summary.json");
+    BOOST_TEST(continuum::run(c, o) == 0);
+    BOOST_TEST((fs::last_write_time(tmp.path / "continuum" / "U2.0" / "summary.json") == stamp));
+}
+
+BOOST_AUTO_TEST_CASE(point_selection_and_determinism) {
+    TempDir tmp;
+    const Case c = parse("");
+    RunOptions o;
+    o.results_root = tmp.path;
+    o.point = "U2.0";
+    BOOST_TEST(continuum::run(c, o) == 0);
+    BOOST_TEST(!fs::exists(tmp.path / "continuum" / "U1.4"));
+    const Summary a = read_summary(tmp.path / "continuum" / "U2.0" / "summary.json");
+    o.force = true;
+    BOOST_TEST(continuum::run(c, o) == 0);
+    const Summary b = read_summary(tmp.path / "continuum" / "U2.0" / "summary.json");
+    for (const auto& [name, v] : a.outputs) BOOST_TEST(v.value == b.value(name), name);
+    o.point = "U9.9";
+    BOOST_CHECK_THROW(continuum::run(c, o), Error);
+}
+
+BOOST_AUTO_TEST_CASE(fill_control_and_shooting_method_agree_with_fv) {
+    const std::string fill = R"(
+[operating]
+speed = [1.4, 2.8]
+control = "fill"
+solid_fraction = 0.595
+)";
+    std::string base(kCase);
+    base = base.substr(0, base.find("[operating]"));
+    const Case fv = parse_case(base + fill, "test.toml", schema());
+    const Case sh = parse_case(base + fill + "[continuum]\nmethod = \"shooting\"\n", "test.toml", schema());
+    const auto sfv = continuum::settings_from_case(fv);
+    const auto ssh = continuum::settings_from_case(sh);
+    for (std::size_t i = 0; i < fv.points.size(); ++i) {
+        const auto a = continuum::solve_point(fv, sfv, fv.points[i]);
+        const auto b = continuum::solve_point(sh, ssh, sh.points[i]);
+        BOOST_TEST(std::abs(a.summary.value("mean_solid_fraction") - 0.595) < 1e-9);
+        BOOST_TEST(std::abs(b.summary.value("mean_solid_fraction") - 0.595) < 1e-5);
+        for (const char* q : {"normal_stress_bottom", "shear_stress_bottom", "slip_bottom"})
+            BOOST_TEST(std::abs(a.summary.value(q) / b.summary.value(q) - 1) < 1e-5, q);
+        BOOST_TEST(b.summary.run.at("method").get<std::string>() == "shooting");
+        // guide §7.5: P = 3761 Pa at U = 1.4 and 15044 Pa at U = 2.8
+        const double P = fv.points[i].speed < 2 ? 3761 : 15044;
+        BOOST_TEST(std::abs(a.summary.value("normal_stress_bottom") - P) < 1.0);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(per_wall_roughness_factors_override_the_case_roughness) {
+    const Case c = parse("[continuum]\nr6 = 0.2\nr5_top = 0.8\n");
+    const auto s = continuum::settings_from_case(c);
+    const auto p = continuum::problem_for(c, s, c.points[0]);
+    BOOST_TEST(p.bottom.params.r5 == 0.5);
+    BOOST_TEST(p.top.params.r5 == 0.8);
+    BOOST_TEST(p.bottom.params.r6 == 0.2);
+    BOOST_TEST(p.top.params.r6 == 0.2);
+    BOOST_TEST(p.top.params.r8 == 0.5);
+    const auto r = continuum::solve_point(c, s, c.points[0]);
+    BOOST_TEST(r.summary.value("slip_top") < r.summary.value("slip_bottom"));  // rougher top wall slips less
+    BOOST_TEST(std::abs(r.summary.value("shear_stress_top") / r.summary.value("shear_stress_bottom") - 1) < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(bad_keys_are_rejected_with_the_key_and_what_is_allowed) {
+    std::string e = case_error("[continuum]\ng0 = \"bogus\"\n");
+    BOOST_TEST(contains(e, "g0"));
+    BOOST_TEST(contains(e, "ogawa"));
+    e = case_error("[continuum]\ncells = 10\n");
+    BOOST_TEST(contains(e, "cells"));
+    BOOST_TEST(contains(e, "100"));
+    e = case_error("[continuum]\nwall_model = \"smooth\"\n");
+    BOOST_TEST(contains(e, "wall_model"));
+    BOOST_TEST(contains(e, "jj"));
+    e = case_error("[continuum]\nr5 = 1.5\n");
+    BOOST_TEST(contains(e, "r5"));
+    e = case_error("[continuum]\ncels = 200\n");
+    BOOST_TEST(contains(e, "cels"));
+    e = case_error("[continuum]\ntolerance = -1\n");
+    BOOST_TEST(contains(e, "tolerance"));
+}
+
+BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
+    TempDir tmp;
+    // smooth walls: no traction, no sheared steady state
+    const Case c = parse("[continuum]\nr5 = 0.0\n");
+    RunOptions o;
+    o.results_root = tmp.path;
+    o.point = "U2.0";
+    BOOST_TEST(continuum::run(c, o) == 1);
+    BOOST_TEST(!fs::exists(tmp.path / "continuum" / "U2.0" / "summary.json"));
+    BOOST_TEST(!fs::exists(tmp.path / "continuum" / "U2.0" / "profile.csv"));
+    const auto s = continuum::settings_from_case(c);
+    try {
+        continuum::solve_point(c, s, c.points[1]);
+        BOOST_FAIL("R5 = 0 accepted");
+    } catch (const SolverError& e) {
+        BOOST_TEST(contains(e.what(), "R5 = 0"));
+        BOOST_TEST(contains(e.what(), "r5_bottom"));
+    }
+    // a fill fraction at or above the closures' limit
+    std::string base(kCase);
+    base = base.substr(0, base.find("[operating]"));
+    try {
+        parse_case(base + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.7\n", "test.toml", schema());
+        BOOST_FAIL("solid_fraction above nu_max accepted");
+    } catch (const CaseError& e) {
+        BOOST_TEST(contains(e.what(), "solid_fraction"));
+        BOOST_TEST(contains(e.what(), "max_solid_fraction"));
+    }
+    // Newton that cannot converge names the residual and what to try
+    const Case tight = parse("[continuum]\nmax_iterations = 1\nmax_continuation_steps = 1\n");
+    try {
+        continuum::solve_point(tight, continuum::settings_from_case(tight), tight.points[0]);
+        BOOST_FAIL("one Newton iteration should not converge");
+    } catch (const SolverError& e) {
+        BOOST_TEST(contains(e.what(), "residual"));
+        BOOST_TEST(contains(e.what(), "try"));
+    }
+}
