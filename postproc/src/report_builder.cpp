@@ -172,7 +172,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
             problems.rows.push_back({{r.solver, ""}, {r.point->id, ""}, {state_name(r.status.state), state_class(r.status.state)},
                                      {r.status.reason, ""}});
     if (!problems.rows.empty()) {
-        rep.text("Stale results were computed for other inputs (rerun the solver); corrupt ones cannot be read. "
+        rep.text("Stale results were computed for other inputs (rerun the solver); corrupt ones cannot be read or fail the checks. "
                  "Neither is compared:");
         rep.table(std::move(problems));
     }
