@@ -1,0 +1,84 @@
+// Throughput of the continuum solver (issue targets: < 2 ms per point, < 0.5 s per 100-point
+// sweep on one core). Reported, never asserted. The Time/CPU columns are per point, or per
+// 100-point sweep for BM_sweep_100 (items_per_second = points per second).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+
+#include "granlub/continuum/fv_solver.h"
+#include "granlub/continuum/shooting_solver.h"
+
+using namespace granlub::continuum;
+
+namespace {
+
+Problem sawyer(double U, double P, Mode mode = Mode::Load, const char* wall = "k") {
+    Problem p;
+    p.closures = std::make_shared<Closures>(Lun84Params{0.9, 1.0, true},
+                                            std::shared_ptr<const RadialDistribution>(make_g0("ogawa", 0.65)));
+    p.Lambda = 4e-3 / 0.787e-3;
+    p.Pi = 2550 * U * U / P;
+    p.mode = mode;
+    p.nu_mean = 0.595;
+    WallBC w{make_wall_family(wall), WallParams{0.9, 0.5, 0.5, 0.5, 0.5, 0.0}};
+    p.bottom = w;
+    p.top = w;
+    return p;
+}
+
+// One S&T point (U = 2 m/s, P = 5.5 kPa) from the uniform guess; range(0) = cells.
+void BM_point_fv_load(benchmark::State& state) {
+    const Problem p = sawyer(2.0, 5.5e3);
+    SolverSettings st;
+    st.cells = static_cast<int>(state.range(0));
+    int its = 0;  // Newton iterations of the last solve
+    for (auto _ : state) {
+        Solution s = solve_fv(p, st);
+        its = s.iterations;
+        benchmark::DoNotOptimize(s.nu.data());
+    }
+    state.counters["newton_iterations"] = its;
+}
+BENCHMARK(BM_point_fv_load)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Unit(benchmark::kMillisecond);
+
+void BM_point_fv_fill(benchmark::State& state) {
+    const Problem p = sawyer(2.0, 5.5e3, Mode::Fill);
+    SolverSettings st;
+    for (auto _ : state) benchmark::DoNotOptimize(solve_fv(p, st).Pi);
+}
+BENCHMARK(BM_point_fv_fill)->Unit(benchmark::kMillisecond);
+
+void BM_point_shooting(benchmark::State& state) {
+    const Problem p = sawyer(2.0, 5.5e3);
+    SolverSettings st;
+    for (auto _ : state) benchmark::DoNotOptimize(solve_shooting(p, st).Pi);
+}
+BENCHMARK(BM_point_shooting)->Unit(benchmark::kMillisecond);
+
+// 100 points: U in [0.5, 3] m/s x P_y in [1, 20] kPa (log-spaced), each solved from scratch
+// with N = 200, as `granlub continuum` does.
+void BM_sweep_100(benchmark::State& state) {
+    SolverSettings st;
+    std::vector<Problem> points;
+    for (int i = 0; i < 10; ++i)
+        for (int j = 0; j < 10; ++j)
+            points.push_back(sawyer(0.5 + 2.5 * i / 9.0, 1e3 * std::pow(20.0, j / 9.0)));
+    int continued = 0;
+    for (auto _ : state) {
+        continued = 0;
+        for (const Problem& p : points) {
+            Solution s = solve_fv(p, st);
+            continued += s.continuation_steps > 0;
+            benchmark::DoNotOptimize(s.nu.data());
+        }
+    }
+    state.counters["points_needing_continuation"] = continued;
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(points.size()));  // points/s
+}
+BENCHMARK(BM_sweep_100)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
