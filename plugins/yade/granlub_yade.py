@@ -160,7 +160,7 @@ def hertz_wall_material(E, nu):
 
 def viscel_restitution(p, en, wall):
     """Measured restitution of a ViscElMat contact with parameter en (one binary collision)."""
-    return collide(p, {"grain": en, "bottom": en, "top": en, "side": en}, "bottom" if wall else None)
+    return collide(p, {"grain": en, "bottom": en, "top": en, "side": en}, "bottom" if wall else None)[0]
 
 
 def calibrate_viscel(p):
@@ -258,7 +258,8 @@ def wall_box(center, half, mat, p):
 
 
 def collide(p, en, wall_name, vn=1.0):
-    """One head-on collision, no gravity, in a fresh scene; returns e = -v_n'/v_n."""
+    """One head-on collision, no gravity, in a fresh scene; returns e = -v_n'/v_n and the
+    contact duration (steps with overlap times dt)."""
     O.reset()
     d = p["grains"]["diameter"]
     r = 0.5 * d
@@ -280,18 +281,16 @@ def collide(p, en, wall_name, vn=1.0):
                  InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [ip2], [law]),
                  NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]
     O.dt = p["contact"]["dt"]  # the run's time step, so a calibration includes its discretisation
-    # approach, contact, separation: run until the contact is gone after having existed
-    touched = False
-    for _ in range(200000):
-        O.run(10, True)
-        n = len([i for i in O.interactions if i.isReal])
-        if n:
-            touched = True
-        elif touched:
-            break
-    else:
-        raise RuntimeError("binary collision did not end")
-    return measure()
+    # approach, contact, separation: step until the contact is gone after having existed
+    t_on = None
+    for _ in range(1000000):
+        O.step()
+        touching = any(i.isReal and i.geom.penetrationDepth > 0 for i in O.interactions)
+        if touching and t_on is None:
+            t_on = O.time
+        elif not touching and t_on is not None:
+            return measure(), O.time - t_on
+    raise RuntimeError("binary collision did not end")
 
 
 def run_collision(p):
@@ -301,10 +300,12 @@ def run_collision(p):
     if en is not None:
         result["en"] = en
     vn = float(p.get("impact_speed", 1.0))
-    e = {"grain": collide(p, en, None, vn)}
+    e, tc = {}, {}
+    e["grain"], tc["grain"] = collide(p, en, None, vn)
     for w in WALLS:
-        e[w] = collide(p, en, w, vn)
+        e[w], tc[w] = collide(p, en, w, vn)
     result["restitution"] = e
+    result["contact_duration"] = tc
     result["impact_speed"] = vn
     write_json(os.path.join(out, "collision.json"), result)
 

@@ -120,11 +120,12 @@ Restitution measure_restitution(const Case& c, const OperatingPoint& p, const Se
     try {
         in >> j;
         Restitution r;
-        const json& e = j.at("restitution");
-        r.grain = e.at("grain").get<double>();
-        r.bottom = e.at("bottom").get<double>();
-        r.top = e.at("top").get<double>();
-        r.side = e.at("side").get<double>();
+        auto values = [&](const json& v) {
+            return CollisionValues{v.at("grain").get<double>(), v.at("bottom").get<double>(),
+                                   v.at("top").get<double>(), v.at("side").get<double>()};
+        };
+        r.e = values(j.at("restitution"));
+        r.duration = values(j.at("contact_duration"));
         if (j.contains("en")) r.en = j["en"];
         return r;
     } catch (const json::exception& ex) {

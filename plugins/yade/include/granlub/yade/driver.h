@@ -36,11 +36,16 @@ nlohmann::json collision_params(const Case& c, const OperatingPoint& p, const Se
 void run_driver(const DriverPaths& paths, const std::filesystem::path& dir, nlohmann::json params,
                 const std::string& point, double timeout_s, const std::function<void()>& poll = {});
 
-// Binary collisions in YADE with the contact law of the run: measured normal restitution for
-// grain-grain and grain-wall, for head-on impacts at impact_speed. Files go to `dir`.
-struct Restitution {
+// Binary collisions in YADE with the contact law of the run: measured normal restitution and
+// contact duration for grain-grain and grain-wall (each wall material), head-on impacts at
+// impact_speed (relative normal velocity), no gravity. Files go to `dir`.
+struct CollisionValues {
     double grain = 0, bottom = 0, top = 0, side = 0;
-    nlohmann::json en;  // viscel: the calibrated e_n per material (null otherwise)
+};
+struct Restitution {
+    CollisionValues e;         // -v_n' / v_n
+    CollisionValues duration;  // s, steps with overlap x dt
+    nlohmann::json en;         // viscel: the calibrated e_n per material (null otherwise)
 };
 Restitution measure_restitution(const Case& c, const OperatingPoint& p, const Settings& s,
                                 const std::filesystem::path& dir, double impact_speed = 1.0);

@@ -1,0 +1,212 @@
+// Error paths without YADE: a missing launcher, a failing or silent run (fake launchers), bad
+// inputs rejected before anything starts, malformed driver output; and the reduction of known
+// driver output (signs, areas, profiles) to the result files.
+#define BOOST_TEST_MODULE yade_errors
+#include <boost/test/unit_test.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include <sys/stat.h>
+
+#include "granlub/error.h"
+#include "granlub/results.h"
+#include "granlub/yade/driver.h"
+#include "granlub/yade/reduce.h"
+#include "granlub/yade/settings.h"
+#include "yade_test_case.h"
+
+using namespace granlub;
+using namespace granlub::yade;
+using namespace granlub::yade::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// An executable shell script standing in for the yade launcher.
+fs::path fake_launcher(const fs::path& dir, const std::string& body) {
+    const fs::path f = dir / "fake-yade";
+    std::ofstream(f) << "#!/bin/sh\n" << body << "\n";
+    ::chmod(f.c_str(), 0755);
+    return f;
+}
+
+RunOptions options(const fs::path& root) {
+    RunOptions o;
+    o.results_root = root;
+    return o;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(missing_yade_is_a_clear_error) {
+    ScopedEnv env("GRANLUB_YADE", "/nonexistent/yade");
+    try {
+        locate_driver();
+        BOOST_FAIL("expected SolverError");
+    } catch (const SolverError& e) {
+        const std::string m = e.what();
+        BOOST_TEST(has(m, "YADE not found"));
+        BOOST_TEST(has(m, "/nonexistent/yade"));
+        BOOST_TEST(has(m, "apt-get install"));
+    }
+    ScopedEnv env2("GRANLUB_YADE", "granlub-no-such-yade");
+    try {
+        locate_driver();
+        BOOST_FAIL("expected SolverError");
+    } catch (const SolverError& e) {
+        BOOST_TEST(has(e.what(), "not on PATH"));
+    }
+    // the command reports the point as failed and writes no result
+    const auto root = scratch("missing-yade");
+    const Case c = tiny_case();
+    BOOST_TEST(run(c, options(root)) == 1);
+    BOOST_TEST(!fs::exists(root / "yade" / "U2.0" / "summary.json"));
+}
+
+BOOST_AUTO_TEST_CASE(failing_run_names_exit_code_and_log) {
+    const auto dir = scratch("failing-run");
+    ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "echo 'Traceback: boom' >&2; exit 1").string());
+    const Case c = tiny_case();
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    try {
+        run_driver(locate_driver(), dir / "point", collision_params(c, c.points.at(0), s, 1.0), "U2.0", 30);
+        BOOST_FAIL("expected SolverError");
+    } catch (const SolverError& e) {
+        const std::string m = e.what();
+        BOOST_TEST(has(m, "point U2.0"));
+        BOOST_TEST(has(m, "exit code 1"));
+        BOOST_TEST(has(m, "yade.log"));
+        BOOST_TEST(has(m, "boom"));
+    }
+    BOOST_TEST(fs::exists(dir / "point" / "yade.log"));         // log kept
+    BOOST_TEST(fs::exists(dir / "point" / "params.json"));      // rerunnable by hand
+    BOOST_TEST(fs::exists(dir / "point" / "granlub_yade.py"));  // with the driver that ran
+}
+
+BOOST_AUTO_TEST_CASE(rejected_parameters_are_named) {
+    const auto dir = scratch("rejected");
+    ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "echo 'bad parameters: x' >&2; exit 2").string());
+    const Case c = tiny_case();
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    try {
+        run_driver(locate_driver(), dir / "point", collision_params(c, c.points.at(0), s, 1.0), "U2.0", 30);
+        BOOST_FAIL("expected SolverError");
+    } catch (const SolverError& e) {
+        BOOST_TEST(has(e.what(), "rejected its parameters"));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(hanging_run_times_out) {
+    const auto dir = scratch("hanging");
+    ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "sleep 30").string());
+    const Case c = tiny_case();
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    try {
+        run_driver(locate_driver(), dir / "point", collision_params(c, c.points.at(0), s, 1.0), "U2.0", 0.5);
+        BOOST_FAIL("expected SolverError");
+    } catch (const SolverError& e) {
+        BOOST_TEST(has(e.what(), "timed out"));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(silent_run_writes_no_result) {
+    const auto dir = scratch("silent");
+    ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "exit 0").string());
+    const auto root = dir / "results";
+    const Case c = tiny_case();
+    BOOST_TEST(run(c, options(root)) == 1);
+    BOOST_TEST(!fs::exists(root / "yade" / "U2.0" / "summary.json"));
+    BOOST_TEST(!fs::exists(root / "yade" / "U2.0" / "profile.csv"));
+}
+
+BOOST_AUTO_TEST_CASE(bad_inputs_are_rejected_before_yade_starts) {
+    const auto dir = scratch("before-start");
+    const fs::path marker = dir / "yade-started";
+    ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "touch '" + marker.string() + "'; exit 0").string());
+    const auto root = dir / "results";
+    // a time step too large for the contact, more grains than fit, load control
+    const Case c1 = tiny_case("", "", "dt = 5e-6\n");
+    const Case c2 = tiny_case_edits({{"annulus_radius = 0.0762", "annulus_radius = 0.0762\nmax_solid_fraction = 0.74"},
+                                     {"solid_fraction = 0.5", "solid_fraction = 0.73"}},
+                                    "");
+    const Case c3 = tiny_case("control = \"fill\"", "control = \"load\"\nnormal_stress = 5e3");
+    for (const Case* c : {&c1, &c2, &c3}) {
+        BOOST_TEST(run(*c, options(root)) == 1);
+        BOOST_TEST(!fs::exists(marker));
+        BOOST_TEST(!fs::exists(root / "yade" / "U2.0" / "params.json"));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(malformed_wall_forces_name_the_line) {
+    const auto dir = scratch("malformed");
+    std::ofstream(dir / "wallforce.csv") << "# c\nstep,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,"
+                                            "fx_side2\n50,1,2,3,4,5,6,7,8\n100,1,2,nan,4,5,6,7,8\n";
+    try {
+        read_wall_forces(dir / "wallforce.csv");
+        BOOST_FAIL("expected SolverError");
+    } catch (const SolverError& e) {
+        BOOST_TEST(has(e.what(), "wallforce.csv:4"));
+    }
+    std::ofstream(dir / "short.csv") << "step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2\n1,2\n";
+    BOOST_CHECK_THROW(read_wall_forces(dir / "short.csv"), SolverError);
+    BOOST_CHECK_THROW(read_wall_forces(dir / "none.csv"), SolverError);
+}
+
+// Known driver output: every grain at the same height with the same velocity, constant wall
+// forces. The stresses are the forces over the areas with granlub dem's signs, with zero error.
+BOOST_AUTO_TEST_CASE(reduction_of_known_output) {
+    const auto dir = scratch("reduce");
+    const Case c = tiny_case();
+    const OperatingPoint& p = c.points.at(0);
+    const Settings s = resolve_settings(c, p, RunOptions{});
+    const ParticleBox box{c.cell.length, c.cell.gap, c.cell.width, false};
+    const std::size_t n = 10;
+    const double r = 0.5 * c.grains.diameter;
+    const std::vector<double> radius(n, r);
+    const auto rows = static_cast<std::size_t>(s.steps / s.sample_every);
+    const auto snaps = static_cast<std::size_t>(s.steps / s.snapshot_every);
+    {
+        std::ofstream w(dir / "wallforce.csv");
+        w << "step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2\n";
+        for (std::size_t i = 1; i <= rows; ++i)
+            w << i * static_cast<std::size_t>(s.sample_every) << ",-2,-10,0,1.5,8,0,-0.25,-0.75\n";
+        std::ofstream b(dir / "samples.bin", std::ios::binary);
+        const double y = 0.5 * c.cell.gap;
+        for (std::size_t k = 0; k < snaps * n; ++k) {
+            const double row[4] = {y, 0.3 * p.speed, 0.0, 0.0};
+            b.write(reinterpret_cast<const char*>(row), sizeof row);
+        }
+        nlohmann::json d = {{"grains", n},     {"snapshots", snaps},          {"dt", s.dt},
+                            {"steps", s.steps}, {"simulated_time", 0.0015},    {"max_overlap_over_d", 0.0},
+                            {"wall_clock_s", 1.0}, {"wall_clock_run_s", 0.5}, {"yade_version", "test"}};
+        std::ofstream(dir / "driver_summary.json") << d.dump();
+    }
+    const PointResult res = reduce_point(c, p, s, box, radius, dir, make_summary(c, p, "yade", 1));
+    const double A = c.cell.length * c.cell.width;
+    const auto& out = res.summary.outputs;
+    BOOST_TEST(out.at("normal_stress_bottom").value == 10.0 / A, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(out.at("normal_stress_top").value == 8.0 / A, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(out.at("shear_stress_bottom").value == 2.0 / A, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(out.at("shear_stress_top").value == 1.5 / A, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(out.at("shear_stress_side").value == 0.5 / (c.cell.length * c.cell.gap),
+               boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(out.at("normal_stress_top").stderr_.value() < 1e-9 * out.at("normal_stress_top").value);
+    // grains fill only the middle slabs: the whole volume is there, the mean velocity is 0.3 U
+    const double vg = n * 4.0 / 3.0 * 3.141592653589793 * r * r * r;
+    BOOST_TEST(out.at("mean_solid_fraction").value == vg / (A * c.cell.gap), boost::test_tools::tolerance(1e-9));
+    const auto& u = res.profile.column("u_over_U");
+    const auto& nu = res.profile.column("solid_fraction");
+    BOOST_TEST(u[u.size() / 2] == 0.3, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(nu.front() == 0.0);
+    BOOST_TEST(res.summary.run.at("grains").get<std::size_t>() == n);
+    // and the result files can be written and read back
+    write_result(dir / "result", res.profile, res.summary);
+    BOOST_TEST(read_summary(dir / "result" / "summary.json").value("shear_stress_top") == 1.5 / A,
+               boost::test_tools::tolerance(1e-12));
+    // a driver that wrote fewer snapshots than it claims is caught
+    fs::resize_file(dir / "samples.bin", fs::file_size(dir / "samples.bin") - 8);
+    BOOST_CHECK_THROW(reduce_point(c, p, s, box, radius, dir, make_summary(c, p, "yade", 1)), SolverError);
+}

@@ -1,0 +1,119 @@
+// [yade] settings: defaults, derived steps, and bad inputs rejected with the key named.
+#define BOOST_TEST_MODULE yade_settings
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "granlub/error.h"
+#include "granlub/yade/driver.h"
+#include "granlub/yade/settings.h"
+#include "yade_test_case.h"
+
+using namespace granlub;
+using namespace granlub::yade;
+using granlub::yade::test::tiny_case;
+
+namespace {
+template <class F>
+std::string error_of(F&& f) {
+    try {
+        f();
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(viscel_time_step_and_run_length) {
+    const Case c = tiny_case();
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    BOOST_TEST(to_string(s.model) == "viscel");
+    BOOST_TEST(s.dt == 1e-5 / 20, boost::test_tools::tolerance(1e-12));
+    // time = 1.5e-3 s, 50-step wall blocks, 30 snapshots: 3000 steps, a snapshot every 100
+    BOOST_TEST(s.steps == 3000);
+    BOOST_TEST(s.sample_every == 50);
+    BOOST_TEST(s.snapshot_every == 100);
+    BOOST_TEST(s.steps % s.sample_every == 0);
+    BOOST_TEST(s.steps % s.snapshot_every == 0);
+    BOOST_TEST(s.insertion.wall_speed == 2.0);
+    BOOST_TEST(s.insertion.seed == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(full_run_and_seed_override) {
+    const Case c = tiny_case("", "", "time_full = 3e-3\n");
+    RunOptions o;
+    o.full = true;
+    o.seed = 77;
+    const Settings s = resolve_settings(c, c.points.at(0), o);
+    BOOST_TEST(s.steps == 6000);
+    BOOST_TEST(s.insertion.seed == 77u);
+}
+
+BOOST_AUTO_TEST_CASE(hertz_time_step_is_a_rayleigh_fraction) {
+    const Case c = tiny_case("", "", "model = \"hertz\"\n");
+    // t_R = pi r sqrt(rho/G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)), glass
+    const double G = 63e9 / (2 * 1.23);
+    const double tr = std::numbers::pi * 0.3935e-3 * std::sqrt(2550.0 / G) / (0.1631 * 0.23 + 0.8766);
+    BOOST_TEST(rayleigh_time(c.grains) == tr, boost::test_tools::tolerance(1e-12));
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    BOOST_TEST(to_string(s.model) == "hertz");
+    BOOST_TEST(s.dt == 0.15 * tr, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(too_large_time_step_is_rejected) {
+    const Case c = tiny_case("", "", "dt = 2e-6\n");
+    const std::string e = error_of([&] { resolve_settings(c, c.points.at(0), RunOptions{}); });
+    BOOST_TEST(has(e, "[yade] dt"));
+    BOOST_TEST(has(e, "contact_time"));
+    BOOST_TEST(has(e, "case.toml"));
+}
+
+BOOST_AUTO_TEST_CASE(too_short_run_is_rejected) {
+    const Case c = tiny_case("time = 1.5e-3", "time = 1e-4");
+    const std::string e = error_of([&] { resolve_settings(c, c.points.at(0), RunOptions{}); });
+    BOOST_TEST(has(e, "[yade] time"));
+    BOOST_TEST(has(e, "blocks"));
+}
+
+BOOST_AUTO_TEST_CASE(load_control_is_rejected) {
+    const Case c = tiny_case("control = \"fill\"", "control = \"load\"\nnormal_stress = 5e3");
+    const std::string e = error_of([&] { resolve_settings(c, c.points.at(0), RunOptions{}); });
+    BOOST_TEST(has(e, "control"));
+    BOOST_TEST(has(e, "fill"));
+}
+
+BOOST_AUTO_TEST_CASE(bad_keys_are_rejected_by_the_schema) {
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "model = \"dem\"\n"); }), "model"));
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "tangential_restitution = 0\n"); }), "tangential_restitution"));
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "snapshots = 1\n"); }), "snapshots"));
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "contact_tme = 1e-5\n"); }), "contact_tme"));
+}
+
+BOOST_AUTO_TEST_CASE(parameter_file_carries_the_case) {
+    const Case c = tiny_case("[walls]\nrestitution = 0.9\nfriction = 0.5\nroughness = 0.5\n",
+                             "[walls]\nrestitution = 0.7\nfriction = 0.5\nroughness = 0.5\n[walls.top]\nrestitution = 0.8\n");
+    const OperatingPoint& p = c.points.at(0);
+    const Settings s = resolve_settings(c, p, RunOptions{});
+    ParticleBox box{c.cell.length, c.cell.gap, c.cell.width, false};
+    const auto j = couette_params(c, p, s, box, "/tmp/particles.csv");
+    BOOST_TEST(j.at("format").get<std::string>() == kParamsFormat);
+    BOOST_TEST(j.at("task").get<std::string>() == "couette");
+    BOOST_TEST(j.at("model").get<std::string>() == "viscel");
+    BOOST_TEST(j.at("materials").at("grain").at("restitution").get<double>() == 0.9);
+    BOOST_TEST(j.at("materials").at("bottom").at("restitution").get<double>() == 0.7);
+    BOOST_TEST(j.at("materials").at("top").at("restitution").get<double>() == 0.8);
+    // side walls slide with the bottom wall and take its material, as in granlub dem
+    BOOST_TEST(j.at("materials").at("side").at("restitution").get<double>() == 0.7);
+    BOOST_TEST(j.at("wall_speed").get<double>() == 2.0);
+    BOOST_TEST(j.at("gravity").get<double>() == 9.81);
+    BOOST_TEST(j.at("annulus_radius").get<double>() == 0.0762);
+    BOOST_TEST(j.at("cell").at("width").get<double>() == c.cell.width);
+    BOOST_TEST(j.at("run").at("steps").get<long long>() == s.steps);
+    BOOST_TEST(j.at("contact").at("dt").get<double>() == s.dt);
+    const auto k = collision_params(c, p, s, 1.5);
+    BOOST_TEST(k.at("task").get<std::string>() == "collision");
+    BOOST_TEST(k.at("impact_speed").get<double>() == 1.5);
+}
