@@ -278,10 +278,14 @@ void write_result(const std::filesystem::path& dir, const Profile& profile, cons
     for (const char* name : kStandardOutputs)
         if (!summary.outputs.count(name))
             throw Error(fmt::format("internal: {} {}: summary lacks output '{}'", summary.solver, summary.point, name));
-    for (const auto& [name, v] : summary.outputs)
+    for (const auto& [name, v] : summary.outputs) {
         if (!std::isfinite(v.value) || (v.stderr_ && !std::isfinite(*v.stderr_)))
             throw SolverError(fmt::format("{} {}: output '{}' is not finite; nothing written", summary.solver,
                                           summary.point, name));
+        if (v.stderr_ && *v.stderr_ < 0)
+            throw SolverError(fmt::format("{} {}: output '{}' has a negative standard error ({}); nothing written",
+                                          summary.solver, summary.point, name, *v.stderr_));
+    }
     // The summary is the completion marker: remove a previous one first, so that a crash between
     // the two writes cannot pair a new profile with an old summary.
     std::error_code ec;

@@ -89,6 +89,9 @@ BOOST_AUTO_TEST_CASE(non_finite_values_write_nothing) {
     Summary s = small_summary(c);
     s.set("slip_top", INFINITY, "m/s");
     BOOST_CHECK_THROW(write_result(t.path, small_profile(), s), SolverError);
+    Summary neg = small_summary(c);
+    neg.set("shear_stress_top", 301.0, "Pa", -2.0);
+    BOOST_CHECK_THROW(write_result(t.path, small_profile(), neg), SolverError);
     BOOST_TEST(fs::is_empty(t.path));
 }
 
