@@ -1,8 +1,11 @@
 // The lattice and its update: JH06's asynchronous CA (ca-model.md §2-3, optional §5).
 //
-// Data layout (§8): a flat occupancy grid of (rows + 2) x columns cells holding particle indices
-// or the sentinels EMPTY / WALL_BOTTOM / WALL_TOP, indexed (y + 1) * L + x; particle state as
-// structure-of-arrays. The step loop allocates nothing.
+// Data layout (§8): a flat occupancy grid of columns x (rows + 2) cells holding particle indices
+// or the sentinels EMPTY / WALL_BOTTOM / WALL_TOP, column-major (x (H + 2) + y + 1) so that a
+// grain's 3 x 3 neighbourhood spans about two cache lines; particle state as structure-of-arrays,
+// relabelled in grid order every `kRelabelEvery` steps so that neighbours' state is also close in
+// memory; the update loop prefetches the grains it will visit next. The step loop allocates
+// nothing. These choices change which index a grain has, never the dynamics.
 //
 // Rng is Philox in production and a scripted source in the rule tests; it needs
 // below(n), coin() and uniform(). Two sources: one for the update order, one for the rules.
@@ -15,6 +18,7 @@
 #include <vector>
 
 #include "granlub/automaton/directions.h"
+#include "granlub/automaton/huge_page_allocator.h"
 #include "granlub/automaton/params.h"
 #include "granlub/automaton/speed_rules.h"
 
@@ -46,8 +50,10 @@ public:
         : L_(columns), H_(rows), rules_(rules), order_rng_(std::move(order_rng)),
           rng_(std::move(rule_rng)), grid_(static_cast<std::size_t>(rows + 2) * columns, kEmpty),
           kin_(static_cast<std::size_t>(rows), 0) {
-        std::fill_n(grid_.begin(), L_, kWallBottom);
-        std::fill_n(grid_.end() - L_, L_, kWallTop);
+        for (int x = 0; x < L_; ++x) {
+            grid_[index(x, -1)] = kWallBottom;
+            grid_[index(x, H_)] = kWallTop;
+        }
         rest_ = 1.0 / rules_.tf_max;
         const double s = rules_.pp_deflect == 45 ? 1 : 2;
         deflect_ = static_cast<int>(s);
@@ -81,6 +87,8 @@ public:
         x_.reserve(n); y_.reserve(n); dir_.reserve(n); up_.reserve(n); clock_.reserve(n); order_.reserve(n);
     }
 
+    static constexpr std::int64_t kRelabelEvery = 64;
+
     // Place a grain; returns its index. The cell must be an empty particle cell.
     int add(int x, int y, int dir, double up, double clock = 0) {
         const auto i = static_cast<std::int32_t>(x_.size());
@@ -99,13 +107,51 @@ public:
     // already made in this step.
     void step() {
         const auto n = static_cast<std::uint32_t>(order_.size());
+        if (steps_ % kRelabelEvery == 0) relabel();
+        ++steps_;
         std::int32_t* order = order_.data();
         for (std::uint32_t k = 0; k + 1 < n; ++k) {
             const std::uint32_t j = k + order_rng_.below(n - k);
             std::swap(order[k], order[j]);
         }
-        for (std::uint32_t k = 0; k < n; ++k) update(order[k]);
+        // Prefetch pipeline: a grain's state kFar visits ahead, its neighbourhood kNear ahead.
+        constexpr std::uint32_t kFar = 16, kNear = 8;
+        for (std::uint32_t k = 0; k < n; ++k) {
+            if (k + kFar < n) {
+                const std::int32_t f = order[k + kFar];
+                __builtin_prefetch(&up_[f]);
+                __builtin_prefetch(&clock_[f]);
+                __builtin_prefetch(&x_[f]);
+                __builtin_prefetch(&y_[f]);
+                __builtin_prefetch(&dir_[f]);
+            }
+            if (k + kNear < n) {
+                const std::int32_t f = order[k + kNear];
+                const int xf = x_[f], yf = y_[f];
+                __builtin_prefetch(&grid_[index(xf == 0 ? L_ - 1 : xf - 1, yf)]);
+                __builtin_prefetch(&grid_[index(xf, yf)]);
+                __builtin_prefetch(&grid_[index(xf == L_ - 1 ? 0 : xf + 1, yf)]);
+            }
+            update(order[k]);
+        }
         counters_.visits += n;
+    }
+
+    // Renumber the grains in grid order (spatial locality). The dynamics do not depend on labels:
+    // the next step's order is a fresh uniform permutation whatever the labels are.
+    void relabel() {
+        const std::size_t n = x_.size();
+        if (n == 0) return;
+        sx_.resize(n); sy_.resize(n); sdir_.resize(n); sup_.resize(n); sclock_.resize(n);  // no-op after the first call
+        std::int32_t next = 0;
+        for (std::size_t c = 0; c < grid_.size(); ++c) {
+            const std::int32_t old = grid_[c];
+            if (old < 0) continue;
+            sx_[next] = x_[old]; sy_[next] = y_[old]; sdir_[next] = dir_[old];
+            sup_[next] = up_[old]; sclock_[next] = clock_[old];
+            grid_[c] = next++;
+        }
+        x_.swap(sx_); y_.swap(sy_); dir_.swap(sdir_); up_.swap(sup_); clock_.swap(sclock_);
     }
 
     // One grain's update (§3.2): the time-factor clock, then the move attempt and collision chain.
@@ -149,10 +195,10 @@ public:
     const Counters& counters() const { return counters_; }
     const Rules& rules() const { return rules_; }
     Rng& rule_rng() { return rng_; }
-    const std::vector<int>& xs() const { return x_; }
-    const std::vector<int>& ys() const { return y_; }
-    const std::vector<std::uint8_t>& dirs() const { return dir_; }
-    const std::vector<double>& speeds() const { return up_; }
+    const BigVector<int>& xs() const { return x_; }
+    const BigVector<int>& ys() const { return y_; }
+    const BigVector<std::uint8_t>& dirs() const { return dir_; }
+    const BigVector<double>& speeds() const { return up_; }
     // Streamwise lattice displacements made from each row since the last take_kin() (u_kin, §4.2).
     std::vector<std::int64_t>& kin() { return kin_; }
 
@@ -187,7 +233,7 @@ private:
         std::uint8_t c[2] = {0, 0};
     };
 
-    std::size_t index(int x, int y) const { return static_cast<std::size_t>(y + 1) * L_ + x; }
+    std::size_t index(int x, int y) const { return static_cast<std::size_t>(x) * stride_ + static_cast<std::size_t>(y + 1); }
 
     // The move attempt and collision chain of §3.2: try the current direction; an empty target
     // is taken; a wall or grain collides, and the grain tries again in the new direction until
@@ -333,19 +379,24 @@ private:
     }
 
     int L_, H_;
+    std::size_t stride_ = static_cast<std::size_t>(H_) + 2;  // grid column length
     Rules rules_;
     Rng order_rng_;
     Rng rng_;
     double rest_ = 0.02;
     int deflect_ = 2;
     double jitter_ = 0;
-    std::vector<std::int32_t> grid_;
-    std::vector<int> x_, y_;
-    std::vector<std::uint8_t> dir_;
-    std::vector<double> up_;
-    std::vector<double> clock_;
-    std::vector<std::int32_t> order_;
+    BigVector<std::int32_t> grid_;
+    BigVector<int> x_, y_;
+    BigVector<std::uint8_t> dir_;
+    BigVector<double> up_;
+    BigVector<double> clock_;
+    BigVector<std::int32_t> order_;
     std::vector<std::int64_t> kin_;
+    std::int64_t steps_ = 0;
+    BigVector<int> sx_, sy_;  // relabelling scratch, allocated once
+    BigVector<std::uint8_t> sdir_;
+    BigVector<double> sup_, sclock_;
     Counters counters_;
 };
 
