@@ -97,6 +97,7 @@ std::vector<MetricRow> compute_metrics(const Collection& col) {
                 for (const auto& q : kProfileQuantities) {
                     const auto d = profile_difference(a.y(), a.column(q.key), a.column_stderr(q.key), b.y(),
                                                       b.column(q.key), b.column_stderr(q.key));
+                    if (!(d.hi > d.lo)) continue;  // the station ranges do not overlap: nothing to compare
                     MetricRow r = row("profile", p->id, q.key, a.solver, b.solver);
                     r.rms = d.rms;
                     r.max = d.max;

@@ -67,9 +67,12 @@ Range1 axis_range(const Axis& a, const std::vector<Series>& series, bool is_x) {
         if (!a.lo) lo /= 1.2;
         if (!a.hi) hi *= 1.2;
     } else {
-        if (hi <= lo) {
-            const double d = lo == 0 ? 1 : std::abs(lo) * 0.1;
-            lo -= d, hi += d;
+        // Constant data (to a part per million, e.g. a fill-controlled solid fraction): a +-10 %
+        // window instead of ticks that resolve round-off.
+        const double mid = 0.5 * (lo + hi);
+        if (hi - lo <= 1e-6 * std::abs(mid)) {
+            const double d = mid == 0 ? 1 : std::abs(mid) * 0.1;
+            lo = mid - d, hi = mid + d;
         }
         // Snap to the enclosing ticks, then leave a small margin so no marker sits on the frame.
         const double step = nice_step(hi - lo, 5);
