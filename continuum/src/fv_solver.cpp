@@ -327,7 +327,7 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
     Problem start = p;
     start.Lambda = std::min(p.Lambda, 5.0);
     if (p.mode == Mode::Load) start.Pi = std::clamp(p.Pi, 0.3, 3.0);
-    else start.nu_mean = std::clamp(p.nu_mean, 0.3, 0.6);
+    else start.nu_mean = std::clamp(p.nu_mean, 0.3 * p.closures->cap(), 0.9 * p.closures->cap());
     const auto at = [&](double t) {
         Problem q = p;
         q.Lambda = std::exp((1 - t) * std::log(start.Lambda) + t * std::log(p.Lambda));
