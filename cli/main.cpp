@@ -51,6 +51,10 @@ int main(int argc, char** argv) {
     auto* check = app.add_subcommand("check", "validate a case and print it resolved, with its operating points");
     add_case(check, a);
 
+    auto* keys = app.add_subcommand("keys", "print every case key (type, default, range, unit, meaning) as Markdown");
+    std::string keys_section;
+    keys->add_option("SECTION", keys_section, "only this section, e.g. continuum");
+
     std::vector<std::pair<CLI::App*, const granlub::cli::SolverModule*>> solver_cmds;
     for (const auto& m : granlub::cli::solver_modules()) {
         auto* sub = app.add_subcommand(m.name, m.description);
@@ -80,6 +84,21 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     a.opt.results_root = a.results;
+
+    if (keys->parsed()) {
+        const granlub::Schema schema = granlub::cli::full_schema();
+        bool any = false;
+        for (const auto& spec : schema.sections()) {
+            if (!keys_section.empty() && spec.name != keys_section) continue;
+            fmt::print("{}\n", granlub::key_table_markdown(spec));
+            any = true;
+        }
+        if (!any) {
+            fmt::print(stderr, "error: no section [{}]\n", keys_section);
+            return 2;
+        }
+        return 0;
+    }
 
     try {
         const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());

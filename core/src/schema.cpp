@@ -136,6 +136,24 @@ std::string value_text(const Value& v) {
     return std::visit(V{}, v);
 }
 
+std::string key_table_markdown(const SectionSpec& spec) {
+    std::string out = fmt::format("### [{}]\n\n{}\n\n| key | default | allowed | unit | meaning |\n|---|---|---|---|---|\n",
+                                  spec.name, spec.doc);
+    for (const auto& k : spec.keys) {
+        std::string def = k.default_value ? value_text(*k.default_value) : (k.optional_key ? "(not set)" : "required");
+        std::string allowed;
+        switch (k.type) {
+            case KeyType::Real: allowed = (k.sweepable ? "number or list, " : "") + k.range.text(); break;
+            case KeyType::Integer: allowed = "integer " + k.range.text(); break;
+            case KeyType::Boolean: allowed = "true, false"; break;
+            case KeyType::String: allowed = "string"; break;
+            case KeyType::Choice: allowed = fmt::format("{}", fmt::join(k.choices, ", ")); break;
+        }
+        out += fmt::format("| `{}` | {} | {} | {} | {} |\n", k.name, def, allowed, k.unit, k.doc);
+    }
+    return out;
+}
+
 void Section::set(const std::string& key, Value v, std::optional<SourcePos> pos, bool defaulted) {
     values_[key] = std::move(v);
     if (pos) pos_[key] = *pos;

@@ -61,3 +61,13 @@ BOOST_AUTO_TEST_CASE(version_and_help) {
     BOOST_TEST(h.rc == 0);
     BOOST_TEST(h.text.find("check") != std::string::npos);
 }
+
+BOOST_AUTO_TEST_CASE(keys_are_printed_from_their_declarations) {
+    auto o = run(exe + " keys grains");
+    BOOST_TEST(o.rc == 0, o.text);
+    BOOST_TEST(o.text.find("| `diameter` | required | > 0 | m | grain diameter d |") != std::string::npos, o.text);
+    BOOST_TEST(o.text.find("| `friction` | 0.5 | >= 0 |") != std::string::npos, o.text);
+    auto bad = run(exe + " keys nosuchsection");
+    BOOST_TEST(bad.rc == 2);
+    BOOST_TEST(bad.text.find("no section [nosuchsection]") != std::string::npos, bad.text);
+}

@@ -132,4 +132,8 @@ private:
 
 std::string value_text(const Value& v);
 
+// The section's keys as a Markdown table (key, default, allowed, unit, meaning): what `granlub keys`
+// prints and what the READMEs' key tables are made from.
+std::string key_table_markdown(const SectionSpec& spec);
+
 }  // namespace granlub
