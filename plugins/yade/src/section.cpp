@@ -23,12 +23,12 @@ SectionSpec section() {
     s.integer("sample_every", 100, Range::at_least(1),
               "wall-force block length in steps (forces are summed every step), as granlub dem");
     s.integer("snapshots", 50, Range::at_least(2), "particle snapshots over the run for coarse-graining");
-    s.integer("body_force_every", 10, Range::at_least(1),
+    s.integer("body_force_every", 50, Range::at_least(1),
               "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");
     s.integer("stations", 20, Range::at_least(2), "coarse-graining slabs across the gap");
     s.integer("blocks", 10, Range::at_least(2), "blocks for the standard errors (block averaging)");
     s.real("timeout", 0.0, Range::non_negative(), "s",
-           "wall-clock limit of one YADE run; 0 = 120 s + 20 us per grain-step");
+           "wall-clock limit of one YADE run; 0 = 600 s + 100 us per grain-step (a guard against hangs, generous for shared machines)");
     return s;
 }
 

@@ -25,7 +25,7 @@ struct Settings {
     std::int64_t steps = 0;                // multiple of sample_every and of snapshot_every
     std::int64_t sample_every = 100;       // steps per wall-force mean
     std::int64_t snapshot_every = 0;       // steps between particle snapshots
-    std::int64_t body_force_every = 10;    // steps between centripetal-force refreshes
+    std::int64_t body_force_every = 50;    // steps between centripetal-force refreshes
     std::int64_t stations = 20;
     std::int64_t blocks = 10;
     double timeout = 0;                    // s; 0 = from the run size
