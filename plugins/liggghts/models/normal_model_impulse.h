@@ -26,6 +26,13 @@
     of implementation of S&T's sequential resolution; with newton off a
     ghost grain's impulses of the current step are not seen.)
 
+    Setting `separate on` (default off) also removes each overlap by moving
+    the two grains apart along e_n, in inverse proportion to their masses (a
+    wall stays). Contacts are found by overlap only, so without it grains
+    pushed together by gravity, the centripetal force and the shear stay
+    overlapped and are re-hit every step. This position correction is our
+    assumption, not stated by Sawyer & Tichy.
+
     Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
     LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree.
 ------------------------------------------------------------------------- */
@@ -53,10 +60,15 @@ namespace ContactModels
   public:
     NormalModel(LAMMPS * lmp, IContactHistorySetup * hsetup, class ContactModelBase * c) :
       NormalModelBase(lmp, hsetup, c),
-      coeffRest(NULL)
+      coeffRest(NULL),
+      separate(false)
     {}
 
-    inline void registerSettings(Settings &) {}
+    // separate on: also remove the overlap (see above); off (default): velocities only
+    inline void registerSettings(Settings & settings)
+    {
+      settings.registerOnOff("separate", separate, false);
+    }
     inline void postSettings(IContactHistorySetup *, ContactModelBase *) {}
 
     inline void connectToProperties(PropertyRegistry & registry)
@@ -90,6 +102,7 @@ namespace ContactModels
         const double e = coeffRest[sidata.itype][sidata.jtype];
         Fn = sidata.meff * (1.0 + e) * (-vn) / dt;   // S&T 2001, Eq. 19
       }
+      if (separate) remove_overlap(sidata);
       sidata.Fn = Fn;
       sidata.kn = 0.0;
       sidata.kt = 0.0;
@@ -125,7 +138,37 @@ namespace ContactModels
     inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
   private:
+    // Moves the surfaces apart along e_n until they touch, in inverse proportion to the masses
+    // (a wall does not move). Only local grains are moved; with newton off each owner moves
+    // its own grain of a pair that straddles processors.
+    inline void remove_overlap(const SurfacesIntersectData & sidata)
+    {
+      double ** const x = atom->x;
+      const int i = sidata.i;
+      if (sidata.is_wall) {
+        const double d = sidata.radi - sidata.r;
+        if (d <= 0.0) return;
+        x[i][0] += d * sidata.en[0];
+        x[i][1] += d * sidata.en[1];
+        x[i][2] += d * sidata.en[2];
+        return;
+      }
+      const double d = sidata.radi + sidata.radj - sidata.r;
+      if (d <= 0.0) return;
+      const double wi = sidata.mj / (sidata.mi + sidata.mj), wj = 1.0 - wi;
+      x[i][0] += wi * d * sidata.en[0];
+      x[i][1] += wi * d * sidata.en[1];
+      x[i][2] += wi * d * sidata.en[2];
+      const int j = sidata.j;
+      if (j < atom->nlocal) {
+        x[j][0] -= wj * d * sidata.en[0];
+        x[j][1] -= wj * d * sidata.en[1];
+        x[j][2] -= wj * d * sidata.en[2];
+      }
+    }
+
     double ** coeffRest;
+    bool separate;
   };
 }
 }

@@ -25,6 +25,8 @@ SectionSpec section() {
              "contact model: Sawyer & Tichy impulse operator, or LIGGGHTS' Hertz-Mindlin (soft-sphere reference)");
     s.real("beta0", 0.0, Range::closed(-1, 1), "",
            "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
+    s.boolean("separate_overlaps", false,
+              "impulse model: also remove overlaps by moving grains apart (our assumption, not S&T's)");
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");

@@ -40,7 +40,8 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     const double U = p.speed;
     const double A = box.length * box.width;
     const std::string model = impulse ? fmt::format("model impulse tangential impulse") : "model hertz tangential history";
-    const std::string settings = impulse ? fmt::format(" beta0 {:.17g}", s.beta0) : "";
+    const std::string settings =
+        impulse ? fmt::format(" beta0 {:.17g}{}", s.beta0, s.separate ? " separate on" : "") : "";
     std::string d;
     auto line = [&d](const std::string& l) { d += l + "\n"; };
 

@@ -27,6 +27,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     Settings st;
     st.model = s.string("model") == "hertz" ? Model::Hertz : Model::Impulse;
     st.beta0 = s.real("beta0");
+    st.separate = s.boolean("separate_overlaps");
     st.box = particle_box(c, s.real("periodic_depth"));
     st.np = std::max(1, o.np);
     st.vtk = o.vtk;
@@ -83,6 +84,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
 nlohmann::json Settings::to_json() const {
     return {{"model", model == Model::Impulse ? "impulse" : "hertz"},
             {"beta0", beta0},
+            {"separate_overlaps", separate},
             {"time_step_s", time_step},
             {"time_s", time},
             {"steps", steps},

@@ -17,6 +17,7 @@ enum class Model { Impulse, Hertz };
 struct Settings {
     Model model = Model::Impulse;
     double beta0 = 0;             // Walton's tangential restitution (impulse); 0 = stick limit
+    bool separate = false;        // impulse: remove overlaps (position correction)
     double time_step = 0;         // s
     double time = 0;              // simulated time, s
     std::int64_t steps = 0;       // ceil(time / time_step)
