@@ -55,8 +55,12 @@ UniformShear uniform_shear_load(const Problem& p) {
     }
     if (!bracket) {
         std::ostringstream m;
-        m << "no uniform-shear state exists for Pi = rho U^2/P = " << p.Pi << " and Lambda = H/d = " << p.Lambda
-          << " (shear work exceeds dissipation at every solid fraction): raise the normal stress or lower the speed";
+        m << "no uniform-shear state exists for Pi = rho U^2/P = " << p.Pi << " and Lambda = H/d = " << p.Lambda;
+        if (f_hi > 0)
+            m << " below the solid-fraction cap " << cap << " (dissipation exceeds shear work even there)"
+              << ": lower the normal stress or raise the speed";
+        else
+            m << " (shear work exceeds dissipation at every solid fraction): raise the normal stress or lower the speed";
         throw SolverError(m.str());
     }
     (void)f_lo;
