@@ -106,6 +106,14 @@ BOOST_AUTO_TEST_CASE(one_and_two_mpi_ranks_give_identical_results) {
     BOOST_TEST(one == two);
 }
 
+BOOST_AUTO_TEST_CASE(separate_on_removes_overlaps_exactly) {
+    const auto r = results(run_driver(std::string(GRANLUB_SOURCE_DIR) + "/tests/liggghts/in.separate", ""));
+    BOOST_TEST_REQUIRE(r.count("z1") == 1u);
+    close(r.at("z1"), 0.005);    // touching the wall
+    close(r.at("x2"), 0.0495);   // equal masses: each moves half of the 1 mm overlap
+    close(r.at("x3"), 0.0595);
+}
+
 BOOST_AUTO_TEST_CASE(bad_decks_give_clear_errors) {
     const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_collide";
     fs::create_directories(dir);
