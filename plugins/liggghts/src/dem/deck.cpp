@@ -9,14 +9,14 @@ namespace granlub::dem {
 
 std::string data_file(const ParticleSet& p, const ParticleBox& box, double density, const std::string& title) {
     std::string out = fmt::format("LIGGGHTS data file: {}\n\n{} atoms\n4 atom types\n\n", title, p.size());
-    out += fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n{:.17g} {:.17g} zlo zhi\n\nAtoms\n\n", box.length,
+    out += fmt::format("0 {} xlo xhi\n0 {} ylo yhi\n{} {} zlo zhi\n\nAtoms\n\n", box.length,
                        box.gap, -0.5 * box.width, 0.5 * box.width);
     for (std::size_t i = 0; i < p.size(); ++i)
-        out += fmt::format("{} 1 {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", i + 1, 2.0 * p.radius[i], density, p.x[i],
+        out += fmt::format("{} 1 {} {} {} {} {}\n", i + 1, 2.0 * p.radius[i], density, p.x[i],
                            p.y[i], p.z[i]);
     out += "\nVelocities\n\n";
     for (std::size_t i = 0; i < p.size(); ++i)
-        out += fmt::format("{} {:.17g} {:.17g} {:.17g} 0 0 0\n", i + 1, p.vx[i], p.vy[i], p.vz[i]);
+        out += fmt::format("{} {} {} {} 0 0 0\n", i + 1, p.vx[i], p.vy[i], p.vz[i]);
     return out;
 }
 
@@ -27,7 +27,7 @@ std::string pair_matrix(double pp, double bottom, double top, double side) {
     const double m[4][4] = {{pp, bottom, top, side}, {bottom, pp, pp, pp}, {top, pp, pp, pp}, {side, pp, pp, pp}};
     std::string s;
     for (const auto& row : m)
-        for (double v : row) s += fmt::format(" {:.17g}", v);
+        for (double v : row) s += fmt::format(" {}", v);
     return s;
 }
 
@@ -41,7 +41,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     const double A = box.length * box.width;
     const std::string model = impulse ? fmt::format("model impulse tangential impulse") : "model hertz tangential history";
     const std::string settings =
-        impulse ? fmt::format(" beta0 {:.17g}{}", s.beta0, s.separate ? " separate on" : "") : "";
+        impulse ? fmt::format(" beta0 {}{}", s.beta0, s.separate ? " separate on" : "") : "";
     std::string d;
     auto line = [&d](const std::string& l) { d += l + "\n"; };
 
@@ -65,14 +65,14 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("hard_particles  yes     # glass: Young's modulus above LIGGGHTS' 1 GPa sanity limit");
     line("processors      * 1 1   # split along the flow only");
     line(fmt::format("read_data       {}", kData));
-    line(fmt::format("neighbor        {:.17g} bin", s.skin));
+    line(fmt::format("neighbor        {} bin", s.skin));
     line("neigh_modify    delay 0");
     line("");
     line("# materials; types: 1 grains, 2 bottom wall, 3 top wall, 4 side walls");
     const auto& g = c.grains;
-    line(fmt::format("fix m1 all property/global youngsModulus peratomtype {0:.17g} {0:.17g} {0:.17g} {0:.17g}",
+    line(fmt::format("fix m1 all property/global youngsModulus peratomtype {0} {0} {0} {0}",
                      g.youngs_modulus));
-    line(fmt::format("fix m2 all property/global poissonsRatio peratomtype {0:.17g} {0:.17g} {0:.17g} {0:.17g}",
+    line(fmt::format("fix m2 all property/global poissonsRatio peratomtype {0} {0} {0} {0}",
                      g.poisson_ratio));
     line(fmt::format("fix m3 all property/global coefficientRestitution peratomtypepair 4{}",
                      pair_matrix(g.restitution, p.bottom.restitution, p.top.restitution, p.bottom.restitution)));
@@ -81,26 +81,26 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("");
     line(fmt::format("pair_style      gran {}{}", model, settings));
     line("pair_coeff      * *");
-    line(fmt::format("timestep        {:.17g}", s.time_step));
+    line(fmt::format("timestep        {}", s.time_step));
     line("");
     line("# walls: primitive planes; `shear x U` moves the bottom and side walls along the flow;");
     line("# store_force gives the force of each wall on each grain (f_force_<id>), summed every step");
-    line(fmt::format("fix wbot all wall/gran {} primitive type 2 yplane 0.0 shear x {:.17g} store_force yes{}", model, U,
+    line(fmt::format("fix wbot all wall/gran {} primitive type 2 yplane 0.0 shear x {} store_force yes{}", model, U,
                      settings));
-    line(fmt::format("fix wtop all wall/gran {} primitive type 3 yplane {:.17g} store_force yes{}", model, box.gap,
+    line(fmt::format("fix wtop all wall/gran {} primitive type 3 yplane {} store_force yes{}", model, box.gap,
                      settings));
     if (!box.periodic_z) {
-        line(fmt::format("fix wsid1 all wall/gran {} primitive type 4 zplane {:.17g} shear x {:.17g} store_force yes{}",
+        line(fmt::format("fix wsid1 all wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}",
                          model, -0.5 * box.width, U, settings));
-        line(fmt::format("fix wsid2 all wall/gran {} primitive type 4 zplane {:.17g} shear x {:.17g} store_force yes{}",
+        line(fmt::format("fix wsid2 all wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}",
                          model, 0.5 * box.width, U, settings));
     }
     line("");
     line("# body forces: gravity along -y; centripetal acceleration u_x^2 / (R - z) toward the outer wall (-z),");
     line("# with R the annulus mean radius (Sawyer & Tichy 2001, particle simulation)");
-    if (c.gravity > 0) line(fmt::format("fix grav all gravity {:.17g} vector 0 -1 0", c.gravity));
+    if (c.gravity > 0) line(fmt::format("fix grav all gravity {} vector 0 -1 0", c.gravity));
     if (c.cell.annulus_radius > 0) {
-        line(fmt::format("variable fcent atom -mass*vx*vx/({:.17g}-z)", c.cell.annulus_radius));
+        line(fmt::format("variable fcent atom -mass*vx*vx/({}-z)", c.cell.annulus_radius));
         line("fix cent all addforce 0.0 0.0 v_fcent");
     }
     line("fix integr all nve/sphere");
@@ -115,7 +115,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
         cols += " c_fsid[1] c_fsid[2]";
     }
     line(fmt::format("fix walls all ave/time 1 {0} {0} {1} file {2}", s.sample_every, cols, kWallFile));
-    line(fmt::format("# wall area A = L W = {:.17g} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A", A));
+    line(fmt::format("# wall area A = L W = {} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A", A));
     line("");
     line("# particle snapshots for coarse-graining across the gap");
     line(fmt::format("dump cg all custom {} {} id y vx vy vz radius", s.snapshot_every, kSnapshots));
