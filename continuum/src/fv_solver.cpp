@@ -323,7 +323,7 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
     }
     // Automatic continuation (guide §6.1): from an easy problem (Lambda <= 5, moderate Pi or
     // mean nu) to the target, in ln Lambda and ln Pi (Load) or mean nu (Fill), halving the step
-    // when Newton fails or needs many iterations.
+    // when Newton fails (or after a step that needed many iterations).
     Problem start = p;
     start.Lambda = std::min(p.Lambda, 5.0);
     if (p.mode == Mode::Load) start.Pi = std::clamp(p.Pi, 0.3, 3.0);
@@ -364,10 +364,11 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
         Solution trial = s;
         rep = newton_fv(at(tn), st, trial);
         total += rep.iterations;
-        if (rep.converged && rep.iterations <= 8) {
+        if (rep.converged) {
             s = std::move(trial);
             t = tn;
             if (rep.iterations <= 4) dt *= 1.5;
+            else if (rep.iterations > 8) dt *= 0.5;  // hard step: go slower next time
         } else {
             dt *= 0.5;
         }

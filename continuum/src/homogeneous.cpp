@@ -39,10 +39,10 @@ UniformShear uniform_shear_load(const Problem& p) {
     // root; the dilute root is the spurious "empty channel" side, guide §6.4).
     const double cap = p.closures->cap();
     const auto nu_of = [cap](double s) { return cap / (1.0 + std::exp(-s)); };
-    double s_hi = 14.0, f_hi = excess(p, nu_of(s_hi));
+    double s_hi = 30.0, f_hi = excess(p, nu_of(s_hi));
     double s_lo = s_hi, f_lo = f_hi;
     bool bracket = false;
-    for (double s = 14.0 - 0.1; s > -8.0; s -= 0.1) {
+    for (double s = 30.0 - 0.1; s > -8.0; s -= 0.1) {
         const double f = excess(p, nu_of(s));
         if ((f > 0) != (f_hi > 0)) {
             s_lo = s;
