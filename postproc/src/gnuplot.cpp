@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "granlub/results.h"
+#include "svg_plot.h"
 #include "text.h"
 
 namespace granlub::postproc {
@@ -51,17 +52,26 @@ std::string gnuplot_script(const Figure& f) {
         one_line(f.title), f.name, quote(f.name + ".gnuplot.svg"), quote(f.title), quote(f.x.label), quote(f.y.label));
     if (f.x.log) out += "set logscale x\n";
     if (f.y.log) out += "set logscale y\n";
+    // The same frame and legend corner as the report's SVG.
+    const Layout l = layout(f);
+    constexpr const char* kKey[] = {"top right", "top left", "bottom right", "bottom left"};
+    out += fmt::format("set key {}\n", kKey[l.legend_corner]);
     if (!f.x.categories.empty()) {
         out += "set xtics (";
         for (std::size_t i = 0; i < f.x.categories.size(); ++i)
             out += fmt::format("{}{} {}", i ? ", " : "", quote(f.x.categories[i].second), f.x.categories[i].first);
-        out += fmt::format(")\nset xrange [{}:{}]\n", f.x.categories.front().first - 0.6,
-                           f.x.categories.back().first + 0.6);
-    } else if (f.x.lo || f.x.hi) {
-        out += fmt::format("set xrange [{}:{}]\n", f.x.lo ? num(*f.x.lo, 9) : "*", f.x.hi ? num(*f.x.hi, 9) : "*");
+        out += ")\n";
     }
-    if (f.y.lo || f.y.hi)
-        out += fmt::format("set yrange [{}:{}]\n", f.y.lo ? num(*f.y.lo, 9) : "*", f.y.hi ? num(*f.y.hi, 9) : "*");
+    out += fmt::format("set xrange [{:.9g}:{:.9g}]\nset yrange [{:.9g}:{:.9g}]\n", l.xlo, l.xhi, l.ylo, l.yhi);
+    // Log axes: the SVG's labelled ticks (1-2-5 within a decade), not only the decades.
+    const auto log_tics = [&](const char* axis, double lo, double hi) {
+        std::string t;
+        for (const auto& tick : log_ticks(lo, hi))
+            if (!tick.label.empty()) t += fmt::format("{}{} {:.9g}", t.empty() ? "" : ", ", quote(num(tick.value, 6)), tick.value);
+        if (!t.empty()) out += fmt::format("set {}tics ({})\nset m{}tics 10\n", axis, t, axis);
+    };
+    if (f.x.log) log_tics("x", l.xlo, l.xhi);
+    if (f.y.log) log_tics("y", l.ylo, l.yhi);
 
     std::vector<std::string> clauses;
     const std::string data = quote(f.name + ".dat");

@@ -142,7 +142,47 @@ bool finite_point(const Series& s, std::size_t i, const Mapper& m) {
     return std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && !(m.x.log && s.x[i] <= 0) && !(m.y.log && s.y[i] <= 0);
 }
 
+
+std::pair<double, double> legend_size(const Figure& f) {
+    std::size_t longest = 0, n = 0;
+    for (const auto& s : f.series)
+        if (!s.label.empty()) ++n, longest = std::max(longest, utf8_length(s.label));
+    return {44 + 7.6 * static_cast<double>(longest), 8 + 18 * static_cast<double>(n)};
+}
+
+// Top right, top left, bottom right, bottom left (the order gnuplot's key positions follow).
+std::array<std::pair<double, double>, 4> legend_corners(double lw, double lh) {
+    return {{{kX1 - lw - 6, kY0 + 6}, {kX0 + 6, kY0 + 6}, {kX1 - lw - 6, kY1 - lh - 6}, {kX0 + 6, kY1 - lh - 6}}};
+}
+
+int legend_corner(const Figure& f, const Mapper& m) {
+    const auto [lw, lh] = legend_size(f);
+    const auto corners = legend_corners(lw, lh);
+    std::size_t best = 0, best_count = std::numeric_limits<std::size_t>::max();
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+        std::size_t count = 0;
+        for (const auto& s : f.series)
+            for (std::size_t i = 0; i < s.x.size(); ++i) {
+                if (!finite_point(s, i, m)) continue;
+                const double e = i < s.err.size() ? s.err[i] : 0.0;
+                for (double v : {s.y[i], s.y[i] + e, s.y[i] - e}) {  // the marker and its bar ends
+                    const double x = m.px(s.x[i]), y = m.py(v);
+                    if (x >= corners[c].first - 6 && x <= corners[c].first + lw + 6 && y >= corners[c].second - 6 &&
+                        y <= corners[c].second + lh + 6)
+                        ++count;
+                }
+            }
+        if (count < best_count) best = c, best_count = count;
+    }
+    return static_cast<int>(best);
+}
+
 }  // namespace
+
+Layout layout(const Figure& f) {
+    Mapper m{axis_range(f.x, f.series, true), axis_range(f.y, f.series, false)};
+    return {m.x.lo, m.x.hi, m.y.lo, m.y.hi, legend_corner(f, m)};
+}
 
 std::vector<Tick> linear_ticks(double lo, double hi) {
     std::vector<Tick> ticks;
@@ -275,29 +315,12 @@ std::string render_svg(const Figure& f) {
 
     // Legend in the frame corner that covers the fewest data points.
     std::vector<const Series*> entries;
-    std::size_t longest = 0;
     for (const auto& s : f.series)
-        if (!s.label.empty()) entries.push_back(&s), longest = std::max(longest, utf8_length(s.label));
+        if (!s.label.empty()) entries.push_back(&s);
     if (!entries.empty()) {
-        const double lw = 44 + 7.6 * static_cast<double>(longest), lh = 8 + 18 * static_cast<double>(entries.size());
-        const std::array<std::pair<double, double>, 4> corners = {
-            {{kX1 - lw - 6, kY0 + 6}, {kX0 + 6, kY0 + 6}, {kX1 - lw - 6, kY1 - lh - 6}, {kX0 + 6, kY1 - lh - 6}}};
-        std::size_t best = 0, best_count = std::numeric_limits<std::size_t>::max();
-        for (std::size_t c = 0; c < corners.size(); ++c) {
-            std::size_t count = 0;
-            for (const auto& s : f.series)
-                for (std::size_t i = 0; i < s.x.size(); ++i) {
-                    if (!finite_point(s, i, m)) continue;
-                    const double e = i < s.err.size() ? s.err[i] : 0.0;
-                    for (double v : {s.y[i], s.y[i] + e, s.y[i] - e}) {  // the marker and its bar ends
-                        const double x = m.px(s.x[i]), y = m.py(v);
-                        if (x >= corners[c].first - 6 && x <= corners[c].first + lw + 6 &&
-                            y >= corners[c].second - 6 && y <= corners[c].second + lh + 6)
-                            ++count;
-                    }
-                }
-            if (count < best_count) best = c, best_count = count;
-        }
+        const auto [lw, lh] = legend_size(f);
+        const auto corners = legend_corners(lw, lh);
+        const std::size_t best = static_cast<std::size_t>(legend_corner(f, m));
         const auto [lx, ly] = corners[best];
         out += fmt::format(
             "<g><rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#ffffff\" "

@@ -10,6 +10,14 @@ namespace granlub::postproc {
 
 std::string render_svg(const Figure& f);
 
+// Axis limits and legend corner as render_svg chooses them (0 top right, 1 top left, 2 bottom
+// right, 3 bottom left), so the gnuplot script draws the same frame.
+struct Layout {
+    double xlo, xhi, ylo, yhi;
+    int legend_corner;
+};
+Layout layout(const Figure& f);
+
 // Tick positions and labels for an axis from lo to hi ("nice" 1-2-5 steps, or decades on log
 // axes). Exposed for the tests.
 struct Tick {
