@@ -13,7 +13,7 @@ namespace granlub::postproc {
 namespace {
 
 constexpr double kWidth = 540, kHeight = 380;
-constexpr double kLeft = 74, kRight = 16, kTop = 34, kBottom = 52;
+constexpr double kLeft = 78, kRight = 16, kTop = 34, kBottom = 52;
 constexpr double kX0 = kLeft, kX1 = kWidth - kRight, kY0 = kTop, kY1 = kHeight - kBottom;
 
 double nice_step(double span, int target) {
@@ -67,12 +67,12 @@ Range1 axis_range(const Axis& a, const std::vector<Series>& series, bool is_x) {
         if (!a.lo) lo /= 1.2;
         if (!a.hi) hi *= 1.2;
     } else {
-        // Constant data (to a part per million, e.g. a fill-controlled solid fraction): a +-10 %
-        // window instead of ticks that resolve round-off.
+        // Nearly constant data (e.g. a fill-controlled solid fraction): a window of at least
+        // +-5 % of the value, so round-off is not magnified into apparent differences.
         const double mid = 0.5 * (lo + hi);
-        if (hi - lo <= 1e-6 * std::abs(mid)) {
-            const double d = mid == 0 ? 1 : std::abs(mid) * 0.1;
-            lo = mid - d, hi = mid + d;
+        if (hi - lo < 0.02 * std::abs(mid) || hi <= lo) {
+            const double d = mid == 0 ? 1 : std::abs(mid) * 0.05;
+            lo = std::min(lo, mid - d), hi = std::max(hi, mid + d);
         }
         // Snap to the enclosing ticks, then leave a small margin so no marker sits on the frame.
         const double step = nice_step(hi - lo, 5);
@@ -267,9 +267,13 @@ std::string render_svg(const Figure& f) {
     out += "</g>\n";
     out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n", (kX0 + kX1) / 2,
                        kHeight - 12, xml_escape(f.x.label));
+    // The y label clears the widest tick label.
+    std::size_t widest = 0;
+    for (const auto& t : yt) widest = std::max(widest, t.label.rfind("1e", 0) == 0 ? std::size_t{4} : utf8_length(t.label));
+    const double ylabel_x = std::max(13.0, kX0 - 14 - 7.6 * static_cast<double>(widest) - 4);
     out += fmt::format(
-        "<text transform=\"translate({},{}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n", 18,
-        (kY0 + kY1) / 2, xml_escape(f.y.label));
+        "<text transform=\"translate({:.1f},{}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n",
+        ylabel_x, (kY0 + kY1) / 2, xml_escape(f.y.label));
     out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
                        (kX0 + kX1) / 2, 21, xml_escape(f.title));
 
