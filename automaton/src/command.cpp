@@ -122,7 +122,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
     // rho nu_max d^3 (a full lattice = nu_max), area d x d per column and a step of d/U:
     // stress = rho nu_max U^2 x (momentum per step per column in units of cell mass x U).
     const double stress = c.grains.density * nu_max * U * U;
-    auto sc = [](const Stat& st, double f) { return std::pair{st.mean * f, st.sem * f}; };
+    auto sc = [](const Stat& st, double f) { return std::pair{st.mean * f, st.sem * std::abs(f)}; };
     auto put = [&](const std::string& name, const Stat& st, double f, const std::string& unit) {
         const auto [v, e] = sc(st, f);
         s.set(name, v, unit, e);

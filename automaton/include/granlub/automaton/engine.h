@@ -55,6 +55,7 @@ public:
             grid_[index(x, H_)] = kWallTop;
         }
         rest_ = 1.0 / rules_.tf_max;
+        tf_max_ = rules_.tf_max;
         const double s = rules_.pp_deflect == 45 ? 1 : 2;
         deflect_ = static_cast<int>(s);
         jitter_ = rules_.pp_jitter_deg * std::numbers::pi / 180.0;
@@ -164,18 +165,27 @@ public:
             clock_[i] = c - 1.0;
         } else {  // time factor TF = round(U/u_p) [JH06 §CA]: move once every TF updates
             const double c = clock_[i] + 1.0;
-            if (c < tf(u)) { clock_[i] = c; return; }
+            if (!fires(c, u)) { clock_[i] = c; return; }
             clock_[i] = 0;
         }
         chain(i);
     }
 
-    // Time factor of a moving grain (u >= U/TF_max), §2.4.
+    // Does a grain of speed u (>= U/TF_max) move when its clock reaches c (integer-valued >= 1)?
+    // I.e. c >= TF(u) with TF = round_half_up(U/u) (or ceil), capped at TF_max (§2.4). Written
+    // with a multiplication instead of a division: for integers c, c >= floor(1/u + 1/2)
+    // <=> u (c + 1/2) > 1, and c >= ceil(1/u) <=> u c >= 1.
+    bool fires(double c, double u) const {
+        if (c >= tf_max_) return true;
+        return rules_.tf_rounding == TfRounding::Ceil ? u * c >= 1.0 : u * (c + 0.5) > 1.0;
+    }
+
+    // Time factor of a moving grain (u >= U/TF_max), §2.4: the first clock value that fires.
     int tf(double u) const {
-        const double r = 1.0 / u;
-        const int t = rules_.tf_rounding == TfRounding::Ceil ? static_cast<int>(std::ceil(r))
-                                                             : static_cast<int>(r + 0.5);
-        return std::clamp(t, 1, rules_.tf_max);
+        int t = std::clamp(static_cast<int>(1.0 / u), 1, rules_.tf_max);  // within one of the answer
+        while (t > 1 && fires(t - 1, u)) --t;
+        while (!fires(t, u)) ++t;
+        return t;
     }
 
     // Accessors (tests, sampler, snapshots).
@@ -384,6 +394,7 @@ private:
     Rng order_rng_;
     Rng rng_;
     double rest_ = 0.02;
+    double tf_max_ = 50;
     int deflect_ = 2;
     double jitter_ = 0;
     BigVector<std::int32_t> grid_;
