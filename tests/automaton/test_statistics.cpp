@@ -110,3 +110,22 @@ BOOST_AUTO_TEST_CASE(rule_switches_move_the_numbers_as_measured) {
         near(std::string(c.name) + " slip top", r.slip_top, c.st, 0.0005, 0.015);
     }
 }
+
+BOOST_AUTO_TEST_CASE(vector_mode_profiles) {
+    // §6.4, R = 0.65: 10 000 steps averaged over 2000-9999; the profile is the signed <u_p dx>.
+    Params p = ci();
+    p.rules.mode = Mode::Vector;
+    p.run.steps = 10000;
+    p.run.t_avg_start = 2000;
+    p.run.replicas = 1;
+    const EnsembleResult r = run_ensemble(p);
+    const double ux_ref[10] = {0.54, 0.32, 0.24, 0.18, 0.14, 0.12, 0.10, 0.08, 0.06, 0.03};  // 2 decimals
+    const double nu_ref[10] = {0.792, 0.767, 0.787, 0.813, 0.841, 0.867, 0.889, 0.903, 0.922, 0.918};
+    for (int y = 0; y < 10; ++y) {
+        near("vector u_x/U row " + std::to_string(y), r.rows_.u[y], ux_ref[y], 0.005, 0.01);
+        near("vector nu row " + std::to_string(y), r.rows_.nu[y], nu_ref[y], 0.0005, 0.01);
+    }
+    near("vector slip bottom", r.slip_bottom, 0.461, 0.0005, 0.01);
+    near("vector slip top", r.slip_top, 0.034, 0.0005, 0.015);
+    BOOST_TEST(r.steady.reached, r.steady.note);
+}
