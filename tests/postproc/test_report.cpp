@@ -197,4 +197,19 @@ BOOST_AUTO_TEST_CASE(a_second_compare_replaces_the_report_whole) {
     BOOST_TEST(html.find("Missing solvers (no usable results): automaton, dem, yade.") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(any_other_results_folder_is_a_solver) {
+    auto s = test::make_case("report_other_solver");
+    test::write_solver(s, "continuum");
+    test::write_solver(s, "mysolver");  // written like the automaton (occupancy, nu_max = 1)
+    fs::create_directories(s.o.results_root / "initial" / "U1.0");  // shared initial states: not a solver
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
+    BOOST_TEST(html.find("Solvers compared: continuum, mysolver.") != std::string::npos);
+    BOOST_TEST(html.find(">initial<") == std::string::npos);
+    const auto row = test::read_metrics_row(s.o.results_root / "report" / "metrics.csv", "profile", s.c.points[0].id,
+                                            "nu_over_numax", "continuum", "mysolver");
+    BOOST_TEST_REQUIRE(!row.empty());
+    BOOST_TEST(std::stod(row.at("rms_difference")) < 1e-12);  // each solver's own nu_max
+}
+
 BOOST_AUTO_TEST_SUITE_END()
