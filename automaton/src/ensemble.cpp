@@ -87,7 +87,9 @@ SteadyState steady_state(const RunSpec& run, const std::vector<Block>& blocks) {
         s.note = blocks.size() < static_cast<std::size_t>(need + 1)
                      ? "run too short for the block test (" + std::to_string(blocks.size()) + " blocks, need " +
                            std::to_string(need + 1) + ")"
-                     : "consecutive blocks never agreed within the tolerances";
+                 : passing > 0 ? "only the last " + std::to_string(passing) + " block pair(s) agreed (need " +
+                                     std::to_string(need) + "): run longer"
+                               : "consecutive blocks never agreed within the tolerances";
     else if (s.step > run.t_avg_start)
         s.note = "steady only from step " + std::to_string(s.step) + ", after t_avg_start = " +
                  std::to_string(run.t_avg_start);
