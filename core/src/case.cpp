@@ -323,10 +323,10 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
                     p.bottom = c.bottom;
                     p.top = c.top;
                     if (!std::isnan(R)) p.bottom.roughness = p.top.roughness = R;
-                    p.id = "U" + id_number(U, true);
-                    if (swept_lists.count("solid_fraction")) p.id += "_nu" + id_number(nu, false);
-                    if (swept_lists.count("normal_stress")) p.id += "_P" + id_number(P, false);
-                    if (swept_lists.count("roughness")) p.id += "_R" + id_number(R, false);
+                    p.id = fmt::format("U{}", id_number(U, true));
+                    if (swept_lists.count("solid_fraction")) p.id += fmt::format("_nu{}", id_number(nu, false));
+                    if (swept_lists.count("normal_stress")) p.id += fmt::format("_P{}", id_number(P, false));
+                    if (swept_lists.count("roughness")) p.id += fmt::format("_R{}", id_number(R, false));
                     c.points.push_back(std::move(p));
                 }
     return c;

@@ -13,6 +13,18 @@ std::filesystem::path results_root(const Case& c, const RunOptions& o) {
     return o.results_root.empty() ? c.dir / "results" : o.results_root;
 }
 
+namespace {
+// Options that change a result without changing the case: the run lengths (--full) and an
+// explicit --seed. A complete result computed otherwise is recomputed, not reused.
+std::string run_options_differ(const Summary& s, const RunOptions& o) {
+    const bool was_full = s.run.is_object() && s.run.value("full", false);
+    if (was_full != o.full) return was_full ? "it was a --full run" : "it was not a --full run";
+    if (o.seed && s.provenance.seed != o.seed)
+        return s.provenance.seed ? fmt::format("it used seed {}", *s.provenance.seed) : "it used no seed";
+    return "";
+}
+}  // namespace
+
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve) {
     const auto points = c.select(o.point);
     const auto root = results_root(c, o);
@@ -22,9 +34,13 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
         const auto dir = result_dir(root, solver, p->id);
         const ResultStatus st = result_status(dir, hash);
         if (st.state == ResultState::Complete && !o.force) {
-            fmt::print("{} {:<14} complete, skipped (--force recomputes)\n", solver, p->id);
-            std::fflush(stdout);
-            continue;
+            const std::string differs = run_options_differ(read_summary(dir / "summary.json"), o);
+            if (differs.empty()) {
+                fmt::print("{} {:<14} complete, skipped (--force recomputes)\n", solver, p->id);
+                std::fflush(stdout);
+                continue;
+            }
+            fmt::print("{} {:<14} complete, but {}: recomputing\n", solver, p->id, differs);
         }
         if (st.state == ResultState::Stale) fmt::print("{} {:<14} stale results, recomputing\n", solver, p->id);
         std::filesystem::create_directories(dir);
@@ -33,6 +49,7 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
             PointResult r = solve(*p, dir);
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             if (!r.summary.run.contains("wall_clock_s")) r.summary.run["wall_clock_s"] = secs;
+            r.summary.run["full"] = o.full;
             write_result(dir, r.profile, r.summary);
             fmt::print("{} {:<14} {}  ({:.2f} s)\n", solver, p->id, r.line, secs);
         } catch (const Error& e) {

@@ -56,6 +56,26 @@ BOOST_AUTO_TEST_CASE(skip_force_stale_and_failures) {
     BOOST_TEST(run_sweep(changed, "toy", o, solve_changed) == 0);
     BOOST_TEST(calls == 5);  // stale: both recomputed
 
+    // --full and an explicit --seed change results without changing the case: not reused.
+    o.full = true;
+    BOOST_TEST(run_sweep(changed, "toy", o, solve_changed) == 0);
+    BOOST_TEST(calls == 7);
+    BOOST_TEST(run_sweep(changed, "toy", o, solve_changed) == 0);
+    BOOST_TEST(calls == 7);  // same options: skipped
+    o.seed = 11;
+    auto seeded = [&](const OperatingPoint& p, const fs::path&) {
+        ++calls;
+        PointResult r = toy_result(changed, p);
+        r.summary.provenance.seed = 11;
+        return r;
+    };
+    BOOST_TEST(run_sweep(changed, "toy", o, seeded) == 0);
+    BOOST_TEST(calls == 9);
+    BOOST_TEST(run_sweep(changed, "toy", o, seeded) == 0);
+    BOOST_TEST(calls == 9);  // same seed: skipped
+    o = RunOptions{};
+    o.results_root = root;
+
     // One point fails: the sweep goes on, returns 1, and leaves that point without a result.
     fs::remove_all(root);
     auto flaky = [&](const OperatingPoint& p, const fs::path&) -> PointResult {
