@@ -202,7 +202,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     rep.heading("Wall stresses against speed");
     rep.figures(figs.stress);
     Table ex;
-    ex.header = {"solver", "points"};
+    ex.header = {"solver", "speed group"};
     for (const char* q : kStressOutputs) ex.header.push_back(std::string("n, ") + short_label(q));
     for (const auto& group : speed_groups(col.points)) {
         const std::string g = group.label.empty() ? "all" : group.label;
