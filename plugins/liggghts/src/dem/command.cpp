@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -13,6 +14,7 @@
 #include "granlub/particles.h"
 #include "granlub/results.h"
 #include "outputs.h"
+#include "pvd.h"
 #include "settings.h"
 
 namespace granlub::dem {
@@ -47,6 +49,12 @@ SectionSpec section() {
            "depth across z when [cell] width = 0 (periodic); 0 = 10 grain diameters");
     s.real("fill_for_load", 0.55, Range::open(0, 0.74), "",
            "control = load: solid fraction inserted when [operating] solid_fraction is not given");
+    s.integer("servo_every", 0, Range::at_least(0),
+              "control = load: steps between top-plate updates (force averaged over them); 0 = sample_every");
+    s.real("servo_gain", 0.05, Range::open_closed(0, 0.1), "",
+           "control = load: plate move per update in grain diameters per unit relative stress error");
+    s.real("servo_max_gap", 1.5, Range::open_closed(1, 4), "",
+           "control = load: highest plate position (the box top) as a multiple of [cell] gap");
     return s;
 }
 
@@ -54,10 +62,6 @@ namespace {
 
 PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, const fs::path& dir) {
     OperatingPoint p = p0;
-    if (p.control == Control::Load)
-        throw SolverError(fmt::format("point {}: control = \"load\" (servo-controlled top wall) is not implemented in "
-                                      "granlub dem yet; use control = \"fill\"",
-                                      p.id));
     const Settings s = resolve(c, p, o);
     p.solid_fraction = s.insert_fill;
 
@@ -68,20 +72,34 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
-    write_file_atomic(dir / kData, data_file(init.particles, s.box, c.grains.density,
+    ParticleBox data_box = s.box;
+    data_box.gap = s.box_top();  // load control: room above H for the plate to rise
+    write_file_atomic(dir / kData, data_file(init.particles, data_box, c.grains.density,
                                              fmt::format("case {} point {} ({})", c.name, p.id, prov)));
     write_file_atomic(dir / kDeck, deck(c, p, s, init.particles.size(), prov));
     fs::remove(dir / kSnapshots);
+    fs::remove(dir / kPlateFile);
+    if (s.vtk) fs::remove_all(dir / "post");  // the .pvd lists exactly this run's files
 
     const EngineRun er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
 
     const WallSeries walls = read_wall_series(dir / kWallFile);
-    SliceCoarseGrainer cg({0.0, c.cell.gap, s.stations}, s.box.length * s.box.width);
+    std::optional<PlateSeries> plate;
+    if (s.load) {
+        plate = read_plate_series(dir / kPlateFile);
+        write_file_atomic(dir / kGapFile, gap_csv(s, walls, *plate, fmt::format("case {} point {} ({})", c.name, p.id, prov)));
+    }
+    const SteadyWindow window = steady_window(s, walls, plate ? &*plate : nullptr);
+    // profile slabs span the gap: the case's H, or the mean plate position under load control
+    const double gap = plate ? mean_gap(s, *plate, window).mean : c.cell.gap;
+    SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
     if (read_snapshots(dir / kSnapshots, s.time_step, cg) < 2)
         throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", (dir / kSnapshots).string()));
     fs::remove(dir / kSnapshots);  // large; the deck regenerates it
 
-    DemOutputs out = make_outputs(c, p, s, walls, cg);
+    if (s.vtk) write_pvd(dir, s.time_step);
+
+    DemOutputs out = make_outputs(c, p, s, walls, cg, window, plate ? &*plate : nullptr, init.particles.size());
     PointResult r;
     r.profile = std::move(out.profile);
     r.summary = make_summary(c, p0, "dem", s.seed);

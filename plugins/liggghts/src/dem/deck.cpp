@@ -48,7 +48,9 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(fmt::format("# granlub dem: case {}, point {} ({})", c.name, p.id, provenance));
     line(fmt::format("# Shear cell: x along the flow (periodic, L = {:g} m), y across the gap (H = {:g} m):", box.length,
                      box.gap));
-    line(fmt::format("# bottom wall y = 0 sliding at U = {:g} m/s, top wall y = H fixed, z across the width{}.", U,
+    line(fmt::format("# bottom wall y = 0 sliding at U = {:g} m/s, top wall {}, z across the width{}.", U,
+                     s.load ? fmt::format("a plate servo-controlled to {:g} Pa (starts at y = H)", s.target_stress)
+                            : std::string("y = H fixed"),
                      box.periodic_z ? fmt::format(" (periodic, {:g} m)", box.width)
                                     : fmt::format(" (side walls at +-{:g} m moving with the bottom)", 0.5 * box.width)));
     line(fmt::format("# {} grains of d = {:g} m (solid fraction {:.4f}); contact model: {}.", grains, c.grains.diameter,
@@ -87,8 +89,15 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("# store_force gives the force of each wall on each grain (f_force_<id>), summed every step");
     line(fmt::format("fix wbot all wall/gran {} primitive type 2 yplane 0.0 shear x {} store_force yes{}", model, U,
                      settings));
-    line(fmt::format("fix wtop all wall/gran {} primitive type 3 yplane {} store_force yes{}", model, box.gap,
-                     settings));
+    const std::string top_wall =
+        fmt::format("fix wtop all wall/gran {} primitive type 3 yplane {} store_force yes{}", model,
+                    s.load ? std::string("${hplate}") : fmt::format("{}", box.gap), settings);
+    if (s.load) {
+        line(fmt::format("# top wall: a plate at y = hplate, moved by the servo loop at the end (box top {} m)",
+                         s.gap_max));
+        line(fmt::format("variable hplate equal {}", box.gap));
+    }
+    line(top_wall);
     if (!box.periodic_z) {
         line(fmt::format("fix wsid1 all wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}",
                          model, -0.5 * box.width, U, settings));
@@ -121,15 +130,48 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(fmt::format("dump cg all custom {} {} id y vx vy vz radius", s.snapshot_every, kSnapshots));
     line("dump_modify cg sort id");
     if (s.vtk) {
-        line("# ParaView: one VTK file per snapshot (open post/particles_*.vtk as a series)");
-        line(fmt::format("dump vtk all custom/vtk {} post/particles_*.vtk id type x y z vx vy vz omegax omegay omegaz "
+        line(fmt::format("# ParaView: one VTK XML file per snapshot; granlub writes the collection {}", kPvdFile));
+        line(fmt::format("dump vtk all custom/vtk {} post/particles_*.vtp id type x y z vx vy vz omegax omegay omegaz "
                          "radius",
                          s.snapshot_every));
     }
     line("thermo_style    custom step atoms ke cpu");
     line(fmt::format("thermo          {}", std::max<std::int64_t>(1, s.steps / 20)));
     line("thermo_modify   norm no lost error");
-    line(fmt::format("run             {}", s.steps));
+    if (!s.load) {
+        line(fmt::format("run             {}", s.steps));
+        return d;
+    }
+    // Load control (README "Load control"): a plate servo in the deck. Every servo_every steps the
+    // plate moves by gain d clamp((P_top - P)/P, -1, max_error), P_top the top-wall stress averaged
+    // over those steps (summed every step: the impulsive force is integrated, not sampled), then
+    // clamped to [gap_min, gap_max]. An integral controller: at steady state the plate's mean
+    // drift is zero, so the window-averaged P_top equals P (while the clamps are inactive).
+    const double d_g = c.grains.diameter;
+    const std::int64_t updates = s.steps / s.servo_every;
+    line("");
+    line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress,
+                     A));
+    line(fmt::format("# every {} steps: hplate += {} * err, err = clamp((P_top - P)/P, -1, {}),", s.servo_every,
+                     s.servo_gain * d_g, s.servo_max_error));
+    line(fmt::format("# hplate kept in [{}, {}] m; plate position per update in {}", s.gap_min, s.gap_max, kPlateFile));
+    line(fmt::format("fix servoF all ave/time 1 {0} {0} c_ftop[2]", s.servo_every));
+    line(fmt::format("fix plate all ave/time {0} 1 {0} v_hplate file {1}", s.servo_every, kPlateFile));
+    line(fmt::format("variable ptop equal -f_servoF/{}", A));
+    line(fmt::format("variable err equal (v_ptop-{0})/{0}", s.target_stress));
+    line(fmt::format("variable errc equal v_err*(v_err>=-1)*(v_err<={0})+{0}*(v_err>{0})-(v_err<-1)",
+                     s.servo_max_error));
+    line(fmt::format("variable htry equal v_hplate+{}*v_errc", s.servo_gain * d_g));
+    line(fmt::format("variable hnew equal v_htry*(v_htry>={0})*(v_htry<={1})+{0}*(v_htry<{0})+{1}*(v_htry>{1})",
+                     s.gap_min, s.gap_max));
+    line(fmt::format("variable update loop {}", updates));
+    line("label servo");
+    line(fmt::format("run             {} post no", s.servo_every));
+    line("variable hplate equal ${hnew}");
+    line("unfix wtop");
+    line(top_wall);
+    line("next update");
+    line("jump SELF servo");
     return d;
 }
 

@@ -15,6 +15,9 @@ inline constexpr const char* kData = "grains.data";
 inline constexpr const char* kWallFile = "walls.txt";       // fix ave/time: wall forces per block
 inline constexpr const char* kSnapshots = "snapshots.txt";  // dump custom: id y vx vy vz radius
 inline constexpr const char* kLog = "log.liggghts";
+inline constexpr const char* kPlateFile = "plate.txt";      // control = load: plate position per servo update
+inline constexpr const char* kGapFile = "gap.csv";          // control = load: plate history (granlub's)
+inline constexpr const char* kPvdFile = "post/particles.pvd";  // --vtk: ParaView collection
 
 // Atom types: grains, bottom wall, top wall, side walls (restitution and friction per pair).
 enum AtomType { kGrain = 1, kBottom = 2, kTop = 3, kSide = 4 };

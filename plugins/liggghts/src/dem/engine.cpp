@@ -108,7 +108,8 @@ EngineRun run_engine(const fs::path& dir, const std::string& deck, int np, std::
                           std::string("-echo"), std::string("none")})
         r.command.push_back(a);
 
-    const fs::path out = dir / "liggghts.out";
+    // absolute: the child changes into `dir` before opening it (a relative results root broke this)
+    const fs::path out = fs::absolute(dir / "liggghts.out");
     fs::remove(dir / progress_file);
     const auto t0 = std::chrono::steady_clock::now();
     const pid_t pid = ::fork();
@@ -151,7 +152,7 @@ EngineRun run_engine(const fs::path& dir, const std::string& deck, int np, std::
     static const std::regex loop(R"(Loop time of ([0-9.eE+-]+) on)");
     const std::string text = read_text(dir / "log.liggghts");
     for (auto it = std::sregex_iterator(text.begin(), text.end(), loop); it != std::sregex_iterator(); ++it)
-        r.loop_time_s = std::stod((*it)[1].str());
+        r.loop_time_s += std::stod((*it)[1].str());  // load control runs the servo windows one by one
     return r;
 }
 

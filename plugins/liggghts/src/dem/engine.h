@@ -14,7 +14,7 @@ std::filesystem::path find_driver();
 
 struct EngineRun {
     double wall_clock_s = 0;
-    double loop_time_s = 0;  // LIGGGHTS' "Loop time of ..." (0 if not found)
+    double loop_time_s = 0;  // sum of LIGGGHTS' "Loop time of ..." lines (0 if none)
     int ranks = 1;
     std::vector<std::string> command;
 };

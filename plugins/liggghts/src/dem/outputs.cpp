@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include <fmt/format.h>
 
+#include "deck.h"
 #include "granlub/error.h"
 
 namespace granlub::dem {
@@ -78,8 +80,78 @@ std::size_t read_snapshots(const fs::path& file, double dt, SliceCoarseGrainer& 
     return count;
 }
 
+PlateSeries read_plate_series(const fs::path& file) {
+    std::ifstream in(file);
+    if (!in) throw SolverError(fmt::format("{}: LIGGGHTS wrote no plate-position file", file.string()));
+    PlateSeries p;
+    std::string l;
+    std::size_t lineno = 0;
+    while (std::getline(in, l)) {
+        ++lineno;
+        if (l.empty() || l[0] == '#') continue;
+        std::istringstream ss(l);
+        double step, gap;
+        if (!(ss >> step >> gap) || !std::isfinite(gap))
+            throw SolverError(fmt::format("{}:{}: expected: step gap", file.string(), lineno));
+        if (step <= 0 || (!p.step.empty() && step <= p.step.back())) continue;  // initial position, repeats
+        p.step.push_back(step);
+        p.gap.push_back(gap);
+    }
+    if (p.step.size() < 2) throw SolverError(fmt::format("{}: fewer than 2 plate positions", file.string()));
+    return p;
+}
+
+SteadyWindow steady_window(const Settings& s, const WallSeries& w, const PlateSeries* plate) {
+    SteadyWindow win;
+    for (std::size_t col : {1u, 4u, 0u, 3u}) {  // normal and shear force, bottom and top (MSER is scale-free)
+        const SteadyState ss = detect_steady_state(w.columns.at(col));
+        win.wall_start = std::max(win.wall_start, ss.start);
+        win.steady = win.steady && ss.steady;
+    }
+    auto wall_begin = [&](std::size_t i) { return w.step[i] - static_cast<double>(s.sample_every); };
+    if (plate) {
+        const SteadyState ss = detect_steady_state(plate->gap);
+        win.steady = win.steady && ss.steady;
+        const double begin = plate->step[std::min(ss.start, plate->step.size() - 1)] - static_cast<double>(s.servo_every);
+        while (win.wall_start + 1 < w.step.size() && wall_begin(win.wall_start) < begin - 0.5) ++win.wall_start;
+        while (win.plate_start + 1 < plate->step.size() &&
+               plate->step[win.plate_start] - static_cast<double>(s.servo_every) < wall_begin(win.wall_start) - 0.5)
+            ++win.plate_start;
+    }
+    win.t_start = win.wall_start < w.step.size() ? wall_begin(win.wall_start) * s.time_step : 0.0;
+    return win;
+}
+
+BlockEstimate mean_gap(const Settings& s, const PlateSeries& plate, const SteadyWindow& w) {
+    return block_average(std::span<const double>(plate.gap).subspan(w.plate_start), s.blocks);
+}
+
+std::string gap_csv(const Settings& s, const WallSeries& w, const PlateSeries& plate, const std::string& comment) {
+    const double A = s.box.length * s.box.width;
+    std::string out = fmt::format("# {}\n# plate (top wall) position after each servo window of {} steps; stress = "
+                                  "top-wall normal stress averaged over the window; target {} Pa\n"
+                                  "time_s,gap_m,normal_stress_top_Pa\n",
+                                  comment, s.servo_every, s.target_stress);
+    std::size_t i = 0;
+    for (std::size_t j = 0; j < plate.step.size(); ++j) {
+        double sum = 0;
+        std::size_t n = 0;
+        while (i < w.step.size() && w.step[i] <= plate.step[j] + 0.5) {
+            if (w.step[i] > plate.step[j] - static_cast<double>(s.servo_every) + 0.5) {
+                sum += -w.columns[4][i] / A;
+                ++n;
+            }
+            ++i;
+        }
+        out += fmt::format("{},{},{}\n", plate.step[j] * s.time_step, plate.gap[j],
+                           n > 0 ? fmt::format("{}", sum / static_cast<double>(n)) : std::string(""));
+    }
+    return out;
+}
+
 DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings& s, const WallSeries& w,
-                        const SliceCoarseGrainer& cg) {
+                        const SliceCoarseGrainer& cg, const SteadyWindow& win, const PlateSeries* plate,
+                        std::size_t grains) {
     DemOutputs o;
     const double A = s.box.length * s.box.width;
     const double U = pt.speed;
@@ -92,15 +164,9 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
     const std::vector<double> sig_b = series(1, 1.0), sig_t = series(4, -1.0);
     const std::vector<double> tau_b = series(0, 1.0), tau_t = series(3, -1.0);
 
-    std::size_t start = 0;
-    bool steady = true;
-    for (const auto* v : {&sig_b, &sig_t, &tau_b, &tau_t}) {
-        const SteadyState ss = detect_steady_state(*v);
-        start = std::max(start, ss.start);
-        steady = steady && ss.steady;
-    }
-    const double t_start = start < w.step.size() ? (w.step[start] - static_cast<double>(s.sample_every)) * s.time_step
-                                                 : 0.0;
+    const std::size_t start = win.wall_start;
+    const bool steady = win.steady;
+    const double t_start = win.t_start;
     auto est = [&](const std::vector<double>& v) {
         return block_average(std::span<const double>(v).subspan(start), s.blocks);
     };
@@ -133,20 +199,51 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
     o.outputs["slip_bottom"] = Scalar{U * (1.0 - u[0]), U * ue[0], "m/s"};
     o.outputs["slip_top"] = Scalar{U * u[n - 1], U * ue[n - 1], "m/s"};
     o.outputs["mean_solid_fraction"] = Scalar{cg.mean_solid_fraction(first, cg.snapshots()), std::nullopt, ""};
+    std::string load_line;
+    if (plate) {
+        // the grains' volume over the mean gap: exact for the grain count (the slabs end at the mean
+        // gap, so the coarse-grained value would miss grains while the plate is above it)
+        const BlockEstimate g = mean_gap(s, *plate, win);
+        const double vg = std::numbers::pi / 6.0 * std::pow(c.grains.diameter, 3);
+        const double nu = static_cast<double>(grains) * vg / (A * g.mean);
+        o.outputs["gap"] = Scalar{g.mean, g.stderr_, "m"};
+        o.outputs["mean_solid_fraction"] = Scalar{nu, nu * g.stderr_ / g.mean, ""};
+        const Scalar& top = o.outputs["normal_stress_top"];
+        std::size_t at_limit = 0;
+        for (double h : plate->gap)
+            if (h <= s.gap_min * (1 + 1e-9) || h >= s.gap_max * (1 - 1e-9)) ++at_limit;
+        const bool limit_now = plate->gap.back() <= s.gap_min * (1 + 1e-9) || plate->gap.back() >= s.gap_max * (1 - 1e-9);
+        o.run["load_control"] = {
+            {"target_normal_stress_Pa", s.target_stress},
+            {"normal_stress_top_over_target", top.value / s.target_stress},
+            {"deviation_in_stderr", (top.value - s.target_stress) / top.stderr_.value_or(1.0)},
+            {"gap_initial_m", s.box.gap},
+            {"gap_mean_m", g.mean},
+            {"gap_stderr_m", g.stderr_},
+            {"gap_final_m", plate->gap.back()},
+            {"servo_updates", plate->gap.size()},
+            {"servo_updates_used", plate->gap.size() - win.plate_start},
+            {"updates_at_plate_limit", at_limit},
+            {"plate_at_limit_at_end", limit_now},
+            {"gap_file", kGapFile}};
+        load_line = fmt::format(" gap={:.4g} mm (P_top/P={:.3f}{})", 1e3 * g.mean, top.value / s.target_stress,
+                                limit_now ? ", PLATE AT ITS LIMIT: target not reachable" : "");
+    }
     o.outputs["max_solid_fraction"] = Scalar{c.cell.max_solid_fraction, std::nullopt, ""};
 
-    o.run = {{"steady_state_detected", steady},
+    o.run.update(nlohmann::json{{"steady_state_detected", steady},
              {"steady_state_start_s", t_start},
              {"wall_samples", w.step.size()},
              {"wall_samples_used", w.step.size() - start},
              {"snapshots", cg.snapshots()},
-             {"snapshots_used", cg.snapshots() - first}};
+             {"snapshots_used", cg.snapshots() - first}});
     o.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa slip={:.3f}/{:.3f} U{}",
                          o.outputs["mean_solid_fraction"].value, o.outputs["normal_stress_bottom"].value,
                          o.outputs["normal_stress_top"].value, o.outputs["shear_stress_bottom"].value,
                          o.outputs["shear_stress_top"].value, o.outputs["slip_bottom"].value / U,
                          o.outputs["slip_top"].value / U,
                          steady ? fmt::format(" (steady from {:.3g} s)", t_start) : " (NO steady state detected: run longer)");
+    o.line += load_line;
     return o;
 }
 

@@ -62,6 +62,28 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     }
     st.steps = static_cast<std::int64_t>(std::ceil(st.time / st.time_step - 1e-9));
     st.sample_every = s.integer("sample_every");
+    if (p.control == Control::Load) {
+        st.load = true;
+        st.target_stress = p.normal_stress;
+        if (!(st.target_stress > 0))  // core rejects this already; a guard for hand-built points
+            throw SolverError(fmt::format("point {}: control = \"load\" needs [operating] normal_stress > 0 (got {:g} Pa)",
+                                          p.id, st.target_stress));
+        const auto every = s.integer("servo_every");
+        st.servo_every = every > 0 ? every : st.sample_every;
+        if (st.servo_every % st.sample_every != 0)
+            s.fail("servo_every", fmt::format("servo_every = {} must be a multiple of sample_every = {} (the plate "
+                                              "history is matched to the wall-force blocks), or 0 (= sample_every)",
+                                              st.servo_every, st.sample_every));
+        st.servo_gain = s.real("servo_gain");
+        st.servo_max_error = kServoMaxError;
+        st.gap_max = s.real("servo_max_gap") * c.cell.gap;
+        // whole servo windows
+        st.steps = (st.steps + st.servo_every - 1) / st.servo_every * st.servo_every;
+        if (st.steps < 20 * st.servo_every)
+            s.fail("servo_every", fmt::format("{} steps of {:g} s give only {} plate updates of {} steps; at least 20 "
+                                              "are needed (shorten servo_every or run longer)",
+                                              st.steps, st.time_step, st.steps / st.servo_every, st.servo_every));
+    }
     if (st.steps < 20 * st.sample_every)
         s.fail(o.full ? "time_full" : "time",
                fmt::format("{:g} s is {} steps of {:g} s: fewer than 20 wall-stress samples of {} steps "
@@ -75,6 +97,8 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
 
     if (p.control == Control::Load) {
         st.insert_fill = p.solid_fraction > 0 ? p.solid_fraction : s.real("fill_for_load");
+        // the plate cannot go below the closest packing of the inserted grains (FCC, 0.7405)
+        st.gap_min = st.insert_fill * c.cell.gap / 0.7405;
     } else {
         st.insert_fill = p.solid_fraction;
     }
@@ -98,7 +122,14 @@ nlohmann::json Settings::to_json() const {
             {"insert_fill", insert_fill},
             {"ranks", np},
             {"box_m", {box.length, box.gap, box.width}},
-            {"periodic_z", box.periodic_z}};
+            {"periodic_z", box.periodic_z},
+            {"control", load ? "load" : "fill"},
+            {"target_normal_stress_Pa", target_stress},
+            {"servo_every", servo_every},
+            {"servo_gain", servo_gain},
+            {"servo_max_error", servo_max_error},
+            {"gap_min_m", gap_min},
+            {"gap_max_m", gap_max}};
 }
 
 }  // namespace granlub::dem

@@ -31,7 +31,18 @@ struct Settings {
     double insert_fill = 0;       // solid fraction inserted (point's, or fill_for_load)
     bool vtk = false;
     int np = 1;
-    ParticleBox box;
+    ParticleBox box;              // the cell (box.gap = the case's gap H)
+
+    // control = "load": the top wall is a plate moved by the deck every servo_every steps from
+    // the top-wall force averaged over those steps (see deck.h, README "Load control").
+    bool load = false;
+    double target_stress = 0;         // Pa, the point's normal_stress
+    std::int64_t servo_every = 0;     // steps between plate updates (a multiple of sample_every)
+    double servo_gain = 0;            // plate move per update, diameters per unit relative error
+    double servo_max_error = 0;       // relative stress error is clamped to [-1, servo_max_error]
+    double gap_min = 0;               // plate limits, m: closest packing of the grains ...
+    double gap_max = 0;               // ... and the box top (servo_max_gap x H)
+    double box_top() const { return load ? gap_max : box.gap; }
 
     nlohmann::json to_json() const;
 };
@@ -45,6 +56,10 @@ double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fra
 // Rayleigh time of Hertz contacts between the case's grains (Li et al. 2005 form used by
 // LIGGGHTS' check/timestep/gran): pi r sqrt(rho/G) / (0.1631 nu + 0.8766).
 double rayleigh_time(const Grains& g);
+
+// Upper clamp of the relative stress error in a servo update: spikes of the impulsive top-wall
+// force raise the plate by at most this many gains (a stress below target lowers it by at most 1).
+inline constexpr double kServoMaxError = 3.0;
 
 // Largest safe displacement per step for the impulse model, in diameters (contacts are found
 // only by overlap; more than this risks tunnelling and deep overlaps).
