@@ -1,6 +1,11 @@
 #include "modules.h"
 
+#include <cstdio>
+
+#include <fmt/format.h>
+
 #include "granlub/error.h"
+#include "granlub/results.h"
 
 #ifdef GRANLUB_HAVE_CONTINUUM
 #include "granlub/continuum/command.h"
@@ -71,6 +76,23 @@ int compare([[maybe_unused]] const Case& c, [[maybe_unused]] const RunOptions& o
 #else
     throw Error("this granlub was built without postproc: `granlub compare` is not available");
 #endif
+}
+
+void closing_table(const Case& c, const RunOptions& o) {
+#ifdef GRANLUB_HAVE_POSTPROC
+    fmt::print("\n{}", postproc::summary_table(c, o));
+#else
+    fmt::print("\n{:<10} {:<14} {:>10} {:>14} {:>14}\n", "solver", "point", "mean nu", "sigma_yy Pa", "tau_xy Pa");
+    for (const auto& m : solver_modules())
+        for (const auto& p : c.points) {
+            const auto dir = result_dir(results_root(c, o), m.name, p.id);
+            if (result_status(dir, c.inputs_hash(m.name)).state != ResultState::Complete) continue;
+            const Summary s = read_summary(dir / "summary.json");
+            fmt::print("{:<10} {:<14} {:>10.3f} {:>14.4g} {:>14.4g}\n", m.name, p.id, s.value("mean_solid_fraction"),
+                       s.value("normal_stress_bottom"), s.value("shear_stress_bottom"));
+        }
+#endif
+    std::fflush(stdout);
 }
 
 }  // namespace granlub::cli

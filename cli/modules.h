@@ -21,5 +21,8 @@ Schema full_schema();
 // `granlub compare` if postproc is compiled in; otherwise throws.
 int compare(const Case& c, const RunOptions& o);
 bool have_compare();
+// The closing table of `granlub run`: one row per solver and point (postproc's summary table when
+// postproc is built in, else the mean solid fraction and wall stresses read from the summaries).
+void closing_table(const Case& c, const RunOptions& o);
 
 }  // namespace granlub::cli

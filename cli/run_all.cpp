@@ -12,39 +12,6 @@
 
 namespace granlub::cli {
 
-namespace {
-
-std::string cell(const Summary& s, const char* name, double scale, const char* fmtstr) {
-    auto it = s.outputs.find(name);
-    if (it == s.outputs.end()) return "-";
-    std::string v = fmt::format(fmt::runtime(fmtstr), it->second.value * scale);
-    if (it->second.stderr_) v += fmt::format(fmt::runtime(std::string("±") + fmtstr), *it->second.stderr_ * scale);
-    return v;
-}
-
-void closing_table(const Case& c, const RunOptions& o, const std::vector<const SolverModule*>& mods) {
-    const auto root = results_root(c, o);
-    fmt::print("\n{:<10} {:<14} {:>16} {:>20} {:>20} {:>14}\n", "solver", "point", "mean nu", "normal stress Pa",
-               "shear stress Pa", "slip/U bottom");
-    for (const auto* m : mods) {
-        for (const auto& p : c.points) {
-            const auto dir = result_dir(root, m->name, p.id);
-            const auto st = result_status(dir, c.inputs_hash(m->name));
-            if (st.state != ResultState::Complete) {
-                fmt::print("{:<10} {:<14} {}\n", m->name, p.id,
-                           st.state == ResultState::Missing ? "no result" : "not current: " + st.reason);
-                continue;
-            }
-            const Summary s = read_summary(dir / "summary.json");
-            fmt::print("{:<10} {:<14} {:>16} {:>20} {:>20} {:>14}\n", m->name, p.id,
-                       cell(s, "mean_solid_fraction", 1, "{:.3f}"), cell(s, "normal_stress_bottom", 1, "{:.4g}"),
-                       cell(s, "shear_stress_bottom", 1, "{:.4g}"), cell(s, "slip_bottom", 1 / p.speed, "{:.3f}"));
-        }
-    }
-}
-
-}  // namespace
-
 int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& solvers) {
     std::vector<const SolverModule*> mods;
     for (const auto& m : solver_modules())
@@ -77,7 +44,7 @@ int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& 
             rc = 1;
         }
     }
-    closing_table(c, o, mods);
+    closing_table(c, o);
     fmt::print("\n{} in {:.0f} s{}\n", rc == 0 ? "done" : "finished with failures", elapsed(),
                have_compare() ? fmt::format("; report: {}", (results_root(c, o) / "report" / "index.html").string())
                               : "");
