@@ -36,7 +36,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
 
     if (p.control == Control::Load)
         c.section("operating").fail("control", "granlub yade runs the filled cell only (a servo-controlled top "
-                                               "wall is not implemented, as in granlub dem); use control = \"fill\"");
+                                               "wall is not implemented in the YADE driver); use control = \"fill\"");
 
     // Same initial grains as `granlub dem`: its insertion keys when the case has them.
     r.insertion.wall_speed = p.speed;
