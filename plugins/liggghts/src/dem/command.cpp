@@ -87,7 +87,8 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     std::optional<PlateSeries> plate;
     if (s.load) {
         plate = read_plate_series(dir / kPlateFile);
-        write_file_atomic(dir / kGapFile, gap_csv(s, walls, *plate, fmt::format("case {} point {} ({})", c.name, p.id, prov)));
+        const std::string what = fmt::format("case {} point {} ({})", c.name, p.id, prov);
+        write_file_atomic(dir / kGapFile, gap_csv(s, walls, *plate, what));
     }
     const SteadyWindow window = steady_window(s, walls, plate ? &*plate : nullptr);
     // profile slabs span the gap: the case's H, or the mean plate position under load control

@@ -112,7 +112,8 @@ SteadyWindow steady_window(const Settings& s, const WallSeries& w, const PlateSe
     if (plate) {
         const SteadyState ss = detect_steady_state(plate->gap);
         win.steady = win.steady && ss.steady;
-        const double begin = plate->step[std::min(ss.start, plate->step.size() - 1)] - static_cast<double>(s.servo_every);
+        const std::size_t last = plate->step.size() - 1;
+        const double begin = plate->step[std::min(ss.start, last)] - static_cast<double>(s.servo_every);
         while (win.wall_start + 1 < w.step.size() && wall_begin(win.wall_start) < begin - 0.5) ++win.wall_start;
         while (win.plate_start + 1 < plate->step.size() &&
                plate->step[win.plate_start] - static_cast<double>(s.servo_every) < wall_begin(win.wall_start) - 0.5)
@@ -209,10 +210,9 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
         o.outputs["gap"] = Scalar{g.mean, g.stderr_, "m"};
         o.outputs["mean_solid_fraction"] = Scalar{nu, nu * g.stderr_ / g.mean, ""};
         const Scalar& top = o.outputs["normal_stress_top"];
-        std::size_t at_limit = 0;
-        for (double h : plate->gap)
-            if (h <= s.gap_min * (1 + 1e-9) || h >= s.gap_max * (1 - 1e-9)) ++at_limit;
-        const bool limit_now = plate->gap.back() <= s.gap_min * (1 + 1e-9) || plate->gap.back() >= s.gap_max * (1 - 1e-9);
+        auto at_a_limit = [&](double h) { return h <= s.gap_min * (1 + 1e-9) || h >= s.gap_max * (1 - 1e-9); };
+        const auto at_limit = static_cast<std::size_t>(std::count_if(plate->gap.begin(), plate->gap.end(), at_a_limit));
+        const bool limit_now = at_a_limit(plate->gap.back());
         o.run["load_control"] = {
             {"target_normal_stress_Pa", s.target_stress},
             {"normal_stress_top_over_target", top.value / s.target_stress},

@@ -66,7 +66,8 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
         st.load = true;
         st.target_stress = p.normal_stress;
         if (!(st.target_stress > 0))  // core rejects this already; a guard for hand-built points
-            throw SolverError(fmt::format("point {}: control = \"load\" needs [operating] normal_stress > 0 (got {:g} Pa)",
+            throw SolverError(fmt::format("point {}: control = \"load\" needs [operating] normal_stress > 0 "
+                                          "(got {:g} Pa)",
                                           p.id, st.target_stress));
         const auto every = s.integer("servo_every");
         st.servo_every = every > 0 ? every : st.sample_every;
