@@ -127,12 +127,9 @@ BlockEstimate mean_gap(const Settings& s, const PlateSeries& plate, const Steady
     return block_average(std::span<const double>(plate.gap).subspan(w.plate_start), s.blocks);
 }
 
-std::string gap_csv(const Settings& s, const WallSeries& w, const PlateSeries& plate, const std::string& comment) {
+std::vector<double> window_stresses(const Settings& s, const WallSeries& w, const PlateSeries& plate) {
     const double A = s.box.length * s.box.width;
-    std::string out = fmt::format("# {}\n# plate (top wall) position after each servo window of {} steps; stress = "
-                                  "top-wall normal stress averaged over the window; target {} Pa\n"
-                                  "time_s,gap_m,normal_stress_top_Pa\n",
-                                  comment, s.servo_every, s.target_stress);
+    std::vector<double> out;
     std::size_t i = 0;
     for (std::size_t j = 0; j < plate.step.size(); ++j) {
         double sum = 0;
@@ -144,9 +141,20 @@ std::string gap_csv(const Settings& s, const WallSeries& w, const PlateSeries& p
             }
             ++i;
         }
-        out += fmt::format("{},{},{}\n", plate.step[j] * s.time_step, plate.gap[j],
-                           n > 0 ? fmt::format("{}", sum / static_cast<double>(n)) : std::string(""));
+        out.push_back(n > 0 ? sum / static_cast<double>(n) : -1.0);
     }
+    return out;
+}
+
+std::string gap_csv(const Settings& s, const WallSeries& w, const PlateSeries& plate, const std::string& comment) {
+    const std::vector<double> p_w = window_stresses(s, w, plate);
+    std::string out = fmt::format("# {}\n# plate (top wall) position after each servo window of {} steps; stress = "
+                                  "top-wall normal stress averaged over the window; target {} Pa\n"
+                                  "time_s,gap_m,normal_stress_top_Pa\n",
+                                  comment, s.servo_every, s.target_stress);
+    for (std::size_t j = 0; j < plate.step.size(); ++j)
+        out += fmt::format("{},{},{}\n", plate.step[j] * s.time_step, plate.gap[j],
+                           p_w[j] >= 0 ? fmt::format("{}", p_w[j]) : std::string(""));
     return out;
 }
 
@@ -213,6 +221,10 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
         auto at_a_limit = [&](double h) { return h <= s.gap_min * (1 + 1e-9) || h >= s.gap_max * (1 - 1e-9); };
         const auto at_limit = static_cast<std::size_t>(std::count_if(plate->gap.begin(), plate->gap.end(), at_a_limit));
         const bool limit_now = at_a_limit(plate->gap.back());
+        // windows whose stress error hit the upper clamp (their plate move was capped)
+        std::size_t clamped = 0;
+        for (double pw : window_stresses(s, w, *plate))
+            if (pw > (1.0 + s.servo_max_error) * s.target_stress) ++clamped;
         o.run["load_control"] = {
             {"target_normal_stress_Pa", s.target_stress},
             {"normal_stress_top_over_target", top.value / s.target_stress},
@@ -224,6 +236,7 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
             {"servo_updates", plate->gap.size()},
             {"servo_updates_used", plate->gap.size() - win.plate_start},
             {"updates_at_plate_limit", at_limit},
+            {"updates_error_clamped", clamped},
             {"plate_at_limit_at_end", limit_now},
             {"gap_file", kGapFile}};
         load_line = fmt::format(" gap={:.4g} mm (P_top/P={:.3f}{})", 1e3 * g.mean, top.value / s.target_stress,

@@ -43,6 +43,10 @@ SteadyWindow steady_window(const Settings& s, const WallSeries& walls, const Pla
 // Mean gap (m) and its block standard error over the steady part of the plate history.
 BlockEstimate mean_gap(const Settings& s, const PlateSeries& plate, const SteadyWindow& w);
 
+// The top-wall normal stress (Pa) averaged over each servo window of the plate history (the
+// wall-force blocks inside it; -1 for a window without blocks).
+std::vector<double> window_stresses(const Settings& s, const WallSeries& walls, const PlateSeries& plate);
+
 // gap.csv: time_s, gap_m, normal_stress_top_Pa (the top-wall stress averaged over each servo window).
 std::string gap_csv(const Settings& s, const WallSeries& walls, const PlateSeries& plate, const std::string& comment);
 
