@@ -228,7 +228,8 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
         o.run["load_control"] = {
             {"target_normal_stress_Pa", s.target_stress},
             {"normal_stress_top_over_target", top.value / s.target_stress},
-            {"deviation_in_stderr", (top.value - s.target_stress) / top.stderr_.value_or(1.0)},
+            {"deviation_in_stderr",  // 0 when there is no error bar (never inf/NaN in a result)
+             top.stderr_.value_or(0) > 0 ? (top.value - s.target_stress) / *top.stderr_ : 0.0},
             {"gap_initial_m", s.box.gap},
             {"gap_mean_m", g.mean},
             {"gap_stderr_m", g.stderr_},
