@@ -95,6 +95,12 @@ Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     run.seed = o.seed ? *o.seed : static_cast<std::uint64_t>(s.integer("seed"));
     run.steady_tol_u = s.real("steady_tol_u");
     run.steady_tol_nu = s.real("steady_tol_nu");
+    run.steady_protocol = pick<SteadyProtocol>(s.string("steady_state"), {{"blocks", SteadyProtocol::Blocks},
+                                                                          {"runs", SteadyProtocol::Runs}});
+    run.runs_start = s.integer("runs_start");
+    run.runs_max_steps = s.integer("runs_max_steps");
+    run.runs_tol_u = s.real("runs_tol_u");
+    run.runs_tol_nu = s.real("runs_tol_nu");
     run.snapshot_every = o.vtk ? s.integer("vtk_every") : 0;
     try {
         validate(prm);

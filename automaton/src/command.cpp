@@ -10,6 +10,7 @@
 #include "granlub/automaton/case_mapping.h"
 #include "granlub/automaton/ensemble.h"
 #include "granlub/automaton/vtk.h"
+#include "granlub/error.h"
 #include "granlub/progress.h"
 #include "granlub/results.h"
 
@@ -46,7 +47,12 @@ nlohmann::json settings_json(const Params& p) {
             {"replicas", run.replicas},
             {"seed", run.seed},
             {"steady_tol_u", run.steady_tol_u},
-            {"steady_tol_nu", run.steady_tol_nu}};
+            {"steady_tol_nu", run.steady_tol_nu},
+            {"steady_state", to_string(run.steady_protocol)},
+            {"runs_start", run.runs_start},
+            {"runs_max_steps", run.runs_max_steps},
+            {"runs_tol_u", run.runs_tol_u},
+            {"runs_tol_nu", run.runs_tol_nu}};
 }
 
 std::vector<double> means(const std::vector<Stat>& v, double scale = 1) {
@@ -105,10 +111,14 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
             snaps.emplace_back(static_cast<double>(step) * d / U, name);  // one step = d/U seconds
         };
     }
-    Progress progress(fmt::format("automaton {}", pt.id), static_cast<std::uint64_t>(prm.run.steps) * prm.run.replicas);
+    const bool by_runs = prm.run.steady_protocol == SteadyProtocol::Runs;
+    const std::int64_t max_steps = by_runs ? prm.run.runs_max_steps : prm.run.steps;
+    Progress progress(fmt::format("automaton {}", pt.id), static_cast<std::uint64_t>(max_steps) * prm.run.replicas);
     obs.progress = [&](std::uint64_t done, std::uint64_t) { progress.update(done); };
 
     const EnsembleResult r = run_ensemble(prm, obs);
+    const RunsProtocol& rp = r.runs;
+    require_converged(pt.id, prm, rp);
     if (!snaps.empty()) write_file_atomic(dir / "lattice.pvd", snapshot_pvd(snaps));
     if (prm.run.timeseries_every > 0) write_file_atomic(dir / "timeseries.csv", timeseries_csv(r.timeseries));
 
@@ -151,7 +161,26 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
 
     const auto& T = r.totals;
     const double reps = r.replicas;
-    s.run = {{"steps", prm.run.steps},
+    nlohmann::json steady = {{"protocol", to_string(prm.run.steady_protocol)},
+                              {"reached", r.steady.reached}, {"from_step", r.steady.step},
+                              {"note", r.steady.note}};
+    if (rp.used) {
+        steady["window"] = "second half of the last run [ASSUMED]";
+        steady["run_lengths"] = rp.lengths;
+        steady["max_du_over_U"] = rp.du;  // run k vs run k-1, k >= 2
+        steady["max_dnu"] = rp.dnu;
+        steady["final_max_du_over_U"] = rp.du.back();
+        steady["final_max_dnu"] = rp.dnu.back();
+        steady["final_rows"] = {{"du", rp.du_row}, {"dnu", rp.dnu_row}};
+        steady["tol_u"] = prm.run.runs_tol_u;
+        steady["tol_nu"] = prm.run.runs_tol_nu;
+    } else {
+        steady["drift_U_per_block"] = r.steady.drift;
+        steady["tol_u"] = prm.run.steady_tol_u;
+        steady["tol_nu"] = prm.run.steady_tol_nu;
+    }
+    const std::int64_t steps_run = rp.used ? rp.lengths.back() : prm.run.steps;
+    s.run = {{"steps", steps_run},
              {"replicas", r.replicas},
              {"threads", r.threads},
              {"window_blocks", r.window_blocks},
@@ -160,8 +189,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
                           {"mapping", "rows = round(gap/d), columns = round(length/d); one grain per cell; "
                                       "solid_fraction = lattice occupancy (max 1); solid_fraction_scaled = "
                                       "occupancy x max_solid_fraction"}}},
-             {"steady_state", {{"reached", r.steady.reached}, {"from_step", r.steady.step},
-                               {"drift_U_per_block", r.steady.drift}, {"note", r.steady.note}}},
+             {"steady_state", steady},
              {"per_replica", {{"particle_updates", static_cast<double>(T.visits) / reps},
                               {"moves", static_cast<double>(T.moves) / reps},
                               {"grain_collisions", static_cast<double>(T.pp) / reps},
@@ -175,7 +203,10 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
     out.line = fmt::format("{}x{} N={} slip {:.3f}/{:.3f} U (+-{:.4f}) tau {:.3g}/{:.3g} Pa{}", r.rows,
                            r.columns, r.particles, r.slip_bottom.mean, r.slip_top.mean, r.slip_bottom.sem,
                            s.value("shear_stress_bottom"), s.value("shear_stress_top"),
-                           r.steady.reached ? "" : "  NOT STEADY: " + r.steady.note);
+                           r.steady.reached ? "" : "  NOT STEADY: " + r.steady.note) +
+               (rp.used ? fmt::format("  [runs to {} steps, du {:.4f} U, dnu {:.4f}]", steps_run, rp.du.back(),
+                                      rp.dnu.back())
+                        : std::string());
     return out;
 }
 

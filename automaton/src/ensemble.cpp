@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <thread>
 
 #include "granlub/error.h"
@@ -174,12 +175,21 @@ EnsembleResult pool(const Params& p, const std::vector<std::vector<Block>>& bloc
     return out;
 }
 
-EnsembleResult run_ensemble(const Params& p, const Observer& observer) {
-    validate(p);
-    const int replicas = p.run.replicas;
-    const int hw = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    const int threads = std::clamp(p.run.threads > 0 ? p.run.threads : hw, 1, replicas);
-    std::vector<ReplicaOut> outs(static_cast<std::size_t>(replicas));
+namespace {
+
+// One replica's lattice and sampler, kept between the runs of the §7.6 protocol.
+struct Replica {
+    Lattice lattice;
+    Sampler sampler;
+};
+
+// Advances every replica from step `from` to step `to` in `threads` threads (replica r only
+// depends on (seed, r), so the thread count never changes the numbers). Reports progress as
+// `done_before` + steps done here, out of `total`.
+void advance(const Params& p, const RunSpec& sampler_run, std::vector<std::unique_ptr<Replica>>& reps,
+             std::int64_t from, std::int64_t to, int threads, const Observer& observer,
+             std::uint64_t done_before, std::uint64_t total) {
+    const int replicas = static_cast<int>(reps.size());
     std::atomic<int> next{0};
     std::atomic<std::uint64_t> steps_done{0};
     std::atomic<int> finished{0};
@@ -189,12 +199,14 @@ EnsembleResult run_ensemble(const Params& p, const Observer& observer) {
     auto work = [&] {
         for (int r = next++; r < replicas && !failed; r = next++) {
             try {
-                Lattice e = make_lattice(p, r);
-                Sampler s(p.lattice.rows, p.lattice.columns, p.run);
+                auto& slot = reps[static_cast<std::size_t>(r)];
+                if (!slot) slot.reset(new Replica{make_lattice(p, r), Sampler(p.lattice.rows, p.lattice.columns, sampler_run)});
+                Lattice& e = slot->lattice;
+                Sampler& s = slot->sampler;
                 const bool snap = r == 0 && observer.snapshot && p.run.snapshot_every > 0;
-                if (snap) observer.snapshot(0, e);
+                if (snap && from == 0) observer.snapshot(0, e);
                 std::uint64_t pending = 0;
-                for (std::int64_t t = 0; t < p.run.steps; ++t) {
+                for (std::int64_t t = from; t < to; ++t) {
                     e.step();
                     s.after_step(t, e);
 #ifndef NDEBUG
@@ -211,7 +223,6 @@ EnsembleResult run_ensemble(const Params& p, const Observer& observer) {
                     if (failed) return;
                 }
                 steps_done += pending;
-                outs[static_cast<std::size_t>(r)] = {s.blocks(), s.timeseries(), e.counters()};
             } catch (...) {
                 if (!failed.exchange(true)) error = std::current_exception();
             }
@@ -219,24 +230,102 @@ EnsembleResult run_ensemble(const Params& p, const Observer& observer) {
         ++finished;
     };
 
-    const auto t0 = std::chrono::steady_clock::now();
     std::vector<std::thread> pool_threads;
     for (int k = 0; k < threads; ++k) pool_threads.emplace_back(work);
-    const std::uint64_t total = static_cast<std::uint64_t>(p.run.steps) * static_cast<std::uint64_t>(replicas);
     if (observer.progress) {
         while (finished.load() < threads) {
-            observer.progress(steps_done.load(), total);
+            observer.progress(done_before + steps_done.load(), total);
             std::this_thread::sleep_for(std::chrono::milliseconds(200));
         }
     }
     for (auto& t : pool_threads) t.join();
     if (error) std::rethrow_exception(error);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
+std::vector<std::vector<Block>> blocks_of(const std::vector<std::unique_ptr<Replica>>& reps) {
     std::vector<std::vector<Block>> blocks;
-    for (auto& o : outs) blocks.push_back(std::move(o.blocks));
-    EnsembleResult res = pool(p, blocks);
+    for (const auto& r : reps) blocks.push_back(r->sampler.blocks());
+    return blocks;
+}
+
+// The parameters of run T of the §7.6 protocol: T steps, read over their second half [ASSUMED].
+Params run_of_length(const Params& p, std::int64_t T) {
+    Params q = p;
+    q.run.steps = T;
+    q.run.t_avg_start = T / 2;
+    return q;
+}
+
+// max_y |a - b| and its row.
+std::pair<double, int> max_diff(const std::vector<Stat>& a, const std::vector<Stat>& b) {
+    std::pair<double, int> m{0.0, -1};
+    for (std::size_t r = 0; r < a.size(); ++r) {
+        const double d = std::abs(a[r].mean - b[r].mean);
+        if (m.second < 0 || d > m.first) m = {d, static_cast<int>(r)};
+    }
+    return m;
+}
+
+}  // namespace
+
+EnsembleResult run_ensemble(const Params& p, const Observer& observer) {
+    validate(p);
+    const int replicas = p.run.replicas;
+    const int hw = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int threads = std::clamp(p.run.threads > 0 ? p.run.threads : hw, 1, replicas);
+    const bool by_runs = p.run.steady_protocol == SteadyProtocol::Runs;
+    RunSpec sampler_run = p.run;  // sizes the sampler's reservations
+    if (by_runs) sampler_run.steps = p.run.runs_max_steps;
+    std::vector<std::unique_ptr<Replica>> reps(static_cast<std::size_t>(replicas));
+    const std::uint64_t total = static_cast<std::uint64_t>(sampler_run.steps) * static_cast<std::uint64_t>(replicas);
+    const auto t0 = std::chrono::steady_clock::now();
+
+    EnsembleResult res;
+    if (!by_runs) {
+        advance(p, sampler_run, reps, 0, p.run.steps, threads, observer, 0, total);
+        res = pool(p, blocks_of(reps));
+    } else {
+        // JH06 (§7.6): run T_1 < T_2 < ... and stop when consecutive readings match. A run of T
+        // steps is the first T steps of a longer run with the same seed, so run T_k continues run
+        // T_(k-1) instead of restarting: same numbers, half the cost.
+        RunsProtocol rp;
+        rp.used = true;
+        std::int64_t T = p.run.runs_start;
+        advance(p, sampler_run, reps, 0, T, threads, observer, 0, total);
+        rp.lengths.push_back(T);
+        EnsembleResult prev = pool(run_of_length(p, T), blocks_of(reps));
+        while (true) {
+            if (2 * T > p.run.runs_max_steps) {
+                rp.note = "no two consecutive runs agreed within runs_max_steps = " + std::to_string(p.run.runs_max_steps);
+                break;
+            }
+            advance(p, sampler_run, reps, T, 2 * T, threads, observer,
+                    static_cast<std::uint64_t>(T) * static_cast<std::uint64_t>(replicas), total);
+            T *= 2;
+            rp.lengths.push_back(T);
+            EnsembleResult cur = pool(run_of_length(p, T), blocks_of(reps));
+            const auto [du, du_row] = max_diff(cur.rows_.u, prev.rows_.u);
+            const auto [dnu, dnu_row] = max_diff(cur.rows_.nu, prev.rows_.nu);
+            rp.du.push_back(du);
+            rp.dnu.push_back(dnu);
+            rp.du_row = du_row;
+            rp.dnu_row = dnu_row;
+            prev = std::move(cur);
+            if (du < p.run.runs_tol_u && dnu < p.run.runs_tol_nu) {
+                rp.converged = true;
+                break;
+            }
+        }
+        res = std::move(prev);
+        res.steady.reached = rp.converged;
+        res.steady.step = rp.converged ? T / 2 : -1;
+        res.steady.note = rp.note;
+        res.runs = std::move(rp);
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     res.threads = threads;
+    std::vector<ReplicaOut> outs;
+    for (const auto& r : reps) outs.push_back({{}, r->sampler.timeseries(), r->lattice.counters()});
     for (const auto& o : outs) {
         const Counters& c = o.counters;
         res.totals.visits += c.visits; res.totals.moves += c.moves; res.totals.pp += c.pp;

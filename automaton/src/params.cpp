@@ -64,6 +64,17 @@ void validate(const Params& p) {
     if (!(run.steady_tol_u > 0)) bad("steady_tol_u", run.steady_tol_u, "> 0");
     if (!(run.steady_tol_nu > 0)) bad("steady_tol_nu", run.steady_tol_nu, "> 0");
     if (run.steady_pairs < 1) bad("steady_pairs", run.steady_pairs, "an integer >= 1");
+    if (run.steady_protocol == SteadyProtocol::Runs) {
+        if (run.runs_start < 2 * run.block || run.runs_start % (2 * run.block) != 0)
+            bad("runs_start", run.runs_start,
+                "a positive multiple of 2 x block = " + std::to_string(2 * run.block) +
+                    " (each run is read over its second half, in whole blocks)");
+        if (run.runs_max_steps < 2 * run.runs_start)
+            bad("runs_max_steps", run.runs_max_steps,
+                "at least 2 x runs_start = " + std::to_string(2 * run.runs_start) + " (two runs to compare)");
+        if (!(run.runs_tol_u > 0)) bad("runs_tol_u", run.runs_tol_u, "> 0");
+        if (!(run.runs_tol_nu > 0)) bad("runs_tol_nu", run.runs_tol_nu, "> 0");
+    }
     if (run.snapshot_every < 0) bad("snapshot_every", run.snapshot_every, "an integer >= 0 (0 = none)");
 }
 
@@ -74,6 +85,7 @@ const char* to_string(TfRounding t) {
 const char* to_string(WallSpeed w) { return w == WallSpeed::Sequential ? "sequential" : "by_incidence"; }
 const char* to_string(StruckDir s) { return s == StruckDir::Line ? "line" : "keep"; }
 const char* to_string(VecBlocked v) { return v == VecBlocked::Deflect ? "deflect" : "wait"; }
+const char* to_string(SteadyProtocol s) { return s == SteadyProtocol::Blocks ? "blocks" : "runs"; }
 
 const char* dir_name(int d) {
     static const char* names[8] = {"E", "NE", "N", "NW", "W", "SW", "S", "SE"};

@@ -34,6 +34,17 @@ SectionSpec section() {
              "vector mode, grains not approaching: deflect the mover by 45 degrees, or end its update [ASSUMED]");
     s.real("steady_tol_u", 0.02, Range::positive(), "", "block test: max |change of u/U| between consecutive blocks");
     s.real("steady_tol_nu", 0.02, Range::positive(), "", "block test: max |change of occupancy| between blocks");
+    s.choice("steady_state", "blocks", {"blocks", "runs"},
+             "steady-state protocol: blocks = block test of ca-model.md §4.4 over `steps`; runs = JH06's literal "
+             "protocol (§7.6): runs of runs_start, 2 runs_start, ... steps until consecutive runs agree");
+    s.integer("runs_start", 1000, Range::at_least(1),
+              "steady_state = \"runs\": first run length T_1 (a multiple of 2 x block); each run doubles it");
+    s.integer("runs_max_steps", 16000, Range::at_least(1),
+              "steady_state = \"runs\": step limit; the point fails if runs up to this length never agree");
+    s.real("runs_tol_u", 0.01, Range::positive(), "",
+           "steady_state = \"runs\": max |change of u/U| between consecutive runs (JH06 / §7.6)");
+    s.real("runs_tol_nu", 0.01, Range::positive(), "",
+           "steady_state = \"runs\": max |change of occupancy| between consecutive runs (§7.6)");
     s.integer("timeseries_every", 10, Range::at_least(0), "write <u_p>, u(row 0), u(top row) every this many steps (0 = none)");
     s.integer("vtk_every", 100, Range::at_least(1), "lattice snapshot interval (steps) with --vtk");
     s.validate = [](const Section& sec) {
@@ -47,6 +58,15 @@ SectionSpec section() {
                 sec.fail(steps, "must be at least t_avg_start + block = " +
                                     std::to_string(sec.integer("t_avg_start") + block) +
                                     " so that the sampling window holds a block");
+        if (sec.string("steady_state") == "runs") {
+            const auto start = sec.integer("runs_start");
+            if (start % (2 * block) != 0)
+                sec.fail("runs_start", "allowed: a positive multiple of 2 x block = " + std::to_string(2 * block) +
+                                           " (each run is read over its second half, in whole blocks)");
+            if (sec.integer("runs_max_steps") < 2 * start)
+                sec.fail("runs_max_steps", "allowed: at least 2 x runs_start = " + std::to_string(2 * start) +
+                                               " (two runs to compare)");
+        }
         if (sec.integer("sample_every") > block)
             sec.fail("sample_every", "must not exceed block = " + std::to_string(block));
     };

@@ -41,6 +41,16 @@ struct SteadyState {
     std::string note;            // why not, when not
 };
 
+// JH06's literal steady-state protocol (ca-model.md §7.6), when run.steady_protocol = Runs.
+struct RunsProtocol {
+    bool used = false;
+    bool converged = false;              // consecutive readings agreed before runs_max_steps
+    std::vector<std::int64_t> lengths;   // T_1, T_2, ... as run
+    std::vector<double> du, dnu;         // max_y |du|/U, max_y |dnu| of run k vs run k-1 (k >= 2)
+    int du_row = -1, dnu_row = -1;       // rows of the last maxima
+    std::string note;                    // why not converged
+};
+
 struct EnsembleResult {
     int rows = 0, columns = 0;
     std::int64_t particles = 0;
@@ -55,6 +65,7 @@ struct EnsembleResult {
     Stat moves, pp, wall_bottom, wall_top, exhausted;                    // per grain-step
     Counters totals;                      // summed over replicas
     SteadyState steady;
+    RunsProtocol runs;
     std::vector<TimePoint> timeseries;    // ensemble mean
     double wall_seconds = 0;
     double updates_per_second = 0;        // particle updates / wall second, all threads
@@ -72,5 +83,9 @@ EnsembleResult run_ensemble(const Params& p, const Observer& observer = {});
 // Pools the replicas' blocks (exposed for tests of the statistics).
 EnsembleResult pool(const Params& p, const std::vector<std::vector<Block>>& blocks);
 SteadyState steady_state(const RunSpec& run, const std::vector<Block>& blocks);
+
+// §7.6: throws SolverError when the runs protocol reached runs_max_steps without two agreeing
+// runs, naming the point, the run lengths, the last differences (and rows) and what to try.
+void require_converged(const std::string& point, const Params& p, const RunsProtocol& rp);
 
 }  // namespace granlub::automaton

@@ -11,6 +11,7 @@ enum class TfRounding { Round, Ceil, Accumulate };  // §2.4 [ASSUMED]
 enum class WallSpeed { Sequential, ByIncidence };   // §3.3 [ASSUMED]
 enum class StruckDir { Line, Keep };                 // §3.4 [ASSUMED]
 enum class VecBlocked { Deflect, Wait };             // §5 [ASSUMED]
+enum class SteadyProtocol { Blocks, Runs };          // §4.4 block test, or JH06's literal runs (§7.6)
 
 // The collision rules and their switches.
 struct Rules {
@@ -53,6 +54,13 @@ struct RunSpec {
     double steady_tol_nu = 0.02;
     int steady_pairs = 3;             // consecutive passing block pairs
     double drift_tol = 0.005;         // max |slope| of <u_p>(block) over the last 5 blocks, U/block
+    // JH06's literal protocol (§7.6): runs of T_1 = runs_start, T_k = 2 T_(k-1) steps; each run's
+    // reading is its average over its second half [ASSUMED]; stop when consecutive readings agree.
+    SteadyProtocol steady_protocol = SteadyProtocol::Blocks;
+    std::int64_t runs_start = 1000;      // T_1, a multiple of 2 x block
+    std::int64_t runs_max_steps = 16000; // step limit: fail if T_k would exceed it
+    double runs_tol_u = 0.01;            // max_y |du| / U between consecutive runs (§7.6)
+    double runs_tol_nu = 0.01;           // max_y |dnu| between consecutive runs (§7.6)
     std::int64_t snapshot_every = 0;  // 0: no lattice snapshots
 };
 
@@ -70,5 +78,6 @@ const char* to_string(TfRounding t);
 const char* to_string(WallSpeed w);
 const char* to_string(StruckDir s);
 const char* to_string(VecBlocked v);
+const char* to_string(SteadyProtocol s);
 
 }  // namespace granlub::automaton
