@@ -170,7 +170,57 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
     BOOST_TEST(e.find("tf_rounding") != std::string::npos, e);
     e = error_of(case_text("", "t_avg_start = 600\n"));
     BOOST_TEST(e.find("t_avg_start") != std::string::npos, e);
+    // steady-state protocol keys (ca-model.md §7.6): file, key, value and what is allowed
+    e = error_of(case_text("", "steady_state = \"forever\"\n"));
+    BOOST_TEST(e.find("test.toml") != std::string::npos, e);
+    BOOST_TEST(e.find("steady_state") != std::string::npos, e);
+    BOOST_TEST(e.find("forever") != std::string::npos, e);
+    BOOST_TEST(e.find("runs") != std::string::npos, e);
+    e = error_of(case_text("", "steady_state = \"runs\"\nruns_start = 1500\n"));
+    BOOST_TEST(e.find("test.toml") != std::string::npos, e);
+    BOOST_TEST(e.find("runs_start = 1500") != std::string::npos, e);
+    BOOST_TEST(e.find("multiple of 2 x block = 1000") != std::string::npos, e);
+    e = error_of(case_text("", "steady_state = \"runs\"\nruns_max_steps = 1000\n"));
+    BOOST_TEST(e.find("runs_max_steps = 1000") != std::string::npos, e);
+    BOOST_TEST(e.find("at least 2 x runs_start = 2000") != std::string::npos, e);
+    e = error_of(case_text("", "runs_tol_u = 0.0\n"));
+    BOOST_TEST(e.find("runs_tol_u") != std::string::npos, e);
+    BOOST_TEST(e.find("0") != std::string::npos, e);
+    e = error_of(case_text("", "runs_start = 0\n"));
+    BOOST_TEST(e.find("runs_start") != std::string::npos, e);
     e = error_of(case_text("", "nonsense = 1\n"));
     BOOST_TEST(e.find("nonsense") != std::string::npos, e);
     BOOST_TEST(error_of(case_text()) == "");
+}
+
+BOOST_AUTO_TEST_CASE(runs_protocol_is_recorded_and_its_failure_writes_nothing) {
+    // JH06's literal protocol (ca-model.md §7.6): run lengths and final differences in run{}.
+    const Case c = parse_case(case_text("", "steady_state = \"runs\"\n"), "test.toml", schema());
+    RunOptions o;
+    o.results_root = fresh_dir("runs");
+    BOOST_TEST(automaton::run(c, o) == 0);
+    const fs::path dir = o.results_root / "automaton" / c.points.front().id;
+    const Summary s = read_summary(dir / "summary.json");
+    const auto& st = s.run.at("steady_state");
+    BOOST_TEST(st.at("protocol") == "runs");
+    BOOST_TEST(st.at("reached") == true);
+    const auto lengths = st.at("run_lengths").get<std::vector<std::int64_t>>();
+    BOOST_REQUIRE(lengths.size() >= 2u);
+    BOOST_TEST(lengths.front() == 1000);
+    BOOST_TEST(s.run.at("steps").get<std::int64_t>() == lengths.back());
+    BOOST_TEST(st.at("from_step").get<std::int64_t>() == lengths.back() / 2);
+    BOOST_TEST(st.at("max_du_over_U").size() == lengths.size() - 1);
+    BOOST_TEST(st.at("final_max_du_over_U").get<double>() < 0.01);
+    BOOST_TEST(st.at("final_max_dnu").get<double>() < 0.01);
+    BOOST_TEST(st.at("tol_u").get<double>() == 0.01);
+    BOOST_TEST(read_profile(dir / "profile.csv").rows() == 10u);
+
+    // A step limit too tight for the transient: the point fails and writes no result.
+    std::string text = case_text("", "steady_state = \"runs\"\nruns_start = 20\nruns_max_steps = 80\n");
+    text.replace(text.find("t_avg_start = 1000"), 18, "t_avg_start = 0");
+    text.replace(text.find("block = 500"), 11, "block = 10");
+    const Case t = parse_case(text, "test.toml", schema());
+    o.results_root = fresh_dir("runs_fail");
+    BOOST_TEST(automaton::run(t, o) == 1);
+    BOOST_TEST(!fs::exists(o.results_root / "automaton" / t.points.front().id / "summary.json"));
 }
