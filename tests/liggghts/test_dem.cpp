@@ -17,57 +17,18 @@
 #include "granlub/results.h"
 #include "granlub/sweep.h"
 #include "settings.h"
+#include "tiny_cell.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;
 
 namespace {
 
-// d = 1 mm grains in an 8 x 6 x 6 mm cell at solid fraction 0.4: 220 grains.
-const std::string kCase = R"(
-[case]
-name = "tiny"
-[grains]
-diameter = 1.0e-3
-density = 2500.0
-restitution = 0.9
-friction = 0.5
-[walls]
-restitution = 0.8
-roughness = 0.5
-[cell]
-gap = 6.0e-3
-length = 8.0e-3
-width = 6.0e-3
-annulus_radius = 0.05
-[operating]
-speed = [1.0]
-solid_fraction = 0.4
-[body_forces]
-gravity = 9.81
-[dem]
-time = 0.02
-sample_every = 20
-snapshots = 10
-stations = 6
-)";
+const std::string kCase = test::tiny_cell("tiny", "", "time = 0.02\nsample_every = 20\nsnapshots = 10\nstations = 6\n");
 
-Schema schema() {
-    Schema s = Schema::common();
-    s.add(dem::section());
-    return s;
-}
-
-std::string edit(std::string text, const std::string& from, const std::string& to) {
-    return std::regex_replace(text, std::regex(from), to);
-}
-
-fs::path scratch(const std::string& name) {
-    const fs::path d = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_dem" / name;
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+Schema schema() { return test::dem_schema(); }
+using test::edit;
+fs::path scratch(const std::string& name) { return test::scratch("liggghts_dem", name); }
 
 struct Run {
     int code = 1;

@@ -18,6 +18,7 @@
 #include "granlub/results.h"
 #include "granlub/sweep.h"
 #include "settings.h"
+#include "tiny_cell.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;
@@ -26,46 +27,11 @@ namespace {
 
 // d = 1 mm grains in an 8 x 6 x 6 mm cell, 220 grains (inserted at 0.4), plate starting at 6 mm.
 // At 30 Pa the plate settles near 5.5 mm within ~0.03 s; 0.2 s = 10000 steps, ~3 s.
-const std::string kCase = R"(
-[case]
-name = "tiny_load"
-[grains]
-diameter = 1.0e-3
-density = 2500.0
-restitution = 0.9
-friction = 0.5
-[walls]
-restitution = 0.8
-roughness = 0.5
-[cell]
-gap = 6.0e-3
-length = 8.0e-3
-width = 6.0e-3
-annulus_radius = 0.05
-[operating]
-speed = [1.0]
-control = "load"
-solid_fraction = 0.4
-normal_stress = [30.0]
-[body_forces]
-gravity = 9.81
-[dem]
-time = 0.2
-sample_every = 20
-servo_every = 100
-snapshots = 20
-stations = 6
-)";
+const std::string kCase = test::tiny_cell("tiny_load", "control = \"load\"\nnormal_stress = [30.0]",
+                                              "time = 0.2\nsample_every = 20\nservo_every = 100\nsnapshots = 20\nstations = 6\n");
 
-Schema schema() {
-    Schema s = Schema::common();
-    s.add(dem::section());
-    return s;
-}
-
-std::string edit(std::string text, const std::string& from, const std::string& to) {
-    return std::regex_replace(text, std::regex(from), to);
-}
+Schema schema() { return test::dem_schema(); }
+using test::edit;
 
 struct Run {
     int code = 1;

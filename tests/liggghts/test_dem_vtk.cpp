@@ -14,38 +14,14 @@
 #include "granlub/results.h"
 #include "granlub/sweep.h"
 #include "pvd.h"
+#include "tiny_cell.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kCase = R"(
-[case]
-name = "tiny_vtk"
-[grains]
-diameter = 1.0e-3
-density = 2500.0
-restitution = 0.9
-friction = 0.5
-[walls]
-restitution = 0.8
-roughness = 0.5
-[cell]
-gap = 6.0e-3
-length = 8.0e-3
-width = 6.0e-3
-[operating]
-speed = [1.0]
-solid_fraction = 0.4
-[body_forces]
-gravity = 9.81
-[dem]
-time = 0.01
-sample_every = 20
-snapshots = 5
-stations = 6
-)";
+const std::string kCase = test::tiny_cell("tiny_vtk", "", "time = 0.01\nsample_every = 20\nsnapshots = 5\nstations = 6\n");
 
 std::string read(const fs::path& f) {
     std::ifstream in(f);
@@ -54,12 +30,7 @@ std::string read(const fs::path& f) {
     return ss.str();
 }
 
-fs::path scratch(const std::string& name) {
-    const fs::path d = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_dem_vtk" / name;
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+fs::path scratch(const std::string& name) { return test::scratch("liggghts_dem_vtk", name); }
 
 }  // namespace
 
@@ -90,9 +61,7 @@ BOOST_AUTO_TEST_CASE(frames_are_sorted_by_step_and_paired_with_their_box) {
 }
 
 BOOST_AUTO_TEST_CASE(vtk_run_writes_a_pvd_naming_every_dump) {
-    Schema s = Schema::common();
-    s.add(dem::section());
-    const Case c = parse_case(kCase, "tiny_vtk.toml", s);
+    const Case c = parse_case(kCase, "tiny_vtk.toml", test::dem_schema());
     RunOptions o;
     o.results_root = scratch("run");
     o.vtk = true;
