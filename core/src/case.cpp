@@ -21,6 +21,11 @@ std::string to_string(Control c) { return c == Control::Fill ? "fill" : "load"; 
 
 double Grains::mass() const { return density * std::numbers::pi * diameter * diameter * diameter / 6.0; }
 
+double Grains::rayleigh_time() const {
+    const double shear_modulus = youngs_modulus / (2.0 * (1.0 + poisson_ratio));
+    return std::numbers::pi * 0.5 * diameter * std::sqrt(density / shear_modulus) / (0.1631 * poisson_ratio + 0.8766);
+}
+
 std::string hash_hex(std::string_view bytes) {
     std::uint64_t h = 1469598103934665603ULL;  // FNV-1a 64
     for (unsigned char ch : bytes) {

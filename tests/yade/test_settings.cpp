@@ -57,7 +57,7 @@ BOOST_AUTO_TEST_CASE(hertz_time_step_is_a_rayleigh_fraction) {
     // t_R = pi r sqrt(rho/G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)), glass
     const double G = 63e9 / (2 * 1.23);
     const double tr = std::numbers::pi * 0.3935e-3 * std::sqrt(2550.0 / G) / (0.1631 * 0.23 + 0.8766);
-    BOOST_TEST(rayleigh_time(c.grains) == tr, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(c.grains.rayleigh_time() == tr, boost::test_tools::tolerance(1e-12));
     const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
     BOOST_TEST(to_string(s.model) == "hertz");
     BOOST_TEST(s.dt == 0.15 * tr, boost::test_tools::tolerance(1e-12));

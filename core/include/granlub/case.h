@@ -24,6 +24,9 @@ struct Grains {
     double youngs_modulus = 0;  // Pa (soft-sphere reference models only)
     double poisson_ratio = 0;
     double mass() const;        // of one grain, kg
+    // Rayleigh time (Li et al. 2005 form) t_R = pi r sqrt(rho/G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)): the
+    // soft-sphere time-step scale (as LIGGGHTS' check/timestep/gran), shared by both particle engines.
+    double rayleigh_time() const;
 };
 
 struct Wall {

@@ -12,10 +12,6 @@ namespace granlub::yade {
 
 std::string to_string(Model m) { return m == Model::ViscEl ? "viscel" : "hertz"; }
 
-double rayleigh_time(const Grains& g) {
-    const double G = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
-    return std::numbers::pi * 0.5 * g.diameter * std::sqrt(g.density / G) / (0.1631 * g.poisson_ratio + 0.8766);
-}
 
 // The Hertz time step of `granlub dem` (its hertz_step_fraction default), so both engines step alike.
 inline constexpr double kHertzStepFraction = 0.15;
@@ -48,7 +44,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     }
     if (o.seed) r.insertion.seed = *o.seed;
 
-    const double tr = rayleigh_time(c.grains);
+    const double tr = c.grains.rayleigh_time();
     r.dt = s.real("dt");
     if (r.dt == 0) r.dt = r.model == Model::ViscEl ? r.contact_time / 20.0 : kHertzStepFraction * tr;
     if (r.model == Model::ViscEl && r.dt > r.contact_time / 10.0)

@@ -16,11 +16,6 @@ double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fra
     return step_fraction * c.grains.diameter / v_ref;
 }
 
-double rayleigh_time(const Grains& g) {
-    const double r = 0.5 * g.diameter;
-    const double G = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
-    return std::numbers::pi * r * std::sqrt(g.density / G) / (0.1631 * g.poisson_ratio + 0.8766);
-}
 
 Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const Section& s = c.section("dem");
@@ -52,7 +47,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
                                "contacts only by overlap, so at most {:g} diameters per step are allowed",
                                v_ref, frac, st.time_step, kMaxStepFraction));
     } else {
-        const double tr = rayleigh_time(c.grains);
+        const double tr = c.grains.rayleigh_time();
         st.time_step = given > 0 ? given : s.real("hertz_step_fraction") * tr;
         if (st.time_step > 0.3 * tr)
             s.fail(given > 0 ? "time_step" : "hertz_step_fraction",

@@ -53,9 +53,6 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o);
 // Time step of the impulse model: a grain moving at the reference speed travels
 // `step_fraction` diameters per step. Reference speed: max(U, sqrt(2 g H)).
 double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fraction);
-// Rayleigh time of Hertz contacts between the case's grains (Li et al. 2005 form used by
-// LIGGGHTS' check/timestep/gran): pi r sqrt(rho/G) / (0.1631 nu + 0.8766).
-double rayleigh_time(const Grains& g);
 
 // Upper clamp of the relative stress error in a servo update: spikes of the impulsive top-wall
 // force raise the plate by at most this many gains (a stress below target lowers it by at most 1).

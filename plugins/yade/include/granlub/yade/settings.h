@@ -35,9 +35,6 @@ struct Settings {
     double periodic_depth = 0;
 };
 
-// Rayleigh time of the grains (as LIGGGHTS' check/timestep/gran and `granlub dem`):
-// t_R = pi r sqrt(rho/G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)).
-double rayleigh_time(const Grains& g);
 
 // Reads [yade] for point p; --full selects time_full, --seed overrides the seed.
 // Throws CaseError (file, key, value, what is allowed) for settings that cannot work.
