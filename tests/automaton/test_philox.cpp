@@ -19,6 +19,37 @@ BOOST_AUTO_TEST_CASE(philox_known_answers) {
                 A{0xd16cfe09, 0x94fdcceb, 0x5001e420, 0x24126ea1}));
 }
 
+// The batched generator (16-32 blocks at a time, SIMD) gives exactly the one-block-at-a-time words.
+BOOST_AUTO_TEST_CASE(batched_blocks_equal_single_blocks) {
+    const std::array<std::uint32_t, 2> key = {0xa4093822u, 0x299f31d0u};
+    const std::uint64_t stream = 0x0370734413198a2eULL;
+    for (std::uint64_t ctr : {std::uint64_t{0}, std::uint64_t{0xfffffff0u}, std::uint64_t{123456789012345}}) {
+        std::vector<std::uint32_t> ref(4 * kPhiloxBatch), got(4 * kPhiloxBatch);
+        for (int k = 0; k < kPhiloxBatch; ++k) {
+            const std::uint64_t c = ctr + static_cast<std::uint64_t>(k);
+            const Philox4x32 b = philox4x32_10({static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(c >> 32),
+                                                static_cast<std::uint32_t>(stream), static_cast<std::uint32_t>(stream >> 32)},
+                                               key);
+            for (int w = 0; w < 4; ++w) ref[static_cast<std::size_t>(4 * k + w)] = b[static_cast<std::size_t>(w)];
+        }
+        philox4x32_10_batch(ctr, stream, key, got.data());
+        BOOST_TEST(got == ref, boost::test_tools::per_element());
+        philox4x32_10_batch_reference(ctr, stream, key, got.data());
+        BOOST_TEST(got == ref, boost::test_tools::per_element());
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+        philox4x32_10_batch_sse2(ctr, stream, key, got.data());
+        BOOST_TEST(got == ref, boost::test_tools::per_element());
+        if (philox4x32_10_batch_avx2(ctr, stream, key, got.data())) BOOST_TEST(got == ref, boost::test_tools::per_element());
+#endif
+    }
+    // The stream across several batches: block c's words in order.
+    Philox g(0x299f31d0a4093822ULL, 7);
+    for (std::uint32_t c = 0; c < 3 * kPhiloxBatch + 5; ++c) {
+        const Philox4x32 b = philox4x32_10({c, 0, 7, 0}, {0xa4093822u, 0x299f31d0u});
+        for (int w = 0; w < 4; ++w) BOOST_TEST(g.next32() == b[static_cast<std::size_t>(w)]);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(streams_are_reproducible_and_distinct) {
     Philox a(42, 3), b(42, 3), c(42, 4), d(43, 3);
     int same_c = 0, same_d = 0;

@@ -27,8 +27,27 @@ constexpr Philox4x32 philox4x32_10(Philox4x32 ctr, std::array<std::uint32_t, 2> 
     return ctr;
 }
 
+// kPhiloxBatch consecutive blocks, counters ctr, ctr + 1, ... under (key, stream), written to out
+// word by word (block k's words at out[4k .. 4k+3]): exactly the words philox4x32_10 gives one
+// block at a time. SIMD on x86-64 (SSE2, or AVX2 when the CPU has it; philox.cpp).
+inline constexpr int kPhiloxBatch = 32;
+void philox4x32_10_batch(std::uint64_t ctr, std::uint64_t stream, std::array<std::uint32_t, 2> key,
+                         std::uint32_t* out);
+// The individual versions, for the tests: the scalar reference; the SSE2 and AVX2 versions exist
+// on x86-64 only (the AVX2 one returns false, writing nothing, on a CPU without AVX2).
+void philox4x32_10_batch_reference(std::uint64_t ctr, std::uint64_t stream, std::array<std::uint32_t, 2> key,
+                                   std::uint32_t* out);
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+void philox4x32_10_batch_sse2(std::uint64_t ctr, std::uint64_t stream, std::array<std::uint32_t, 2> key,
+                              std::uint32_t* out);
+bool philox4x32_10_batch_avx2(std::uint64_t ctr, std::uint64_t stream, std::array<std::uint32_t, 2> key,
+                              std::uint32_t* out);
+#endif
+
 // The engine's random source. The interface (below, coin, uniform) is what the rules use; tests
-// substitute a scripted source with the same interface.
+// substitute a scripted source with the same interface. Words are generated kPhiloxBatch blocks
+// at a time; the stream (block c's four words in order, c = 0, 1, ...) is the same as one block
+// at a time.
 class Philox {
 public:
     Philox(std::uint64_t seed, std::uint64_t stream)
@@ -36,7 +55,7 @@ public:
           stream_(stream) {}
 
     std::uint32_t next32() {
-        if (pos_ == 4) refill();
+        if (pos_ == kWords) [[unlikely]] refill();
         return buf_[pos_++];
     }
     // Uniform integer in [0, n), n >= 1, unbiased (Lemire, ACM TOMS 2019 "Fast random integer
@@ -54,38 +73,45 @@ public:
         return static_cast<std::uint32_t>(m >> 32);
     }
     // A fair coin, one bit at a time from a 32-bit reservoir.
-    bool coin() {
-        if (bits_left_ == 0) {
-            bits_ = next32();
-            bits_left_ = 32;
+    struct Coins {
+        std::uint32_t bits = 0;
+        int left = 0;
+    };
+    bool coin() { return coin_from(coins_); }
+    // The same coin with the reservoir held elsewhere (the engine keeps it in a register for a
+    // whole step and hands it back with coins()): same words, same bits, same order.
+    bool coin_from(Coins& c) {
+        if (c.left == 0) {
+            c.bits = next32();
+            c.left = 32;
         }
-        const bool b = bits_ & 1u;
-        bits_ >>= 1;
-        --bits_left_;
+        const bool b = c.bits & 1u;
+        c.bits >>= 1;
+        --c.left;
         return b;
     }
+    Coins& coins() { return coins_; }
     // Uniform double in [0, 1) with 53 random bits.
     double uniform() {
-        const std::uint64_t hi = next32() >> 5, lo = next32() >> 6;  // 27 + 26 bits
+        const std::uint64_t hi = next32() >> 5;  // 27 + 26 bits
+        const std::uint64_t lo = next32() >> 6;
         return static_cast<double>((hi << 26) | lo) * 0x1.0p-53;
     }
-    std::uint64_t blocks_used() const { return counter_; }
+    std::uint64_t blocks_generated() const { return counter_; }
 
 private:
-    void refill() {
-        buf_ = philox4x32_10({static_cast<std::uint32_t>(counter_), static_cast<std::uint32_t>(counter_ >> 32),
-                              static_cast<std::uint32_t>(stream_), static_cast<std::uint32_t>(stream_ >> 32)},
-                             key_);
-        ++counter_;
+    static constexpr int kWords = 4 * kPhiloxBatch;
+    [[gnu::noinline]] void refill() {
+        philox4x32_10_batch(counter_, stream_, key_, buf_.data());
+        counter_ += kPhiloxBatch;
         pos_ = 0;
     }
     std::array<std::uint32_t, 2> key_;
     std::uint64_t stream_;
     std::uint64_t counter_ = 0;
-    Philox4x32 buf_{};
-    int pos_ = 4;
-    std::uint32_t bits_ = 0;
-    int bits_left_ = 0;
+    std::array<std::uint32_t, kWords> buf_{};
+    int pos_ = kWords;
+    Coins coins_;
 };
 
 // Stream ids: replica r uses 2r for its update order and 2r + 1 for its rule draws.
