@@ -44,7 +44,7 @@ void validate(const Params& p) {
     unit_interval("roughness of the bottom wall", r.R_bottom);
     unit_interval("roughness of the top wall", r.R_top);
     unit_interval("p_drag", r.p_drag);
-    if (r.tf_max < 1) bad("tf_max", r.tf_max, "an integer >= 1");
+    if (r.tf_max < 1 || r.tf_max > 65535) bad("tf_max", r.tf_max, "an integer in [1, 65535] (the clock is 16 bits)");
     if (r.pp_deflect != 90 && r.pp_deflect != 45) bad("pp_deflect", r.pp_deflect, "90 or 45 (degrees)");
     if (!(r.pp_jitter_deg >= 0.0 && r.pp_jitter_deg <= 90.0)) bad("pp_jitter", r.pp_jitter_deg, "[0, 90] degrees");
     if (run.steps < 1) bad("steps", run.steps, "an integer >= 1");

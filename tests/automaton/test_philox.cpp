@@ -108,6 +108,9 @@ BOOST_AUTO_TEST_CASE(parameter_validation_names_the_problem) {
     p.rules.pp_deflect = 60;
     BOOST_TEST(fails_with(p, "pp_deflect = 60"));
     p = ok;
+    p.rules.tf_max = 70000;  // the integer clock is 16 bits
+    BOOST_TEST(fails_with(p, "tf_max = 70000"));
+    p = ok;
     p.run.t_avg_start = 2100;
     BOOST_TEST(fails_with(p, "t_avg_start = 2100"));
     p = ok;

@@ -57,13 +57,13 @@ void Sampler::after_step(std::int64_t t, Engine<Rng>& e) {
     const bool sample = t % run_.sample_every == 0;
     const bool series = run_.timeseries_every > 0 && t % run_.timeseries_every == 0;
     if (sample || series) {
-        const auto& ys = e.ys();
+        const auto& cells = e.cells();
         const auto& up = e.speeds();
         const auto& dir = e.dirs();
         std::vector<double>& n = n_;
         if (sample) {
-            for (std::size_t i = 0; i < ys.size(); ++i) {
-                const int r = ys[i];
+            for (std::size_t i = 0; i < cells.size(); ++i) {
+                const int r = e.row_of(cells[i]);
                 const double u = up[i], ux = u * kDx[dir[i]];
                 n[r] += 1;
                 s_[r] += u;
@@ -76,12 +76,13 @@ void Sampler::after_step(std::int64_t t, Engine<Rng>& e) {
         }
         if (series) {
             double total = 0, b = 0, nb = 0, tp = 0, nt = 0;
-            for (std::size_t i = 0; i < ys.size(); ++i) {
+            for (std::size_t i = 0; i < cells.size(); ++i) {
+                const int r = e.row_of(cells[i]);
                 total += up[i];
-                if (ys[i] == 0) { b += up[i]; nb += 1; }
-                if (ys[i] == rows_ - 1) { tp += up[i]; nt += 1; }
+                if (r == 0) { b += up[i]; nb += 1; }
+                if (r == rows_ - 1) { tp += up[i]; nt += 1; }
             }
-            series_.push_back({t, ys.empty() ? 0 : total / static_cast<double>(ys.size()),
+            series_.push_back({t, cells.empty() ? 0 : total / static_cast<double>(cells.size()),
                                nb > 0 ? b / nb : 0, nt > 0 ? tp / nt : 0});
         }
     }
