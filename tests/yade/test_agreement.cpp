@@ -18,24 +18,14 @@
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/results.h"
-#include "granlub/yade/process.h"
 #include "run_command.h"
+#include "yade_installed.h"
 
 namespace fs = std::filesystem;
-namespace tt = boost::test_tools;
 using granlub::test::run;
+using granlub::yade::test::YadeInstalled;
 
 namespace {
-
-struct YadeInstalled {
-    tt::assertion_result operator()(boost::unit_test::test_unit_id) const {
-        const char* env = std::getenv("GRANLUB_YADE");
-        if (granlub::yade::find_executable(env && *env ? env : "yade")) return true;
-        tt::assertion_result r(false);
-        r.message() << "YADE is not installed (apt-get install -y --no-install-recommends yade): skipped";
-        return r;
-    }
-};
 
 struct Tolerance {
     const char* output;

@@ -13,6 +13,7 @@
 #include "granlub/yade/driver.h"
 #include "granlub/yade/process.h"
 #include "granlub/yade/settings.h"
+#include "yade_installed.h"
 #include "yade_test_case.h"
 
 using namespace granlub;
@@ -22,16 +23,6 @@ namespace fs = std::filesystem;
 namespace tt = boost::test_tools;
 
 namespace {
-
-struct YadeInstalled {
-    tt::assertion_result operator()(boost::unit_test::test_unit_id) const {
-        const char* env = std::getenv("GRANLUB_YADE");
-        if (find_executable(env && *env ? env : "yade")) return true;
-        tt::assertion_result r(false);
-        r.message() << "YADE is not installed (apt-get install -y --no-install-recommends yade): skipped";
-        return r;
-    }
-};
 
 // Restitution targets that differ per material, including low ones where ViscElMat's e_n and
 // the measured e differ most (yade.md section 3). Side walls take the bottom wall's material.
