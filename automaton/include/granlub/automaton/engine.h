@@ -278,8 +278,13 @@ private:
         double p_drag, jitter;
         bool sequential, line, vec_wait;
         int deflect;
-        std::uint64_t moves, pp, wall_b, wall_t, exhausted;
-        double tan_b, tan_t, norm_b, norm_t;
+        std::uint64_t moves, pp, exhausted;
+        // Wall hits are rare (~0.15 a visit): their sums stay in memory, indexed [top, bottom],
+        // so that they do not compete for registers with the collision chain.
+        struct WallSums {
+            std::uint64_t hits[2];
+            double tangential[2], normal[2];
+        }* walls;
     };
 
     Ctx context() {
@@ -303,15 +308,19 @@ private:
         // The running totals themselves (not per-step partial sums), so that the wall momentum
         // sums are accumulated in exactly the same order as one update at a time.
         const Counters& k = counters_;
-        c.moves = k.moves; c.pp = k.pp; c.wall_b = k.wall_bottom; c.wall_t = k.wall_top; c.exhausted = k.exhausted;
-        c.tan_b = k.tangential_bottom; c.tan_t = k.tangential_top; c.norm_b = k.normal_bottom; c.norm_t = k.normal_top;
+        c.moves = k.moves; c.pp = k.pp; c.exhausted = k.exhausted;
+        wall_sums_ = {{k.wall_top, k.wall_bottom}, {k.tangential_top, k.tangential_bottom}, {k.normal_top, k.normal_bottom}};
+        c.walls = &wall_sums_;
         return c;
     }
     void commit(const Ctx& c) {
         if constexpr (CoinReservoir<Rng>) rng_.coins() = c.coins;
         Counters& k = counters_;
-        k.moves = c.moves; k.pp = c.pp; k.wall_bottom = c.wall_b; k.wall_top = c.wall_t; k.exhausted = c.exhausted;
-        k.tangential_bottom = c.tan_b; k.tangential_top = c.tan_t; k.normal_bottom = c.norm_b; k.normal_top = c.norm_t;
+        k.moves = c.moves; k.pp = c.pp; k.exhausted = c.exhausted;
+        const auto& w = wall_sums_;
+        k.wall_top = w.hits[0]; k.wall_bottom = w.hits[1];
+        k.tangential_top = w.tangential[0]; k.tangential_bottom = w.tangential[1];
+        k.normal_top = w.normal[0]; k.normal_bottom = w.normal[1];
     }
 
     bool accumulate() const { return rules_.tf_rounding == TfRounding::Accumulate; }
@@ -329,91 +338,86 @@ private:
         commit(c);
     }
 
-    // The whole step for one (mode, clock rule): fused shuffle + updates (see step()).
+    // The whole step for one (mode, clock rule): shuffle + updates, chunk by chunk (see step()).
+    // Positions [0, s) of the Fisher-Yates pass are final; the pass runs one chunk ahead of the
+    // visits in its own tight loop (so that the visit loop keeps its registers), and on large
+    // lattices draws a whole chunk's partners first, prefetching their slots.
     template <Mode M, TfRounding T, bool Prefetch>
     void run() {
         const auto n = static_cast<std::uint32_t>(order_.size());
+        if (n == 0) return;
         Ctx c = context();
         std::int32_t* const order = order_.data();
-        Rng& org = order_rng_;
-        // Fisher-Yates position s is swapped kAhead visits before it is visited (positions < s
-        // are final). On large lattices its partner j is drawn kDraw positions earlier still and
-        // its slot prefetched: the draws depend only on n - s, so drawing early changes nothing.
-        constexpr std::uint32_t kAhead = 16, kDraw = 32, kFar = 16, kNear = 8;
-        std::uint32_t s = 0, q = 0;
-        std::uint32_t partner[kDraw];
-        auto draw_to = [&](std::uint32_t end) {
-            for (; q < end; ++q) {
-                const std::uint32_t j = q + 1 < n ? q + org.below(n - q) : q;
-                partner[q % kDraw] = j;
-                __builtin_prefetch(order + j, 1);
-            }
-        };
-        auto shuffle_to = [&](std::uint32_t end) {
+        constexpr std::uint32_t kChunk = 64, kFar = 16, kNear = 8;
+        std::uint32_t s = 0;  // positions < s are final
+        auto shuffle_chunk = [&] {
+            const std::uint32_t end = std::min(n, s + kChunk);
             if constexpr (Prefetch) {
-                for (; s < end; ++s) {
-                    draw_to(std::min(n, s + kDraw));  // partner[] holds positions s .. s + kDraw - 1
-                    std::swap(order[s], order[partner[s % kDraw]]);
+                std::uint32_t partner[kChunk];
+                for (std::uint32_t q = s; q < end; ++q) {
+                    const std::uint32_t j = q + 1 < n ? q + order_rng_.below(n - q) : q;
+                    partner[q - s] = j;
+                    __builtin_prefetch(order + j, 1);
                 }
+                for (std::uint32_t q = s; q < end; ++q) std::swap(order[q], order[partner[q - s]]);
             } else {
-                for (; s < end; ++s)
-                    if (s + 1 < n) std::swap(order[s], order[s + org.below(n - s)]);
+                for (std::uint32_t q = s; q < end; ++q)
+                    if (q + 1 < n) std::swap(order[q], order[q + order_rng_.below(n - q)]);
             }
+            s = end;
         };
-        shuffle_to(std::min(n, kAhead));
+        shuffle_chunk();
         // The next grain's speed and clock are read before the current chain runs, and its
         // "go" decided from them, so that this hard-to-predict branch resolves early. The speed
         // is checked again at the visit (the chain may have struck the grain); the clock only
         // changes at the grain's own visit.
-        std::int32_t ni = 0;
-        double nu = 0;
-        ClockOf<T> nk{};
-        if (n > 0) {
-            ni = order[0];
-            nu = c.up[ni];
-            nk = load_clock<T>(c, ni);
-        }
-        for (std::uint32_t k = 0; k < n; ++k) {
-            shuffle_to(std::min(n, k + kAhead + 1));
-            if constexpr (Prefetch) {
-                // A grain's state kFar visits ahead, its grid neighbourhood kNear ahead.
-                if (k + kFar < n) {
-                    const std::int32_t f = order[k + kFar];
-                    __builtin_prefetch(c.up + f);
-                    // Neighbours' labels are close to f (relabelled in grid order): the speeds a
-                    // chain will strike are mostly within a column (~H labels) of f.
-                    __builtin_prefetch(c.up + std::max(f - 8, 0), 1);
-                    __builtin_prefetch(c.up + std::min<std::int64_t>(f + 8, n - 1), 1);
-                    __builtin_prefetch(c.pos + f);
-                    __builtin_prefetch(c.dir + f);
-                    if constexpr (T == TfRounding::Accumulate) __builtin_prefetch(c.acc + f);
-                    else __builtin_prefetch(c.tick + f);
+        std::int32_t ni = order[0];
+        double nu = c.up[ni];
+        ClockOf<T> nk = load_clock<T>(c, ni);
+        for (std::uint32_t k0 = 0; k0 < n; k0 += kChunk) {
+            if (s < n) shuffle_chunk();  // now s >= k0 + kChunk (or n): one chunk ahead
+            const std::uint32_t kend = std::min(n, k0 + kChunk);
+            for (std::uint32_t k = k0; k < kend; ++k) {
+                if constexpr (Prefetch) {
+                    // A grain's state kFar visits ahead, its grid neighbourhood kNear ahead.
+                    if (k + kFar < n) {
+                        const std::int32_t f = order[k + kFar];
+                        __builtin_prefetch(c.up + f);
+                        // Neighbours' labels are close to f (relabelled in grid order): the
+                        // speeds a chain will strike are mostly within a column (~H labels) of f.
+                        __builtin_prefetch(c.up + std::max(f - 8, 0), 1);
+                        __builtin_prefetch(c.up + std::min<std::int64_t>(f + 8, n - 1), 1);
+                        __builtin_prefetch(c.pos + f);
+                        __builtin_prefetch(c.dir + f);
+                        if constexpr (T == TfRounding::Accumulate) __builtin_prefetch(c.acc + f);
+                        else __builtin_prefetch(c.tick + f);
+                    }
+                    if (k + kNear < n) {
+                        const std::int64_t p = c.pos[order[k + kNear]];
+                        const std::int64_t w = p - c.stride, e = p + c.stride;
+                        __builtin_prefetch(c.grid + (w < 0 ? w + c.ncell : w));
+                        __builtin_prefetch(c.grid + p);
+                        __builtin_prefetch(c.grid + (e >= c.ncell ? e - c.ncell : e));
+                    }
                 }
-                if (k + kNear < n) {
-                    const std::int64_t p = c.pos[order[k + kNear]];
-                    const std::int64_t w = p - c.stride, e = p + c.stride;
-                    __builtin_prefetch(c.grid + (w < 0 ? w + c.ncell : w));
-                    __builtin_prefetch(c.grid + p);
-                    __builtin_prefetch(c.grid + (e >= c.ncell ? e - c.ncell : e));
+                const std::int32_t i = ni;
+                double u = nu;
+                const ClockOf<T> kc = nk;
+                ClockOf<T> k1;
+                bool go = decide<T>(c, u, kc, k1);
+                if (k + 1 < n) {
+                    ni = order[k + 1];
+                    nu = c.up[ni];
+                    nk = load_clock<T>(c, ni);
                 }
+                const double u_now = c.up[i];
+                if (u_now != u) [[unlikely]] {  // struck since it was read
+                    u = u_now;
+                    go = decide<T>(c, u, kc, k1);
+                }
+                store_clock<T>(c, i, k1);
+                if (go) chain<M>(c, i, u);
             }
-            const std::int32_t i = ni;
-            double u = nu;
-            const ClockOf<T> k0 = nk;
-            ClockOf<T> k1;
-            bool go = decide<T>(c, u, k0, k1);
-            if (k + 1 < n) {
-                ni = order[k + 1];
-                nu = c.up[ni];
-                nk = load_clock<T>(c, ni);
-            }
-            const double u_now = c.up[i];
-            if (u_now != u) [[unlikely]] {  // struck since it was read
-                u = u_now;
-                go = decide<T>(c, u, k0, k1);
-            }
-            store_clock<T>(c, i, k1);
-            if (go) chain<M>(c, i, u);
         }
         commit(c);
     }
@@ -493,10 +497,12 @@ private:
                     u = clamp_unit(u + delta);
                     c.up[occ] = clamp_unit(uj - delta);
                     if (c.line) c.dir[occ] = static_cast<std::uint8_t>(d);
-                    const bool plus_first = coin(c);  // "two possible resulting directions ... chosen randomly"
+                    // "two possible resulting directions ... chosen randomly": a coin, used as a
+                    // mask (no branch on it).
+                    const unsigned plus_first = coin(c);
                     const unsigned a = (d + c.deflect) & 7u, b = (d - c.deflect) & 7u;
-                    c0 = plus_first ? a : b;
-                    c1 = plus_first ? b : a;
+                    c0 = b ^ ((a ^ b) & (0u - plus_first));
+                    c1 = a ^ b ^ c0;
                     two = true;
                 } else {
                     if (!collide_vector(c, occ, d, u, c0, c1, two)) break;  // vec_blocked = wait
@@ -562,15 +568,9 @@ private:
             ux0 = vx; ux1 = u * kDx[out];
             vy0 = std::abs(vy); vy1 = std::abs(vy1v);
         }
-        if (bottom) {
-            ++c.wall_b;
-            c.tan_b += ux1 - ux0;
-            c.norm_b += vy0 + vy1;
-        } else {
-            ++c.wall_t;
-            c.tan_t += ux1 - ux0;
-            c.norm_t += vy0 + vy1;
-        }
+        ++c.walls->hits[bottom];
+        c.walls->tangential[bottom] += ux1 - ux0;
+        c.walls->normal[bottom] += vy0 + vy1;
         return out;
     }
 
@@ -654,6 +654,7 @@ private:
     BigVector<double> sup_, sacc_;
     BigVector<std::uint16_t> stick_;
     Counters counters_;
+    typename Ctx::WallSums wall_sums_{};  // wall sums during a step (Ctx::walls points here)
 };
 
 }  // namespace granlub::automaton

@@ -72,25 +72,23 @@ public:
         }
         return static_cast<std::uint32_t>(m >> 32);
     }
-    // A fair coin, one bit at a time from a 32-bit reservoir.
+    // A fair coin, one bit at a time from a 32-bit word, lowest bit first. The reservoir holds
+    // the unused bits below a sentinel bit: it is empty when only the sentinel is left.
     struct Coins {
-        std::uint32_t bits = 0;
-        int left = 0;
+        std::uint64_t bits = 1;
     };
     bool coin() { return coin_from(coins_); }
     // The same coin with the reservoir held elsewhere (the engine keeps it in a register for a
     // whole step and hands it back with coins()): same words, same bits, same order.
     bool coin_from(Coins& c) {
-        if (c.left == 0) {
-            c.bits = next32();
-            c.left = 32;
-        }
+        if (c.bits == 1) [[unlikely]] refill_coins(c);
         const bool b = c.bits & 1u;
         c.bits >>= 1;
-        --c.left;
         return b;
     }
     Coins& coins() { return coins_; }
+    // Refill an empty reservoir with the next word (callers that test for "empty" themselves).
+    void refill_coins(Coins& c) { c.bits = next32() | (std::uint64_t{1} << 32); }
     // Uniform double in [0, 1) with 53 random bits.
     double uniform() {
         const std::uint64_t hi = next32() >> 5;  // 27 + 26 bits
