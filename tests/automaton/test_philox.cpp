@@ -63,6 +63,22 @@ BOOST_AUTO_TEST_CASE(streams_are_reproducible_and_distinct) {
     BOOST_TEST(same_d < 3);
 }
 
+// The coin contract the engine's bit-identical results rest on: coin k is bit k % 32 (lowest
+// first) of the stream's word k / 32, interleaved draws taking the next words.
+BOOST_AUTO_TEST_CASE(coins_are_the_bits_of_successive_words) {
+    Philox coins(5, 3), words(5, 3);
+    std::uint32_t w = 0;
+    for (int k = 0; k < 100; ++k) {
+        if (k % 32 == 0) w = words.next32();
+        BOOST_TEST_REQUIRE(coins.coin() == (((w >> (k % 32)) & 1u) != 0), "coin " << k);
+    }
+    // Four bits of the fourth word are left in the reservoir; a draw in between takes word 5.
+    BOOST_TEST(coins.next32() == words.next32());
+    for (int k = 4; k < 32; ++k) BOOST_TEST_REQUIRE(coins.coin() == (((w >> k) & 1u) != 0));
+    const std::uint32_t w6 = words.next32();
+    BOOST_TEST(coins.coin() == ((w6 & 1u) != 0));
+}
+
 BOOST_AUTO_TEST_CASE(draws_are_uniform) {
     Philox g(1, 0);
     const int n = 7, draws = 700000;
