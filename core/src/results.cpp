@@ -17,13 +17,13 @@
 #include "granlub/case.h"
 #include "granlub/error.h"
 
-#ifndef GRANLUB_VERSION_STRING
-#define GRANLUB_VERSION_STRING "unknown"
-#endif
-
 namespace granlub {
 
-std::string version() { return GRANLUB_VERSION_STRING; }
+namespace detail {
+const char* version_string();  // generated at build time (cmake/WriteVersion.cmake)
+}
+
+std::string version() { return detail::version_string(); }
 
 std::string utc_now() {
     std::time_t t = std::time(nullptr);

@@ -103,7 +103,7 @@ struct ResultStatus {
 // "Complete and current": both files parse and summary.inputs_hash == inputs_hash.
 ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash);
 
-std::string version();   // git describe at configure time
+std::string version();   // project version + git describe --dirty, taken at build time
 std::string utc_now();   // ISO 8601
 
 }  // namespace granlub
