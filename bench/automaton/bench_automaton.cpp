@@ -6,9 +6,9 @@
 //
 // Issue 4's target is >= 1e8 updates/s on one core for BM_StepDefault (jh) and a cost per update
 // that stays flat up to 1e6 grains (BM_StepScaling). Measured on the 2-vCPU build VM (Xeon
-// 2.6 GHz, load average 4-6, median of 3; automaton/README.md "Performance" has the table):
-// BM_StepDefault 3.4e7/s (jh), 1.8e7/s (vector); BM_StepScaling 3.4e7/s at 850 grains,
-// 2.3-2.4e7/s at 0.85-1.02e6 grains. Run with --benchmark_repetitions=3 on a quiet core; the
+// 2.6 GHz, quiet, median of 3; automaton/README.md "Performance" has the table):
+// BM_StepDefault 3.9e7/s (jh), 1.8e7/s (vector); BM_StepScaling 3.9e7/s at 850 grains,
+// 2.5e7/s at 0.85-1.02e6 grains. Run with --benchmark_repetitions=3 on a quiet core; the
 // numbers move by 10-20 % with the load of the other vCPU.
 #include <benchmark/benchmark.h>
 
