@@ -127,10 +127,10 @@ public:
 
     // One time step (§3.1): a fresh uniformly random order of all grains (in-place Fisher-Yates
     // on the previous order), then every grain is updated in that order, each seeing the moves
-    // already made in this step. The shuffle runs a few positions ahead of the updates in the
-    // same loop (position k of the Fisher-Yates pass is final once it has been swapped, and the
-    // order stream is separate from the rule stream), so draws and outcome are those of a full
-    // shuffle followed by the updates.
+    // already made in this step. The shuffle runs a chunk of positions ahead of the updates
+    // (position k of the Fisher-Yates pass is final once it has been swapped, and the order
+    // stream is separate from the rule stream), so draws and outcome are those of a full shuffle
+    // followed by the updates.
     void step() {
         if (steps_ % kRelabelEvery == 0) relabel();
         ++steps_;
