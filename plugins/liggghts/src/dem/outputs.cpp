@@ -16,16 +16,29 @@ namespace granlub::dem {
 
 namespace fs = std::filesystem;
 
-WallSeries read_wall_series(const fs::path& file) {
+namespace {
+
+// Calls row(fields, line number) for each data line of a LIGGGHTS text output (fix print / ave
+// style: blank lines and # comments skipped); `what` names the file in the "not written" error.
+template <class Row>
+void for_each_data_line(const fs::path& file, const char* what, Row row) {
     std::ifstream in(file);
-    if (!in) throw SolverError(fmt::format("{}: LIGGGHTS wrote no wall-force file", file.string()));
-    WallSeries w;
+    if (!in) throw SolverError(fmt::format("{}: LIGGGHTS wrote no {} file", file.string(), what));
     std::string l;
     std::size_t lineno = 0;
     while (std::getline(in, l)) {
         ++lineno;
         if (l.empty() || l[0] == '#') continue;
         std::istringstream ss(l);
+        row(ss, lineno);
+    }
+}
+
+}  // namespace
+
+WallSeries read_wall_series(const fs::path& file) {
+    WallSeries w;
+    for_each_data_line(file, "wall-force", [&](std::istringstream& ss, std::size_t lineno) {
         double step;
         ss >> step;
         std::vector<double> row;
@@ -41,7 +54,7 @@ WallSeries read_wall_series(const fs::path& file) {
                                               file.string(), lineno));
         w.step.push_back(step);
         for (std::size_t k = 0; k < row.size(); ++k) w.columns[k].push_back(row[k]);
-    }
+    });
     if (w.step.empty()) throw SolverError(fmt::format("{}: no wall-force samples", file.string()));
     return w;
 }
@@ -81,22 +94,15 @@ std::size_t read_snapshots(const fs::path& file, double dt, SliceCoarseGrainer& 
 }
 
 PlateSeries read_plate_series(const fs::path& file) {
-    std::ifstream in(file);
-    if (!in) throw SolverError(fmt::format("{}: LIGGGHTS wrote no plate-position file", file.string()));
     PlateSeries p;
-    std::string l;
-    std::size_t lineno = 0;
-    while (std::getline(in, l)) {
-        ++lineno;
-        if (l.empty() || l[0] == '#') continue;
-        std::istringstream ss(l);
+    for_each_data_line(file, "plate-position", [&](std::istringstream& ss, std::size_t lineno) {
         double step, gap;
         if (!(ss >> step >> gap) || !std::isfinite(gap))
             throw SolverError(fmt::format("{}:{}: expected: step gap", file.string(), lineno));
-        if (step <= 0 || (!p.step.empty() && step <= p.step.back())) continue;  // initial position, repeats
+        if (step <= 0 || (!p.step.empty() && step <= p.step.back())) return;  // initial position, repeats
         p.step.push_back(step);
         p.gap.push_back(gap);
-    }
+    });
     if (p.step.size() < 2) throw SolverError(fmt::format("{}: fewer than 2 plate positions", file.string()));
     return p;
 }
