@@ -1,6 +1,7 @@
 // `granlub dem` end to end on a small shear cell (a few hundred grains, a few thousand steps):
 // complete result files with finite stresses, momentum balance across the gap, determinism,
-// the Hertz reference, 2 MPI ranks, and clear errors for bad inputs.
+// the Hertz reference, 2 MPI ranks, clear errors for bad inputs, and the readers of LIGGGHTS'
+// line-oriented outputs.
 #define BOOST_TEST_MODULE liggghts_dem
 #include <boost/test/unit_test.hpp>
 
@@ -16,6 +17,7 @@
 #include "granlub/particles.h"
 #include "granlub/results.h"
 #include "granlub/sweep.h"
+#include "outputs.h"
 #include "settings.h"
 #include "tiny_cell.h"
 
@@ -169,4 +171,43 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
             BOOST_TEST(std::string(e.what()).find("time_step") != std::string::npos);
         }
     }
+}
+
+// The wall-force and plate-position readers: comments and blank lines skipped, rows parsed, and a
+// bad line named by file and line number.
+BOOST_AUTO_TEST_CASE(output_readers_parse_rows_and_name_bad_lines) {
+    const fs::path dir = scratch("readers");
+    auto write = [&](const std::string& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+        return dir / name;
+    };
+    auto error_of = [](auto read) -> std::string {
+        try {
+            read();
+        } catch (const SolverError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const auto w = dem::read_wall_series(write("wall.txt", "# Time-averaged data\n# TimeStep a b\n\n100 1 2\n200 3 4\n"));
+    BOOST_TEST(w.step == (std::vector<double>{100, 200}));
+    BOOST_REQUIRE(w.columns.size() == 2u);
+    BOOST_TEST(w.columns[1] == (std::vector<double>{2, 4}));
+    BOOST_TEST(error_of([&] { dem::read_wall_series(write("w2.txt", "100 1 2\n200 3\n")); })
+                   .find("w2.txt:2: expected 2 columns") != std::string::npos);
+    // LIGGGHTS prints a blown-up run's forces as nan / -nan / inf.
+    BOOST_TEST(error_of([&] { dem::read_wall_series(write("w3.txt", "100 1 2\n200 -nan 4\n")); })
+                   .find("w3.txt:2: non-finite") != std::string::npos);
+    BOOST_TEST(error_of([&] { dem::read_wall_series(write("w4.txt", "100 1 x2\n")); })
+                   .find("w4.txt:1: 'x2' is not a number") != std::string::npos);
+    BOOST_TEST(error_of([&] { dem::read_wall_series(dir / "missing.txt"); }).find("wrote no wall-force file") !=
+               std::string::npos);
+    // The initial position (step 0) and repeated steps are dropped.
+    const auto p = dem::read_plate_series(write("plate.txt", "# plate\n0 5e-3\n100 4.9e-3\n100 4.9e-3\n200 4.8e-3\n"));
+    BOOST_TEST(p.step == (std::vector<double>{100, 200}));
+    BOOST_TEST(p.gap == (std::vector<double>{4.9e-3, 4.8e-3}));
+    BOOST_TEST(error_of([&] { dem::read_plate_series(write("p2.txt", "100 4.9e-3\n200\n")); })
+                   .find("p2.txt:2: expected: step gap") != std::string::npos);
+    BOOST_TEST(error_of([&] { dem::read_plate_series(dir / "missing.txt"); }).find("wrote no plate-position file") !=
+               std::string::npos);
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -18,19 +19,29 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Calls row(fields, line number) for each data line of a LIGGGHTS text output (fix print / ave
+// Calls row(values, line number) for each data line of a LIGGGHTS text output (fix ave/time
 // style: blank lines and # comments skipped); `what` names the file in the "not written" error.
+// Numbers are read with strtod, which also takes the "nan" and "inf" LIGGGHTS prints when a run
+// blows up (an istream stops there, silently shortening the row).
 template <class Row>
 void for_each_data_line(const fs::path& file, const char* what, Row row) {
     std::ifstream in(file);
     if (!in) throw SolverError(fmt::format("{}: LIGGGHTS wrote no {} file", file.string(), what));
-    std::string l;
+    std::string l, token;
+    std::vector<double> values;
     std::size_t lineno = 0;
     while (std::getline(in, l)) {
         ++lineno;
         if (l.empty() || l[0] == '#') continue;
         std::istringstream ss(l);
-        row(ss, lineno);
+        values.clear();
+        while (ss >> token) {
+            char* end = nullptr;
+            values.push_back(std::strtod(token.c_str(), &end));
+            if (end != token.c_str() + token.size())
+                throw SolverError(fmt::format("{}:{}: '{}' is not a number", file.string(), lineno, token));
+        }
+        if (!values.empty()) row(values, lineno);
     }
 }
 
@@ -38,22 +49,18 @@ void for_each_data_line(const fs::path& file, const char* what, Row row) {
 
 WallSeries read_wall_series(const fs::path& file) {
     WallSeries w;
-    for_each_data_line(file, "wall-force", [&](std::istringstream& ss, std::size_t lineno) {
-        double step;
-        ss >> step;
-        std::vector<double> row;
-        double v;
-        while (ss >> v) row.push_back(v);
-        if (w.columns.empty()) w.columns.resize(row.size());
-        if (row.size() != w.columns.size() || row.empty())
+    for_each_data_line(file, "wall-force", [&](const std::vector<double>& v, std::size_t lineno) {
+        const std::size_t n = v.size() - 1;  // columns after the step
+        if (w.columns.empty()) w.columns.resize(n);
+        if (n != w.columns.size() || n == 0)
             throw SolverError(fmt::format("{}:{}: expected {} columns after the step", file.string(), lineno,
-                                          w.columns.size()));
-        for (double x : row)
-            if (!std::isfinite(x))
+                                          std::max<std::size_t>(w.columns.size(), 1)));
+        for (std::size_t k = 1; k <= n; ++k)
+            if (!std::isfinite(v[k]))
                 throw SolverError(fmt::format("{}:{}: non-finite wall force (the run blew up; reduce the time step)",
                                               file.string(), lineno));
-        w.step.push_back(step);
-        for (std::size_t k = 0; k < row.size(); ++k) w.columns[k].push_back(row[k]);
+        w.step.push_back(v[0]);
+        for (std::size_t k = 0; k < n; ++k) w.columns[k].push_back(v[k + 1]);
     });
     if (w.step.empty()) throw SolverError(fmt::format("{}: no wall-force samples", file.string()));
     return w;
@@ -95,10 +102,10 @@ std::size_t read_snapshots(const fs::path& file, double dt, SliceCoarseGrainer& 
 
 PlateSeries read_plate_series(const fs::path& file) {
     PlateSeries p;
-    for_each_data_line(file, "plate-position", [&](std::istringstream& ss, std::size_t lineno) {
-        double step, gap;
-        if (!(ss >> step >> gap) || !std::isfinite(gap))
+    for_each_data_line(file, "plate-position", [&](const std::vector<double>& v, std::size_t lineno) {
+        if (v.size() != 2 || !std::isfinite(v[1]))
             throw SolverError(fmt::format("{}:{}: expected: step gap", file.string(), lineno));
+        const double step = v[0], gap = v[1];
         if (step <= 0 || (!p.step.empty() && step <= p.step.back())) return;  // initial position, repeats
         p.step.push_back(step);
         p.gap.push_back(gap);
