@@ -50,6 +50,36 @@ BOOST_AUTO_TEST_CASE(invariants_every_switch) {
     for (const Params& p : variants) check_run(p, 300);
 }
 
+BOOST_AUTO_TEST_CASE(skeleton_step_decides_but_moves_nothing) {
+    // Engine::step_skeleton() (the floor measured by bench_automaton's BM_StepSkeleton) must make
+    // every grain's time-factor decision as step() does and leave the lattice itself untouched.
+    Lattice e = make_lattice(small(), 0);
+    for (int t = 0; t < 200; ++t) e.step();
+    const std::size_t n = e.size();
+    std::vector<int> x(n), y(n), d(n);
+    std::vector<double> u(n), k(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        x[i] = e.x(static_cast<int>(i)); y[i] = e.y(static_cast<int>(i)); d[i] = e.dir(static_cast<int>(i));
+        u[i] = e.up(static_cast<int>(i)); k[i] = e.clock(static_cast<int>(i));
+    }
+    const Counters before = e.counters();
+    const std::uint64_t attempts = e.step_skeleton();
+    std::uint64_t expected = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const int g = static_cast<int>(i);
+        BOOST_REQUIRE(e.x(g) == x[i] && e.y(g) == y[i] && e.dir(g) == d[i] && e.up(g) == u[i]);
+        const bool moving = u[i] >= 1.0 / e.rules().tf_max;
+        const bool go = moving && e.fires(k[i] + 1, u[i]);
+        expected += go;
+        BOOST_REQUIRE_EQUAL(e.clock(g), !moving ? k[i] : (go ? 0.0 : k[i] + 1));
+    }
+    BOOST_TEST(attempts == expected);
+    BOOST_TEST(attempts > n / 4);  // ~2/3 of the grains attempt a move in a step
+    BOOST_TEST(e.counters().moves == before.moves);
+    BOOST_TEST(e.counters().pp == before.pp);
+    BOOST_TEST(e.check_invariants() == "");
+}
+
 BOOST_AUTO_TEST_CASE(momentum_balance_jh) {
     // In jh mode Eqs. 8-9 conserve the sum of u_p in every collision, so in steady state the
     // streamwise momentum the moving wall puts in equals what the stationary wall takes out.

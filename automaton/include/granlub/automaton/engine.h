@@ -148,6 +148,16 @@ public:
         counters_.visits += order_.size();
     }
 
+    // Benchmark only (bench_automaton BM_StepSkeleton): a default-rule step (jh, round) that
+    // counts the move attempts instead of making them. The shuffle, the clocks and the "does it
+    // move" decision run as in step(); nothing moves or collides, so the lattice is frozen.
+    // Its cost is the floor under the update order and the clocks that every step pays.
+    std::uint64_t step_skeleton() {
+        if (order_.size() > kPrefetchFrom) run<Mode::JH, TfRounding::Round, true, false>();
+        else run<Mode::JH, TfRounding::Round, false, false>();
+        return skipped_attempts_;
+    }
+
     // Renumber the grains in grid order (spatial locality). The dynamics do not depend on labels:
     // the next step's order is a fresh uniform permutation whatever the labels are.
     void relabel() {
@@ -342,7 +352,7 @@ private:
     // Positions [0, s) of the Fisher-Yates pass are final; the pass runs one chunk ahead of the
     // visits in its own tight loop (so that the visit loop keeps its registers), and on large
     // lattices draws a whole chunk's partners first, prefetching their slots.
-    template <Mode M, TfRounding T, bool Prefetch>
+    template <Mode M, TfRounding T, bool Prefetch, bool Attempts = true>
     void run() {
         const auto n = static_cast<std::uint32_t>(order_.size());
         if (n == 0) return;
@@ -416,7 +426,11 @@ private:
                     go = decide<T>(c, u, kc, k1);
                 }
                 store_clock<T>(c, i, k1);
-                if (go) chain<M>(c, i, u);
+                if constexpr (Attempts) {
+                    if (go) chain<M>(c, i, u);
+                } else {
+                    skipped_attempts_ += go;
+                }
             }
         }
         commit(c);
@@ -654,6 +668,7 @@ private:
     BigVector<double> sup_, sacc_;
     BigVector<std::uint16_t> stick_;
     Counters counters_;
+    std::uint64_t skipped_attempts_ = 0;  // step_skeleton() only
     typename Ctx::WallSums wall_sums_{};  // wall sums during a step (Ctx::walls points here)
 };
 
