@@ -152,7 +152,9 @@ public:
     // counts the move attempts instead of making them. The shuffle, the clocks and the "does it
     // move" decision run as in step(); nothing moves or collides, so the lattice is frozen.
     // Its cost is the floor under the update order and the clocks that every step pays.
+    // Returns this step's number of attempts.
     std::uint64_t step_skeleton() {
+        skipped_attempts_ = 0;
         if (order_.size() > kPrefetchFrom) run<Mode::JH, TfRounding::Round, true, false>();
         else run<Mode::JH, TfRounding::Round, false, false>();
         return skipped_attempts_;
