@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "granlub/regime.h"
 #include "granlub/results.h"
 
 namespace granlub::test {
@@ -80,6 +81,7 @@ void write_solver(const SyntheticCase& s, const std::string& solver) {
             prof.add("u_over_U_stderr", se).add("solid_fraction_stderr", se).add("temperature_over_U2_stderr", se);
         }
         sum.run = {{"steps", 1000}, {"wall_clock_s", 0.5}};
+        set_regime(sum.run, RegimeStatus::Steady);
         write_result(result_dir(s.o.results_root, solver, p.id), prof, sum);
     }
 }
