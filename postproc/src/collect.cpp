@@ -109,16 +109,17 @@ Run load_run(const Case& c, const std::filesystem::path& root, const std::string
     r.point = &p;
     r.dir = result_dir(root, solver, p.id);
     r.status = result_status(r.dir, c.inputs_hash(solver));
-    if (r.status.state != ResultState::Complete) return r;
-    try {
-        r.summary = read_summary(r.dir / "summary.json");
-        r.profile = read_profile(r.dir / "profile.csv");
-        if (auto why = check_run(c, r); !why.empty()) r.status = {ResultState::Corrupt, why};
-    } catch (const Error& e) {
-        r.status = {ResultState::Corrupt, e.what()};
+    if (r.status.state == ResultState::Complete) {
+        try {
+            r.summary = read_summary(r.dir / "summary.json");
+            r.profile = read_profile(r.dir / "profile.csv");
+            if (auto why = check_run(c, r); !why.empty()) r.status = {ResultState::Corrupt, why};
+        } catch (const Error& e) {
+            r.status = {ResultState::Corrupt, e.what()};
+        }
+        if (r.status.state != ResultState::Complete) r.profile.reset(), r.summary.reset();
+        if (r.summary) r.regime = read_regime(r.summary->run);
     }
-    if (r.status.state != ResultState::Complete) r.profile.reset(), r.summary.reset();
-    if (r.summary) r.regime = read_regime(r.summary->run);
     try {
         r.failure = read_failure(r.dir);
     } catch (const Error& e) {

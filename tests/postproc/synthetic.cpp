@@ -86,6 +86,16 @@ void write_solver(const SyntheticCase& s, const std::string& solver) {
     }
 }
 
+void patch_run(const SyntheticCase& s, const std::string& solver, const std::string& point, const nlohmann::json& run) {
+    const auto file = result_dir(s.o.results_root, solver, point) / "summary.json";
+    auto j = nlohmann::json::parse(slurp(file));
+    for (const auto& [key, value] : run.items()) {
+        if (value.is_null()) j["run"].erase(key);
+        else j["run"][key] = value;
+    }
+    write_file_atomic(file, j.dump(2));
+}
+
 std::string slurp(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     if (!in) throw std::runtime_error("cannot read " + p.string());
