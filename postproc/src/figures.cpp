@@ -154,7 +154,11 @@ std::vector<Figure> stress_figures(const Collection& col) {
                 for (auto& s : series) s.open = s.open || g % 2 == 1;
                 const StressFit fit = stress_fit(col, groups[g], solver, q);
                 if (fit.steady_points + fit.other_points > 0 && !fit.fit)
-                    not_fitted.push_back(fmt::format("{}: {}", with_group(solver, groups[g].label), fit.why_not));
+                    not_fitted.push_back(fit.steady_points < kMinFitPoints
+                                             ? fmt::format("{} has {} steady point{} (a fit needs {})",
+                                                           with_group(solver, groups[g].label), fit.steady_points,
+                                                           fit.steady_points == 1 ? "" : "s", kMinFitPoints)
+                                             : fmt::format("{}: {}", with_group(solver, groups[g].label), fit.why_not));
                 Series line;
                 if (fit.fit) {
                     line.style = series[0].style;
@@ -174,7 +178,7 @@ std::vector<Figure> stress_figures(const Collection& col) {
             }
         }
         if (!not_fitted.empty()) {
-            f.caption += " No power law for";
+            f.caption += " No power law:";
             for (std::size_t i = 0; i < not_fitted.size(); ++i) f.caption += (i ? "; " : " ") + not_fitted[i];
             f.caption += ".";
         }

@@ -197,7 +197,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
              "error of the statistical solvers (particle solvers, automaton); the continuum solver is deterministic "
              "and has none.");
     rep.text("Wall stresses are shown against U on log–log axes with the power law σ = c Uⁿ fitted per solver over "
-             "the points that differ only in speed: rapid (Bagnold) flow at fixed solid fraction gives n = 2, "
+             "its steady points (at least three) that differ only in speed: rapid (Bagnold) flow at fixed solid fraction gives n = 2, "
              "quasi-static flow n → 0. A difference between two solvers is significant when it exceeds twice the "
              "combined standard error (|z| > 2, shown bold); between deterministic results every difference is a "
              "model difference.");

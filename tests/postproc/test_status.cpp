@@ -106,7 +106,7 @@ BOOST_AUTO_TEST_CASE(a_transient_dem_point_is_never_passed_off) {
     BOOST_TEST(matches(hollow) == 2u);
     BOOST_TEST(svg.find(">dem: transient</text>") != std::string::npos);
     BOOST_TEST(html.find("results that are NOT steady") != std::string::npos);  // the caption says so
-    BOOST_TEST(html.find("No power law for dem: not fitted: 2 steady points (needs 3)") != std::string::npos);
+    BOOST_TEST(html.find("No power law: dem has 2 steady points (a fit needs 3).") != std::string::npos);
     // The profile plot at U = 2: the dem line dotted and faded.
     const std::string prof = test::slurp(rep / "plots" / ("profile_u2-0_u.svg"));
     BOOST_TEST(prof.find("stroke-dasharray=\"1.5 3\" class=\"unsteady\"") != std::string::npos);
