@@ -9,7 +9,8 @@ foreach(c ${cases})
   configure_file(${c} ${OUT}/corpus/${n}.toml COPYONLY)
 endforeach()
 # Only what the parser needs: the case model and the key declarations.
-set(core_sources ${SRC}/core/src/case.cpp ${SRC}/core/src/common_sections.cpp ${SRC}/core/src/schema.cpp)
+set(core_sources ${SRC}/core/src/case.cpp ${SRC}/core/src/common_sections.cpp ${SRC}/core/src/schema.cpp
+                 ${SRC}/core/src/text.cpp)
 execute_process(COMMAND pkg-config --cflags tomlplusplus OUTPUT_VARIABLE toml_flags OUTPUT_STRIP_TRAILING_WHITESPACE)
 execute_process(COMMAND pkg-config --libs tomlplusplus OUTPUT_VARIABLE toml_libs OUTPUT_STRIP_TRAILING_WHITESPACE)
 separate_arguments(toml_flags)
