@@ -65,6 +65,7 @@ Schema full_schema() {
 int check_solvers(const Case& c, const RunOptions& o) {
     int rc = 0;
     fmt::print("\n# solver checks (every point, quick and --full run lengths)\n");
+    std::fflush(stdout);  // the errors and warnings on stderr follow the lines they belong to
     for (const auto& m : solver_modules()) {
         std::vector<std::string> cannot;  // points this solver cannot run: a warning, not bad input
         try {
@@ -81,16 +82,19 @@ int check_solvers(const Case& c, const RunOptions& o) {
             }
         } catch (const CaseError& e) {
             fmt::print("#   {:<10} bad input (see the error)\n", m.name);
+            std::fflush(stdout);
             fmt::print(stderr, "error: {}: {}\n", m.name, e.what());
             rc = 2;
             continue;
         }
         if (cannot.empty()) {
             fmt::print("#   {:<10} ok\n", m.name);
+            std::fflush(stdout);
             continue;
         }
         fmt::print("#   {:<10} cannot run {} of {} point(s) (see the warnings)\n", m.name, cannot.size(),
                    c.select(o.point).size());
+        std::fflush(stdout);
         for (const auto& w : cannot) fmt::print(stderr, "warning: {} will fail on {}\n", m.name, w);
     }
     std::fflush(stdout);

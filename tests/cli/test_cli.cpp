@@ -152,3 +152,16 @@ BOOST_AUTO_TEST_CASE(a_case_file_cannot_run_commands) {
         fs::remove_all(dir);
     }
 }
+
+// A point a solver cannot run is a warning at check time, with the reason (not "try more cells").
+BOOST_AUTO_TEST_CASE(check_warns_of_points_a_solver_cannot_run) {
+    if (!built("continuum")) return;
+    const fs::path dir = edited_case("elastic", "restitution = 0.9          # e_p", "restitution = 1.0 # e_p");
+    const auto o = run(exe + " check " + dir.string());
+    BOOST_TEST(o.rc == 0, o.text);
+    BOOST_TEST(o.text.find("continuum  cannot run 3 of 3 point(s)") != std::string::npos, o.text);
+    BOOST_TEST(o.text.find("warning: continuum will fail on point U1.4: [grains] restitution = 1: perfectly "
+                           "elastic grains") != std::string::npos,
+               o.text);
+    fs::remove_all(dir);
+}
