@@ -1,5 +1,6 @@
 // granlub: one command, one subcommand per job. Exit codes: 0 done, 1 a solver failed on some
 // point, 2 bad input (case file, options).
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "granlub/case.h"
 #include "granlub/error.h"
 #include "granlub/results.h"
+#include "granlub/text.h"
 #include "modules.h"
 #include "run_all.h"
 
@@ -98,6 +100,14 @@ int main(int argc, char** argv) {
         ->delimiter(',')
         ->check(CLI::IsMember(names));
 
+    // CLI11 reports an unknown first word only as "A subcommand is required": name it and the commands.
+    std::vector<std::string> commands;
+    for (const auto* sub : app.get_subcommands({})) commands.push_back(sub->get_name());
+    if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
+        fmt::print(stderr, "error: unknown command '{}' (commands: {}; `granlub --help` says what each does)\n",
+                   granlub::clipped(granlub::one_line(argv[1])), fmt::join(commands, ", "));
+        return 2;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -165,3 +165,9 @@ BOOST_AUTO_TEST_CASE(check_warns_of_points_a_solver_cannot_run) {
                o.text);
     fs::remove_all(dir);
 }
+
+BOOST_AUTO_TEST_CASE(an_unknown_command_is_named) {
+    const auto o = run(exe + " frobnicate cases/sawyer2001");
+    BOOST_TEST(o.rc == 2);
+    BOOST_TEST(o.text.find("unknown command 'frobnicate' (commands: check, keys,") != std::string::npos, o.text);
+}
