@@ -20,6 +20,7 @@
 #include "common_sections.h"
 #include "granlub/error.h"
 #include "granlub/text.h"
+#include "toml_screen.h"
 
 namespace granlub {
 
@@ -219,11 +220,16 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
     if (text.size() > kMaxCaseFileBytes)
         throw CaseError(fmt::format("{}: {} bytes; a case file may have at most {} bytes", source, text.size(),
                                     kMaxCaseFileBytes));
-    // toml++ 3.3 reaches unreachable code on some malformed UTF-8 (its issue 295): never hand it any.
+    // A case file is UTF-8 text; and toml++ 3.3 has undefined behaviour on some malformed TOML
+    // (toml_screen.h), which is therefore rejected before toml++ sees it.
     if (const auto bad = invalid_utf8_offset(text)) {
         const LineColumn lc = line_column(text, *bad);
         throw CaseError(fmt::format("{}:{}:{}: byte 0x{:02x} is not valid UTF-8 (a case file is UTF-8 text)", source,
                                     lc.line, lc.column, static_cast<unsigned char>(text[*bad])));
+    }
+    if (const auto bad = screen_toml(text)) {
+        const LineColumn lc = line_column(text, bad->offset);
+        throw CaseError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, lc.line, lc.column, bad->why));
     }
     auto owned = std::make_shared<const Schema>(schema_in);
     const Schema& schema = *owned;
@@ -458,20 +464,25 @@ std::vector<const OperatingPoint*> Case::select(std::string_view id) const {
     return out;
 }
 
-namespace {
-void dump_section(std::ostringstream& os, const Section& s) {
-    for (const auto& k : s.spec().keys)
-        if (s.has(k.name)) os << k.name << '=' << value_text(s.values().at(k.name)) << '\n';
+std::map<std::string, std::string> Case::inputs(std::string_view solver_section) const {
+    std::map<std::string, std::string> out;
+    for (const auto& [sname, s] : sections) {
+        if (!common_sections_contains(sname) && sname != solver_section) continue;
+        for (const auto& k : s.spec().keys)
+            if (s.has(k.name)) out[fmt::format("[{}] {}", sname, k.name)] = value_text(s.values().at(k.name));
+    }
+    return out;
 }
-}  // namespace
 
 std::string Case::inputs_hash(std::string_view solver_section) const {
+    // The bytes hashed are fixed (results computed before inputs() existed must stay current):
+    // "[section]\n" then "key=value\n" in declaration order, sections in name order.
     std::ostringstream os;
     for (const auto& [sname, s] : sections) {
-        const bool common = common_sections_contains(sname);
-        if (!common && sname != solver_section) continue;
+        if (!common_sections_contains(sname) && sname != solver_section) continue;
         os << '[' << sname << "]\n";
-        dump_section(os, s);
+        for (const auto& k : s.spec().keys)
+            if (s.has(k.name)) os << k.name << '=' << value_text(s.values().at(k.name)) << '\n';
     }
     return hash_hex(os.str());
 }

@@ -8,6 +8,7 @@
 #include <ctime>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -93,6 +94,7 @@ Summary make_summary(const Case& c, const OperatingPoint& p, const std::string& 
     s.provenance.case_file = c.file.string();
     s.provenance.case_hash = c.file_hash;
     s.provenance.inputs_hash = c.inputs_hash(solver);
+    s.provenance.inputs = c.inputs(solver);
     s.provenance.seed = seed;
     s.provenance.settings = nlohmann::json::object();
     auto it = c.sections.find(solver);
@@ -217,6 +219,7 @@ nlohmann::json summary_json(const Summary& s) {
                            {"case_file", s.provenance.case_file},
                            {"case_hash", s.provenance.case_hash},
                            {"inputs_hash", s.provenance.inputs_hash},
+                           {"inputs", s.provenance.inputs},
                            {"settings", s.provenance.settings},
                            {"utc_time", s.provenance.utc_time.empty() ? utc_now() : s.provenance.utc_time}};
     prov["seed"] = s.provenance.seed ? nlohmann::json(*s.provenance.seed) : nlohmann::json(nullptr);
@@ -246,6 +249,7 @@ Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
         s.provenance.case_file = p.value("case_file", "");
         s.provenance.case_hash = p.at("case_hash").get<std::string>();
         s.provenance.inputs_hash = p.at("inputs_hash").get<std::string>();
+        if (p.contains("inputs")) s.provenance.inputs = p.at("inputs").get<std::map<std::string, std::string>>();
         s.provenance.settings = p.value("settings", nlohmann::json::object());
         s.provenance.utc_time = p.value("utc_time", "");
         if (p.contains("seed") && !p.at("seed").is_null()) s.provenance.seed = p.at("seed").get<std::uint64_t>();
@@ -369,6 +373,41 @@ LoadedResult load_result(const std::filesystem::path& dir, const std::string& in
         r.status = {ResultState::Complete, ""};
     } catch (const std::exception& e) {  // anything unreadable is corrupt, never fatal to a sweep
         r.status = {ResultState::Corrupt, e.what()};
+    }
+    return r;
+}
+
+namespace {
+// "[grains] density = 2500 -> 2600, [dem] time (new) = 0.2": what changed between two input sets.
+std::string changed_keys(const std::map<std::string, std::string>& was, const std::map<std::string, std::string>& now) {
+    std::vector<std::string> diffs;
+    for (const auto& [k, v] : now) {
+        const auto it = was.find(k);
+        if (it == was.end()) diffs.push_back(fmt::format("{} = {} (not in the old inputs)", k, clipped(v)));
+        else if (it->second != v) diffs.push_back(fmt::format("{} = {} -> {}", k, clipped(it->second), clipped(v)));
+    }
+    for (const auto& [k, v] : was)
+        if (!now.count(k)) diffs.push_back(fmt::format("{} = {} (no longer set)", k, clipped(v)));
+    if (diffs.size() > 4) {
+        const auto more = diffs.size() - 3;
+        diffs.resize(3);
+        diffs.push_back(fmt::format("and {} more", more));
+    }
+    return fmt::format("{}", fmt::join(diffs, ", "));
+}
+}  // namespace
+
+LoadedResult load_result(const std::filesystem::path& dir, const Case& c, const std::string& solver) {
+    LoadedResult r = load_result(dir, c.inputs_hash(solver), c.name);
+    if (r.status.state != ResultState::Stale) return r;
+    try {  // name the keys: the summary was readable a moment ago
+        const Summary old = read_summary(dir / "summary.json");
+        if (!old.provenance.inputs.empty()) {
+            const std::string what = changed_keys(old.provenance.inputs, c.inputs(solver));
+            if (!what.empty())
+                r.status.reason = fmt::format("{}: computed before the case changed: {}", (dir / "summary.json").string(), what);
+        }
+    } catch (const std::exception&) {
     }
     return r;
 }

@@ -44,7 +44,7 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
     int failed = 0;
     for (const OperatingPoint* p : points) {
         const auto dir = result_dir(root, solver, p->id);
-        const LoadedResult prev = load_result(dir, hash, c.name);  // compare's definition of complete too
+        const LoadedResult prev = load_result(dir, c, solver);  // compare's definition of complete too
         const ResultStatus& st = prev.status;
         if (st.state == ResultState::Complete && !o.force) {
             const std::string differs = run_options_differ(*prev.summary, o);
@@ -55,7 +55,8 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
             }
             fmt::print("{} {:<14} complete, but {}: recomputing\n", solver, p->id, differs);
         }
-        if (st.state == ResultState::Stale) fmt::print("{} {:<14} stale results, recomputing\n", solver, p->id);
+        if (st.state == ResultState::Stale)
+            fmt::print("{} {:<14} stale results, recomputing: {}\n", solver, p->id, st.reason);
         if (st.state == ResultState::Corrupt)
             fmt::print("{} {:<14} corrupt results, recomputing: {}\n", solver, p->id, st.reason);
         const auto t0 = std::chrono::steady_clock::now();

@@ -178,3 +178,46 @@ BOOST_AUTO_TEST_CASE(what_is_not_a_case_file_is_named) {
     fs::create_directories(t.path / "empty_dir");
     BOOST_TEST(load_error(t.path / "empty_dir").find("no case.toml in this directory") != std::string::npos);
 }
+
+// toml++ 3.3.0 has undefined behaviour on these (an "unreachable" or a broken precondition:
+// its issues 190/295 and PRs 301/305): they are malformed TOML and are refused before it parses.
+BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
+    const std::vector<std::pair<std::string, std::string>> traps = {
+        {"\xc3\xa9 = 1", "a non-ASCII character outside a string"},
+        {"[\xc3\xa9]", "a non-ASCII character outside a string"},
+        {"name2 = \xc8\x9a", "a non-ASCII character outside a string"},
+        {"[=", "a table header must start with a key"},
+        {"[.a]", "a table header must start with a key"},
+        {"[[[1]]]", "a table header must start with a key"},
+        {"[\t#]", "a table header must start with a key"},
+        {"a = [}", "an array element must be a value"},
+        {"a = [1, }", "an array element must be a value"},
+        {"a = {=1}", "an inline table must hold key = value pairs"},
+        {"a = \"\"\"x\\\n  \xc3\xa9\"\"\"", "a non-ASCII character right after a line-ending backslash"},
+    };
+    for (const auto& [toml, expect] : traps) {
+        const std::string err = error_of(kValidCase + "\n" + toml + "\n");
+        BOOST_TEST(err.find("bad.toml:") != std::string::npos, toml << ": " << err);
+        BOOST_TEST(err.find("TOML syntax error: " + expect) != std::string::npos, toml << ": " << err);
+    }
+    // Valid TOML with the same characters in the places TOML allows them passes the screen: the
+    // errors below come from granlub's own checks, after toml++ parsed the file.
+    const std::vector<std::string> fine = {
+        "# caf\xc3\xa9 \xc8\x9a in a comment\nname = \"t\"\ntitle = 'caf\xc3\xa9 [=] {}'",
+        "name = \"t\"\ntitle = \"\"\"one\\\n   line \xc3\xa9\"\"\"",
+        "name = \"t\"\ntitle = \"x\" # [= a = [}",
+    };
+    for (const auto& f : fine) {
+        const std::string text = with("name = \"t\"", f);
+        try {
+            parse_case(text, "ok.toml", Schema::common());
+        } catch (const CaseError& e) {
+            BOOST_FAIL(f << ": " << e.what());
+        }
+    }
+    Case c = parse_case(with("speed = [1.0, 2.0]", "speed = [ # speeds\n  1.0,\n  2.0, # and\n]") +
+                            "\n  [walls.top] # indented header\nfriction = 0.3\n",
+                        "ok.toml", Schema::common());
+    BOOST_TEST(c.points.size() == 2u);
+    BOOST_TEST(c.top.friction == 0.3);
+}

@@ -84,6 +84,9 @@ struct Case {
     // Hash of everything a solver's results depend on: the common sections plus the solver's own
     // section. Results whose hash differs are stale.
     std::string inputs_hash(std::string_view solver_section) const;
+    // The same inputs as "[section] key" -> value text, kept in summary.json so that a stale
+    // result can name the keys that changed.
+    std::map<std::string, std::string> inputs(std::string_view solver_section) const;
 };
 
 // All sections a case may have: the common ones (case, grains, walls, cell, operating,

@@ -54,6 +54,7 @@ struct Provenance {
     std::string case_file;    // path of case.toml
     std::string case_hash;    // hash of the case file's bytes
     std::string inputs_hash;  // Case::inputs_hash(solver): what the results depend on
+    std::map<std::string, std::string> inputs;  // Case::inputs(solver); empty in older results
     nlohmann::json settings;  // the solver's resolved settings
     std::optional<std::uint64_t> seed;
     std::string utc_time;     // ISO 8601, filled at write time when empty
@@ -113,6 +114,8 @@ struct LoadedResult {
 // holds but the summary's inputs_hash differs from `inputs_hash`. Never throws for bad files.
 LoadedResult load_result(const std::filesystem::path& dir, const std::string& inputs_hash,
                          const std::string& case_name = "");
+// The same for `solver`'s results of case `c`; a stale result's reason names the keys that changed.
+LoadedResult load_result(const std::filesystem::path& dir, const Case& c, const std::string& solver);
 ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash,
                            const std::string& case_name = "");
 

@@ -1,0 +1,165 @@
+#include "toml_screen.h"
+
+#include <vector>
+
+namespace granlub {
+
+namespace {
+
+bool ascii_space(char c) { return c == ' ' || c == '\t'; }
+bool key_start(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+           c == '"' || c == '\'';
+}
+// First characters of a TOML value: strings, numbers (incl. inf/nan), booleans, dates, arrays,
+// inline tables.
+bool value_start(char c) {
+    return c == '"' || c == '\'' || (c >= '0' && c <= '9') || c == '+' || c == '-' || c == 't' || c == 'f' ||
+           c == 'i' || c == 'n' || c == '[' || c == '{';
+}
+
+class Screen {
+public:
+    explicit Screen(std::string_view t) : t_(t) {}
+
+    std::optional<ScreenProblem> run() {
+        bool line_start = true;  // at the start of a line, outside any value
+        while (i_ < t_.size()) {
+            const char c = t_[i_];
+            if (c == '#') { skip_comment(); continue; }
+            if (c == '"' || c == '\'') { if (!string()) return problem_; continue; }
+            if (static_cast<unsigned char>(c) >= 0x80)
+                return fail("a non-ASCII character outside a string or comment (put it in quotes)");
+            if (c == '\n') {
+                if (stack_.empty()) line_start = true;
+                ++i_;
+                continue;
+            }
+            if (ascii_space(c) || c == '\r') { ++i_; continue; }
+            if (stack_.empty() && line_start && c == '[') {  // table header: [a] or [[a]]
+                ++i_;
+                if (i_ < t_.size() && t_[i_] == '[') ++i_;
+                if (!next_is(key_start, "a table header must start with a key, e.g. [walls.top]")) return problem_;
+                line_start = false;
+                continue;
+            }
+            line_start = false;
+            if (c == '=') {
+                ++i_;
+                if (!next_is(value_start, "a value must follow '='")) return problem_;
+                continue;
+            }
+            if (c == '[' || c == '{') {  // in value position: an array or an inline table
+                stack_.push_back(c);
+                ++i_;
+                if (!element(c)) return problem_;
+                continue;
+            }
+            if (c == ',' && !stack_.empty()) {
+                ++i_;
+                if (!element(stack_.back())) return problem_;
+                continue;
+            }
+            if ((c == ']' || c == '}') && !stack_.empty()) {
+                stack_.pop_back();
+                ++i_;
+                continue;
+            }
+            ++i_;
+        }
+        return std::nullopt;
+    }
+
+private:
+    std::optional<ScreenProblem> fail(const char* why) {
+        problem_ = ScreenProblem{i_, why};
+        return problem_;
+    }
+
+    void skip_comment() {
+        while (i_ < t_.size() && t_[i_] != '\n') ++i_;
+    }
+
+    // Skips blanks (and, inside arrays, newlines and comments); true when the next character
+    // satisfies `ok` or closes the enclosing bracket.
+    bool next_is(bool (*ok)(char), const char* why, char open = 0) {
+        while (i_ < t_.size()) {
+            const char c = t_[i_];
+            if (ascii_space(c) || c == '\r') { ++i_; continue; }
+            if (open == '[' && c == '\n') { ++i_; continue; }
+            if (open == '[' && c == '#') { skip_comment(); continue; }
+            break;
+        }
+        if (i_ >= t_.size()) return true;  // toml++ reports a premature end cleanly
+        const char c = t_[i_];
+        if (ok(c) || (open == '[' && c == ']') || (open == '{' && c == '}')) return true;
+        if (static_cast<unsigned char>(c) >= 0x80) {
+            fail("a non-ASCII character outside a string or comment (put it in quotes)");
+            return false;
+        }
+        fail(why);
+        return false;
+    }
+
+    bool element(char open) {
+        return open == '[' ? next_is(value_start, "an array element must be a value", '[')
+                           : next_is(key_start, "an inline table must hold key = value pairs", '{');
+    }
+
+    // A string from its opening quote; false with problem_ set when it has a toml++ trap.
+    bool string() {
+        const char q = t_[i_];
+        const bool multi = t_.substr(i_, 3) == std::string_view(q == '"' ? "\"\"\"" : "'''");
+        i_ += multi ? 3 : 1;
+        while (i_ < t_.size()) {
+            const char c = t_[i_];
+            if (!multi && c == '\n') return true;  // unterminated: toml++ says so
+            if (q == '"' && c == '\\') {
+                if (multi && line_ending_backslash()) {
+                    // toml++ skips the whitespace that follows and trips on a non-ASCII character
+                    while (i_ < t_.size() && (ascii_space(t_[i_]) || t_[i_] == '\r' || t_[i_] == '\n')) ++i_;
+                    if (i_ < t_.size() && static_cast<unsigned char>(t_[i_]) >= 0x80) {
+                        fail("a non-ASCII character right after a line-ending backslash (start the line with an "
+                             "ASCII character)");
+                        return false;
+                    }
+                    continue;
+                }
+                i_ += 2;
+                continue;
+            }
+            if (c == q) {
+                if (!multi) { ++i_; return true; }
+                if (t_.substr(i_, 3) == std::string_view(q == '"' ? "\"\"\"" : "'''")) {
+                    i_ += 3;
+                    while (i_ < t_.size() && t_[i_] == q) ++i_;  // up to two quotes may end the content
+                    return true;
+                }
+            }
+            ++i_;
+        }
+        return true;
+    }
+
+    // At a backslash: is it followed by blanks up to the end of the line?
+    bool line_ending_backslash() {
+        std::size_t k = i_ + 1;
+        while (k < t_.size() && (ascii_space(t_[k]) || t_[k] == '\r')) ++k;
+        if (k < t_.size() && t_[k] == '\n') {
+            i_ = k + 1;
+            return true;
+        }
+        return false;
+    }
+
+    std::string_view t_;
+    std::size_t i_ = 0;
+    std::vector<char> stack_;
+    std::optional<ScreenProblem> problem_;
+};
+
+}  // namespace
+
+std::optional<ScreenProblem> screen_toml(std::string_view text) { return Screen(text).run(); }
+
+}  // namespace granlub
