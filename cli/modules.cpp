@@ -45,23 +45,6 @@ const std::vector<SolverModule>& solver_modules() {
     return modules;
 }
 
-Schema full_schema() {
-    Schema s = Schema::common();
-#ifdef GRANLUB_HAVE_CONTINUUM
-    s.add(continuum::section());
-#endif
-#ifdef GRANLUB_HAVE_AUTOMATON
-    s.add(automaton::section());
-#endif
-#ifdef GRANLUB_HAVE_DEM
-    s.add(dem::section());
-#endif
-#ifdef GRANLUB_HAVE_YADE
-    s.add(yade::section());
-#endif
-    return s;
-}
-
 bool have_compare() {
 #ifdef GRANLUB_HAVE_POSTPROC
     return true;

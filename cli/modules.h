@@ -16,8 +16,6 @@ struct SolverModule {
 };
 
 const std::vector<SolverModule>& solver_modules();
-// Common sections plus every compiled module's section.
-Schema full_schema();
 // `granlub compare` if postproc is compiled in; otherwise throws.
 int compare(const Case& c, const RunOptions& o);
 bool have_compare();
