@@ -13,7 +13,7 @@
 
 #include "granlub/error.h"
 #include "granlub/results.h"
-#include "granlub/yade/process.h"
+#include "granlub/process.h"
 
 namespace fs = std::filesystem;
 
@@ -26,7 +26,7 @@ void run_engine(benchmark::State& state, const std::string& engine) {
     const fs::path root = fs::temp_directory_path() / "granlub-bench-yade";
     fs::create_directories(root);
     for (auto _ : state) {
-        const auto r = granlub::yade::run_process(
+        const auto r = granlub::run_process(
             {GRANLUB_COMMAND, engine, case_dir.string(), "--force", "--results", root.string()}, root,
             root / (engine + ".log"), 1800);
         if (r.exit_code != 0) {

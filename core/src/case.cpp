@@ -3,17 +3,23 @@
 #include "granlub/case.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <unordered_set>
+
+#include <sys/stat.h>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include "common_sections.h"
 #include "granlub/error.h"
+#include "granlub/text.h"
 
 namespace granlub {
 
@@ -72,6 +78,7 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 }
 
 std::string suggestion(const std::string& bad, const std::vector<std::string>& names) {
+    if (bad.size() > 64) return "";  // no declared name is that long; spare the quadratic distance
     std::string best;
     std::size_t best_d = 3;
     for (const auto& n : names) {
@@ -93,8 +100,7 @@ std::string node_text(const toml::node& n) {
     else if (auto* f = n.as_floating_point()) os << fmt::format("{}", f->get());  // shortest round-trip
     else n.visit([&](const auto& v) { os << v; });
     std::string t = os.str();
-    if (t.size() > 60) t = t.substr(0, 57) + "...";
-    return t;
+    return clipped(one_line(t));
 }
 
 [[noreturn]] void bad_value(const std::string& file, const std::string& section, const KeySpec& k,
@@ -110,7 +116,9 @@ double number(const std::string& file, const std::string& section, const KeySpec
     else bad_value(file, section, k, n, fmt::format("expected {}", k.type_name()));
     if (!std::isfinite(v)) bad_value(file, section, k, n, "not a finite number");
     if (!k.range.contains(v)) bad_value(file, section, k, n, "out of range");
-    return v;
+    if (v != 0 && std::fpclassify(v) == FP_SUBNORMAL)
+        bad_value(file, section, k, n, "a subnormal number (below 2.2e-308 in magnitude) loses precision");
+    return v == 0 ? 0.0 : v;  // -0 is 0: ids and comparisons must not tell them apart
 }
 
 Value parse_value(const std::string& file, const std::string& section, const KeySpec& k, const toml::node& n) {
@@ -119,10 +127,15 @@ Value parse_value(const std::string& file, const std::string& section, const Key
             if (k.sweepable) {
                 if (auto* arr = n.as_array()) {
                     if (arr->empty()) bad_value(file, section, k, n, "empty list: a sweep needs at least one value");
+                    if (arr->size() > kMaxOperatingPoints)
+                        bad_value(file, section, k, n,
+                                  fmt::format("a list of {} values; a case may have at most {} operating points",
+                                              arr->size(), kMaxOperatingPoints));
                     std::vector<double> out;
+                    std::unordered_set<double> seen;
                     for (const auto& e : *arr) {
-                        double v = number(file, section, k, e);
-                        if (std::find(out.begin(), out.end(), v) != out.end())
+                        const double v = number(file, section, k, e);
+                        if (!seen.insert(v).second)
                             bad_value(file, section, k, e, fmt::format("{} appears twice in the sweep", v));
                         out.push_back(v);
                     }
@@ -171,7 +184,8 @@ void read_section(const std::string& file, const SectionSpec& spec, const toml::
                 std::vector<std::string> all = names;
                 all.insert(all.end(), spec.subtables.begin(), spec.subtables.end());
                 throw CaseError(fmt::format("{}: [{}] {}: unknown key; {}(allowed: {})", where(file, node.source()),
-                                            spec.name, name, suggestion(name, all), fmt::join(all, ", ")));
+                                            spec.name, clipped(one_line(name)), suggestion(name, all),
+                                            fmt::join(all, ", ")));
             }
             Value v = parse_value(file, spec.name, *k, node);
             if (k->sweepable && node.is_array()) given_as_list.insert(name);
@@ -202,6 +216,16 @@ std::string id_number(double v, bool force_decimal) {
 
 // ---------------------------------------------------------------------------------------------
 Case parse_case(std::string_view text, const std::string& source, const Schema& schema_in) {
+    if (text.size() > kMaxCaseFileBytes)
+        throw CaseError(fmt::format("{}: {} bytes; a case file may have at most {} bytes (list sweeps of at most "
+                                    "{} operating points)",
+                                    source, text.size(), kMaxCaseFileBytes, kMaxOperatingPoints));
+    // toml++ 3.3 reaches unreachable code on some malformed UTF-8 (its issue 295): never hand it any.
+    if (const auto bad = invalid_utf8_offset(text)) {
+        const LineColumn lc = line_column(text, *bad);
+        throw CaseError(fmt::format("{}:{}:{}: byte 0x{:02x} is not valid UTF-8 (a case file is UTF-8 text)", source,
+                                    lc.line, lc.column, static_cast<unsigned char>(text[*bad])));
+    }
     auto owned = std::make_shared<const Schema>(schema_in);
     const Schema& schema = *owned;
     toml::table root;
@@ -223,8 +247,8 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
     for (const auto& [key, node] : root) {
         const std::string name(key.str());
         if (std::find(known.begin(), known.end(), name) == known.end())
-            throw CaseError(fmt::format("{}: [{}]: unknown section; {}(allowed: {})", where(source, node.source()), name,
-                                        suggestion(name, known), fmt::join(known, ", ")));
+            throw CaseError(fmt::format("{}: [{}]: unknown section; {}(allowed: {})", where(source, node.source()),
+                                        clipped(one_line(name)), suggestion(name, known), fmt::join(known, ", ")));
         if (!node.is_table())
             throw CaseError(fmt::format("{}: {} = {}: '{}' is a section and must be a table, e.g. [{}]",
                                         where(source, node.source()), name, node_text(node), name, name));
@@ -260,9 +284,25 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
 
     // Resolve the common sections into typed structs.
     const Section& cs = c.sections.at("case");
-    c.name = cs.string("name").empty() ? c.dir.filename().string() : cs.string("name");
-    if (c.name.empty()) c.name = "case";
+    // The name reaches folder names, decks and data files: a safe character set, checked here. A
+    // name taken from the directory is made safe instead (the user did not write it).
+    if (cs.string("name").empty()) {
+        c.name = sanitized_name(c.dir.filename().string());
+        if (c.name.empty()) c.name = "case";
+    } else {
+        c.name = cs.string("name");
+        if (const std::string why = name_problem(c.name); !why.empty())
+            cs.fail("name", fmt::format("not a usable case name: {} (allowed: 1 to {} of {}, not starting with "
+                                        "'.' or '-')",
+                                        why, kMaxNameLength, kNameCharacters));
+    }
     c.title = cs.string("title");
+    if (const auto at = control_character_offset(c.title))
+        cs.fail("title", fmt::format("holds a control character (a line break, tab, ...) at byte {}; a title is "
+                                     "one line of text",
+                                     *at));
+    if (c.title.size() > kMaxTitleBytes)
+        cs.fail("title", fmt::format("{} bytes; a title has at most {}", c.title.size(), kMaxTitleBytes));
 
     const Section& g = c.sections.at("grains");
     c.grains = {g.real("diameter"), g.real("density"), g.real("restitution"),
@@ -306,6 +346,15 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
                 op.fail("solid_fraction", fmt::format("every mean solid fraction must be below [cell] "
                                                       "max_solid_fraction = {}", c.cell.max_solid_fraction));
 
+    if (op.has("roughness"))
+        for (const char* side : {"bottom", "top"}) {
+            const Section& ws = c.sections.at(fmt::format("walls.{}", side));
+            if (ws.has("roughness"))
+                ws.fail("roughness", fmt::format("[operating] roughness = {} sets both walls' roughness at every "
+                                                 "point; give the roughness in one place only",
+                                                 clipped(value_text(op.values().at("roughness")))));
+        }
+
     for (const auto& spec : schema.sections())
         if (spec.validate) spec.validate(c.sections.at(spec.name));
 
@@ -315,6 +364,16 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
     const auto& nus = op.has("solid_fraction") ? op.list("solid_fraction") : none;
     const auto& ps = op.has("normal_stress") ? op.list("normal_stress") : none;
     const auto& rs = op.has("roughness") ? op.list("roughness") : none;
+    // Bounded before expanding: a product of long lists would exhaust memory (each factor <= the bound).
+    std::size_t count = 1;
+    for (const auto* l : {&speeds, &nus, &ps, &rs}) {
+        count *= l->size();
+        if (count > kMaxOperatingPoints)
+            op.fail("speed", fmt::format("the sweep has {} x {} x {} x {} operating points (speed x solid_fraction x "
+                                         "normal_stress x roughness); at most {} are allowed",
+                                         speeds.size(), nus.size(), ps.size(), rs.size(), kMaxOperatingPoints));
+    }
+    c.points.reserve(count);
     for (double U : speeds)
         for (double nu : nus)
             for (double P : ps)
@@ -337,21 +396,46 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
     return c;
 }
 
+namespace {
+// Why `file` cannot be read as a case file, or "" when it is a readable regular file. Checked
+// before opening: opening a FIFO would block, a directory reads as empty.
+std::string unreadable_case_file(const std::filesystem::path& file, bool from_directory) {
+    namespace fs = std::filesystem;
+    const std::string hint = "(a case is a directory holding case.toml, e.g. cases/sawyer2001)";
+    struct stat lst {};
+    if (::lstat(file.c_str(), &lst) != 0) {
+        if (errno == ENOENT)
+            return from_directory ? fmt::format("{}: no case.toml in this directory {}", file.parent_path().string(), hint)
+                                  : fmt::format("{}: no such case directory or file {}", file.string(), hint);
+        return fmt::format("{}: cannot be examined: {}", file.string(), std::strerror(errno));
+    }
+    struct stat st {};
+    if (::stat(file.c_str(), &st) != 0) {
+        if (errno == ELOOP) return fmt::format("{}: a loop of symbolic links", file.string());
+        std::error_code ec;
+        const auto target = fs::read_symlink(file, ec);
+        return fmt::format("{}: a symbolic link to {}, which {}", file.string(), ec ? "?" : target.string(),
+                           errno == ENOENT ? "does not exist" : std::strerror(errno));
+    }
+    if (S_ISDIR(st.st_mode)) return fmt::format("{}: a directory, not a case file {}", file.string(), hint);
+    if (!S_ISREG(st.st_mode))
+        return fmt::format("{}: not a regular file (a FIFO, socket or device); a case file is a TOML text file",
+                           file.string());
+    if (static_cast<std::uintmax_t>(st.st_size) > kMaxCaseFileBytes)
+        return fmt::format("{}: {} bytes; a case file may have at most {} bytes", file.string(), st.st_size,
+                           kMaxCaseFileBytes);
+    return "";
+}
+}  // namespace
+
 Case load_case(const std::filesystem::path& dir_or_file, const Schema& schema) {
     std::filesystem::path file = dir_or_file;
     std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) file /= "case.toml";
-    if (!std::filesystem::exists(file, ec)) {
-        if (std::filesystem::is_directory(dir_or_file, ec))
-            throw CaseError(fmt::format("{}: no case.toml in this directory (a case is a directory holding "
-                                        "case.toml, e.g. cases/sawyer2001)",
-                                        dir_or_file.string()));
-        throw CaseError(fmt::format("{}: no such case directory or file (a case is a directory holding "
-                                    "case.toml, e.g. cases/sawyer2001)",
-                                    dir_or_file.string()));
-    }
+    const bool from_directory = std::filesystem::is_directory(file, ec);
+    if (from_directory) file /= "case.toml";
+    if (const std::string why = unreadable_case_file(file, from_directory); !why.empty()) throw CaseError(why);
     std::ifstream in(file, std::ios::binary);
-    if (!in) throw CaseError(fmt::format("{}: cannot be read", file.string()));
+    if (!in) throw CaseError(fmt::format("{}: cannot be read: {}", file.string(), std::strerror(errno)));
     std::stringstream ss;
     ss << in.rdbuf();
     return parse_case(ss.str(), file.string(), schema);

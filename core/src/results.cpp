@@ -260,7 +260,7 @@ Summary read_summary(const std::filesystem::path& path) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(slurp(path));
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e999
         throw Error(fmt::format("{}: not valid JSON: {}", path.string(), e.what()));
     }
     return summary_from_json(j, path.string());
@@ -298,22 +298,83 @@ void write_result(const std::filesystem::path& dir, const Profile& profile, cons
     write_file_atomic(dir / "summary.json", summary_json(summary).dump(2) + "\n");
 }
 
-ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash) {
+namespace {
+// Content checks beyond parsing (see load_result); "" when the result is sound.
+std::string result_problem(const std::filesystem::path& dir, const Summary& s, const Profile& p,
+                           const std::string& case_name) {
+    const auto sp = (dir / "summary.json").string();
+    const auto pp = (dir / "profile.csv").string();
+    const std::string solver = dir.parent_path().filename().string();
+    const std::string point = dir.filename().string();
+    if (s.solver != solver)
+        return fmt::format("{}: says solver \"{}\" but lies in the \"{}\" results folder", sp, s.solver, solver);
+    if (s.point != point) return fmt::format("{}: says point \"{}\" but lies in the \"{}\" folder", sp, s.point, point);
+    if (!case_name.empty() && s.case_name != case_name)
+        return fmt::format("{}: says case \"{}\", this case is \"{}\"", sp, s.case_name, case_name);
+    for (const auto& [name, sc] : s.outputs) {
+        if (!std::isfinite(sc.value)) return fmt::format("{}: output \"{}\" is not a finite number", sp, name);
+        if (sc.stderr_ && !(*sc.stderr_ >= 0 && std::isfinite(*sc.stderr_)))
+            return fmt::format("{}: output \"{}\" has stderr {} (allowed: finite, >= 0)", sp, name, *sc.stderr_);
+    }
+    if (!(s.value("max_solid_fraction") > 0))
+        return fmt::format("{}: max_solid_fraction = {} (allowed: > 0)", sp, s.value("max_solid_fraction"));
+    const auto& y = p.column("y_over_H");
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        if (!(y[i] >= -1e-9 && y[i] <= 1 + 1e-9))
+            return fmt::format("{}: row {}: y_over_H = {} (allowed: [0, 1])", pp, i + 1, y[i]);
+        if (i > 0 && !(y[i] > y[i - 1]))
+            return fmt::format("{}: row {}: y_over_H = {} does not increase (previous {})", pp, i + 1, y[i], y[i - 1]);
+    }
+    for (std::size_t k = 0; k < p.names.size(); ++k)
+        for (std::size_t i = 0; i < p.columns[k].size(); ++i) {
+            const double v = p.columns[k][i];
+            if (!std::isfinite(v)) return fmt::format("{}: row {}: {} is not a finite number", pp, i + 1, p.names[k]);
+            if (p.names[k].ends_with("_stderr") && v < 0)
+                return fmt::format("{}: row {}: {} = {} (allowed: >= 0)", pp, i + 1, p.names[k], v);
+        }
+    return "";
+}
+}  // namespace
+
+LoadedResult load_result(const std::filesystem::path& dir, const std::string& inputs_hash,
+                         const std::string& case_name) {
     std::error_code ec;
     const auto sp = dir / "summary.json";
     const auto pp = dir / "profile.csv";
-    if (!std::filesystem::exists(sp, ec)) return {ResultState::Missing, sp.string() + " does not exist"};
-    if (!std::filesystem::exists(pp, ec)) return {ResultState::Corrupt, pp.string() + " does not exist"};
+    LoadedResult r;
+    if (!std::filesystem::exists(sp, ec)) {
+        r.status = {ResultState::Missing, sp.string() + " does not exist"};
+        return r;
+    }
+    if (!std::filesystem::is_regular_file(sp, ec) || !std::filesystem::is_regular_file(pp, ec)) {
+        r.status = {ResultState::Corrupt, fmt::format("{} is not a regular file",
+                                                      std::filesystem::is_regular_file(sp, ec) ? pp.string() : sp.string())};
+        return r;
+    }
     try {
         Summary s = read_summary(sp);
-        read_profile(pp);
-        if (s.provenance.inputs_hash != inputs_hash)
-            return {ResultState::Stale, fmt::format("{}: computed for inputs {}, the case now gives {}", sp.string(),
-                                                    s.provenance.inputs_hash, inputs_hash)};
-    } catch (const Error& e) {
-        return {ResultState::Corrupt, e.what()};
+        Profile p = read_profile(pp);
+        if (std::string why = result_problem(dir, s, p, case_name); !why.empty()) {
+            r.status = {ResultState::Corrupt, why};
+            return r;
+        }
+        if (s.provenance.inputs_hash != inputs_hash) {
+            r.status = {ResultState::Stale, fmt::format("{}: computed for inputs {}, the case now gives {}",
+                                                        sp.string(), s.provenance.inputs_hash, inputs_hash)};
+            return r;
+        }
+        r.summary = std::move(s);
+        r.profile = std::move(p);
+        r.status = {ResultState::Complete, ""};
+    } catch (const std::exception& e) {  // anything unreadable is corrupt, never fatal to a sweep
+        r.status = {ResultState::Corrupt, e.what()};
     }
-    return {ResultState::Complete, ""};
+    return r;
+}
+
+ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash,
+                           const std::string& case_name) {
+    return load_result(dir, inputs_hash, case_name).status;
 }
 
 }  // namespace granlub

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/text.h"
 
 namespace granlub {
 
@@ -127,7 +128,7 @@ std::string value_text(const Value& v) {
         std::string operator()(double d) const { return fmt::format("{}", d); }
         std::string operator()(std::int64_t i) const { return fmt::format("{}", i); }
         std::string operator()(bool b) const { return b ? "true" : "false"; }
-        std::string operator()(const std::string& s) const { return fmt::format("\"{}\"", s); }
+        std::string operator()(const std::string& s) const { return fmt::format("\"{}\"", one_line(s)); }
         std::string operator()(const std::vector<double>& l) const {
             if (l.size() == 1) return fmt::format("{}", l[0]);
             return fmt::format("[{}]", fmt::join(l, ", "));
@@ -210,7 +211,7 @@ std::optional<SourcePos> Section::where(const std::string& key) const {
 void Section::fail(const std::string& key, const std::string& why) const {
     std::string place = file_;
     if (auto p = where(key)) place += fmt::format(":{}:{}", p->line, p->column);
-    std::string value = has(key) ? value_text(values_.at(key)) : "(not set)";
+    std::string value = has(key) ? clipped(value_text(values_.at(key))) : "(not set)";
     std::string def = is_default(key) ? " (default)" : "";
     throw CaseError(fmt::format("{}: [{}] {} = {}{}: {}", place, name(), key, value, def, why));
 }

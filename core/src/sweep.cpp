@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <new>
 
 #include <fmt/format.h>
 
@@ -32,9 +33,10 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
     int failed = 0;
     for (const OperatingPoint* p : points) {
         const auto dir = result_dir(root, solver, p->id);
-        const ResultStatus st = result_status(dir, hash);
+        const LoadedResult prev = load_result(dir, hash, c.name);  // compare's definition of complete too
+        const ResultStatus& st = prev.status;
         if (st.state == ResultState::Complete && !o.force) {
-            const std::string differs = run_options_differ(read_summary(dir / "summary.json"), o);
+            const std::string differs = run_options_differ(*prev.summary, o);
             if (differs.empty()) {
                 fmt::print("{} {:<14} complete, skipped (--force recomputes)\n", solver, p->id);
                 std::fflush(stdout);
@@ -43,16 +45,27 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
             fmt::print("{} {:<14} complete, but {}: recomputing\n", solver, p->id, differs);
         }
         if (st.state == ResultState::Stale) fmt::print("{} {:<14} stale results, recomputing\n", solver, p->id);
-        std::filesystem::create_directories(dir);
+        if (st.state == ResultState::Corrupt)
+            fmt::print("{} {:<14} corrupt results, recomputing: {}\n", solver, p->id, st.reason);
         const auto t0 = std::chrono::steady_clock::now();
         try {
+            // The completion marker goes first: a run killed from here on leaves no summary beside
+            // its new deck and logs, so the next run recomputes instead of skipping.
+            std::filesystem::create_directories(dir);
+            std::filesystem::remove(dir / "summary.json");
             PointResult r = solve(*p, dir);
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             if (!r.summary.run.contains("wall_clock_s")) r.summary.run["wall_clock_s"] = secs;
             r.summary.run["full"] = o.full;
             write_result(dir, r.profile, r.summary);
             fmt::print("{} {:<14} {}  ({:.2f} s)\n", solver, p->id, r.line, secs);
-        } catch (const Error& e) {
+        } catch (const CaseError&) {
+            throw;  // bad input fails the command (exit 2), not one point
+        } catch (const std::bad_alloc&) {
+            ++failed;
+            fmt::print(stderr, "{} {:<14} FAILED: out of memory (reduce the case's sizes: cells, grains, steps)\n",
+                       solver, p->id);
+        } catch (const std::exception& e) {  // Error, and filesystem errors: the sweep goes on
             ++failed;
             fmt::print(stderr, "{} {:<14} FAILED: {}\n", solver, p->id, e.what());
         }

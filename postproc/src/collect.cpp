@@ -18,43 +18,6 @@ std::pair<const char*, bool> source_column(const std::string& quantity) {
     throw Error("internal: unknown profile quantity '" + quantity + "'");
 }
 
-// Checks core does not make: the file belongs here and can be plotted. Empty = fine.
-std::string check_run(const Case& c, const Run& r) {
-    const auto sp = (r.dir / "summary.json").string();
-    const auto pp = (r.dir / "profile.csv").string();
-    const Summary& s = *r.summary;
-    if (s.solver != r.solver)
-        return fmt::format("{}: says solver \"{}\" but lies in the \"{}\" results folder", sp, s.solver, r.solver);
-    if (s.point != r.point->id)
-        return fmt::format("{}: says point \"{}\" but lies in the \"{}\" folder", sp, s.point, r.point->id);
-    if (s.case_name != c.name) return fmt::format("{}: says case \"{}\", this case is \"{}\"", sp, s.case_name, c.name);
-    for (const auto& [name, sc] : s.outputs) {
-        if (!std::isfinite(sc.value)) return fmt::format("{}: output \"{}\" is not a finite number", sp, name);
-        if (sc.stderr_ && !(*sc.stderr_ >= 0 && std::isfinite(*sc.stderr_)))
-            return fmt::format("{}: output \"{}\" has stderr {} (allowed: finite, >= 0)", sp, name, *sc.stderr_);
-    }
-    if (!(s.value("max_solid_fraction") > 0))
-        return fmt::format("{}: max_solid_fraction = {} (allowed: > 0)", sp, s.value("max_solid_fraction"));
-    const Profile& p = *r.profile;
-    if (p.rows() < 2) return fmt::format("{}: {} station(s) across the gap (need at least 2)", pp, p.rows());
-    const auto& y = p.column("y_over_H");
-    for (std::size_t i = 0; i < y.size(); ++i) {
-        if (!(y[i] >= -1e-9 && y[i] <= 1 + 1e-9))
-            return fmt::format("{}: row {}: y_over_H = {} (allowed: [0, 1])", pp, i + 1, y[i]);
-        if (i > 0 && !(y[i] > y[i - 1]))
-            return fmt::format("{}: row {}: y_over_H = {} does not increase (previous {})", pp, i + 1, y[i], y[i - 1]);
-    }
-    for (std::size_t k = 0; k < p.names.size(); ++k) {
-        for (std::size_t i = 0; i < p.columns[k].size(); ++i) {
-            const double v = p.columns[k][i];
-            if (!std::isfinite(v)) return fmt::format("{}: row {}: {} is not a finite number", pp, i + 1, p.names[k]);
-            if (p.names[k].ends_with("_stderr") && v < 0)
-                return fmt::format("{}: row {}: {} = {} (allowed: >= 0)", pp, i + 1, p.names[k], v);
-        }
-    }
-    return {};
-}
-
 }  // namespace
 
 std::vector<double> Run::column(const std::string& quantity) const {
@@ -108,16 +71,10 @@ Run load_run(const Case& c, const std::filesystem::path& root, const std::string
     r.solver = solver;
     r.point = &p;
     r.dir = result_dir(root, solver, p.id);
-    r.status = result_status(r.dir, c.inputs_hash(solver));
-    if (r.status.state != ResultState::Complete) return r;
-    try {
-        r.summary = read_summary(r.dir / "summary.json");
-        r.profile = read_profile(r.dir / "profile.csv");
-        if (auto why = check_run(c, r); !why.empty()) r.status = {ResultState::Corrupt, why};
-    } catch (const Error& e) {
-        r.status = {ResultState::Corrupt, e.what()};
-    }
-    if (r.status.state != ResultState::Complete) r.profile.reset(), r.summary.reset();
+    LoadedResult loaded = load_result(r.dir, c.inputs_hash(solver), c.name);  // the solvers' definition too
+    r.status = std::move(loaded.status);
+    r.summary = std::move(loaded.summary);
+    r.profile = std::move(loaded.profile);
     return r;
 }
 

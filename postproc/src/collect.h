@@ -1,6 +1,6 @@
 // Finding and loading every solver's results for the case's operating points. Reads result
-// files only (core/results.h); checks beyond core's result_status (solver/point/case names,
-// station order, a positive max_solid_fraction) so that a bad file is named, not plotted.
+// files only, through core's load_result: the same definition of "complete" the solvers use, so
+// a result compare calls corrupt is one the next solver run recomputes.
 #pragma once
 #include <filesystem>
 #include <map>

@@ -50,6 +50,12 @@ Summary small_summary(const Case& c, std::uint64_t seed = 7) {
     return s;
 }
 
+fs::path point_dir(const fs::path& root, const Case& c) {
+    const fs::path d = result_dir(root, "toy", c.points[0].id);
+    fs::create_directories(d);
+    return d;
+}
+
 bool tmp_files_left(const fs::path& dir) {
     for (const auto& e : fs::directory_iterator(dir))
         if (e.path().filename().string().find(".tmp.") != std::string::npos) return true;
@@ -111,18 +117,19 @@ BOOST_AUTO_TEST_CASE(failure_mid_write_leaves_nothing_complete_looking) {
     TmpDir t("midwrite");
     const Case c = test_case();
     const std::string hash = c.inputs_hash("toy");
-    write_result(t.path, small_profile(), small_summary(c));
-    BOOST_TEST((result_status(t.path, hash).state == ResultState::Complete));
+    const fs::path dir = point_dir(t.path, c);  // <root>/<solver>/<point>, as the contract has it
+    write_result(dir, small_profile(), small_summary(c));
+    BOOST_TEST((result_status(dir, hash).state == ResultState::Complete));
     // Make the second file impossible to put in place (a non-empty directory where summary.json
     // goes): the profile is rewritten, the summary rename fails.
-    fs::remove(t.path / "summary.json");
-    fs::create_directories(t.path / "summary.json" / "blocker");
-    BOOST_CHECK_THROW(write_result(t.path, small_profile(), small_summary(c)), Error);
-    BOOST_TEST((result_status(t.path, hash).state != ResultState::Complete));
-    BOOST_TEST(!tmp_files_left(t.path));
+    fs::remove(dir / "summary.json");
+    fs::create_directories(dir / "summary.json" / "blocker");
+    BOOST_CHECK_THROW(write_result(dir, small_profile(), small_summary(c)), Error);
+    BOOST_TEST((result_status(dir, hash).state != ResultState::Complete));
+    BOOST_TEST(!tmp_files_left(dir));
     // A failed write of a single file leaves neither the target nor a temp file.
-    BOOST_CHECK_THROW(write_file_atomic(t.path / "summary.json", "x"), Error);
-    BOOST_TEST(!tmp_files_left(t.path));
+    BOOST_CHECK_THROW(write_file_atomic(dir / "summary.json", "x"), Error);
+    BOOST_TEST(!tmp_files_left(dir));
 }
 
 BOOST_AUTO_TEST_CASE(atomic_write_replaces_whole_file) {
@@ -139,25 +146,26 @@ BOOST_AUTO_TEST_CASE(resume_detection) {
     TmpDir t("resume");
     const Case c = test_case();
     const std::string hash = c.inputs_hash("toy");
-    BOOST_TEST((result_status(t.path, hash).state == ResultState::Missing));
-    write_result(t.path, small_profile(), small_summary(c));
-    BOOST_TEST((result_status(t.path, hash).state == ResultState::Complete));
+    const fs::path dir = point_dir(t.path, c);  // <root>/<solver>/<point>, as the contract has it
+    BOOST_TEST((result_status(dir, hash).state == ResultState::Missing));
+    write_result(dir, small_profile(), small_summary(c));
+    BOOST_TEST((result_status(dir, hash).state == ResultState::Complete));
     // A changed case makes the result stale.
     const Case changed =
         parse_case(granlub::test::with("density = 2500.0", "density = 2600.0"), "t.toml", Schema::common());
-    const auto stale = result_status(t.path, changed.inputs_hash("toy"));
+    const auto stale = result_status(dir, changed.inputs_hash("toy"));
     BOOST_TEST((stale.state == ResultState::Stale));
     BOOST_TEST(stale.reason.find("computed for inputs") != std::string::npos);
     // Truncated JSON, a broken profile or a missing profile are corrupt, not complete.
-    { std::ofstream(t.path / "summary.json") << "{\"format\": \"granlub-summary-1\", "; }
-    BOOST_TEST((result_status(t.path, hash).state == ResultState::Corrupt));
-    write_result(t.path, small_profile(), small_summary(c));
-    { std::ofstream(t.path / "profile.csv") << "y_over_H,u_over_U\n0,abc\n"; }
-    const auto bad = result_status(t.path, hash);
+    { std::ofstream(dir / "summary.json") << "{\"format\": \"granlub-summary-1\", "; }
+    BOOST_TEST((result_status(dir, hash).state == ResultState::Corrupt));
+    write_result(dir, small_profile(), small_summary(c));
+    { std::ofstream(dir / "profile.csv") << "y_over_H,u_over_U\n0,abc\n"; }
+    const auto bad = result_status(dir, hash);
     BOOST_TEST((bad.state == ResultState::Corrupt));
     BOOST_TEST(bad.reason.find("'abc' is not a number") != std::string::npos, bad.reason);
-    fs::remove(t.path / "profile.csv");
-    BOOST_TEST((result_status(t.path, hash).state == ResultState::Corrupt));
+    fs::remove(dir / "profile.csv");
+    BOOST_TEST((result_status(dir, hash).state == ResultState::Corrupt));
 }
 
 BOOST_AUTO_TEST_CASE(malformed_files_give_clear_errors) {
@@ -172,4 +180,47 @@ BOOST_AUTO_TEST_CASE(malformed_files_give_clear_errors) {
     BOOST_CHECK_EXCEPTION(summary_from_json(nlohmann::json{{"format", "other"}}, "s.json"), Error, [](const Error& e) {
         return std::string(e.what()).find("not a granlub summary") != std::string::npos;
     });
+}
+
+// Issue: one definition of "complete" for the solvers and compare, and a corrupt file never
+// aborts the reader (a 1e999 used to escape as json out_of_range).
+BOOST_AUTO_TEST_CASE(unsound_results_are_corrupt_not_fatal) {
+    TmpDir t("unsound");
+    const Case c = test_case();
+    const std::string hash = c.inputs_hash("toy");
+    const fs::path dir = point_dir(t.path, c);
+    auto corrupt_after = [&](const char* what, auto&& spoil, const std::string& expect) {
+        write_result(dir, small_profile(), small_summary(c));
+        BOOST_TEST_REQUIRE((result_status(dir, hash, c.name).state == ResultState::Complete));
+        spoil();
+        const LoadedResult r = load_result(dir, hash, c.name);
+        BOOST_TEST((r.status.state == ResultState::Corrupt), what);
+        BOOST_TEST(r.status.reason.find(expect) != std::string::npos, what << ": " << r.status.reason);
+        BOOST_TEST(!r.summary.has_value());
+    };
+    auto replace_in = [&](const fs::path& f, const std::string& from, const std::string& to) {
+        std::ifstream in(f);
+        std::string text((std::istreambuf_iterator<char>(in)), {});
+        const auto pos = text.find(from);
+        BOOST_TEST_REQUIRE(pos != std::string::npos, f.string() << " lacks " << from);
+        text.replace(pos, from.size(), to);
+        std::ofstream(f) << text;
+    };
+    corrupt_after("1e999 in the summary", [&] { replace_in(dir / "summary.json", "1000.0", "1e999"); },
+                  "summary.json: not valid JSON");
+    corrupt_after("NaN in the profile", [&] { replace_in(dir / "profile.csv", "0.55", "nan"); },
+                  "solid_fraction is not a finite number");
+    corrupt_after("negative stderr column", [&] { replace_in(dir / "profile.csv", ",0.01\n", ",-0.01\n"); },
+                  "u_over_U_stderr = -0.01");
+    corrupt_after("y not increasing", [&] { replace_in(dir / "profile.csv", "\n0.5,", "\n1.5,"); },
+                  "y_over_H = 1.5");
+    corrupt_after("another point's summary", [&] { replace_in(dir / "summary.json", "\"point\": \"U1.0\"", "\"point\": \"U9\""); },
+                  "says point \"U9\"");
+    corrupt_after("another case", [&] { replace_in(dir / "summary.json", "\"case\": \"t\"", "\"case\": \"u\""); },
+                  "says case \"u\"");
+    corrupt_after("summary is a directory", [&] {
+        fs::remove(dir / "summary.json");
+        fs::create_directories(dir / "summary.json");
+    }, "not a regular file");
+    fs::remove_all(dir / "summary.json");
 }

@@ -5,15 +5,13 @@
 #define BOOST_TEST_MODULE liggghts_collisions
 #include <boost/test/unit_test.hpp>
 
-#include <unistd.h>
-
-#include <array>
-#include <cstdio>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <regex>
 #include <string>
+
+#include "run_driver.h"
 
 namespace fs = std::filesystem;
 
@@ -21,40 +19,11 @@ namespace {
 
 const std::string kDeck = std::string(GRANLUB_SOURCE_DIR) + "/plugins/liggghts/examples/in.collide";
 
-// Runs the driver (on `np` ranks) in a scratch folder; returns stdout+stderr.
 std::string run_driver(const std::string& deck, const std::string& vars, int np = 1) {
-    const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_collide";
-    fs::create_directories(dir);
-    std::string cmd = "cd '" + dir.string() + "' && ";
-    if (np > 1) {
-        cmd += "mpirun -np " + std::to_string(np) + " --oversubscribe ";
-        if (::geteuid() == 0) cmd += "--allow-run-as-root ";
-    }
-    cmd += std::string(GRANLUB_LIGGGHTS_DRIVER_PATH) + " -in '" + deck + "' -log none -echo none " + vars + " 2>&1";
-    std::string out;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    BOOST_TEST_REQUIRE(p != nullptr);
-    std::array<char, 4096> buf;
-    while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-    ::pclose(p);
-    return out;
+    return granlub::test::run_driver(deck, vars, np).output;
 }
 
-// name=value pairs of the RESULT lines
-std::map<std::string, double> results(const std::string& out) {
-    std::map<std::string, double> r;
-    static const std::regex kv(R"(([a-z]+[0-9]+)=([-+0-9.eE]+))");
-    std::istringstream ss(out);
-    std::string line;
-    while (std::getline(ss, line)) {
-        if (line.rfind("RESULT", 0) != 0) continue;
-        const auto cut = line.find("expect");
-        const std::string measured = line.substr(0, cut);
-        for (auto it = std::sregex_iterator(measured.begin(), measured.end(), kv); it != std::sregex_iterator(); ++it)
-            r[(*it)[1].str()] = std::stod((*it)[2].str());
-    }
-    return r;
-}
+using granlub::test::results;
 
 void close(double a, double b) { BOOST_TEST(std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b))); }
 
@@ -117,10 +86,7 @@ BOOST_AUTO_TEST_CASE(separate_on_removes_overlaps_exactly) {
 BOOST_AUTO_TEST_CASE(bad_decks_give_clear_errors) {
     const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_collide";
     fs::create_directories(dir);
-    std::ifstream in(kDeck);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string deck = ss.str();
+    const std::string deck = granlub::test::read_text(kDeck);
     {  // unknown normal model
         std::ofstream(dir / "in.unknown") << std::regex_replace(deck, std::regex("model impulse"), "model impulsive");
         const std::string out = run_driver((dir / "in.unknown").string(), "");

@@ -11,7 +11,7 @@
 #include "granlub/error.h"
 #include "granlub/results.h"
 #include "granlub/yade/driver.h"
-#include "granlub/yade/process.h"
+#include "granlub/process.h"
 #include "granlub/yade/settings.h"
 #include "yade_installed.h"
 #include "yade_test_case.h"

@@ -5,7 +5,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/yade/process.h"
+#include "granlub/process.h"
 
 namespace granlub::yade::test {
 

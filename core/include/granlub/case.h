@@ -56,6 +56,11 @@ struct OperatingPoint {
     Wall top;
 };
 
+// Bounds on what a case may ask for, so that a typo cannot exhaust memory or overflow a count.
+inline constexpr std::size_t kMaxOperatingPoints = 10000;
+inline constexpr std::size_t kMaxCaseFileBytes = 1u << 20;
+inline constexpr std::size_t kMaxTitleBytes = 200;
+
 class Schema;
 
 struct Case {

@@ -100,8 +100,21 @@ struct ResultStatus {
     ResultState state = ResultState::Missing;
     std::string reason;
 };
-// "Complete and current": both files parse and summary.inputs_hash == inputs_hash.
-ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash);
+struct LoadedResult {
+    ResultStatus status;
+    std::optional<Summary> summary;  // present when Complete
+    std::optional<Profile> profile;
+};
+// The one definition of "complete and current", used by the solvers (skip or recompute) and by
+// `granlub compare` (plot or name as corrupt) alike. Corrupt: a file is missing or unreadable, a
+// number is not finite, a standard error is negative, y_over_H is not increasing within [0, 1],
+// max_solid_fraction is not positive, or the summary names another solver, point (both taken
+// from the folder, <root>/<solver>/<point>) or case (when `case_name` is given). Stale: all that
+// holds but the summary's inputs_hash differs from `inputs_hash`. Never throws for bad files.
+LoadedResult load_result(const std::filesystem::path& dir, const std::string& inputs_hash,
+                         const std::string& case_name = "");
+ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash,
+                           const std::string& case_name = "");
 
 std::string version();   // project version + git describe --dirty, taken at build time
 std::string utc_now();   // ISO 8601

@@ -1,8 +1,9 @@
 // Registers granlub's contact models with Debian's unmodified libliggghts.so.3 (LIGGGHTS 3.8.0):
 // the model names go into ContactModels::Factory, and one pair-style and one wall creator per
 // combination listed in models/style_contact_model_user.whitelist go into the pair and wall
-// factories under ("gran", GranStyle<...>::HASHCODE). Recipe and pitfalls:
-// ../shared/docs/liggghts-plugin.md, section 1.
+// factories under ("gran", GranStyle<...>::HASHCODE); the other combinations with our models get
+// creators that stop with a clear error (unsupported.cpp). Recipe and pitfalls: README.md of this
+// plugin ("Building and using the plugin").
 #include <mpi.h>
 
 // LIGGGHTS 3.8.0 ships fix_insert_stream_predefined.h as a stub that needs this first.
@@ -12,6 +13,7 @@
 #include "fix_wall_gran_base.h"
 
 #include "granlub_liggghts.h"
+#include "unsupported.h"
 
 using namespace LAMMPS_NS;
 using namespace LIGGGHTS;
@@ -61,6 +63,7 @@ extern "C" int granlub_liggghts_register(void) {
     ++n;
 #include "style_contact_model_user.whitelist"
 #undef GRAN_MODEL
+    granlub_liggghts_register_unsupported();  // clear errors for the rest (unsupported.cpp)
     return n;
 }
 

@@ -7,7 +7,7 @@
 
 #include "granlub/error.h"
 #include "granlub/results.h"
-#include "granlub/yade/process.h"
+#include "granlub/process.h"
 
 #ifndef GRANLUB_YADE_DRIVER_PATH
 #error "GRANLUB_YADE_DRIVER_PATH must name plugins/yade/granlub_yade.py"

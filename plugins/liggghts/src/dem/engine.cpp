@@ -1,21 +1,18 @@
-// Process handling for LIGGGHTS runs (see engine.h). fork/exec, no shell: paths with spaces or
-// quotes cannot break the command.
+// LIGGGHTS runs (see engine.h) through core's process runner: no shell (paths with spaces or
+// quotes cannot break the command), and the engine dies with granlub.
 #include "engine.h"
 
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <sstream>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/process.h"
 #include "granlub/progress.h"
 
 namespace granlub::dem {
@@ -23,18 +20,6 @@ namespace granlub::dem {
 namespace fs = std::filesystem;
 
 namespace {
-
-bool executable(const fs::path& p) { return !p.empty() && ::access(p.c_str(), X_OK) == 0 && fs::is_regular_file(p); }
-
-fs::path on_path(const std::string& name) {
-    const char* path = std::getenv("PATH");
-    if (!path) return {};
-    std::stringstream ss(path);
-    std::string dir;
-    while (std::getline(ss, dir, ':'))
-        if (!dir.empty() && executable(fs::path(dir) / name)) return fs::path(dir) / name;
-    return {};
-}
 
 std::string read_text(const fs::path& p) {
     std::ifstream in(p);
@@ -68,21 +53,22 @@ std::string error_line(const fs::path& out) {
 fs::path find_driver() {
     std::vector<std::string> looked;
     if (const char* env = std::getenv("GRANLUB_LIGGGHTS_DRIVER")) {
-        if (executable(env)) return env;
+        // absolute: the engine starts in the point's folder
+        if (const auto p = find_executable(env)) return fs::absolute(*p);
         looked.push_back(fmt::format("$GRANLUB_LIGGGHTS_DRIVER = {}", env));
     }
     std::error_code ec;
     const fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (!ec) {
         const fs::path next = self.parent_path() / "granlub-liggghts";
-        if (executable(next)) return next;
+        if (find_executable(next.string())) return next;
         looked.push_back(next.string());
     }
 #ifdef GRANLUB_LIGGGHTS_DRIVER_BUILD
-    if (executable(GRANLUB_LIGGGHTS_DRIVER_BUILD)) return GRANLUB_LIGGGHTS_DRIVER_BUILD;
+    if (find_executable(GRANLUB_LIGGGHTS_DRIVER_BUILD)) return GRANLUB_LIGGGHTS_DRIVER_BUILD;
     looked.push_back(GRANLUB_LIGGGHTS_DRIVER_BUILD);
 #endif
-    if (auto p = on_path("granlub-liggghts"); !p.empty()) return p;
+    if (auto p = find_executable("granlub-liggghts")) return *p;
     looked.push_back("PATH");
     std::string where;
     for (const auto& l : looked) where += "\n  " + l;
@@ -97,11 +83,11 @@ EngineRun run_engine(const fs::path& dir, const std::string& deck, int np, std::
     r.ranks = std::max(1, np);
     const fs::path driver = find_driver();
     if (r.ranks > 1) {
-        const fs::path mpirun = on_path("mpirun");
-        if (mpirun.empty())
+        const auto mpirun = find_executable("mpirun");
+        if (!mpirun)
             throw SolverError(fmt::format("granlub dem --np {}: mpirun was not found on PATH (Debian: openmpi-bin)",
                                           r.ranks));
-        r.command = {mpirun.string(), "-np", std::to_string(r.ranks), "--oversubscribe"};
+        r.command = {mpirun->string(), "-np", std::to_string(r.ranks), "--oversubscribe"};
         if (::geteuid() == 0) r.command.push_back("--allow-run-as-root");
     }
     for (const auto& a : {driver.string(), std::string("-in"), deck, std::string("-log"), std::string("log.liggghts"),
@@ -110,45 +96,23 @@ EngineRun run_engine(const fs::path& dir, const std::string& deck, int np, std::
 
     // absolute: the child changes into `dir` before opening it (a relative results root broke this)
     const fs::path out = fs::absolute(dir / "liggghts.out");
+    fs::remove(out);  // the runner appends; this run's output only
     fs::remove(dir / progress_file);
-    const auto t0 = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
-    if (pid < 0) throw SolverError(fmt::format("granlub dem: cannot start {}: fork failed", driver.string()));
-    if (pid == 0) {
-        if (::chdir(dir.c_str()) != 0) ::_exit(126);
-        const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd < 0) ::_exit(126);
-        ::dup2(fd, 1);
-        ::dup2(fd, 2);
-        ::close(fd);
-        std::vector<char*> argv;
-        for (auto& a : r.command) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        ::execv(argv[0], argv.data());
-        ::_exit(127);
-    }
-    int status = 0;
+    ProcessResult pr;
     {
         Progress progress(label, static_cast<std::uint64_t>(std::max<std::int64_t>(1, total_steps)));
         const bool show = Progress::enabled();
-        while (true) {
-            const pid_t w = ::waitpid(pid, &status, WNOHANG);
-            if (w == pid) break;
-            if (w < 0) throw SolverError("granlub dem: lost the LIGGGHTS process (waitpid failed)");
-            std::this_thread::sleep_for(std::chrono::milliseconds(200));
-            if (show) {
-                const auto done = static_cast<std::int64_t>(count_lines(dir / progress_file)) * steps_per_line;
-                progress.update(static_cast<std::uint64_t>(std::min(done, total_steps)), "LIGGGHTS");
-            }
-        }
+        auto poll = [&] {
+            if (!show) return;
+            const auto done = static_cast<std::int64_t>(count_lines(dir / progress_file)) * steps_per_line;
+            progress.update(static_cast<std::uint64_t>(std::min(done, total_steps)), "LIGGGHTS");
+        };
+        pr = run_process(r.command, dir, out, 0, poll);  // no time limit: a DEM run may take hours
     }
-    r.wall_clock_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        const std::string why = WIFEXITED(status) ? fmt::format("exit code {}", WEXITSTATUS(status))
-                                                  : fmt::format("signal {}", WTERMSIG(status));
-        throw SolverError(fmt::format("LIGGGHTS failed ({}) in {}: {}\n  command: {}\n  output: {}", why, dir.string(),
-                                      error_line(out), fmt::join(r.command, " "), out.string()));
-    }
+    r.wall_clock_s = pr.seconds;
+    if (pr.exit_code != 0)
+        throw SolverError(fmt::format("LIGGGHTS failed ({}) in {}: {}\n  command: {}\n  output: {}", pr.describe(),
+                                      dir.string(), error_line(out), fmt::join(r.command, " "), out.string()));
     static const std::regex loop(R"(Loop time of ([0-9.eE+-]+) on)");
     const std::string text = read_text(dir / "log.liggghts");
     for (auto it = std::sregex_iterator(text.begin(), text.end(), loop); it != std::sregex_iterator(); ++it)

@@ -1,4 +1,4 @@
-#include "granlub/yade/process.h"
+#include "granlub/process.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -15,8 +15,9 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "watchdog.h"
 
-namespace granlub::yade {
+namespace granlub {
 
 std::string ProcessResult::describe() const {
     if (timed_out) return fmt::format("timed out after {:.0f} s and was killed", seconds);
@@ -48,6 +49,24 @@ std::optional<std::filesystem::path> find_executable(const std::string& name) {
     return std::nullopt;
 }
 
+namespace {
+
+// Stops the engine's group: SIGTERM, up to 2 s for the engine to go, then SIGKILL for what is
+// left (the watchdog included: it leads the group). Returns the engine's wait status.
+int stop_group(pid_t group, pid_t engine) {
+    int status = 0;
+    ::kill(-group, SIGTERM);
+    for (int i = 0; i < 40; ++i) {
+        if (::waitpid(engine, &status, WNOHANG) == engine) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    ::kill(-group, SIGKILL);
+    while (::waitpid(engine, &status, 0) < 0 && errno == EINTR) {}
+    return status;
+}
+
+}  // namespace
+
 ProcessResult run_process(const std::vector<std::string>& argv, const std::filesystem::path& workdir,
                           const std::filesystem::path& log, double timeout_s, const std::function<void()>& poll) {
     if (argv.empty()) throw SolverError("run_process: no program given");
@@ -63,30 +82,48 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::files
         ::close(fd);
         throw SolverError(fmt::format("cannot start {}: pipe: {}", argv[0], std::strerror(errno)));
     }
-    const auto t0 = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
-    if (pid < 0) {
+    const auto close_all = [&] {
         ::close(fd);
         ::close(err_pipe[0]);
         ::close(err_pipe[1]);
-        throw SolverError(fmt::format("cannot start {}: fork: {}", argv[0], std::strerror(errno)));
+    };
+    // Before the engine: whenever granlub dies after this line, the watchdog stops the group.
+    std::optional<Watchdog> dog;
+    try {
+        dog.emplace();
+    } catch (...) {
+        close_all();
+        throw;
     }
-    if (pid == 0) {  // child: own process group (so a timeout kills its children too), log, exec
-        ::setpgid(0, 0);
-        ::dup2(fd, STDOUT_FILENO);
-        ::dup2(fd, STDERR_FILENO);
-        const int devnull = ::open("/dev/null", O_RDONLY);
-        if (devnull >= 0) ::dup2(devnull, STDIN_FILENO);
-        if (::chdir(workdir.c_str()) == 0) ::execv(args[0], args.data());
+    const pid_t group = dog->group();
+    const auto t0 = std::chrono::steady_clock::now();
+    const pid_t pid = ::fork();
+    if (pid < 0) {
         const int e = errno;
-        [[maybe_unused]] const auto n = ::write(err_pipe[1], &e, sizeof e);
-        ::_exit(127);
+        close_all();
+        throw SolverError(fmt::format("cannot start {}: fork: {}", argv[0], std::strerror(e)));
     }
-    ::setpgid(pid, pid);
+    if (pid == 0) {  // child: the watchdog's group, log, stdin from /dev/null, exec
+        const auto fail = [&] {
+            const int e = errno;
+            [[maybe_unused]] const auto n = ::write(err_pipe[1], &e, sizeof e);
+            ::_exit(127);
+        };
+        if (::setpgid(0, group) != 0) fail();
+        const int devnull = ::open("/dev/null", O_RDONLY);
+        if (devnull < 0 || ::dup2(devnull, STDIN_FILENO) < 0) fail();
+        if (::dup2(fd, STDOUT_FILENO) < 0 || ::dup2(fd, STDERR_FILENO) < 0) fail();
+        if (::chdir(workdir.c_str()) != 0) fail();
+        ::execv(args[0], args.data());
+        fail();
+    }
+    ::setpgid(pid, group);  // also here, so that the group is set whichever process runs first
     ::close(fd);
     ::close(err_pipe[1]);
     int exec_errno = 0;
-    const auto got = ::read(err_pipe[0], &exec_errno, sizeof exec_errno);
+    ssize_t got;
+    do got = ::read(err_pipe[0], &exec_errno, sizeof exec_errno);
+    while (got < 0 && errno == EINTR);
     ::close(err_pipe[0]);
     if (got == static_cast<ssize_t>(sizeof exec_errno)) {
         int st = 0;
@@ -97,23 +134,26 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::files
     ProcessResult r;
     int status = 0;
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-    for (;;) {
-        const pid_t w = ::waitpid(pid, &status, WNOHANG);
-        if (w == pid) break;
-        if (w < 0 && errno != EINTR) throw SolverError(fmt::format("waiting for {}: {}", argv[0], std::strerror(errno)));
-        if (timeout_s > 0 && elapsed() > timeout_s) {
-            r.timed_out = true;
-            ::kill(-pid, SIGTERM);
-            for (int i = 0; i < 40 && ::waitpid(pid, &status, WNOHANG) == 0; ++i)
-                std::this_thread::sleep_for(std::chrono::milliseconds(50));
-            ::kill(-pid, SIGKILL);
-            ::waitpid(pid, &status, 0);
-            break;
+    try {
+        for (;;) {
+            const pid_t w = ::waitpid(pid, &status, WNOHANG);
+            if (w == pid) break;
+            if (w < 0 && errno != EINTR)
+                throw SolverError(fmt::format("waiting for {}: {}", argv[0], std::strerror(errno)));
+            if (timeout_s > 0 && elapsed() > timeout_s) {
+                r.timed_out = true;
+                status = stop_group(group, pid);
+                break;
+            }
+            if (poll) poll();
+            std::this_thread::sleep_for(std::chrono::milliseconds(poll ? 200 : 20));
         }
-        if (poll) poll();
-        std::this_thread::sleep_for(std::chrono::milliseconds(poll ? 200 : 20));
+    } catch (...) {  // a failing progress display must not leave the engine running
+        stop_group(group, pid);
+        throw;
     }
     r.seconds = elapsed();
+    dog->dismiss();
     if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
     return r;
@@ -132,4 +172,4 @@ std::string tail_lines(const std::filesystem::path& file, std::size_t lines) {
     return out;
 }
 
-}  // namespace granlub::yade
+}  // namespace granlub
