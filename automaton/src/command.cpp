@@ -12,6 +12,7 @@
 #include "granlub/automaton/vtk.h"
 #include "granlub/error.h"
 #include "granlub/progress.h"
+#include "granlub/regime.h"
 #include "granlub/results.h"
 
 namespace granlub::automaton {
@@ -199,6 +200,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
              {"particle_updates_per_second", r.updates_per_second},
              {"ignored", "gravity, the centripetal force and the side walls: the JH06 lattice has no body force "
                          "and is 2-D"}};
+    set_regime(s.run, r.steady.reached ? RegimeStatus::Steady : RegimeStatus::Transient,
+               r.steady.reached ? "" : "no steady state: " + r.steady.note);
 
     out.line = fmt::format("{}x{} N={} slip {:.3f}/{:.3f} U (+-{:.4f}) tau {:.3g}/{:.3g} Pa{}", r.rows,
                            r.columns, r.particles, r.slip_bottom.mean, r.slip_top.mean, r.slip_bottom.sem,

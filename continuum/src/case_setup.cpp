@@ -8,6 +8,7 @@
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
 #include "granlub/error.h"
+#include "granlub/regime.h"
 
 namespace granlub::continuum {
 
@@ -123,6 +124,10 @@ PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& 
         warnings.push_back(fmt::format("solid fraction {:.4f} exceeds nu_max = {} (g0 = {} has no nu_max limit)",
                                        o.nu_max_node, s.closures->numax(), s.g0_name));
     m.run["warnings"] = warnings;
+    // Steady by construction: the continuum solves the steady boundary-value problem (no time
+    // derivatives), and only a converged Newton solve reaches this point; a failed one throws and
+    // writes no result.
+    set_regime(m.run, RegimeStatus::Steady);
     for (const auto& [name, v] : m.outputs)
         if (!std::isfinite(v.value))
             throw SolverError(fmt::format("the solution has a non-finite {} (residual {:.3g}); try more cells", name,

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/failure_record.h"
 
 namespace granlub {
 
@@ -58,16 +59,21 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
             if (!r.summary.run.contains("wall_clock_s")) r.summary.run["wall_clock_s"] = secs;
             r.summary.run["full"] = o.full;
             write_result(dir, r.profile, r.summary);
+            remove_failure(dir);
             fmt::print("{} {:<14} {}  ({:.2f} s)\n", solver, p->id, r.line, secs);
         } catch (const CaseError&) {
             throw;  // bad input fails the command (exit 2), not one point
-        } catch (const std::bad_alloc&) {
+        } catch (const std::exception& e) {  // Error, bad_alloc, filesystem errors: the sweep goes on
             ++failed;
-            fmt::print(stderr, "{} {:<14} FAILED: out of memory (reduce the case's sizes: cells, grains, steps)\n",
-                       solver, p->id);
-        } catch (const std::exception& e) {  // Error, and filesystem errors: the sweep goes on
-            ++failed;
-            fmt::print(stderr, "{} {:<14} FAILED: {}\n", solver, p->id, e.what());
+            const std::string why = dynamic_cast<const std::bad_alloc*>(&e)
+                                        ? "out of memory (reduce the case's sizes: cells, grains, steps)"
+                                        : e.what();
+            fmt::print(stderr, "{} {:<14} FAILED: {}\n", solver, p->id, why);
+            try {
+                write_failure(dir, solver, p->id, why);  // the report says why the point is missing
+            } catch (const std::exception& w) {
+                fmt::print(stderr, "{} {:<14} (could not record the failure: {})\n", solver, p->id, w.what());
+            }
         }
         std::fflush(stdout);
         std::fflush(stderr);

@@ -75,7 +75,57 @@ Run load_run(const Case& c, const std::filesystem::path& root, const std::string
     r.status = std::move(loaded.status);
     r.summary = std::move(loaded.summary);
     r.profile = std::move(loaded.profile);
+    if (r.summary) r.regime = read_regime(r.summary->run);
+    try {
+        r.failure = read_failure(r.dir);
+    } catch (const Error& e) {
+        r.failure_error = e.what();
+    }
     return r;
+}
+
+std::string Run::state_name() const {
+    if (usable()) return regime.status == RegimeStatus::Unknown ? "status unknown" : to_string(regime.status);
+    if (failure) return "failed";
+    switch (status.state) {
+        case ResultState::Missing: return "missing";
+        case ResultState::Stale: return "stale";
+        case ResultState::Corrupt: return "corrupt";
+        case ResultState::Complete: break;
+    }
+    return "corrupt";
+}
+
+std::string Run::state_reason() const {
+    std::string why;
+    if (usable()) {
+        why = regime.reason;
+        // A later attempt failed but left this (still current) result in place.
+        if (failure && failure->utc_time > summary->provenance.utc_time)
+            why += fmt::format("{}a later run failed ({}): {}", why.empty() ? "" : "; ", failure->utc_time,
+                               failure->message);
+    } else if (failure) {
+        why = failure->message;
+        if (status.state != ResultState::Missing) why += fmt::format(" (the result left in place is {}: {})",
+                                                                     status.state == ResultState::Stale ? "stale" : "corrupt",
+                                                                     status.reason);
+    } else {
+        why = status.state == ResultState::Missing ? std::string() : status.reason;
+    }
+    if (!failure_error.empty()) why += (why.empty() ? "" : "; ") + failure_error;
+    return why;
+}
+
+std::string Run::state_class() const {
+    if (usable()) {
+        switch (regime.status) {
+            case RegimeStatus::Steady: return "ok";
+            case RegimeStatus::Unknown: return "unknown";
+            default: return "transient";
+        }
+    }
+    if (failure) return "failed";
+    return status.state == ResultState::Stale ? "stale" : status.state == ResultState::Corrupt ? "corrupt" : "missing";
 }
 
 const Run& Collection::run(const std::string& solver, const std::string& point) const {

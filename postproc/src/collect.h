@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "granlub/case.h"
+#include "granlub/failure_record.h"
+#include "granlub/regime.h"
 #include "granlub/results.h"
 #include "granlub/sweep.h"
 
@@ -26,8 +28,18 @@ struct Run {
     ResultStatus status;             // Complete only when both files load and pass the checks
     std::optional<Profile> profile;  // present when Complete
     std::optional<Summary> summary;
+    Regime regime;                        // from the summary's run block; Unknown when not usable
+    std::optional<FailureRecord> failure;  // the point folder's failure.json, when present
+    std::string failure_error;            // why failure.json could not be read
 
     bool usable() const { return status.state == ResultState::Complete && profile && summary; }
+    // A usable result that is a steady state: the only kind fitted, compared with z or bold.
+    bool steady() const { return usable() && regime.steady(); }
+    // What the report calls the run: "steady", "transient", "dt-unconverged", "status unknown"
+    // (usable), "failed" (no usable result, failure.json present), "missing", "stale", "corrupt".
+    std::string state_name() const;
+    std::string state_reason() const;  // why; empty for a plain steady result
+    std::string state_class() const;   // report cell class: ok, transient, unknown, failed, missing, ...
     // Normalised profile columns: y/H ascending, u/U, nu/nu_max (nu_max from this run's
     // summary), T/U^2, and their standard errors (empty when the solver gives none).
     const std::vector<double>& y() const { return profile->column("y_over_H"); }

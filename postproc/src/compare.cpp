@@ -77,6 +77,9 @@ int compare(const Case& c, const RunOptions& o) {
             ++problems;
             fmt::print(stderr, "granlub compare: leaving out {} {} ({}): {}\n", r.solver, r.point->id,
                        state_name(r.status.state), r.status.reason);
+        } else if (r.usable() && !r.steady()) {
+            fmt::print(stderr, "granlub compare: {} {} is {} ({}): shown greyed, not fitted or compared\n", r.solver,
+                       r.point->id, r.state_name(), r.state_reason());
         }
     }
     const std::size_t usable = col.count(ResultState::Complete);
@@ -127,17 +130,17 @@ int compare(const Case& c, const RunOptions& o) {
 std::string summary_table(const Case& c, const RunOptions& o) {
     const Collection col = collect(c, o);
     Table t = key_numbers(col);
-    // Rows for what is not usable, so the table also says what failed.
+    // Rows for what is not usable, so the table also says what failed; then why, under the table.
+    std::string why;
     for (const auto& s : col.solvers)
         for (const OperatingPoint* p : col.points) {
             const Run& r = col.run(s, p->id);
-            if (!r.usable()) {
-                std::vector<Cell> row{{s, ""}, {p->id, ""}, {state_name(r.status.state), ""}};
-                t.rows.push_back(std::move(row));
-            }
+            if (!r.usable()) t.rows.push_back({{s, ""}, {p->id, ""}, {r.state_name(), ""}});
+            if (const auto reason = r.state_reason(); !reason.empty())
+                why += fmt::format("{} {}: {}: {}\n", s, p->id, r.state_name(), reason);
         }
     for (const auto& s : col.missing_solvers) t.rows.push_back({{s, ""}, {"(all)", ""}, {"no results", ""}});
-    return text_table(t);
+    return text_table(t) + why;
 }
 
 }  // namespace granlub::postproc

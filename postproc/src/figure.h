@@ -18,6 +18,7 @@ struct Series {
     Mark mark = Mark::Line;
     bool dashed = false;          // lines: dashed instead of the style's own pattern (fits)
     bool open = false;            // points: open marker (e.g. the top wall)
+    bool unsteady = false;        // not a steady result (transient, ...): hollow, faded, dotted; label says so
 };
 
 struct Axis {

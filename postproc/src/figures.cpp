@@ -43,6 +43,38 @@ void sort_by_x(Series& s) {
     s = std::move(t);
 }
 
+// A solver's points in one figure: the steady ones under `label`, then one series per other
+// state ("dem: transient"), drawn hollow and faded. add(run, point, series) appends the point.
+template <class Add>
+std::vector<Series> points_by_state(const Collection& col, const std::string& solver,
+                                    const std::vector<const OperatingPoint*>& points, const std::string& label,
+                                    Add add) {
+    std::vector<Series> out(1);
+    out[0].label = label;
+    for (const OperatingPoint* p : points) {
+        const Run& r = col.run(solver, p->id);
+        if (!r.usable()) continue;
+        std::size_t k = 0;
+        if (!r.steady()) {
+            const std::string l = fmt::format("{}: {}", label, r.state_name());
+            k = 1;
+            while (k < out.size() && out[k].label != l) ++k;
+            if (k == out.size()) out.emplace_back().label = l, out.back().unsteady = true;
+        }
+        add(r, *p, out[k]);
+    }
+    for (auto& s : out) s.style = solver_style(col, solver), s.mark = Mark::Points;
+    return out;
+}
+
+// Says in the caption what the hollow, faded series are, when the figure has any.
+void note_unsteady(Figure& f) {
+    if (std::any_of(f.series.begin(), f.series.end(), [](const Series& s) { return s.unsteady && !s.x.empty(); }))
+        f.caption += " Hollow faded markers and dotted lines are results that are NOT steady (the legend says "
+                     "which: transient, dt-unconverged or status unknown); shown for information only, left out of "
+                     "fits and differences.";
+}
+
 }  // namespace
 
 int solver_style(const Collection& col, const std::string& solver) {
@@ -82,13 +114,15 @@ std::vector<Figure> profile_figures(const Collection& col, std::size_t point_ind
         if (k > 0) f.y.lo = 0;  // nu and T are non-negative: show the zero
         for (const Run* r : runs) {
             Series s;
-            s.label = r->solver;
+            s.unsteady = !r->steady();
+            s.label = s.unsteady ? fmt::format("{}: {}", r->solver, r->state_name()) : r->solver;
             s.x = r->y();
             s.y = r->column(q.key);
             s.err = r->column_stderr(q.key);
             s.style = solver_style(col, r->solver);
             f.series.push_back(std::move(s));
         }
+        note_unsteady(f);
         figs.push_back(std::move(f));
     }
     return figs;
@@ -101,48 +135,54 @@ std::vector<Figure> stress_figures(const Collection& col) {
         Figure f;
         f.name = std::string("stress_") + q;
         f.title = stress_title(q);
-        f.caption = "Log–log; markers are the results (bars ±1 standard error), dashed lines the fitted "
-                    "power law σ = c Uⁿ per solver.";
+        f.caption = fmt::format("Log–log; markers are the results (bars ±1 standard error), dashed lines the "
+                                "power law σ = c Uⁿ fitted per solver to its steady points (at least {}).",
+                                kMinFitPoints);
         f.x.label = "wall speed U (m/s)";
         f.x.log = true;
         f.y.label = stress_label(q);
         f.y.log = true;
+        std::vector<std::string> not_fitted;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
-                Series pts;
-                std::vector<std::optional<double>> se;
-                for (const OperatingPoint* p : groups[g].points) {
-                    const Run& r = col.run(solver, p->id);
-                    if (!r.usable()) continue;
-                    pts.x.push_back(p->speed);
-                    pts.y.push_back(*r.scalar(q));
-                    se.push_back(r.scalar_stderr(q));
-                    pts.err.push_back(se.back().value_or(0.0));
-                }
-                if (pts.x.empty()) continue;
-                pts.label = with_group(solver, groups[g].label);
-                pts.style = solver_style(col, solver);
-                pts.mark = Mark::Points;
-                pts.open = g % 2 == 1;
-                if (const auto fit = power_fit(pts.x, pts.y, se)) {
-                    Series line;
-                    line.style = pts.style;
+                auto series = points_by_state(col, solver, groups[g].points, with_group(solver, groups[g].label),
+                                              [&](const Run& r, const OperatingPoint& p, Series& s) {
+                                                  s.x.push_back(p.speed);
+                                                  s.y.push_back(*r.scalar(q));
+                                                  s.err.push_back(r.scalar_stderr(q).value_or(0.0));
+                                              });
+                for (auto& s : series) s.open = s.open || g % 2 == 1;
+                const StressFit fit = stress_fit(col, groups[g], solver, q);
+                if (fit.steady_points + fit.other_points > 0 && !fit.fit)
+                    not_fitted.push_back(fit.steady_points < kMinFitPoints
+                                             ? fmt::format("{} has {} steady point{} (a fit needs {})",
+                                                           with_group(solver, groups[g].label), fit.steady_points,
+                                                           fit.steady_points == 1 ? "" : "s", kMinFitPoints)
+                                             : fmt::format("{}: {}", with_group(solver, groups[g].label), fit.why_not));
+                Series line;
+                if (fit.fit) {
+                    line.style = series[0].style;
                     line.dashed = true;
-                    line.label = fit->exponent_stderr
-                                     ? fmt::format("n = {:.2f} ± {:.2f}", fit->exponent, *fit->exponent_stderr)
-                                     : fmt::format("n = {:.2f}", fit->exponent);
-                    const auto [lo, hi] = std::minmax_element(pts.x.begin(), pts.x.end());
+                    line.label = fit.fit->exponent_stderr
+                                     ? fmt::format("n = {:.2f} ± {:.2f}", fit.fit->exponent, *fit.fit->exponent_stderr)
+                                     : fmt::format("n = {:.2f}", fit.fit->exponent);
+                    const auto [lo, hi] = std::minmax_element(series[0].x.begin(), series[0].x.end());
                     for (double u : {*lo / 1.1, *hi * 1.1}) {
                         line.x.push_back(u);
-                        line.y.push_back(fit->prefactor * std::pow(u, fit->exponent));
+                        line.y.push_back(fit.fit->prefactor * std::pow(u, fit.fit->exponent));
                     }
-                    f.series.push_back(std::move(pts));
-                    f.series.push_back(std::move(line));
-                } else {
-                    f.series.push_back(std::move(pts));
                 }
+                for (auto& s : series)
+                    if (!s.x.empty()) f.series.push_back(std::move(s));
+                if (!line.x.empty()) f.series.push_back(std::move(line));
             }
         }
+        if (!not_fitted.empty()) {
+            f.caption += " No power law:";
+            for (std::size_t i = 0; i < not_fitted.size(); ++i) f.caption += (i ? "; " : " ") + not_fitted[i];
+            f.caption += ".";
+        }
+        note_unsteady(f);
         figs.push_back(std::move(f));
     }
     return figs;
@@ -171,30 +211,25 @@ std::vector<Figure> slip_figures(const Collection& col) {
         f.y.label = "slip / U at the " + wall;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
-                Series pts;
-                for (const OperatingPoint* p : groups[g].points) {
-                    const Run& r = col.run(solver, p->id);
-                    if (!r.usable()) continue;
-                    pts.x.push_back(swept ? R(*p) : p->speed);
-                    pts.y.push_back(*r.scalar(q));
-                    pts.err.push_back(r.scalar_stderr(q).value_or(0.0));
-                }
-                if (pts.x.empty()) continue;
-                sort_by_x(pts);
-                pts.label = with_group(solver, groups[g].label);
-                pts.style = solver_style(col, solver);
-                pts.mark = Mark::Points;
-                pts.open = g % 2 == 1;
-                if (pts.x.size() > 1) {
+                auto series = points_by_state(col, solver, groups[g].points, with_group(solver, groups[g].label),
+                                              [&](const Run& r, const OperatingPoint& p, Series& s) {
+                                                  s.x.push_back(swept ? R(p) : p.speed);
+                                                  s.y.push_back(*r.scalar(q));
+                                                  s.err.push_back(r.scalar_stderr(q).value_or(0.0));
+                                              });
+                for (auto& s : series) sort_by_x(s), s.open = s.open || g % 2 == 1;
+                if (series[0].x.size() > 1) {  // a line through the steady points only
                     Series line;
-                    line.style = pts.style;
-                    line.x = pts.x;
-                    line.y = pts.y;
+                    line.style = series[0].style;
+                    line.x = series[0].x;
+                    line.y = series[0].y;
                     f.series.push_back(std::move(line));
                 }
-                f.series.push_back(std::move(pts));
+                for (auto& s : series)
+                    if (!s.x.empty()) f.series.push_back(std::move(s));
             }
         }
+        note_unsteady(f);
         figs.push_back(std::move(f));
     }
     return figs;
@@ -211,19 +246,17 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
     const std::size_t n = col.solvers.size();
     for (std::size_t i = 0; i < col.points.size(); ++i) f.x.categories.emplace_back(static_cast<double>(i), col.points[i]->id);
     for (std::size_t k = 0; k < n; ++k) {
-        Series s;
-        s.label = col.solvers[k];
-        s.style = solver_style(col, col.solvers[k]);
-        s.mark = Mark::Points;
         const double offset = n > 1 ? -0.25 + 0.5 * static_cast<double>(k) / static_cast<double>(n - 1) : 0.0;
-        for (std::size_t i = 0; i < col.points.size(); ++i) {
-            const Run& r = col.run(col.solvers[k], col.points[i]->id);
-            if (!r.usable()) continue;
-            s.x.push_back(static_cast<double>(i) + offset);
-            s.y.push_back(*r.scalar("nu_bar_over_numax"));
-            s.err.push_back(r.scalar_stderr("nu_bar_over_numax").value_or(0.0));
-        }
-        if (!s.x.empty()) f.series.push_back(std::move(s));
+        auto series = points_by_state(col, col.solvers[k], col.points, col.solvers[k],
+                                      [&](const Run& r, const OperatingPoint& p, Series& s) {
+                                          const auto i = static_cast<std::size_t>(
+                                              std::find(col.points.begin(), col.points.end(), &p) - col.points.begin());
+                                          s.x.push_back(static_cast<double>(i) + offset);
+                                          s.y.push_back(*r.scalar("nu_bar_over_numax"));
+                                          s.err.push_back(r.scalar_stderr("nu_bar_over_numax").value_or(0.0));
+                                      });
+        for (auto& s : series)
+            if (!s.x.empty()) f.series.push_back(std::move(s));
     }
     Series target;
     target.label = "fill target";
@@ -236,6 +269,7 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
         target.y.push_back(col.points[i]->solid_fraction / case_nu_max);
     }
     if (!target.x.empty()) f.series.push_back(std::move(target));
+    note_unsteady(f);
     return f;
 }
 

@@ -78,7 +78,9 @@ std::string gnuplot_script(const Figure& f) {
     int index = 0;
     for (const auto& s : f.series) {
         if (s.x.empty()) continue;
-        const std::string colour = fmt::format("lc rgb '{}'", style_colour(s.style));
+        // Not steady: faded (gnuplot's #AARRGGBB, AA = transparency), dotted lines and hollow markers.
+        const std::string rgb = s.unsteady ? fmt::format("#80{}", style_colour(s.style) + 1) : style_colour(s.style);
+        const std::string colour = fmt::format("lc rgb '{}'", rgb);
         const std::string title = s.label.empty() ? "notitle" : "title " + quote(s.label);
         if (s.mark == Mark::Line) {
             if (s.err.size() == s.y.size())
@@ -87,11 +89,12 @@ std::string gnuplot_script(const Figure& f) {
                     "noborder notitle",
                     data, index, style_colour(s.style)));
             clauses.push_back(fmt::format("{} index {} using 1:2 with lines lw {} dt {} {} {}", data, index,
-                                          s.dashed ? 1.5 : 2, s.dashed ? 2 : style_gnuplot_dashtype(s.style), colour,
+                                          s.dashed ? 1.5 : 2,
+                                          s.unsteady ? 3 : s.dashed ? 2 : style_gnuplot_dashtype(s.style), colour,
                                           title));
         } else {
             clauses.push_back(fmt::format("{} index {} using 1:2:3 with yerrorbars pt {} ps 1.1 {} {}", data, index,
-                                          style_gnuplot_pointtype(s.style, s.open), colour, title));
+                                          style_gnuplot_pointtype(s.style, s.open || s.unsteady), colour, title));
         }
         ++index;
     }

@@ -86,6 +86,31 @@ std::vector<PointGroup> roughness_groups(const std::vector<const OperatingPoint*
     return g;
 }
 
+StressFit stress_fit(const Collection& col, const PointGroup& group, const std::string& solver, const std::string& q) {
+    StressFit out;
+    std::vector<double> u, s;
+    std::vector<std::optional<double>> se;
+    for (const OperatingPoint* p : group.points) {
+        const Run& r = col.run(solver, p->id);
+        if (!r.usable()) continue;
+        if (!r.steady()) {
+            ++out.other_points;
+            continue;
+        }
+        ++out.steady_points;
+        u.push_back(p->speed);
+        s.push_back(*r.scalar(q));
+        se.push_back(r.scalar_stderr(q));
+    }
+    if (out.steady_points < kMinFitPoints)
+        out.why_not = fmt::format("not fitted: {} steady point{} (needs {})", out.steady_points,
+                                  out.steady_points == 1 ? "" : "s", kMinFitPoints);
+    else if (!(out.fit = power_fit(u, s, se)))
+        out.why_not = fmt::format("not fitted: the {} steady points do not span two speeds with positive stress",
+                                  out.steady_points);
+    return out;
+}
+
 std::vector<MetricRow> compute_metrics(const Collection& col) {
     std::vector<MetricRow> rows;
     for (const OperatingPoint* p : col.points) {
@@ -94,27 +119,44 @@ std::vector<MetricRow> compute_metrics(const Collection& col) {
             for (std::size_t j = i + 1; j < runs.size(); ++j) {
                 const Run& a = *runs[i];
                 const Run& b = *runs[j];
+                // A result that is not steady is not compared: its values are listed, no difference.
+                std::string not_compared;
+                for (const Run* r : {&a, &b})
+                    if (!r->steady())
+                        not_compared += fmt::format("{}{} is {}", not_compared.empty() ? "not compared: " : ", ",
+                                                    r->solver, r->state_name());
+                auto pair_row = [&](const char* kind, const char* q) {
+                    MetricRow r = row(kind, p->id, q, a.solver, b.solver);
+                    r.status_a = a.state_name();
+                    r.status_b = b.state_name();
+                    r.note = not_compared;
+                    return r;
+                };
                 for (const auto& q : kProfileQuantities) {
                     const auto d = profile_difference(a.y(), a.column(q.key), a.column_stderr(q.key), b.y(),
                                                       b.column(q.key), b.column_stderr(q.key));
                     if (!(d.hi > d.lo)) continue;  // the station ranges do not overlap: nothing to compare
-                    MetricRow r = row("profile", p->id, q.key, a.solver, b.solver);
-                    r.rms = d.rms;
-                    r.max = d.max;
-                    r.y_at_max = d.y_at_max;
-                    r.noise_rms = d.noise_rms;
+                    MetricRow r = pair_row("profile", q.key);
+                    if (not_compared.empty()) {
+                        r.rms = d.rms;
+                        r.max = d.max;
+                        r.y_at_max = d.y_at_max;
+                        r.noise_rms = d.noise_rms;
+                    }
                     rows.push_back(std::move(r));
                 }
                 for (const auto& q : kScalarQuantities) {
-                    MetricRow r = row("scalar", p->id, q.key, a.solver, b.solver);
+                    MetricRow r = pair_row("scalar", q.key);
                     r.a = a.scalar(q.key);
                     r.b = b.scalar(q.key);
                     if (!r.a || !r.b) continue;
                     r.a_stderr = a.scalar_stderr(q.key);
                     r.b_stderr = b.scalar_stderr(q.key);
-                    r.difference = *r.a - *r.b;
-                    r.combined_stderr = combined_stderr(r.a_stderr, r.b_stderr);
-                    if (r.combined_stderr && *r.combined_stderr > 0) r.z = *r.difference / *r.combined_stderr;
+                    if (not_compared.empty()) {
+                        r.difference = *r.a - *r.b;
+                        r.combined_stderr = combined_stderr(r.a_stderr, r.b_stderr);
+                        if (r.combined_stderr && *r.combined_stderr > 0) r.z = *r.difference / *r.combined_stderr;
+                    }
                     rows.push_back(std::move(r));
                 }
             }
@@ -123,21 +165,19 @@ std::vector<MetricRow> compute_metrics(const Collection& col) {
     for (const auto& group : speed_groups(col.points)) {
         for (const auto& solver : col.solvers) {
             for (const char* q : kStressOutputs) {
-                std::vector<double> u, s;
-                std::vector<std::optional<double>> se;
-                for (const OperatingPoint* p : group.points) {
-                    const Run& r = col.run(solver, p->id);
-                    if (!r.usable()) continue;
-                    u.push_back(p->speed);
-                    s.push_back(*r.scalar(q));
-                    se.push_back(r.scalar_stderr(q));
-                }
-                const auto fit = power_fit(u, s, se);
-                if (!fit) continue;
+                const StressFit f = stress_fit(col, group, solver, q);
+                if (f.steady_points + f.other_points == 0) continue;
                 MetricRow r = row("exponent", group.label.empty() ? "all" : group.label, q, solver, "");
-                r.a = fit->exponent;
-                r.a_stderr = fit->exponent_stderr;
-                r.fit_points = fit->points;
+                if (f.fit) {
+                    r.a = f.fit->exponent;
+                    r.a_stderr = f.fit->exponent_stderr;
+                    r.fit_points = f.fit->points;
+                    r.status_a = "steady";
+                }
+                r.note = f.why_not;
+                if (f.other_points > 0)
+                    r.note += fmt::format("{}{} point{} not steady, left out", r.note.empty() ? "" : "; ", f.other_points,
+                                          f.other_points == 1 ? "" : "s");
                 rows.push_back(std::move(r));
             }
         }
@@ -149,16 +189,20 @@ std::string metrics_csv(const std::vector<MetricRow>& rows) {
     std::string out = "# granlub compare: cross-code metrics. Differences are solver_a - solver_b on normalised\n"
                       "# profiles (y/H grid of 101 points over the overlap of both solvers' stations) and scalars;\n"
                       "# combined_stderr = sqrt(se_a^2 + se_b^2), z = difference / combined_stderr, significant = |z| > 2.\n"
-                      "# exponent rows: n in stress = c U^n fitted per solver (a = n, a_stderr its standard error).\n";
+                      "# exponent rows: n in stress = c U^n fitted per solver (a = n, a_stderr its standard error)\n"
+                      "# over steady points only, at least 3. status_a/status_b: each run's regime (steady, transient,\n"
+                      "# dt-unconverged, status unknown); a pair with a run that is not steady has no difference, z or\n"
+                      "# rms (note says why).\n";
     out += kMetricsHeader;
     out += '\n';
     const auto n = [](const std::optional<double>& v) { return num(v, 8); };
     for (const auto& r : rows) {
-        out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.kind, csv_field(r.point),
+        out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.kind, csv_field(r.point),
                            r.quantity, csv_field(r.solver_a), csv_field(r.solver_b), n(r.a), n(r.a_stderr), n(r.b),
                            n(r.b_stderr), n(r.difference), n(r.combined_stderr), n(r.z),
                            r.z ? (r.significant() ? "yes" : "no") : "", n(r.rms), n(r.max), n(r.y_at_max),
-                           n(r.noise_rms), r.fit_points ? std::to_string(*r.fit_points) : "");
+                           n(r.noise_rms), r.fit_points ? std::to_string(*r.fit_points) : "", csv_field(r.status_a),
+                           csv_field(r.status_b), csv_field(r.note));
     }
     return out;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "collect.h"
+#include "stats.h"
 
 namespace granlub::postproc {
 
@@ -19,6 +20,8 @@ struct MetricRow {
     std::optional<double> difference, combined_stderr, z;  // a - b, sqrt(se_a^2 + se_b^2), diff/se
     std::optional<double> rms, max, y_at_max, noise_rms;   // profiles
     std::optional<int> fit_points;                          // exponents
+    std::string status_a, status_b;  // Run::state_name() of each; for "exponent" the fit's ("steady" or empty)
+    std::string note;                // why a number is absent ("not compared: dem is transient", "not fitted: ...")
     bool significant() const { return z && std::abs(*z) > 2; }
 };
 
@@ -34,10 +37,20 @@ std::vector<PointGroup> roughness_groups(const std::vector<const OperatingPoint*
 inline constexpr const char* kStressOutputs[] = {"normal_stress_bottom", "normal_stress_top", "shear_stress_bottom",
                                                  "shear_stress_top"};
 
+// The stress-speed fit of one solver over one speed group: steady points only, at least
+// kMinFitPoints of them (transients are shown, never fitted).
+inline constexpr int kMinFitPoints = 3;
+struct StressFit {
+    std::optional<PowerFit> fit;
+    int steady_points = 0, other_points = 0;  // usable points in the group: steady, and not steady
+    std::string why_not;                      // when no fit: "not fitted: 2 steady points (needs 3)"
+};
+StressFit stress_fit(const Collection& col, const PointGroup& group, const std::string& solver, const std::string& q);
+
 std::vector<MetricRow> compute_metrics(const Collection& col);
 std::string metrics_csv(const std::vector<MetricRow>& rows);
 inline constexpr const char* kMetricsHeader =
     "kind,point,quantity,solver_a,solver_b,a,a_stderr,b,b_stderr,difference,combined_stderr,z,significant,"
-    "rms_difference,max_difference,y_over_H_at_max,noise_rms,fit_points";
+    "rms_difference,max_difference,y_over_H_at_max,noise_rms,fit_points,status_a,status_b,note";
 
 }  // namespace granlub::postproc

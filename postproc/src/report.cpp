@@ -64,6 +64,8 @@ th { background: #f2f2f2; }
 td.ok { background: #e3f4ea; } td.missing { background: #f3f3f3; color: #777; }
 td.stale { background: #fff3d6; } td.corrupt { background: #fbe0dc; }
 td.significant { font-weight: bold; background: #fff3d6; }
+td.transient, td.unknown { color: #888; font-style: italic; background: #f3f3f3; }
+td.failed { background: #fbe0dc; }
 td.code { font-family: monospace; font-size: .85em; max-width: 40em; word-break: break-all; }
 .figs { display: flex; flex-wrap: wrap; gap: 1em; }
 figure { margin: 0; max-width: 540px; }
@@ -148,8 +150,11 @@ std::string render_markdown(const Report& r) {
                     out += "|";
                     for (const auto& c : row) {
                         const std::string t = md_escape(c.text);
+                        // Not steady (transient, unknown): italic, never bold.
+                        const bool greyed = c.cls == "transient" || c.cls == "unknown";
                         out += " " + (c.cls == "significant" && !t.empty() ? "**" + t + "**"
                                       : c.cls == "code" && !t.empty()      ? "`" + t + "`"
+                                      : greyed && !t.empty()               ? "_" + t + "_"
                                                                            : t) + " |";
                     }
                     out += "\n";

@@ -16,16 +16,6 @@ std::string value_pm(const std::optional<double>& v, const std::optional<double>
     return num(*v, digits);
 }
 
-std::string state_class(ResultState s) {
-    switch (s) {
-        case ResultState::Complete: return "ok";
-        case ResultState::Missing: return "missing";
-        case ResultState::Stale: return "stale";
-        case ResultState::Corrupt: return "corrupt";
-    }
-    return "";
-}
-
 std::string list_text(const std::vector<std::string>& v) {
     std::string s;
     for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
@@ -62,12 +52,22 @@ void difference_tables(Report& rep, const Collection& col, const std::vector<Met
             for (std::size_t j = i + 1; j < runs.size(); ++j) {
                 const auto& a = runs[i]->solver;
                 const auto& b = runs[j]->solver;
-                const std::string pair = a + " − " + b;
+                // A pair with a result that is not steady: no number, the reason instead.
+                std::string pair = a + " − " + b, unsteady;
+                for (const Run* r : {runs[i], runs[j]})
+                    if (!r->steady()) {
+                        pair += fmt::format(" ({}: {})", r->solver, r->state_name());
+                        if (unsteady.empty()) unsteady = "—, " + r->state_name();
+                    }
                 std::vector<Cell> prow{{pair, ""}}, srow{{pair, ""}};
                 for (const auto& q : kProfileQuantities) {
                     const MetricRow* r = find_row(metrics, "profile", p->id, q.key, a, b);
                     if (!r) {
                         prow.push_back({});
+                        continue;
+                    }
+                    if (!unsteady.empty()) {
+                        prow.push_back({unsteady, "transient"});
                         continue;
                     }
                     std::string t = fmt::format("{} (max {} at {}", num(*r->rms, 3), num(*r->max, 3), num(*r->y_at_max, 2));
@@ -78,6 +78,10 @@ void difference_tables(Report& rep, const Collection& col, const std::vector<Met
                     const MetricRow* r = find_row(metrics, "scalar", p->id, q.key, a, b);
                     if (!r) {
                         srow.push_back({});
+                        continue;
+                    }
+                    if (!unsteady.empty()) {
+                        srow.push_back({unsteady, "transient"});
                         continue;
                     }
                     std::string t = value_pm(r->difference, r->combined_stderr, 3);
@@ -91,7 +95,9 @@ void difference_tables(Report& rep, const Collection& col, const std::vector<Met
         rep.text("Normalised profiles: RMS and max |a − b| over the y/H range both solvers cover; noise = RMS of the "
                  "combined standard error (bold: RMS > 2 × noise).");
         rep.table(std::move(prof));
-        rep.text("Scalars: a − b ± combined standard error, stresses in Pa (bold: |z| > 2).");
+        rep.text("Scalars: a − b ± combined standard error, stresses in Pa (bold: |z| > 2). A pair with a result "
+                 "that is not steady is not compared (“—, transient”): a transient's difference is not a model "
+                 "difference.");
         rep.table(std::move(sc));
     }
 }
@@ -115,8 +121,8 @@ Table status_table(const Collection& col) {
     for (const auto& s : col.solvers) {
         std::vector<Cell> row{{s, ""}};
         for (const OperatingPoint* p : col.points) {
-            const auto st = col.run(s, p->id).status.state;
-            row.push_back({state_name(st), state_class(st)});
+            const Run& r = col.run(s, p->id);
+            row.push_back({r.state_name(), r.state_class()});
         }
         t.rows.push_back(std::move(row));
     }
@@ -130,16 +136,18 @@ Table status_table(const Collection& col) {
 
 Table key_numbers(const Collection& col) {
     Table t;
-    t.header = {"solver", "point", "ν̄/ν_max", "σ_yy bottom (Pa)", "τ_xy bottom (Pa)", "τ_xy top (Pa)", "slip bottom / U",
-                "slip top / U", "wall clock (s)"};
+    t.header = {"solver", "point", "status", "ν̄/ν_max", "σ_yy bottom (Pa)", "τ_xy bottom (Pa)", "τ_xy top (Pa)",
+                "slip bottom / U", "slip top / U", "wall clock (s)"};
     for (const OperatingPoint* p : col.points) {
         for (const auto& s : col.solvers) {
             const Run& r = col.run(s, p->id);
             if (!r.usable()) continue;
-            std::vector<Cell> row{{s, ""}, {p->id, ""}};
+            // Values of a result that is not steady are shown greyed, never as results.
+            const std::string cls = r.steady() ? "" : r.state_class();
+            std::vector<Cell> row{{s, ""}, {p->id, ""}, {r.state_name(), r.state_class()}};
             for (const char* q : {"nu_bar_over_numax", "normal_stress_bottom", "shear_stress_bottom", "shear_stress_top",
                                   "slip_bottom_over_U", "slip_top_over_U"})
-                row.push_back({value_pm(r.scalar(q), r.scalar_stderr(q)), ""});
+                row.push_back({value_pm(r.scalar(q), r.scalar_stderr(q)), cls});
             const auto& run = r.summary->run;
             row.push_back({run.is_object() && run.contains("wall_clock_s") && run["wall_clock_s"].is_number()
                                ? num(run["wall_clock_s"].get<double>(), 3)
@@ -165,17 +173,20 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
 
     rep.heading("Results found");
     rep.table(status_table(col));
+    rep.text("steady: a steady-state result, compared. transient: the run ended before a steady state was "
+             "detected; dt-unconverged: halving the time step changed the answer; status unknown: the summary does "
+             "not say (written before granlub recorded it). These three are shown greyed and hollow, never fitted, "
+             "compared or bold. failed: the solver failed on the point (its message below); missing: no result; "
+             "stale: computed for other inputs (rerun the solver); corrupt: cannot be read or fails the checks.");
     Table problems;
-    problems.header = {"solver", "point", "state", "why (left out of the comparison)"};
-    for (const auto& [key, r] : col.runs)
-        if (r.status.state == ResultState::Stale || r.status.state == ResultState::Corrupt)
-            problems.rows.push_back({{r.solver, ""}, {r.point->id, ""}, {state_name(r.status.state), state_class(r.status.state)},
-                                     {r.status.reason, ""}});
-    if (!problems.rows.empty()) {
-        rep.text("Stale results were computed for other inputs (rerun the solver); corrupt ones cannot be read or fail the checks. "
-                 "Neither is compared:");
-        rep.table(std::move(problems));
-    }
+    problems.header = {"solver", "point", "state", "why"};
+    for (const OperatingPoint* p : col.points)
+        for (const auto& s : col.solvers) {
+            const Run& r = col.run(s, p->id);
+            if (const std::string why = r.state_reason(); !why.empty())
+                problems.rows.push_back({{r.solver, ""}, {p->id, ""}, {r.state_name(), r.state_class()}, {why, ""}});
+        }
+    if (!problems.rows.empty()) rep.table(std::move(problems));
     rep.heading("Key numbers", 3);
     rep.table(key_numbers(col));
 
@@ -186,7 +197,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
              "error of the statistical solvers (particle solvers, automaton); the continuum solver is deterministic "
              "and has none.");
     rep.text("Wall stresses are shown against U on log–log axes with the power law σ = c Uⁿ fitted per solver over "
-             "the points that differ only in speed: rapid (Bagnold) flow at fixed solid fraction gives n = 2, "
+             "its steady points (at least three) that differ only in speed: rapid (Bagnold) flow at fixed solid fraction gives n = 2, "
              "quasi-static flow n → 0. A difference between two solvers is significant when it exceeds twice the "
              "combined standard error (|z| > 2, shown bold); between deterministic results every difference is a "
              "model difference.");
@@ -212,13 +223,20 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
             for (const char* q : kStressOutputs) {
                 const MetricRow* r = find_row(metrics, "exponent", g, q, s, "");
                 any = any || r;
-                row.push_back({r ? fmt::format("{} ({} speeds)", value_pm(r->a, r->a_stderr, 3), *r->fit_points) : "", ""});
+                if (!r)
+                    row.push_back({});
+                else if (!r->a)
+                    row.push_back({r->note, "transient"});
+                else
+                    row.push_back({fmt::format("{} ({} steady speeds)", value_pm(r->a, r->a_stderr, 3), *r->fit_points), ""});
             }
             if (any) ex.rows.push_back(std::move(row));
         }
     }
     if (ex.rows.empty())
-        rep.text("No stress–speed exponent: it needs at least two speeds with results from the same solver.");
+        rep.text(fmt::format("No stress–speed exponent: it needs at least {} steady results at two or more speeds "
+                             "from the same solver.",
+                             kMinFitPoints));
     else
         rep.table(std::move(ex));
 

@@ -105,9 +105,15 @@ std::string tick_text(const std::string& label) {
     return xml_escape(label);
 }
 
-void marker(std::string& out, int style, bool open, double x, double y, const char* colour) {
-    const std::string fill = open ? "#ffffff" : colour;
-    const auto attrs = fmt::format("fill=\"{}\" stroke=\"{}\" stroke-width=\"1.4\"", fill, colour);
+// A result that is not steady: hollow, dashed outline, faded (class "unsteady", for tests and styling).
+constexpr const char* kUnsteadyAttrs = "class=\"unsteady\" opacity=\"0.55\"";
+
+void marker(std::string& out, const Series& s, double x, double y) {
+    const char* colour = style_colour(s.style);
+    const std::string fill = s.open || s.unsteady ? "#ffffff" : colour;
+    auto attrs = fmt::format("fill=\"{}\" stroke=\"{}\" stroke-width=\"1.4\"", fill, colour);
+    if (s.unsteady) attrs += fmt::format(" stroke-dasharray=\"2 1.5\" {}", kUnsteadyAttrs);
+    const int style = s.style;
     switch (((style % 4) + 4) % 4) {
         case 0: out += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"4.2\" {}/>", x, y, attrs); break;
         case 1:
@@ -125,10 +131,11 @@ void marker(std::string& out, int style, bool open, double x, double y, const ch
 }
 
 std::string stroke(const Series& s) {
-    const char* dash = s.dashed ? "5 4" : style_dash(s.style);
+    const char* dash = s.unsteady ? "1.5 3" : s.dashed ? "5 4" : style_dash(s.style);
     std::string a = fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"", style_colour(s.style),
                                 s.dashed ? 1.4 : 1.9);
     if (*dash) a += fmt::format(" stroke-dasharray=\"{}\"", dash);
+    if (s.unsteady) a += fmt::format(" {}", kUnsteadyAttrs);
     return a;
 }
 
@@ -286,8 +293,8 @@ std::string render_svg(const Figure& f) {
             if (finite_point(s, i, m)) pts += fmt::format("{:.2f},{:.2f} ", m.px(s.x[i]), m.py(s.y[i] + s.err[i]));
         for (std::size_t i = s.x.size(); i-- > 0;)
             if (finite_point(s, i, m)) pts += fmt::format("{:.2f},{:.2f} ", m.px(s.x[i]), m.py(s.y[i] - s.err[i]));
-        out += fmt::format("<polygon points=\"{}\" fill=\"{}\" fill-opacity=\"0.22\" stroke=\"none\"/>\n", pts,
-                           style_colour(s.style));
+        out += fmt::format("<polygon points=\"{}\" fill=\"{}\" fill-opacity=\"{}\" stroke=\"none\"/>\n", pts,
+                           style_colour(s.style), s.unsteady ? 0.08 : 0.22);
     }
     for (const auto& s : f.series) {
         if (s.mark != Mark::Line) continue;
@@ -306,10 +313,10 @@ std::string render_svg(const Figure& f) {
                 const double a = m.py(s.y[i] - s.err[i]), b = m.py(s.y[i] + s.err[i]);
                 out += fmt::format(
                     "<path d=\"M{0:.2f},{1:.2f}V{2:.2f}M{3:.2f},{1:.2f}H{4:.2f}M{3:.2f},{2:.2f}H{4:.2f}\" "
-                    "stroke=\"{5}\" stroke-width=\"1.2\" fill=\"none\"/>",
-                    x, a, b, x - 3.5, x + 3.5, colour);
+                    "stroke=\"{5}\" stroke-width=\"1.2\" fill=\"none\"{6}/>",
+                    x, a, b, x - 3.5, x + 3.5, colour, s.unsteady ? std::string(" ") + kUnsteadyAttrs : "");
             }
-            marker(out, s.style, s.open, x, m.py(s.y[i]), colour);
+            marker(out, s, x, m.py(s.y[i]));
         }
         out += "\n";
     }
@@ -336,12 +343,12 @@ std::string render_svg(const Figure& f) {
             if (s.mark == Mark::Line) {
                 if (s.err.size() == s.y.size() && !s.y.empty())
                     out += fmt::format(
-                        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"26\" height=\"10\" fill=\"{}\" fill-opacity=\"0.22\"/>",
-                        lx + 6, y - 5, style_colour(s.style));
+                        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"26\" height=\"10\" fill=\"{}\" fill-opacity=\"{}\"/>",
+                        lx + 6, y - 5, style_colour(s.style), s.unsteady ? 0.08 : 0.22);
                 out += fmt::format("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" {}/>", lx + 6, y,
                                    lx + 32, y, stroke(s));
             } else {
-                marker(out, s.style, s.open, lx + 19, y, style_colour(s.style));
+                marker(out, s, lx + 19, y);
             }
             out += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\">{}</text>\n", lx + 38, y + 4.5, xml_escape(s.label));
         }

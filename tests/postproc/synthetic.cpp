@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "granlub/regime.h"
 #include "granlub/results.h"
 
 namespace granlub::test {
@@ -80,8 +81,19 @@ void write_solver(const SyntheticCase& s, const std::string& solver) {
             prof.add("u_over_U_stderr", se).add("solid_fraction_stderr", se).add("temperature_over_U2_stderr", se);
         }
         sum.run = {{"steps", 1000}, {"wall_clock_s", 0.5}};
+        set_regime(sum.run, RegimeStatus::Steady);
         write_result(result_dir(s.o.results_root, solver, p.id), prof, sum);
     }
+}
+
+void patch_run(const SyntheticCase& s, const std::string& solver, const std::string& point, const nlohmann::json& run) {
+    const auto file = result_dir(s.o.results_root, solver, point) / "summary.json";
+    auto j = nlohmann::json::parse(slurp(file));
+    for (const auto& [key, value] : run.items()) {
+        if (value.is_null()) j["run"].erase(key);
+        else j["run"][key] = value;
+    }
+    write_file_atomic(file, j.dump(2));
 }
 
 std::string slurp(const std::filesystem::path& p) {

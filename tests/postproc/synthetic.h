@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "granlub/case.h"
 #include "granlub/sweep.h"
 
@@ -27,6 +29,10 @@ SyntheticCase make_case(const std::string& name, const std::string& extra_toml =
 // automaton: 10 cell centres, lattice occupancy with max_solid_fraction = 1: nu = 0.8 + 0.1 y (so
 //   nu/nu_max equals the continuum's), u/U as the continuum, T/U^2 = 0.01; stresses 0.9 x continuum.
 void write_solver(const SyntheticCase& s, const std::string& solver);
+
+// Edits the written summary.json of (solver, point): merges `run` into its run block (e.g. a
+// regime status or a dt_refinement record), or removes the keys whose value is null.
+void patch_run(const SyntheticCase& s, const std::string& solver, const std::string& point, const nlohmann::json& run);
 
 std::map<std::string, std::string> read_metrics_row(const std::filesystem::path& csv, const std::string& kind,
                                                     const std::string& point, const std::string& quantity,

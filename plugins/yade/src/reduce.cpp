@@ -11,6 +11,7 @@
 
 #include "granlub/coarse_grain.h"
 #include "granlub/error.h"
+#include "granlub/regime.h"
 
 namespace granlub::yade {
 
@@ -179,6 +180,9 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     sum.run["simulated_time_s"] = ds.at("simulated_time");
     sum.run["steady_state_detected"] = steady;
     sum.run["steady_state_start_s"] = t_start;
+    set_regime(sum.run, steady ? RegimeStatus::Steady : RegimeStatus::Transient,
+               steady ? "" : fmt::format("no steady state detected in {:.3g} s of simulated time: run longer (--full)",
+                                         ds.at("simulated_time").get<double>()));
     sum.run["wall_samples"] = w.rows();
     sum.run["wall_samples_used"] = w.rows() - std::min(start, w.rows());
     sum.run["snapshots"] = cg.snapshots();

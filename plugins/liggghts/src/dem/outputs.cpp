@@ -12,6 +12,7 @@
 
 #include "deck.h"
 #include "granlub/error.h"
+#include "granlub/regime.h"
 
 namespace granlub::dem {
 
@@ -264,6 +265,10 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
              {"wall_samples_used", w.step.size() - start},
              {"snapshots", cg.snapshots()},
              {"snapshots_used", cg.snapshots() - first}});
+    const double simulated = static_cast<double>(s.steps) * s.time_step;
+    set_regime(o.run, steady ? RegimeStatus::Steady : RegimeStatus::Transient,
+               steady ? "" : fmt::format("no steady state detected in {:.3g} s of simulated time: run longer (--full)",
+                                         simulated));
     o.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa slip={:.3f}/{:.3f} U{}",
                          o.outputs["mean_solid_fraction"].value, o.outputs["normal_stress_bottom"].value,
                          o.outputs["normal_stress_top"].value, o.outputs["shear_stress_bottom"].value,
