@@ -1,17 +1,6 @@
 #include "full_schema.h"
 
-#ifdef GRANLUB_HAVE_CONTINUUM
-#include "granlub/continuum/command.h"
-#endif
-#ifdef GRANLUB_HAVE_AUTOMATON
-#include "granlub/automaton/command.h"
-#endif
-#ifdef GRANLUB_HAVE_DEM
-#include "granlub/dem/command.h"
-#endif
-#ifdef GRANLUB_HAVE_YADE
-#include "granlub/yade/command.h"
-#endif
+#include "solver_commands.h"
 
 namespace granlub::cli {
 

@@ -6,19 +6,8 @@
 
 #include "granlub/error.h"
 #include "granlub/results.h"
+#include "solver_commands.h"
 
-#ifdef GRANLUB_HAVE_CONTINUUM
-#include "granlub/continuum/command.h"
-#endif
-#ifdef GRANLUB_HAVE_AUTOMATON
-#include "granlub/automaton/command.h"
-#endif
-#ifdef GRANLUB_HAVE_DEM
-#include "granlub/dem/command.h"
-#endif
-#ifdef GRANLUB_HAVE_YADE
-#include "granlub/yade/command.h"
-#endif
 #ifdef GRANLUB_HAVE_POSTPROC
 #include "granlub/postproc/command.h"
 #endif
