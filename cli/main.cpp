@@ -1,6 +1,9 @@
 // granlub: one command, one subcommand per job. Exit codes: 0 done, 1 a solver failed on some
 // point, 2 bad input (case file, options).
+#include <charconv>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,7 @@ namespace {
 
 struct Args {
     std::string case_path;
+    std::int64_t seed = -1;  // -1: not given
     granlub::RunOptions opt;
     std::string results;
     std::vector<std::string> solvers;
@@ -28,16 +32,32 @@ void add_case(CLI::App* sub, Args& a) {
     sub->add_option("--results", a.results, "results folder (default: CASE/results)");
 }
 
+// An integer option in [lo, hi], parsed exactly: no wrap-around of -1 into 2^64 - 1, no 1e23.
+CLI::Validator integer_in(std::int64_t lo, std::int64_t hi, std::string what) {
+    return CLI::Validator(
+        [lo, hi, what](std::string& text) -> std::string {
+            std::int64_t v = 0;
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+            if (ec != std::errc() || ptr != end || v < lo || v > hi)
+                return fmt::format("'{}' is not {} (allowed: an integer from {} to {})", text, what, lo, hi);
+            return "";
+        },
+        fmt::format("INT in [{}, {}]", lo, hi));
+}
+
 void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
     sub->add_option("--point", a.opt.point, "only this operating point (see `granlub check CASE` for ids)");
     sub->add_flag("--force", a.opt.force, "recompute points whose results are complete and current");
     sub->add_flag("--full", a.opt.full, "full-fidelity run lengths (the case's *_full keys)");
     sub->add_flag("--vtk", a.opt.vtk, "also write ParaView files");
     if (stochastic) {
-        sub->add_option("--seed", a.opt.seed, "random seed (default: the case's seed)");
-        sub->add_option("--threads", a.opt.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+        sub->add_option("--seed", a.seed, "random seed, as the case key seed (default: the case's seed)")
+            ->check(integer_in(0, std::numeric_limits<std::int64_t>::max(), "a seed"));
+        sub->add_option("--threads", a.opt.threads, "worker threads (default: all cores)")
+            ->check(integer_in(0, 1024, "a thread count"));
     }
-    if (mpi) sub->add_option("--np", a.opt.np, "MPI ranks for LIGGGHTS")->check(CLI::PositiveNumber);
+    if (mpi) sub->add_option("--np", a.opt.np, "MPI ranks for LIGGGHTS")->check(integer_in(1, 4096, "a rank count"));
 }
 
 }  // namespace
@@ -85,6 +105,7 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     a.opt.results_root = a.results;
+    if (a.seed >= 0) a.opt.seed = static_cast<std::uint64_t>(a.seed);
 
     if (keys->parsed()) {
         const granlub::Schema schema = granlub::cli::full_schema();
@@ -105,10 +126,19 @@ int main(int argc, char** argv) {
         const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
         if (check->parsed()) {
             fmt::print("{}", granlub::describe(c));
-            return 0;
+            return granlub::cli::check_solvers(c, a.opt);
         }
         for (const auto& [sub, m] : solver_cmds)
-            if (sub->parsed()) return m->run(c, a.opt);
+            if (sub->parsed()) {
+                try {
+                    m->check(c, a.opt);  // bad input fails here, exit 2, before any point runs
+                } catch (const granlub::CaseError&) {
+                    throw;
+                } catch (const granlub::Error&) {
+                    // a point this solver cannot run: the sweep reports it and runs the others
+                }
+                return m->run(c, a.opt);
+            }
         if (compare && compare->parsed()) return granlub::cli::compare(c, a.opt);
         if (run->parsed()) return granlub::cli::run_all(c, a.opt, a.solvers);
     } catch (const granlub::CaseError& e) {

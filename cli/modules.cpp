@@ -18,20 +18,59 @@ const std::vector<SolverModule>& solver_modules() {
     static const std::vector<SolverModule> modules = [] {
         std::vector<SolverModule> m;
 #ifdef GRANLUB_HAVE_CONTINUUM
-        m.push_back({"continuum", "granular kinetic lubrication (GKL) continuum solver", continuum::run});
+        m.push_back({"continuum", "granular kinetic lubrication (GKL) continuum solver", continuum::run, continuum::check});
 #endif
 #ifdef GRANLUB_HAVE_AUTOMATON
-        m.push_back({"automaton", "lattice cellular automaton (Jasti & Higgs 2006)", automaton::run});
+        m.push_back({"automaton", "lattice cellular automaton (Jasti & Higgs 2006)", automaton::run, automaton::check});
 #endif
 #ifdef GRANLUB_HAVE_DEM
-        m.push_back({"dem", "particle simulation in LIGGGHTS with granlub's contact models", dem::run});
+        m.push_back({"dem", "particle simulation in LIGGGHTS with granlub's contact models", dem::run, dem::check});
 #endif
 #ifdef GRANLUB_HAVE_YADE
-        m.push_back({"yade", "particle simulation in YADE (cross-check)", yade::run});
+        m.push_back({"yade", "particle simulation in YADE (cross-check)", yade::run, yade::check});
 #endif
         return m;
     }();
     return modules;
+}
+
+int check_solvers(const Case& c, const RunOptions& o) {
+    int rc = 0;
+    fmt::print("\n# solver checks (every point, quick and --full run lengths)\n");
+    std::fflush(stdout);  // the errors and warnings on stderr follow the lines they belong to
+    for (const auto& m : solver_modules()) {
+        std::vector<std::string> cannot;  // points this solver cannot run: a warning, not bad input
+        try {
+            for (const OperatingPoint* p : c.select(o.point)) {
+                RunOptions one = o;
+                one.point = p->id;
+                try {
+                    m.check(c, one);
+                } catch (const CaseError&) {
+                    throw;
+                } catch (const Error& e) {
+                    cannot.push_back(fmt::format("point {}: {}", p->id, e.what()));
+                }
+            }
+        } catch (const CaseError& e) {
+            fmt::print("#   {:<10} bad input (see the error)\n", m.name);
+            std::fflush(stdout);
+            fmt::print(stderr, "error: {}: {}\n", m.name, e.what());
+            rc = 2;
+            continue;
+        }
+        if (cannot.empty()) {
+            fmt::print("#   {:<10} ok\n", m.name);
+            std::fflush(stdout);
+            continue;
+        }
+        fmt::print("#   {:<10} cannot run {} of {} point(s) (see the warnings)\n", m.name, cannot.size(),
+                   c.select(o.point).size());
+        std::fflush(stdout);
+        for (const auto& w : cannot) fmt::print(stderr, "warning: {} will fail on {}\n", m.name, w);
+    }
+    std::fflush(stdout);
+    return rc;
 }
 
 bool have_compare() {

@@ -13,9 +13,14 @@ struct SolverModule {
     std::string name;         // subcommand and results folder name
     std::string description;
     std::function<int(const Case&, const RunOptions&)> run;
+    std::function<void(const Case&, const RunOptions&)> check;  // what run would reject, without running
 };
 
 const std::vector<SolverModule>& solver_modules();
+// `granlub check` after the case parses: every compiled solver's check() on every point (quick
+// and --full run lengths). One line per solver; returns 2 when any finds bad input (the error
+// names it); points a solver cannot run (e.g. a smooth wall in the continuum) are warnings.
+int check_solvers(const Case& c, const RunOptions& o);
 // `granlub compare` if postproc is compiled in; otherwise throws.
 int compare(const Case& c, const RunOptions& o);
 bool have_compare();

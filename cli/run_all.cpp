@@ -18,9 +18,20 @@ int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& 
         if (solvers.empty() || std::find(solvers.begin(), solvers.end(), m.name) != solvers.end()) mods.push_back(&m);
     if (mods.empty()) throw Error("no solver selected (and none compiled in)");
 
+    // Bad input stops everything before a run starts (exit 2). A point a solver cannot run is
+    // left to its sweep, which names it and runs the other points.
+    for (const auto* m : mods) {
+        try {
+            m->check(c, o);
+        } catch (const CaseError&) {
+            throw;
+        } catch (const Error&) {
+        }
+    }
+    int rc = 0;
+
     const std::size_t stages = mods.size() + (have_compare() ? 1 : 0);
     std::size_t stage = 0;
-    int rc = 0;
     const auto t0 = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
     for (const auto* m : mods) {

@@ -10,6 +10,9 @@ namespace granlub::automaton {
 
 namespace {
 
+// Memory of the lattice and its grains (a few tens of bytes per cell) and int indices bound it.
+constexpr double kMaxLatticeCells = 5e7;
+
 template <class E>
 E pick(const std::string& v, std::initializer_list<std::pair<const char*, E>> table) {
     for (const auto& [name, e] : table)
@@ -36,6 +39,10 @@ Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
         throw CaseError(fmt::format("{}: [cell] length = {} m is {:.2f} grain diameters: the lattice has {} "
                                     "columns (allowed: length >= 2.5 diameters)",
                                     src, c.cell.length, c.cell.length / d, cols));
+    if (!(rows * cols <= kMaxLatticeCells))
+        throw CaseError(fmt::format("{}: [cell] length = {} m and gap = {} m make a lattice of {:.3g} x {:.3g} cells of "
+                                    "one grain diameter; at most {:g} cells are allowed",
+                                    src, c.cell.length, c.cell.gap, cols, rows, kMaxLatticeCells));
     prm.lattice.rows = static_cast<int>(rows);
     prm.lattice.columns = static_cast<int>(cols);
 

@@ -215,6 +215,10 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
 
 }  // namespace
 
+void check(const Case& c, const RunOptions& o) {
+    for_each_run(c, o, [&](const OperatingPoint& p, const RunOptions& v) { map_point(c, p, v); });
+}
+
 int run(const Case& c, const RunOptions& o) {
     return run_sweep(c, "automaton", o,
                      [&](const OperatingPoint& p, const std::filesystem::path& dir) { return solve_point(c, p, o, dir); });

@@ -3,23 +3,27 @@
 
 namespace granlub::automaton {
 
+// Upper bounds on counts keep a typo from exhausting memory (the sampler keeps per-block and
+// time-series rows) or overflowing an int: 1e8 steps of the JH06 lattice is about an hour.
+constexpr double kMaxSteps = 1e8;
+
 SectionSpec section() {
     SectionSpec s("automaton", "lattice cellular automaton (Jasti & Higgs 2006; ca-model.md)");
     s.choice("mode", "jh", {"jh", "vector"},
              "rules: jh = JH06 as specified (scalar u_p); vector = momentum-consistent variant [ASSUMED]");
     s.real_optional("fill", Range::open_closed(0, 1), "",
                     "fraction of lattice cells holding a grain; default solid_fraction / max_solid_fraction [ASSUMED]");
-    s.integer("steps", 10000, Range::at_least(1), "time steps per replica (quick runs; JH06 used 10 000)");
-    s.integer("steps_full", 50000, Range::at_least(1), "time steps per replica with --full");
-    s.integer("t_avg_start", 2000, Range::at_least(0), "first step of the sampling window (a multiple of block)");
-    s.integer("block", 500, Range::at_least(1), "block length (steps) for the steady-state test and standard errors");
-    s.integer("sample_every", 1, Range::at_least(1), "sample the rows every this many steps");
-    s.integer("replicas", 4, Range::at_least(1), "independent replicas averaged (quick runs)");
-    s.integer("replicas_full", 16, Range::at_least(1), "independent replicas with --full");
-    s.integer("threads", 0, Range::at_least(0), "threads for the replicas; 0 = one per core (--threads overrides)");
+    s.integer("steps", 10000, Range::closed(1, kMaxSteps), "time steps per replica (quick runs; JH06 used 10 000)");
+    s.integer("steps_full", 50000, Range::closed(1, kMaxSteps), "time steps per replica with --full");
+    s.integer("t_avg_start", 2000, Range::closed(0, kMaxSteps), "first step of the sampling window (a multiple of block)");
+    s.integer("block", 500, Range::closed(1, kMaxSteps), "block length (steps) for the steady-state test and standard errors");
+    s.integer("sample_every", 1, Range::closed(1, kMaxSteps), "sample the rows every this many steps");
+    s.integer("replicas", 4, Range::closed(1, 1024), "independent replicas averaged (quick runs)");
+    s.integer("replicas_full", 16, Range::closed(1, 1024), "independent replicas with --full");
+    s.integer("threads", 0, Range::closed(0, 1024), "threads for the replicas; 0 = one per core (--threads overrides)");
     s.integer("seed", 1, Range::at_least(0), "random seed (--seed overrides); same seed = same numbers");
     s.real("s0_max", 0.1, Range::open_closed(0, 1), "", "initial u_p/U uniform on (0, s0_max] [ASSUMED]");
-    s.integer("tf_max", 50, Range::at_least(1), "slowest time factor; grains with u_p < U/tf_max are at rest [ASSUMED]");
+    s.integer("tf_max", 50, Range::closed(1, 1e6), "slowest time factor; grains with u_p < U/tf_max are at rest [ASSUMED]");
     s.choice("tf_rounding", "round", {"round", "ceil", "accumulate"},
              "time factor from u_p: round(U/u_p), ceil(U/u_p), or a continuous progress counter [ASSUMED]");
     s.choice("wall_speed", "sequential", {"sequential", "by_incidence"},
@@ -37,16 +41,16 @@ SectionSpec section() {
     s.choice("steady_state", "blocks", {"blocks", "runs"},
              "steady-state protocol: blocks = block test of ca-model.md §4.4 over `steps`; runs = JH06's literal "
              "protocol (§7.6): runs of runs_start, 2 runs_start, ... steps until consecutive runs agree");
-    s.integer("runs_start", 1000, Range::at_least(1),
+    s.integer("runs_start", 1000, Range::closed(1, kMaxSteps),
               "steady_state = \"runs\": first run length T_1 (a multiple of 2 x block); each run doubles it");
-    s.integer("runs_max_steps", 16000, Range::at_least(1),
+    s.integer("runs_max_steps", 16000, Range::closed(1, kMaxSteps),
               "steady_state = \"runs\": step limit; the point fails if runs up to this length never agree");
     s.real("runs_tol_u", 0.01, Range::positive(), "",
            "steady_state = \"runs\": max |change of u/U| between consecutive runs (JH06 / §7.6)");
     s.real("runs_tol_nu", 0.01, Range::positive(), "",
            "steady_state = \"runs\": max |change of occupancy| between consecutive runs (§7.6)");
-    s.integer("timeseries_every", 10, Range::at_least(0), "write <u_p>, u(row 0), u(top row) every this many steps (0 = none)");
-    s.integer("vtk_every", 100, Range::at_least(1), "lattice snapshot interval (steps) with --vtk");
+    s.integer("timeseries_every", 10, Range::closed(0, kMaxSteps), "write <u_p>, u(row 0), u(top row) every this many steps (0 = none)");
+    s.integer("vtk_every", 100, Range::closed(1, kMaxSteps), "lattice snapshot interval (steps) with --vtk");
     s.validate = [](const Section& sec) {
         const auto deflect = sec.integer("pp_deflect");
         if (deflect != 45 && deflect != 90) sec.fail("pp_deflect", "allowed: 45 or 90");

@@ -4,6 +4,11 @@
 
 namespace granlub::continuum {
 
+void check(const Case& c, const RunOptions& o) {
+    const Settings s = settings_from_case(c);
+    for_each_run(c, o, [&](const OperatingPoint& p, const RunOptions&) { problem_for(c, s, p); });
+}
+
 int run(const Case& c, const RunOptions& o) {
     const Settings s = settings_from_case(c);
     return run_sweep(c, "continuum", o, [&](const OperatingPoint& p, const std::filesystem::path& /*dir*/) {

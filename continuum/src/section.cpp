@@ -22,10 +22,10 @@ SectionSpec section() {
             s.real_optional(n + "_" + side, Range::unit(), "", "roughness factor " + n + " at the " + side +
                                                                " wall; default: " + n + ", else the wall's roughness");
     }
-    s.integer("cells", 200, Range::at_least(100), "finite-volume cells across the gap (profile has cells + 1 rows)");
+    s.integer("cells", 200, Range::closed(100, 1e6), "finite-volume cells across the gap (profile has cells + 1 rows)");
     s.real("tolerance", 1e-10, Range::positive(), "", "Newton tolerance on the max-norm flux-balance residual");
-    s.integer("max_iterations", 50, Range::at_least(1), "Newton iterations per solve");
-    s.integer("max_continuation_steps", 200, Range::at_least(1), "continuation steps when the direct solve fails");
+    s.integer("max_iterations", 50, Range::closed(1, 1e4), "Newton iterations per solve");
+    s.integer("max_continuation_steps", 200, Range::closed(1, 1e5), "continuation steps when the direct solve fails");
     return s;
 }
 

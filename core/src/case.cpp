@@ -217,9 +217,8 @@ std::string id_number(double v, bool force_decimal) {
 // ---------------------------------------------------------------------------------------------
 Case parse_case(std::string_view text, const std::string& source, const Schema& schema_in) {
     if (text.size() > kMaxCaseFileBytes)
-        throw CaseError(fmt::format("{}: {} bytes; a case file may have at most {} bytes (list sweeps of at most "
-                                    "{} operating points)",
-                                    source, text.size(), kMaxCaseFileBytes, kMaxOperatingPoints));
+        throw CaseError(fmt::format("{}: {} bytes; a case file may have at most {} bytes", source, text.size(),
+                                    kMaxCaseFileBytes));
     // toml++ 3.3 reaches unreachable code on some malformed UTF-8 (its issue 295): never hand it any.
     if (const auto bad = invalid_utf8_offset(text)) {
         const LineColumn lc = line_column(text, *bad);

@@ -12,6 +12,7 @@
 
 #include "granlub/case.h"
 #include "granlub/error.h"
+#include "granlub/text.h"
 #include "granlub/results.h"
 
 namespace granlub {
@@ -49,7 +50,12 @@ ParticleBox particle_box(const Case& c, double periodic_depth) {
 
 std::size_t grains_for_fill(const ParticleBox& box, double diameter, double nu) {
     const double vg = std::numbers::pi * diameter * diameter * diameter / 6.0;
-    return static_cast<std::size_t>(std::llround(nu * box.volume() / vg));
+    const double n = nu * box.volume() / vg;
+    if (!(n <= kMaxGrains))
+        throw CaseError(fmt::format("{:.3g} grains of d = {:g} m fill the {:g} x {:g} x {:g} m box at solid fraction "
+                                    "{:g}; at most {:g} are allowed (a smaller [cell] length, gap or width)",
+                                    n, diameter, box.length, box.gap, box.width, nu, kMaxGrains));
+    return static_cast<std::size_t>(std::llround(n));
 }
 
 namespace {
@@ -131,11 +137,8 @@ double wrap(double v, double period) {
 
 }  // namespace
 
-ParticleSet insert_grains(const ParticleBox& box, double d, std::size_t n, const InsertionOptions& opt) {
-    if (!(d > 0) || !(box.length > 0) || !(box.gap > 0) || !(box.width > 0))
-        throw CaseError(fmt::format("particle insertion: grain diameter {:g} m and box {:g} x {:g} x {:g} m must "
-                                    "be positive",
-                                    d, box.length, box.gap, box.width));
+// Throws CaseError when n grains of diameter d cannot sit on the densest insertion lattice.
+static void check_fits(const ParticleBox& box, double d, std::size_t n) {
     const Lattice densest = make_lattice(box, d, d);
     if (densest.count() < n) {
         const double vg = std::numbers::pi * d * d * d / 6.0;
@@ -145,6 +148,14 @@ ParticleSet insert_grains(const ParticleBox& box, double d, std::size_t n, const
             n, static_cast<double>(n) * vg / box.volume(), box.length, box.gap, box.width, densest.count(),
             static_cast<double>(densest.count()) * vg / box.volume()));
     }
+}
+
+ParticleSet insert_grains(const ParticleBox& box, double d, std::size_t n, const InsertionOptions& opt) {
+    if (!(d > 0) || !(box.length > 0) || !(box.gap > 0) || !(box.width > 0))
+        throw CaseError(fmt::format("particle insertion: grain diameter {:g} m and box {:g} x {:g} x {:g} m must "
+                                    "be positive",
+                                    d, box.length, box.gap, box.width));
+    check_fits(box, d, n);
     // Largest spacing with enough sites: count(a) does not increase with a, so bisect.
     double lo = d, hi = 2.0 * d;
     while (make_lattice(box, d, hi).count() >= n && hi < 1e3 * d) hi *= 2.0;
@@ -221,7 +232,7 @@ void write_particles_csv(const std::filesystem::path& path, const ParticleSet& p
                          const std::vector<std::string>& comments) {
     std::string out;
     out.reserve(p.size() * 140 + 256);
-    for (const auto& c : comments) out += "# " + c + "\n";
+    for (const auto& c : comments) out += "# " + one_line(c) + "\n";  // a path may hold a line break
     out += "x,y,z,vx,vy,vz,radius\n";
     for (std::size_t i = 0; i < p.size(); ++i)
         out += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", p.x[i], p.y[i], p.z[i],
@@ -281,6 +292,25 @@ ParticleSet read_particles_csv(const std::filesystem::path& path) {
     return p;
 }
 
+namespace {
+// The grain count of a point, checked: the one place both initial_particles() and
+// check_initial_particles() take it from.
+std::size_t point_grains(const Case& c, const OperatingPoint& pt, const ParticleBox& box) {
+    try {
+        const std::size_t n = grains_for_fill(box, c.grains.diameter, pt.solid_fraction);
+        check_fits(box, c.grains.diameter, n);
+        return n;
+    } catch (const CaseError& e) {
+        throw CaseError(fmt::format("{}: point {}: [operating] solid_fraction = {:g}: {}", c.file.string(), pt.id,
+                                    pt.solid_fraction, e.what()));
+    }
+}
+}  // namespace
+
+void check_initial_particles(const Case& c, const OperatingPoint& pt, double periodic_depth) {
+    point_grains(c, pt, particle_box(c, periodic_depth));
+}
+
 InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, const std::filesystem::path& root,
                                    const InsertionOptions& opt_in, double periodic_depth) {
     InitialParticles out;
@@ -289,7 +319,7 @@ InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, cons
     InsertionOptions opt = opt_in;
     opt.wall_speed = pt.speed;
     const double d = c.grains.diameter;
-    const std::size_t n = grains_for_fill(out.box, d, pt.solid_fraction);
+    const std::size_t n = point_grains(c, pt, out.box);
     const std::string key = fmt::format("key: box={:.17g},{:.17g},{:.17g},{} d={:.17g} n={} U={:.17g} noise={:.17g} seed={}",
                                         out.box.length, out.box.gap, out.box.width, out.box.periodic_z ? "pz" : "wz",
                                         d, n, opt.wall_speed, opt.velocity_noise, opt.seed);
@@ -303,12 +333,7 @@ InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, cons
             }
         }
     }
-    try {
-        out.particles = insert_grains(out.box, d, n, opt);
-    } catch (const CaseError& e) {
-        throw CaseError(fmt::format("{}: point {}: [operating] solid_fraction = {:g}: {}", c.file.string(), pt.id,
-                                    pt.solid_fraction, e.what()));
-    }
+    out.particles = insert_grains(out.box, d, n, opt);
     write_particles_csv(out.file, out.particles,
                         {fmt::format("granlub {} initial configuration (FCC sites, random subset and jitter)", version()),
                          fmt::format("case: {} ({}, hash {})", c.name, c.file.string(), c.file_hash),

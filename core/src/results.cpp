@@ -16,6 +16,7 @@
 
 #include "granlub/case.h"
 #include "granlub/error.h"
+#include "granlub/text.h"
 
 namespace granlub {
 
@@ -141,7 +142,7 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view bytes
 
 std::string profile_csv(const Profile& p, const std::vector<std::string>& comments) {
     std::string out;
-    for (const auto& c : comments) out += "# " + c + "\n";
+    for (const auto& c : comments) out += "# " + one_line(c) + "\n";
     out += fmt::format("{}\n", fmt::join(p.names, ","));
     for (std::size_t r = 0; r < p.rows(); ++r) {
         for (std::size_t c = 0; c < p.columns.size(); ++c)

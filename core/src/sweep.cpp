@@ -27,6 +27,16 @@ std::string run_options_differ(const Summary& s, const RunOptions& o) {
 }
 }  // namespace
 
+void for_each_run(const Case& c, const RunOptions& o,
+                  const std::function<void(const OperatingPoint&, const RunOptions&)>& check) {
+    for (const OperatingPoint* p : c.select(o.point))
+        for (const bool full : {false, true}) {
+            RunOptions variant = o;
+            variant.full = full;
+            check(*p, variant);
+        }
+}
+
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve) {
     const auto points = c.select(o.point);
     const auto root = results_root(c, o);

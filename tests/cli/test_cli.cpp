@@ -1,6 +1,8 @@
 #define BOOST_TEST_MODULE granlub command
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include <boost/test/unit_test.hpp>
 
@@ -70,4 +72,96 @@ BOOST_AUTO_TEST_CASE(keys_are_printed_from_their_declarations) {
     auto bad = run(exe + " keys nosuchsection");
     BOOST_TEST(bad.rc == 2);
     BOOST_TEST(bad.text.find("no section [nosuchsection]") != std::string::npos, bad.text);
+}
+
+namespace {
+// cases/sawyer2001 with `from` replaced by `to` (or appended when `from` is empty), in a scratch folder.
+fs::path edited_case(const std::string& name, const std::string& from, const std::string& to) {
+    const fs::path dir = fs::temp_directory_path() / ("granlub_test_cli_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ifstream in(src + "/cases/sawyer2001/case.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    if (from.empty()) text += "\n" + to + "\n";
+    else text.replace(text.find(from), from.size(), to);
+    std::ofstream(dir / "case.toml") << text;
+    return dir;
+}
+bool built(const std::string& module) { return run(exe + " --help").text.find("\n  " + module) != std::string::npos; }
+}  // namespace
+
+// Sizes that used to end in std::bad_alloc or an overflowed count, and a lattice the automaton
+// refuses: `granlub check` finds each (exit 2, the key named), before any solver runs.
+BOOST_AUTO_TEST_CASE(check_finds_what_the_solvers_would_reject) {
+    struct Bad {
+        const char* module;
+        std::string from, to, expect;
+    };
+    const std::vector<Bad> cases = {
+        {"continuum", "", "[continuum]\ncells = 2000000000", "[continuum] cells = 2000000000: out of range"},
+        {"automaton", "", "[automaton]\nsteps = 9223372036854775807", "[automaton] steps = 9223372036854775807"},
+        {"automaton", "length = 30.0e-3", "length = 1e9", "at most 5e+07 cells are allowed"},
+        {"automaton", "gap = 4.0e-3 ", "gap = 1.6e-3 ", "the lattice has 2 rows"},
+        {"dem", "length = 30.0e-3", "length = 1e9", "at most 1e+07 are allowed"},
+        {"dem", "", "[dem]\ntime = 1e300", "at most 1e+10 steps are allowed"},
+        {"dem", "", "[dem]\nstations = 2000000000", "[dem] stations = 2000000000: out of range"},
+        {"yade", "", "[yade]\ntime = 1e300", "at most 1e+10 steps are allowed"},
+    };
+    for (const auto& b : cases) {
+        if (!built(b.module)) continue;
+        const fs::path dir = edited_case("sizes", b.from, b.to);
+        const auto o = run(exe + " check " + dir.string());
+        BOOST_TEST(o.rc == 2, b.to << ": " << o.text);
+        BOOST_TEST(o.text.find(b.expect) != std::string::npos, b.to << ": " << o.text);
+        BOOST_TEST(o.text.find("bad_alloc") == std::string::npos, o.text);
+        fs::remove_all(dir);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(seed_and_counts_on_the_command_line_are_exact) {
+    if (!built("automaton")) return;
+    for (const std::string bad : {"-1", "18446744073709551616", "1e23", "3.5", "x"}) {
+        const auto o = run(exe + " automaton " + src + "/cases/jasti2006 --point U2.0_R0.5 --results /nonexistent --seed " + bad);
+        BOOST_TEST(o.rc == 2, bad << ": " << o.text);
+        BOOST_TEST(o.text.find("'" + bad + "' is not a seed (allowed: an integer from 0 to 9223372036854775807)") !=
+                       std::string::npos,
+                   o.text);
+    }
+    if (built("dem")) {
+        const auto np = run(exe + " dem " + src + "/cases/sawyer2001 --np 0");
+        BOOST_TEST(np.rc == 2);
+        BOOST_TEST(np.text.find("'0' is not a rank count (allowed: an integer from 1 to 4096)") != std::string::npos,
+                   np.text);
+    }
+}
+
+// The audit's exploit: a case name with a line break became a `shell` command in the LIGGGHTS
+// deck. It is refused when the case is read, so no deck, data file or results folder is made.
+BOOST_AUTO_TEST_CASE(a_case_file_cannot_run_commands) {
+    const fs::path pwned = fs::temp_directory_path() / "granlub_test_PWNED";
+    fs::remove(pwned);
+    for (const std::string sub : {"check", "dem", "yade", "run"}) {
+        if (sub != "check" && sub != "run" && !built(sub)) continue;
+        const fs::path dir = edited_case("inject", "name = \"sawyer2001\"",
+                                         "name = \"x\\nshell touch " + pwned.string() + " #\"");
+        const auto o = run(exe + " " + sub + " " + dir.string());
+        BOOST_TEST(o.rc == 2, sub << ": " << o.text);
+        BOOST_TEST(o.text.find("[case] name") != std::string::npos, o.text);
+        BOOST_TEST(!fs::exists(dir / "results"), sub);
+        BOOST_TEST(!fs::exists(pwned), sub);
+        fs::remove_all(dir);
+    }
+}
+
+// A point a solver cannot run is a warning at check time, with the reason (not "try more cells").
+BOOST_AUTO_TEST_CASE(check_warns_of_points_a_solver_cannot_run) {
+    if (!built("continuum")) return;
+    const fs::path dir = edited_case("elastic", "restitution = 0.9          # e_p", "restitution = 1.0 # e_p");
+    const auto o = run(exe + " check " + dir.string());
+    BOOST_TEST(o.rc == 0, o.text);
+    BOOST_TEST(o.text.find("continuum  cannot run 3 of 3 point(s)") != std::string::npos, o.text);
+    BOOST_TEST(o.text.find("warning: continuum will fail on point U1.4: [grains] restitution = 1: perfectly "
+                           "elastic grains") != std::string::npos,
+               o.text);
+    fs::remove_all(dir);
 }

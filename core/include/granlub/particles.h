@@ -52,7 +52,13 @@ inline constexpr double kPeriodicDepthDiameters = 10.0;
 // `periodic_depth` (0: kPeriodicDepthDiameters grain diameters) when cell.width = 0.
 ParticleBox particle_box(const Case& c, double periodic_depth = 0);
 
+// Bounds of a particle run, so that a typo cannot exhaust memory or overflow a count: granlub
+// inserts every grain in one process into one file, and counts steps in 64 bits.
+inline constexpr double kMaxGrains = 1e7;
+inline constexpr double kMaxSteps = 1e10;
+
 // Number of grains of diameter d giving mean solid fraction nu in the box (rounded to nearest).
+// Throws CaseError above kMaxGrains.
 std::size_t grains_for_fill(const ParticleBox& box, double diameter, double solid_fraction);
 
 struct InsertionOptions {
@@ -99,5 +105,8 @@ struct InitialParticles {
 // The first particle solver to run a point creates it, the other reuses it.
 InitialParticles initial_particles(const Case& c, const OperatingPoint& p, const std::filesystem::path& results_root,
                                    const InsertionOptions& opt, double periodic_depth = 0);
+// What initial_particles() would reject (too many grains, more than fit without overlaps), found
+// without inserting any: the particle solvers' part of `granlub check`. Throws CaseError.
+void check_initial_particles(const Case& c, const OperatingPoint& p, double periodic_depth = 0);
 
 }  // namespace granlub

@@ -37,6 +37,12 @@ struct PointResult {
 // solver may leave extra files (logs, decks, VTK). Throws SolverError on failure.
 using PointSolver = std::function<PointResult(const OperatingPoint&, const std::filesystem::path& dir)>;
 
+// Calls check(point, options) for every selected point, once with the quick and once with the
+// --full run lengths: how each solver's check() finds at `granlub check` time what its run would
+// reject (a solver's check throws CaseError for bad input, SolverError for what it cannot run).
+void for_each_run(const Case& c, const RunOptions& o,
+                  const std::function<void(const OperatingPoint&, const RunOptions&)>& check);
+
 // Returns the process exit code: 0 if every selected point is complete afterwards, 1 otherwise.
 // Failures of one point are reported and the sweep goes on with the next.
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve);

@@ -68,6 +68,13 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
 
 }  // namespace
 
+void check(const Case& c, const RunOptions& o) {
+    for_each_run(c, o, [&](const OperatingPoint& p, const RunOptions& v) {
+        const Settings s = resolve_settings(c, p, v);
+        check_initial_particles(c, p, s.periodic_depth);
+    });
+}
+
 int run(const Case& c, const RunOptions& o) {
     return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {

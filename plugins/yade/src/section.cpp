@@ -20,13 +20,13 @@ SectionSpec section() {
     s.real("time", 1.5e-3, Range::positive(), "s",
            "simulated time of a quick run (3000 steps, ~45 s of YADE per sawyer2001 point with viscel)");
     s.real("time_full", 0.2, Range::positive(), "s", "simulated time with --full");
-    s.integer("sample_every", 100, Range::at_least(1),
+    s.integer("sample_every", 100, Range::closed(1, 1e8),
               "wall-force block length in steps (forces are summed every step), as granlub dem");
-    s.integer("snapshots", 50, Range::at_least(2), "particle snapshots over the run for coarse-graining");
-    s.integer("body_force_every", 50, Range::at_least(1),
+    s.integer("snapshots", 50, Range::closed(2, 1e5), "particle snapshots over the run for coarse-graining");
+    s.integer("body_force_every", 50, Range::closed(1, 1e8),
               "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");
-    s.integer("stations", 20, Range::at_least(2), "coarse-graining slabs across the gap");
-    s.integer("blocks", 10, Range::at_least(2), "blocks for the standard errors (block averaging)");
+    s.integer("stations", 20, Range::closed(2, 1e5), "coarse-graining slabs across the gap");
+    s.integer("blocks", 10, Range::closed(2, 1e4), "blocks for the standard errors (block averaging)");
     s.real("timeout", 0.0, Range::non_negative(), "s",
            "wall-clock limit of one YADE run; 0 = 600 s + 100 us per grain-step (a guard against hangs, generous for shared machines)");
     return s;

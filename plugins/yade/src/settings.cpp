@@ -58,6 +58,10 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
 
     const std::string time_key = o.full ? "time_full" : "time";
     const double time = s.real(time_key);
+    const double steps = time / r.dt;
+    if (!(steps <= kMaxSteps))
+        s.fail(time_key, fmt::format("{:g} s is {:.3g} steps of {:g} s; at most {:g} steps are allowed", time, steps,
+                                     r.dt, kMaxSteps));
     const auto rows = static_cast<std::int64_t>(std::llround(time / (r.dt * static_cast<double>(r.sample_every))));
     if (rows < 2 * r.blocks)
         s.fail(time_key, fmt::format("gives {} wall-force block(s) of sample_every = {} steps of {:g} s; the "

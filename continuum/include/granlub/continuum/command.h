@@ -8,5 +8,8 @@ namespace granlub::continuum {
 
 SectionSpec section();                          // the [continuum] case section
 int run(const Case& c, const RunOptions& o);    // solves the selected points through run_sweep()
+// What run() would reject for the selected points (quick and --full run lengths), without
+// running: CaseError for bad input, SolverError for a case this solver cannot run.
+void check(const Case& c, const RunOptions& o);
 
 }  // namespace granlub::continuum

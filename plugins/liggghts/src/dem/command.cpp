@@ -90,6 +90,15 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
 
 }  // namespace
 
+void check(const Case& c, const RunOptions& o) {
+    for_each_run(c, o, [&](const OperatingPoint& p0, const RunOptions& v) {
+        OperatingPoint p = p0;
+        const Settings s = resolve(c, p, v);
+        p.solid_fraction = s.insert_fill;  // as solve() inserts it
+        check_initial_particles(c, p, s.box.width);  // the depth solve() passes
+    });
+}
+
 int run(const Case& c, const RunOptions& o) {
     return run_sweep(c, "dem", o, [&](const OperatingPoint& p, const fs::path& dir) { return solve(c, p, o, dir); });
 }

@@ -5,10 +5,13 @@
 
 #include <fmt/format.h>
 
+#include "granlub/error.h"
+#include "granlub/text.h"
+
 namespace granlub::dem {
 
 std::string data_file(const ParticleSet& p, const ParticleBox& box, double density, const std::string& title) {
-    std::string out = fmt::format("LIGGGHTS data file: {}\n\n{} atoms\n4 atom types\n\n", title, p.size());
+    std::string out = fmt::format("LIGGGHTS data file: {}\n\n{} atoms\n4 atom types\n\n", one_line(title), p.size());
     out += fmt::format("0 {} xlo xhi\n0 {} ylo yhi\n{} {} zlo zhi\n\nAtoms\n\n", box.length,
                        box.gap, -0.5 * box.width, 0.5 * box.width);
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -43,7 +46,14 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     const std::string settings =
         impulse ? fmt::format(" beta0 {}{}", s.beta0, s.separate ? " separate on" : "") : "";
     std::string d;
-    auto line = [&d](const std::string& l) { d += l + "\n"; };
+    // LIGGGHTS runs every line as a command (`shell` included): a line break inside a line, from
+    // whatever text reached it, must never start one. Case text is checked at parse time; this
+    // is the guard at the last step.
+    auto line = [&d](const std::string& l) {
+        if (control_character_offset(l))
+            throw Error(fmt::format("internal: deck line holds a control character: {}", one_line(l)));
+        d += l + "\n";
+    };
 
     line(fmt::format("# granlub dem: case {}, point {} ({})", c.name, p.id, provenance));
     line(fmt::format("# Shear cell: x along the flow (periodic, L = {:g} m), y across the gap (H = {:g} m):", box.length,

@@ -20,11 +20,11 @@ SectionSpec section() {
            "impulse model: diameters travelled per step at max(U, sqrt(2 g H))");
     s.real("hertz_step_fraction", 0.15, Range::open_closed(0, 0.3), "",
            "hertz model: time step as a fraction of the Rayleigh time");
-    s.integer("sample_every", 100, Range::at_least(1),
+    s.integer("sample_every", 100, Range::closed(1, 1e8),
               "wall-force block length in steps (forces are summed every step)");
-    s.integer("snapshots", 50, Range::at_least(4), "particle snapshots over the run for coarse-graining");
-    s.integer("stations", 20, Range::at_least(2), "coarse-graining slabs across the gap");
-    s.integer("blocks", 10, Range::at_least(2), "blocks for the standard errors");
+    s.integer("snapshots", 50, Range::closed(4, 1e5), "particle snapshots over the run for coarse-graining");
+    s.integer("stations", 20, Range::closed(2, 1e5), "coarse-graining slabs across the gap");
+    s.integer("blocks", 10, Range::closed(2, 1e4), "blocks for the standard errors");
     s.real("skin", 0.25, Range::positive(), "", "neighbour-list skin in grain diameters");
     s.integer("seed", 1, Range::at_least(0), "seed of the initial configuration (--seed overrides)");
     s.real("velocity_noise", 0.1, Range::non_negative(), "",
@@ -33,7 +33,7 @@ SectionSpec section() {
            "depth across z when [cell] width = 0 (periodic); 0 = 10 grain diameters");
     s.real("fill_for_load", 0.55, Range::open(0, 0.74), "",
            "control = load: solid fraction inserted when [operating] solid_fraction is not given");
-    s.integer("servo_every", 0, Range::at_least(0),
+    s.integer("servo_every", 0, Range::closed(0, 1e8),
               "control = load: steps between top-plate updates (force averaged over them); 0 = sample_every");
     s.real("servo_gain", 0.05, Range::open_closed(0, 0.1), "",
            "control = load: plate move per update in grain diameters per unit relative stress error");

@@ -55,7 +55,12 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
                                "is stable",
                                st.time_step, st.time_step / tr, tr));
     }
-    st.steps = static_cast<std::int64_t>(std::ceil(st.time / st.time_step - 1e-9));
+    const double steps = std::ceil(st.time / st.time_step - 1e-9);
+    if (!(steps <= kMaxSteps))
+        s.fail(o.full ? "time_full" : "time", fmt::format("{:g} s is {:.3g} steps of {:g} s; at most {:g} steps are "
+                                                          "allowed",
+                                                          st.time, steps, st.time_step, kMaxSteps));
+    st.steps = static_cast<std::int64_t>(steps);
     st.sample_every = s.integer("sample_every");
     if (p.control == Control::Load) {
         st.load = true;

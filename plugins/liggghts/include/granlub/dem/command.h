@@ -16,5 +16,8 @@ SectionSpec section();
 
 // Runs the selected points through run_sweep(); returns the process exit code.
 int run(const Case& c, const RunOptions& o);
+// What run() would reject for the selected points (quick and --full run lengths), without
+// running: CaseError for bad input, SolverError for a case this solver cannot run.
+void check(const Case& c, const RunOptions& o);
 
 }  // namespace granlub::dem

@@ -12,5 +12,8 @@ namespace granlub::yade {
 
 SectionSpec section();                          // the [yade] case section
 int run(const Case& c, const RunOptions& o);    // all selected points, via run_sweep()
+// What run() would reject for the selected points (quick and --full run lengths), without
+// running: CaseError for bad input, SolverError for a case this solver cannot run.
+void check(const Case& c, const RunOptions& o);
 
 }  // namespace granlub::yade

@@ -1,0 +1,180 @@
+// Hostile and broken case files: text that would become a command in a LIGGGHTS deck, bytes that
+// are not UTF-8, sizes that would exhaust memory, files that are not files. Each is refused at
+// parse time with a message naming the file, the place and what is allowed.
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include "case_text.h"
+#include "granlub/case.h"
+#include "granlub/error.h"
+#include "granlub/text.h"
+
+using namespace granlub;
+using granlub::test::kValidCase;
+using granlub::test::with;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string error_of(const std::string& text) {
+    try {
+        parse_case(text, "bad.toml", Schema::common());
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string load_error(const fs::path& p) {
+    try {
+        load_case(p, Schema::common());
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+struct TmpDir {
+    fs::path path;
+    explicit TmpDir(const std::string& name) : path(fs::temp_directory_path() / ("granlub_test_" + name)) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TmpDir() { fs::remove_all(path); }
+};
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(names_that_could_become_commands_are_refused) {
+    // TOML basic-string escapes: \n is a line break in the value, \" a quote.
+    const std::vector<std::string> names = {R"(x\nshell touch PWNED #)", R"(x\ninclude /etc/passwd)", "a#b",
+                                            "$(touch PWNED)", R"(x\"y)", "a b", "a&", "../up", "-rf", "x\\ty",
+                                            std::string(65, 'a'), "caf\u00e9"};
+    for (const auto& n : names) {
+        const std::string err = error_of(with("name = \"t\"", "name = \"" + n + "\""));
+        BOOST_TEST(err.find("bad.toml:3:") != std::string::npos, n << ": " << err);
+        BOOST_TEST(err.find("[case] name") != std::string::npos, n << ": " << err);
+        BOOST_TEST(err.find("not a usable case name") != std::string::npos, n << ": " << err);
+        BOOST_TEST(err.find('\n') == std::string::npos, n << ": the message itself must stay on one line: " << err);
+    }
+    for (const std::string ok : {"sawyer2001", "U2.0_R0.5", "a-b+c"})
+        BOOST_TEST(parse_case(with("name = \"t\"", "name = \"" + ok + "\""), "ok.toml", Schema::common()).name == ok);
+}
+
+BOOST_AUTO_TEST_CASE(a_title_is_one_line) {
+    for (const std::string bad : {R"(a\nshell touch PWNED)", R"(a\rb)", R"(tab\there)", "line\u2028sep"}) {
+        const std::string err = error_of(with("name = \"t\"", "name = \"t\"\ntitle = \"" + bad + "\""));
+        BOOST_TEST(err.find("[case] title") != std::string::npos, bad << ": " << err);
+        BOOST_TEST(err.find("control character") != std::string::npos, bad << ": " << err);
+    }
+    // Printable text is a title, whatever it says: it is escaped where it is shown.
+    const Case c = parse_case(with("name = \"t\"", "name = \"t\"\ntitle = \"shear: $U, 'quotes' & #hash \u021a\""),
+                              "ok.toml", Schema::common());
+    BOOST_TEST(c.title == "shear: $U, 'quotes' & #hash \u021a");
+    BOOST_TEST(error_of(with("name = \"t\"", "name = \"t\"\ntitle = \"" + std::string(201, 'x') + "\"")).find(
+                   "at most 200") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_name_taken_from_the_directory_is_made_safe) {
+    TmpDir t("hostile_dirname");
+    const fs::path dir = t.path / "my case\nshell touch PWNED";
+    fs::create_directories(dir);
+    std::ofstream(dir / "case.toml") << with("name = \"t\"\n", "");
+    const Case c = load_case(dir, Schema::common());
+    BOOST_TEST(c.name == "my_case_shell_touch_PWNED");
+    BOOST_TEST(name_problem(c.name).empty());
+}
+
+BOOST_AUTO_TEST_CASE(bytes_that_are_not_utf8_never_reach_toml) {
+    // toml++ 3.3 reaches unreachable code on some of these (its issue 295).
+    const std::vector<std::string> bad = {"\xc8", "\xc0\xaf", "\xe0\x80\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80",
+                                          "\xff", "\x80"};
+    for (const auto& b : bad) {
+        const std::string err = error_of(with("name = \"t\"", "name = \"t" + b + "\""));
+        BOOST_TEST(err.find("bad.toml:3:") != std::string::npos, err);
+        BOOST_TEST(err.find("is not valid UTF-8") != std::string::npos, err);
+    }
+    BOOST_TEST(invalid_utf8_offset("ok \xc8\x9a \xf0\x9f\x98\x80").has_value() == false);
+    BOOST_TEST(*invalid_utf8_offset("ab\xe2\x82") == 2u);  // truncated at the end
+}
+
+BOOST_AUTO_TEST_CASE(sizes_are_bounded_before_memory_is_spent) {
+    // A list longer than the point limit, and a product of lists over it.
+    std::string speeds = "speed = [";
+    for (int i = 1; i <= 10001; ++i) speeds += std::to_string(i) + (i < 10001 ? ", " : "]");
+    std::string err = error_of(with("speed = [1.0, 2.0]", speeds));
+    BOOST_TEST(err.find("[operating] speed") != std::string::npos, err);
+    BOOST_TEST(err.find("at most 10000 operating points") != std::string::npos, err);
+    BOOST_TEST(err.size() < 400u, "the list is not echoed whole: " << err.size() << " bytes");
+
+    std::string list = "[";
+    for (int i = 1; i <= 200; ++i) list += "0." + std::to_string(100 + i) + (i < 200 ? ", " : "]");
+    std::string product = with("speed = [1.0, 2.0]", "speed = " + list);
+    product = with("solid_fraction = 0.5", "solid_fraction = " + list, product);
+    err = error_of(product);
+    BOOST_TEST(err.find("200 x 200 x 1 x 1 operating points") != std::string::npos, err);
+
+    // 5000 distinct speeds pass quickly: the duplicate check is linear.
+    std::string many = "speed = [";
+    for (int i = 1; i <= 5000; ++i) many += std::to_string(i) + ".5" + (i < 5000 ? ", " : "]");
+    BOOST_TEST(parse_case(with("speed = [1.0, 2.0]", many), "ok.toml", Schema::common()).points.size() == 5000u);
+    err = error_of(with("speed = [1.0, 2.0]", "speed = [1.0, 2.0, 3.0, 2.0]"));
+    BOOST_TEST(err.find("2 appears twice in the sweep") != std::string::npos, err);
+
+    // A case file over 1 MiB.
+    err = error_of(kValidCase + "# " + std::string(1u << 20, 'x') + "\n");
+    BOOST_TEST(err.find("a case file may have at most 1048576 bytes") != std::string::npos, err);
+}
+
+BOOST_AUTO_TEST_CASE(long_unknown_names_are_clipped_in_messages) {
+    const std::string key(500000, 'k');
+    const std::string err = error_of(with("diameter = 1.0e-3", "diameter = 1.0e-3\n" + key + " = 1"));
+    BOOST_TEST(err.find("unknown key") != std::string::npos, err.substr(0, 200));
+    BOOST_TEST(err.find("(500000 bytes)") != std::string::npos, err.substr(0, 200));
+    BOOST_TEST(err.size() < 1000u);
+}
+
+BOOST_AUTO_TEST_CASE(numbers_that_would_mislead) {
+    // -0 and 0 are one roughness: the id reads R0, not R-0, and the pair is a duplicate.
+    const Case c = parse_case(with("normal_stress = 1000.0", "normal_stress = 1000.0\nroughness = [-0.0, 0.5]"),
+                              "ok.toml", Schema::common());
+    BOOST_TEST(c.points.front().id == "U1.0_R0");
+    BOOST_TEST(error_of(with("normal_stress = 1000.0", "normal_stress = 1000.0\nroughness = [0.0, -0.0]"))
+                   .find("appears twice") != std::string::npos);
+    // A subnormal speed would give stresses of exactly 0.
+    const std::string err = error_of(with("speed = [1.0, 2.0]", "speed = 1e-320"));
+    BOOST_TEST(err.find("[operating] speed") != std::string::npos, err);
+    BOOST_TEST(err.find("subnormal") != std::string::npos, err);
+}
+
+BOOST_AUTO_TEST_CASE(a_roughness_is_given_in_one_place) {
+    std::string text = with("normal_stress = 1000.0", "normal_stress = 1000.0\nroughness = [0.25, 0.5]");
+    text += "\n[walls.bottom]\nroughness = 0.1\n";
+    const std::string err = error_of(text);
+    BOOST_TEST(err.find("[walls.bottom] roughness = 0.1") != std::string::npos, err);
+    BOOST_TEST(err.find("[operating] roughness = [0.25, 0.5] sets both walls") != std::string::npos, err);
+}
+
+BOOST_AUTO_TEST_CASE(what_is_not_a_case_file_is_named) {
+    TmpDir t("hostile_files");
+    fs::create_directories(t.path / "dir_case" / "case.toml");
+    BOOST_TEST(load_error(t.path / "dir_case").find("a directory, not a case file") != std::string::npos,
+               load_error(t.path / "dir_case"));
+    fs::create_symlink(t.path / "nowhere.toml", t.path / "dangling.toml");
+    BOOST_TEST(load_error(t.path / "dangling.toml").find("a symbolic link to") != std::string::npos);
+    BOOST_TEST(load_error(t.path / "dangling.toml").find("which does not exist") != std::string::npos);
+    fs::create_symlink(t.path / "loop_b.toml", t.path / "loop_a.toml");
+    fs::create_symlink(t.path / "loop_a.toml", t.path / "loop_b.toml");
+    BOOST_TEST(load_error(t.path / "loop_a.toml").find("a loop of symbolic links") != std::string::npos);
+    BOOST_TEST_REQUIRE(::mkfifo((t.path / "fifo.toml").c_str(), 0600) == 0);
+    BOOST_TEST(load_error(t.path / "fifo.toml").find("not a regular file") != std::string::npos);  // no hang
+    BOOST_TEST(load_error(t.path / "empty_dir").find("no such case directory") != std::string::npos);
+    fs::create_directories(t.path / "empty_dir");
+    BOOST_TEST(load_error(t.path / "empty_dir").find("no case.toml in this directory") != std::string::npos);
+}
