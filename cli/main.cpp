@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "full_schema.h"
 #include "granlub/case.h"
 #include "granlub/error.h"
 #include "granlub/results.h"

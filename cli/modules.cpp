@@ -6,19 +6,8 @@
 
 #include "granlub/error.h"
 #include "granlub/results.h"
+#include "solver_commands.h"
 
-#ifdef GRANLUB_HAVE_CONTINUUM
-#include "granlub/continuum/command.h"
-#endif
-#ifdef GRANLUB_HAVE_AUTOMATON
-#include "granlub/automaton/command.h"
-#endif
-#ifdef GRANLUB_HAVE_DEM
-#include "granlub/dem/command.h"
-#endif
-#ifdef GRANLUB_HAVE_YADE
-#include "granlub/yade/command.h"
-#endif
 #ifdef GRANLUB_HAVE_POSTPROC
 #include "granlub/postproc/command.h"
 #endif
@@ -43,23 +32,6 @@ const std::vector<SolverModule>& solver_modules() {
         return m;
     }();
     return modules;
-}
-
-Schema full_schema() {
-    Schema s = Schema::common();
-#ifdef GRANLUB_HAVE_CONTINUUM
-    s.add(continuum::section());
-#endif
-#ifdef GRANLUB_HAVE_AUTOMATON
-    s.add(automaton::section());
-#endif
-#ifdef GRANLUB_HAVE_DEM
-    s.add(dem::section());
-#endif
-#ifdef GRANLUB_HAVE_YADE
-    s.add(yade::section());
-#endif
-    return s;
 }
 
 int check_solvers(const Case& c, const RunOptions& o) {

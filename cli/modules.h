@@ -21,8 +21,6 @@ const std::vector<SolverModule>& solver_modules();
 // and --full run lengths). One line per solver; returns 2 when any finds bad input (the error
 // names it); points a solver cannot run (e.g. a smooth wall in the continuum) are warnings.
 int check_solvers(const Case& c, const RunOptions& o);
-// Common sections plus every compiled module's section.
-Schema full_schema();
 // `granlub compare` if postproc is compiled in; otherwise throws.
 int compare(const Case& c, const RunOptions& o);
 bool have_compare();

@@ -1,0 +1,45 @@
+// The [dem] case section: one line per key (type, default, range, unit, doc). Apart from the
+// engine pipeline so that it compiles with core alone (the case-parser fuzzer builds it).
+#include "granlub/dem/command.h"
+#include "settings.h"
+
+namespace granlub::dem {
+
+SectionSpec section() {
+    SectionSpec s("dem", "particle simulation in LIGGGHTS (granlub-liggghts)");
+    s.choice("model", "impulse", {"impulse", "hertz"},
+             "contact model: Sawyer & Tichy impulse operator, or LIGGGHTS' Hertz-Mindlin (soft-sphere reference)");
+    s.real("beta0", 0.0, Range::closed(-1, 1), "",
+           "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
+    s.boolean("separate_overlaps", false,
+              "impulse model: also remove overlaps by moving grains apart (our assumption, not S&T's)");
+    s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
+    s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
+    s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");
+    s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
+           "impulse model: diameters travelled per step at max(U, sqrt(2 g H))");
+    s.real("hertz_step_fraction", 0.15, Range::open_closed(0, 0.3), "",
+           "hertz model: time step as a fraction of the Rayleigh time");
+    s.integer("sample_every", 100, Range::closed(1, 1e8),
+              "wall-force block length in steps (forces are summed every step)");
+    s.integer("snapshots", 50, Range::closed(4, 1e5), "particle snapshots over the run for coarse-graining");
+    s.integer("stations", 20, Range::closed(2, 1e5), "coarse-graining slabs across the gap");
+    s.integer("blocks", 10, Range::closed(2, 1e4), "blocks for the standard errors");
+    s.real("skin", 0.25, Range::positive(), "", "neighbour-list skin in grain diameters");
+    s.integer("seed", 1, Range::at_least(0), "seed of the initial configuration (--seed overrides)");
+    s.real("velocity_noise", 0.1, Range::non_negative(), "",
+           "initial velocity noise per component, standard deviation / U, on the linear Couette profile");
+    s.real("periodic_depth", 0.0, Range::non_negative(), "m",
+           "depth across z when [cell] width = 0 (periodic); 0 = 10 grain diameters");
+    s.real("fill_for_load", 0.55, Range::open(0, 0.74), "",
+           "control = load: solid fraction inserted when [operating] solid_fraction is not given");
+    s.integer("servo_every", 0, Range::closed(0, 1e8),
+              "control = load: steps between top-plate updates (force averaged over them); 0 = sample_every");
+    s.real("servo_gain", 0.05, Range::open_closed(0, 0.1), "",
+           "control = load: plate move per update in grain diameters per unit relative stress error");
+    s.real("servo_max_gap", 1.5, Range::open_closed(1, 4), "",
+           "control = load: highest plate position (the box top) as a multiple of [cell] gap");
+    return s;
+}
+
+}  // namespace granlub::dem
