@@ -23,6 +23,7 @@ public:
     explicit Screen(std::string_view t) : t_(t) {}
 
     std::optional<ScreenProblem> run() {
+        if (t_.substr(0, 3) == "\xEF\xBB\xBF") i_ = 3;  // a UTF-8 byte-order mark, which toml++ skips
         bool line_start = true;  // at the start of a line, outside any value
         while (i_ < t_.size()) {
             const char c = t_[i_];

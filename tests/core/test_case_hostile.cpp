@@ -215,6 +215,7 @@ BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
             BOOST_FAIL(f << ": " << e.what());
         }
     }
+    BOOST_TEST(parse_case("\xEF\xBB\xBF" + kValidCase, "bom.toml", Schema::common()).name == "t");  // a BOM
     Case c = parse_case(with("speed = [1.0, 2.0]", "speed = [ # speeds\n  1.0,\n  2.0, # and\n]") +
                             "\n  [walls.top] # indented header\nfriction = 0.3\n",
                         "ok.toml", Schema::common());
