@@ -36,7 +36,12 @@ public:
                 ++i_;
                 continue;
             }
-            if (ascii_space(c) || c == '\r') { ++i_; continue; }
+            if (c == '\r') {  // only as part of CRLF (toml++ asserts on a lone one in a header)
+                if (i_ + 1 >= t_.size() || t_[i_ + 1] != '\n') return fail("a carriage return without a line feed");
+                ++i_;
+                continue;
+            }
+            if (ascii_space(c)) { ++i_; continue; }
             if (stack_.empty() && line_start && c == '[') {  // table header: [a] or [[a]]
                 ++i_;
                 if (i_ < t_.size() && t_[i_] == '[') ++i_;
@@ -86,8 +91,11 @@ private:
     bool next_is(bool (*ok)(char), const char* why, char open = 0) {
         while (i_ < t_.size()) {
             const char c = t_[i_];
-            if (ascii_space(c) || c == '\r') { ++i_; continue; }
-            if (open == '[' && c == '\n') { ++i_; continue; }
+            if (ascii_space(c)) { ++i_; continue; }
+            if (open == '[' && (c == '\n' || (c == '\r' && i_ + 1 < t_.size() && t_[i_ + 1] == '\n'))) {
+                ++i_;
+                continue;
+            }
             if (open == '[' && c == '#') { skip_comment(); continue; }
             break;
         }

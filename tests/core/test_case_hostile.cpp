@@ -191,6 +191,8 @@ BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
         {"[[[1]]]", "a table header must start with a key"},
         {"[\t#]", "a table header must start with a key"},
         {"a = [}", "an array element must be a value"},
+        {"a = 1\rb = 2", "a carriage return without a line feed"},
+        {"[\r\n", "a table header must start with a key"},
         {"a = [1, }", "an array element must be a value"},
         {"a = {=1}", "an inline table must hold key = value pairs"},
         {"a = \"\"\"x\\\n  \xc3\xa9\"\"\"", "a non-ASCII character right after a line-ending backslash"},
@@ -216,6 +218,9 @@ BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
         }
     }
     BOOST_TEST(parse_case("\xEF\xBB\xBF" + kValidCase, "bom.toml", Schema::common()).name == "t");  // a BOM
+    std::string crlf;  // Windows line ends
+    for (char ch : kValidCase) crlf += ch == '\n' ? std::string("\r\n") : std::string(1, ch);
+    BOOST_TEST(parse_case(crlf, "crlf.toml", Schema::common()).points.size() == 2u);
     Case c = parse_case(with("speed = [1.0, 2.0]", "speed = [ # speeds\n  1.0,\n  2.0, # and\n]") +
                             "\n  [walls.top] # indented header\nfriction = 0.3\n",
                         "ok.toml", Schema::common());
