@@ -156,6 +156,12 @@ BOOST_AUTO_TEST_CASE(resume_detection) {
     const auto stale = result_status(dir, changed.inputs_hash("toy"));
     BOOST_TEST((stale.state == ResultState::Stale));
     BOOST_TEST(stale.reason.find("computed for inputs") != std::string::npos);
+    // Given the case, the reason names the key that changed, not two hashes.
+    const auto named = load_result(dir, changed, "toy").status;
+    BOOST_TEST((named.state == ResultState::Stale));
+    BOOST_TEST(named.reason.find("computed before the case changed: [grains] density = 2500 -> 2600") !=
+                   std::string::npos,
+               named.reason);
     // Truncated JSON, a broken profile or a missing profile are corrupt, not complete.
     { std::ofstream(dir / "summary.json") << "{\"format\": \"granlub-summary-1\", "; }
     BOOST_TEST((result_status(dir, hash).state == ResultState::Corrupt));
