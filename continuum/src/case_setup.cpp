@@ -143,7 +143,7 @@ PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& 
             throw SolverError(fmt::format("the solution has a non-finite {} (residual {:.3g}); try more cells", name,
                                           sol.residual));
 
-    r.line = fmt::format("nu={:.4f} P={:.0f} Pa tau={:.1f} Pa slip={:.3f}/{:.3f} m/s it={}", o.nu_mean, P, tau_b,
+    r.line = fmt::format("nu={:.4f} P={:.4g} Pa tau={:.4g} Pa slip={:.3f}/{:.3f} m/s it={}", o.nu_mean, P, tau_b,
                          U * o.slip_bottom, U * o.slip_top, sol.iterations);
     return r;
 }

@@ -147,9 +147,17 @@ BOOST_AUTO_TEST_CASE(numbers_that_would_mislead) {
     BOOST_TEST(c.points.front().id == "U1.0_R0");
     BOOST_TEST(error_of(with("normal_stress = 1000.0", "normal_stress = 1000.0\nroughness = [0.0, -0.0]"))
                    .find("appears twice") != std::string::npos);
-    // A subnormal speed would give stresses of exactly 0.
-    const std::string err = error_of(with("speed = [1.0, 2.0]", "speed = 1e-320"));
-    BOOST_TEST(err.find("[operating] speed") != std::string::npos, err);
+    // A speed whose square underflows gave stresses of exactly 0 and "succeeded".
+    for (const std::string U : {"1e-320", "1e-300", "1e-10"}) {
+        const std::string err = error_of(with("speed = [1.0, 2.0]", "speed = " + U));
+        BOOST_TEST(err.find("[operating] speed") != std::string::npos, err);
+        BOOST_TEST(err.find("out of range (allowed: a number (or non-empty list of numbers) [1e-09, 10000] m/s)") !=
+                       std::string::npos,
+                   err);
+    }
+    // Any other key: a subnormal number is refused, not computed with.
+    const std::string err = error_of(with("density = 2500.0", "density = 4e-320"));
+    BOOST_TEST(err.find("[grains] density") != std::string::npos, err);
     BOOST_TEST(err.find("subnormal") != std::string::npos, err);
 }
 
