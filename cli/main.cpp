@@ -14,6 +14,7 @@
 #include "full_schema.h"
 #include "granlub/case.h"
 #include "granlub/error.h"
+#include "granlub/plausibility.h"
 #include "granlub/results.h"
 #include "granlub/text.h"
 #include "modules.h"
@@ -136,6 +137,8 @@ int main(int argc, char** argv) {
         const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
         if (check->parsed()) {
             fmt::print("{}", granlub::describe(c));
+            std::fflush(stdout);
+            for (const auto& w : granlub::plausibility_warnings(c)) fmt::print(stderr, "warning: {}\n", w);
             return granlub::cli::check_solvers(c, a.opt);
         }
         for (const auto& [sub, m] : solver_cmds)

@@ -171,3 +171,15 @@ BOOST_AUTO_TEST_CASE(an_unknown_command_is_named) {
     BOOST_TEST(o.rc == 2);
     BOOST_TEST(o.text.find("unknown command 'frobnicate' (commands: check, keys,") != std::string::npos, o.text);
 }
+
+// Allowed but most likely a slip of units: a warning, exit 0.
+BOOST_AUTO_TEST_CASE(check_warns_of_implausible_magnitudes) {
+    const fs::path dir = edited_case("magnitudes", "gap = 4.0e-3 ", "gap = 5 ");
+    const auto o = run(exe + " check " + dir.string());
+    BOOST_TEST(o.text.find("warning: [cell] gap = 5 m is 6353 grain diameters (more than 1000): is the unit "
+                           "metres?") != std::string::npos,
+               o.text);
+    fs::remove_all(dir);
+    const auto fine = run(exe + " check " + src + "/cases/sawyer2001");
+    BOOST_TEST(fine.text.find("warning:") == std::string::npos, fine.text);
+}
