@@ -25,10 +25,21 @@ public:
     std::optional<ScreenProblem> run() {
         if (t_.substr(0, 3) == "\xEF\xBB\xBF") i_ = 3;  // a UTF-8 byte-order mark, which toml++ skips
         bool line_start = true;  // at the start of a line, outside any value
+        char prev = '\n';        // the last character outside strings, blanks and comments
         while (i_ < t_.size()) {
             const char c = t_[i_];
             if (c == '#') { skip_comment(); continue; }
-            if (c == '"' || c == '\'') { if (!string()) return problem_; continue; }
+            if (c == '"' || c == '\'') {
+                // A string starts a key or a value, never the middle of one (`8888-"x`): there the
+                // screen and toml++ would disagree on what is inside a string.
+                if (prev != '\n' && prev != '=' && prev != '[' && prev != ',' && prev != '{' && prev != '.')
+                    return fail("a quote in the middle of a key or value");
+                if (!string()) return problem_;
+                prev = '"';
+                line_start = false;
+                continue;
+            }
+            if (!ascii_space(c) && c != '\r') prev = c;
             if (static_cast<unsigned char>(c) >= 0x80)
                 return fail("a non-ASCII character outside a string or comment (put it in quotes)");
             if (c == '\n') {
