@@ -60,7 +60,7 @@ void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
         sub->add_option("--threads", a.opt.threads, "worker threads (default: all cores)")
             ->check(integer_in(0, 1024, "a thread count"));
     }
-    if (mpi) sub->add_option("--np", a.opt.np, "MPI ranks for LIGGGHTS")->check(integer_in(1, 4096, "a rank count"));
+    if (mpi) sub->add_option("--np", a.opt.np, "MPI ranks for LIGGGHTS (default: 1)")->check(integer_in(1, 4096, "a rank count"));
 }
 
 }  // namespace
