@@ -26,6 +26,7 @@ public:
         if (t_.substr(0, 3) == "\xEF\xBB\xBF") i_ = 3;  // a UTF-8 byte-order mark, which toml++ skips
         bool line_start = true;  // at the start of a line, outside any value
         char prev = '\n';        // the last character outside strings, blanks and comments
+        bool expect_key = true;  // a key may come (line start, after '{' or ','): an '=' is due
         while (i_ < t_.size()) {
             const char c = t_[i_];
             if (c == '#') { skip_comment(); continue; }
@@ -43,7 +44,7 @@ public:
             if (static_cast<unsigned char>(c) >= 0x80)
                 return fail("a non-ASCII character outside a string or comment (put it in quotes)");
             if (c == '\n') {
-                if (stack_.empty()) line_start = true;
+                if (stack_.empty()) line_start = expect_key = true;
                 ++i_;
                 continue;
             }
@@ -57,22 +58,28 @@ public:
                 ++i_;
                 if (i_ < t_.size() && t_[i_] == '[') ++i_;
                 if (!next_is(key_start, "a table header must start with a key, e.g. [walls.top]")) return problem_;
-                line_start = false;
+                line_start = expect_key = false;
                 continue;
             }
             line_start = false;
             if (c == '=') {
+                // One '=' per key: a second one in a value (`a = 1-2=3="x"`) made toml++ read on
+                // into text the screen took for a string.
+                if (!expect_key) return fail("an '=' where a value or the end of the line was expected");
+                expect_key = false;
                 ++i_;
                 if (!next_is(value_start, "a value must follow '='")) return problem_;
                 continue;
             }
             if (c == '[' || c == '{') {  // in value position: an array or an inline table
                 stack_.push_back(c);
+                expect_key = c == '{';
                 ++i_;
                 if (!element(c)) return problem_;
                 continue;
             }
             if (c == ',' && !stack_.empty()) {
+                expect_key = stack_.back() == '{';
                 ++i_;
                 if (!element(stack_.back())) return problem_;
                 continue;

@@ -200,6 +200,8 @@ BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
         {"[\t#]", "a table header must start with a key"},
         {"a = [}", "an array element must be a value"},
         {"b = 8888-\"\xc2\xa7\x01", "a quote in the middle of a key or value"},
+        {"b = 8888-878=8888=\"\xc2\xa7\"", "an '=' where a value or the end of the line was expected"},
+        {"[a=b]", "an '=' where a value or the end of the line was expected"},
         {"a = 1\rb = 2", "a carriage return without a line feed"},
         {"[\r\n", "a table header must start with a key"},
         {"a = [1, }", "an array element must be a value"},
@@ -230,6 +232,12 @@ BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
     std::string crlf;  // Windows line ends
     for (char ch : kValidCase) crlf += ch == '\n' ? std::string("\r\n") : std::string(1, ch);
     BOOST_TEST(parse_case(crlf, "crlf.toml", Schema::common()).points.size() == 2u);
+    const Case inline_tables = parse_case(
+        "walls = { restitution = 0.8, roughness = 0.5, top = { friction = 0.3, roughness = 0.25 } }\n" +
+            with("[walls]\nrestitution = 0.8\nroughness = 0.5", ""),
+        "ok.toml", Schema::common());
+    BOOST_TEST(inline_tables.top.friction == 0.3);
+    BOOST_TEST(inline_tables.top.roughness == 0.25);
     Case c = parse_case(with("speed = [1.0, 2.0]", "speed = [ # speeds\n  1.0,\n  2.0, # and\n]") +
                             "\n  [walls.top] # indented header\nfriction = 0.3\n",
                         "ok.toml", Schema::common());
