@@ -5,6 +5,7 @@
 // each as LIGGGHTS' loop time of a timed run after a warm-up run, in ns per grain-step (and the
 // CPU time of the whole process tree, the steadier number on a shared machine). At the end:
 //   sawyer2001 / in.shear, ns per grain-step        (target <= 2.0)
+//   in.shear at granlub's step (0.02 d/U, 20x in.shear's): how much of that ratio the step explains
 //   sawyer2001 speed-up, 2 ranks vs 1 (loop time)   (target >= 1.8)
 // The deck is made by running `granlub dem` once on a copy of the case with a short run (same
 // time step and snapshot interval as the default run); the timed runs replace its `run` line.
@@ -55,7 +56,7 @@ std::string sawyer_deck() {
     return dir;
 }
 
-void run(benchmark::State& state, const std::string& name, bool sawyer, int np) {
+void run(benchmark::State& state, const std::string& name, bool sawyer, int np, const std::string& extra = "") {
     std::string dir = "/tmp", deck = GRANLUB_SHEAR_DECK;
     if (sawyer) {
         dir = sawyer_deck();
@@ -66,10 +67,10 @@ void run(benchmark::State& state, const std::string& name, bool sawyer, int np) 
         }
     }
     char vars[96];
-    std::snprintf(vars, sizeof vars, "-var warmup %.0f -var steps %.0f", kWarmup, kSteps);
+    std::snprintf(vars, sizeof vars, "-var warmup %.0f -var steps %.0f ", kWarmup, kSteps);
     Measured m;
     for (auto _ : state) {
-        m = granlub::bench::run_liggghts(dir, deck, vars, np);
+        m = granlub::bench::run_liggghts(dir, deck, vars + extra, np);
         if (m.loop_s <= 0) {
             state.SkipWithError("LIGGGHTS run failed (no loop time)");
             return;
@@ -88,6 +89,8 @@ void run(benchmark::State& state, const std::string& name, bool sawyer, int np) 
 
 BENCHMARK_CAPTURE(run, sawyer2001_1rank, "sawyer", true, 1)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(run, shear_example_1rank, "shear", false, 1)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+// in.shear at granlub's step, 0.02 d / U (d = 1 mm, U = 1 m/s): the part of the ratio the step explains
+BENCHMARK_CAPTURE(run, shear_example_granlub_step, "shear_dt", false, 1, "-var dt 2e-5")->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(run, sawyer2001_2ranks, "sawyer_np2", true, 2)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
 
 int main(int argc, char** argv) {
@@ -105,6 +108,12 @@ int main(int argc, char** argv) {
         std::printf("  sawyer2001 / in.shear: %.2f (loop), %.2f (CPU)   target <= 2.0\n",
                     a.ns_per_grain_step() / b.ns_per_grain_step(), a.cpu_ns_per_grain_step() / b.cpu_ns_per_grain_step());
     }
+    if (has("sawyer") && has("shear_dt"))
+        std::printf("  in.shear at granlub's step (20 us = 0.02 d/U): %.0f ns (loop), %.0f (CPU); sawyer2001 / that: "
+                    "%.2f (loop), %.2f (CPU)\n",
+                    g_results["shear_dt"].ns_per_grain_step(), g_results["shear_dt"].cpu_ns_per_grain_step(),
+                    g_results["sawyer"].ns_per_grain_step() / g_results["shear_dt"].ns_per_grain_step(),
+                    g_results["sawyer"].cpu_ns_per_grain_step() / g_results["shear_dt"].cpu_ns_per_grain_step());
     if (has("sawyer") && has("sawyer_np2"))
         std::printf("  sawyer2001 speed-up, 2 ranks vs 1 (loop time): %.2f   target >= 1.8\n",
                     g_results["sawyer"].loop_s / g_results["sawyer_np2"].loop_s);
