@@ -39,10 +39,11 @@ std::string sawyer_deck() {
     fs::remove_all(root);
     fs::create_directories(root);
     fs::copy_file(fs::path(GRANLUB_SAWYER_CASE) / "case.toml", root / "case.toml");
-    // 2033 steps (the least that gives 20 wall-stress samples), snapshots every 254 steps as in the default run
+    // 2033 steps of 7.87 us (granlub dem wants >= 20 wall-stress samples of 100 steps); snapshots every 254
+    // steps, as in the default run
     std::ofstream(root / "case.toml", std::ios::app) << "\n[dem]\ntime = 0.016\nsnapshots = 8\n";
-    const std::string cmd = std::string(GRANLUB_CLI_PATH) + " dem '" + root.string() + "' --point U2.0 --threads 1 > '" +
-                            (root / "granlub.out").string() + "' 2>&1";
+    const std::string cmd = std::string(GRANLUB_CLI_PATH) + " dem '" + root.string() +
+                            "' --point U2.0 --threads 1 > '" + (root / "granlub.out").string() + "' 2>&1";
     if (std::system(cmd.c_str()) != 0) return "";
     const fs::path point = root / "results" / "dem" / "U2.0";
     std::ifstream in(point / "in.granlub");
@@ -104,7 +105,8 @@ int main(int argc, char** argv) {
         const auto& a = g_results["sawyer"];
         const auto& b = g_results["shear"];
         std::printf("  ns per grain-step: sawyer2001 %.0f, in.shear %.0f (loop); %.0f, %.0f (CPU)\n",
-                    a.ns_per_grain_step(), b.ns_per_grain_step(), a.cpu_ns_per_grain_step(), b.cpu_ns_per_grain_step());
+                    a.ns_per_grain_step(), b.ns_per_grain_step(), a.cpu_ns_per_grain_step(),
+                    b.cpu_ns_per_grain_step());
         std::printf("  sawyer2001 / in.shear: %.2f (loop), %.2f (CPU)   target <= 2.0\n",
                     a.ns_per_grain_step() / b.ns_per_grain_step(), a.cpu_ns_per_grain_step() / b.cpu_ns_per_grain_step());
     }

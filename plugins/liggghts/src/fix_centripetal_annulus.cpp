@@ -21,9 +21,11 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixCentripetalAnnulus::FixCentripetalAnnulus(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
-    if (narg != 4) error->all(FLERR, "Illegal fix centripetal/annulus command: expected fix ID group centripetal/annulus R");
+    if (narg != 4)
+        error->all(FLERR, "Illegal fix centripetal/annulus command: expected fix ID group centripetal/annulus R");
     radius_ = force->numeric(FLERR, arg[3]);
-    if (!(radius_ > 0)) error->all(FLERR, "Illegal fix centripetal/annulus command: R must be > 0 (the annulus mean radius)");
+    if (!(radius_ > 0))
+        error->all(FLERR, "Illegal fix centripetal/annulus command: R must be > 0 (the annulus mean radius)");
 }
 
 int FixCentripetalAnnulus::setmask() { return POST_FORCE | MIN_POST_FORCE; }

@@ -119,7 +119,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("# with R the annulus mean radius (Sawyer & Tichy 2001, particle simulation)");
     if (c.gravity > 0) line(fmt::format("fix grav all gravity {} vector 0 -1 0", c.gravity));
     // a compiled fix (plugins/liggghts/doc/fix_centripetal_annulus.txt): the same force, bit for bit, as the
-    // atom-style variable + fix addforce it replaced, which cost about a tenth of the step
+    // atom-style variable + fix addforce it replaced, which took about 7 % of the loop (plugins/liggghts/README.md)
     if (c.cell.annulus_radius > 0) line(fmt::format("fix cent all centripetal/annulus {}", c.cell.annulus_radius));
     line("fix integr all nve/sphere");
     line("");
