@@ -6,59 +6,23 @@
 //   simulated time per CPU-second, impulse / Hertz (glass)    (target >= 20)
 //   2 ranks vs 1 rank, loop time per step
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <regex>
 #include <string>
+
+#include "run_liggghts.h"
 
 namespace {
 
-struct Measured {
-    double loop_s = 0;      // loop time of the timed run (wall clock)
-    double cpu_s = 0;       // user + sys CPU of the whole process tree (all runs, all ranks)
-    double atoms = 0;
-    double steps = 0;       // timed steps
-    double all_steps = 0;   // warm-up + timed
-    double dt = 0;
-};
+using granlub::bench::Measured;
 std::map<std::string, Measured> g_results;
 
-double children_cpu() {
-    rusage u{};
-    ::getrusage(RUSAGE_CHILDREN, &u);
-    return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-           1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
 Measured run_deck(const std::string& vars, int np, double dt, double warmup, double steps) {
-    std::string cmd = "cd /tmp && ";
-    if (np > 1) {
-        cmd += "mpirun -np " + std::to_string(np) + " --oversubscribe ";
-        if (::geteuid() == 0) cmd += "--allow-run-as-root ";
-    }
     char extra[128];
     std::snprintf(extra, sizeof extra, " -var dt %.17g -var warmup %.0f -var steps %.0f", dt, warmup, steps);
-    cmd += std::string(GRANLUB_LIGGGHTS_DRIVER_PATH) + " -in " GRANLUB_SHEAR_DECK " -log none -echo none " + vars +
-           extra + " 2>&1";
-    const double cpu0 = children_cpu();
-    std::string out;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    std::array<char, 4096> buf;
-    while (p && std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-    if (p) ::pclose(p);
-    Measured m;
-    m.cpu_s = children_cpu() - cpu0;
-    static const std::regex loop(R"(Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms)");
-    for (auto it = std::sregex_iterator(out.begin(), out.end(), loop); it != std::sregex_iterator(); ++it) {
-        m.loop_s = std::stod((*it)[1].str());
-        m.atoms = std::stod((*it)[3].str());
-    }
+    Measured m = granlub::bench::run_liggghts("/tmp", GRANLUB_SHEAR_DECK, vars + extra, np);
     m.steps = steps;
     m.all_steps = warmup + steps;
     m.dt = dt;

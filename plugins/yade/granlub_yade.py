@@ -454,7 +454,7 @@ def run_couette(p):
 
     def centripetal():
         # Sawyer & Tichy 2001: a grain moving at v_x around the annulus (mean radius R_a) feels
-        # m v_x^2 / (R_a - z) toward the outer wall, -z here; as `granlub dem` (fix addforce).
+        # m v_x^2 / (R_a - z) toward the outer wall, -z here; as `granlub dem` (fix centripetal/annulus).
         # A permanent force, refreshed every body_force_every steps: setting ~5000 forces from
         # Python costs about as much as 10 steps of the cell.
         if Ra <= 0:

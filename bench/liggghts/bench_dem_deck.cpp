@@ -1,0 +1,123 @@
+// Cost of `granlub dem`'s own deck against the plugin's example, in one run on one machine state:
+//   sawyer2001  cases/sawyer2001 at U = 2.0 m/s, the deck and grains `granlub dem` writes
+//               (5315 grains, four walls with per-step force sampling, gravity, centripetal force)
+//   in.shear    plugins/liggghts/examples/in.shear, impulse, 5120 grains
+// each as LIGGGHTS' loop time of a timed run after a warm-up run, in ns per grain-step (and the
+// CPU time of the whole process tree, the steadier number on a shared machine). At the end:
+//   sawyer2001 / in.shear, ns per grain-step        (target <= 2.0)
+//   in.shear at granlub's step (0.02 d/U, 20x in.shear's): how much of that ratio the step explains
+//   sawyer2001 speed-up, 2 ranks vs 1 (loop time)   (target >= 1.8)
+// The deck is made by running `granlub dem` once on a copy of the case with a short run (same
+// time step and snapshot interval as the default run); the timed runs replace its `run` line.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "run_liggghts.h"
+
+namespace fs = std::filesystem;
+using granlub::bench::Measured;
+
+namespace {
+
+constexpr double kWarmup = 500;
+constexpr double kSteps = 2000;
+std::map<std::string, Measured> g_results;
+
+// Writes <build>/bench/liggghts/sawyer2001/results/dem/U2.0/in.bench; returns its folder ("" on failure).
+std::string sawyer_deck() {
+    static std::string dir;
+    if (!dir.empty()) return dir;
+    const fs::path root = fs::path(GRANLUB_BENCH_DIR) / "sawyer2001";
+    fs::remove_all(root);
+    fs::create_directories(root);
+    fs::copy_file(fs::path(GRANLUB_SAWYER_CASE) / "case.toml", root / "case.toml");
+    // 2033 steps of 7.87 us (granlub dem wants >= 20 wall-stress samples of 100 steps); snapshots every 254
+    // steps, as in the default run
+    std::ofstream(root / "case.toml", std::ios::app) << "\n[dem]\ntime = 0.016\nsnapshots = 8\n";
+    const std::string cmd = std::string(GRANLUB_CLI_PATH) + " dem '" + root.string() +
+                            "' --point U2.0 --threads 1 > '" + (root / "granlub.out").string() + "' 2>&1";
+    if (std::system(cmd.c_str()) != 0) return "";
+    const fs::path point = root / "results" / "dem" / "U2.0";
+    std::ifstream in(point / "in.granlub");
+    std::stringstream deck;
+    deck << in.rdbuf();
+    const std::string timed = std::regex_replace(deck.str(), std::regex(R"(\nrun\s+\d+\n)"),
+                                                 "\nrun ${warmup}\nrun ${steps}\n");
+    if (timed == deck.str()) return "";
+    std::ofstream(point / "in.bench") << timed;
+    dir = point.string();
+    return dir;
+}
+
+void run(benchmark::State& state, const std::string& name, bool sawyer, int np, const std::string& extra = "") {
+    std::string dir = "/tmp", deck = GRANLUB_SHEAR_DECK;
+    if (sawyer) {
+        dir = sawyer_deck();
+        deck = "in.bench";
+        if (dir.empty()) {
+            state.SkipWithError("granlub dem could not write the sawyer2001 deck (see bench/liggghts/sawyer2001)");
+            return;
+        }
+    }
+    char vars[96];
+    std::snprintf(vars, sizeof vars, "-var warmup %.0f -var steps %.0f ", kWarmup, kSteps);
+    Measured m;
+    for (auto _ : state) {
+        m = granlub::bench::run_liggghts(dir, deck, vars + extra, np);
+        if (m.loop_s <= 0) {
+            state.SkipWithError("LIGGGHTS run failed (no loop time)");
+            return;
+        }
+        state.SetIterationTime(m.loop_s);
+    }
+    m.steps = kSteps;
+    m.all_steps = kWarmup + kSteps;
+    g_results[name] = m;
+    state.counters["atoms"] = m.atoms;
+    state.counters["ns_per_grain_step"] = m.ns_per_grain_step();
+    state.counters["cpu_ns_per_grain_step"] = m.cpu_ns_per_grain_step();
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(run, sawyer2001_1rank, "sawyer", true, 1)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(run, shear_example_1rank, "shear", false, 1)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+// in.shear at granlub's step, 0.02 d / U (d = 1 mm, U = 1 m/s): the part of the ratio the step explains
+BENCHMARK_CAPTURE(run, shear_example_granlub_step, "shear_dt", false, 1, "-var dt 2e-5")->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(run, sawyer2001_2ranks, "sawyer_np2", true, 2)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    auto has = [](const char* k) { return g_results.count(k) && g_results[k].loop_s > 0; };
+    std::printf("\nsawyer2001 deck (U2.0) vs examples/in.shear (loop time = wall clock of the timed run; CPU = whole "
+                "process, warm-up included)\n");
+    if (has("sawyer") && has("shear")) {
+        const auto& a = g_results["sawyer"];
+        const auto& b = g_results["shear"];
+        std::printf("  ns per grain-step: sawyer2001 %.0f, in.shear %.0f (loop); %.0f, %.0f (CPU)\n",
+                    a.ns_per_grain_step(), b.ns_per_grain_step(), a.cpu_ns_per_grain_step(),
+                    b.cpu_ns_per_grain_step());
+        std::printf("  sawyer2001 / in.shear: %.2f (loop), %.2f (CPU)   target <= 2.0\n",
+                    a.ns_per_grain_step() / b.ns_per_grain_step(), a.cpu_ns_per_grain_step() / b.cpu_ns_per_grain_step());
+    }
+    if (has("sawyer") && has("shear_dt"))
+        std::printf("  in.shear at granlub's step (20 us = 0.02 d/U): %.0f ns (loop), %.0f (CPU); sawyer2001 / that: "
+                    "%.2f (loop), %.2f (CPU)\n",
+                    g_results["shear_dt"].ns_per_grain_step(), g_results["shear_dt"].cpu_ns_per_grain_step(),
+                    g_results["sawyer"].ns_per_grain_step() / g_results["shear_dt"].ns_per_grain_step(),
+                    g_results["sawyer"].cpu_ns_per_grain_step() / g_results["shear_dt"].cpu_ns_per_grain_step());
+    if (has("sawyer") && has("sawyer_np2"))
+        std::printf("  sawyer2001 speed-up, 2 ranks vs 1 (loop time): %.2f   target >= 1.8\n",
+                    g_results["sawyer"].loop_s / g_results["sawyer_np2"].loop_s);
+    return 0;
+}
