@@ -13,8 +13,9 @@
 // (Silbert 2010, Soft Matter 6:2918, fig. 1); below z_c the stresses are rate-dependent and
 // fluid-like (Vescovi, Berzi & di Prisco 2017, arXiv:1707.03322). Z >= 4 is thus the weakest
 // condition for a network; we also ask that most contacts survive a short shear strain
-// (persistence >= kEnduringMinPersistence after a strain kPersistenceStrain), which a collision
-// (a contact of one step in the impulse model) never does.
+// (persistence >= kEnduringMinPersistence after a strain kPersistenceStrain). Neighbours move
+// apart at about gamma_dot d, so after a strain of 0.1 a pair that only collided is ~0.1 d apart,
+// ten times the contact tolerance (contacts.h), while a pair in a network still touches.
 #pragma once
 #include <optional>
 #include <span>
@@ -28,7 +29,7 @@ inline constexpr double kQuasiStaticMaxInertialNumber = 1e-3;  // GDR MiDi 2004;
 inline constexpr double kCollisionalMinInertialNumber = 0.1;   // GDR MiDi 2004; da Cruz et al. 2005
 inline constexpr double kEnduringMinCoordination = 4.0;        // Silbert 2010: z_c(mu -> infinity)
 inline constexpr double kEnduringMinPersistence = 0.5;         // ours: most contacts survive
-inline constexpr double kPersistenceStrain = 0.01;             // ours: shear strain U/H t between snapshots
+inline constexpr double kPersistenceStrain = 0.1;              // ours: shear strain U/H t between snapshots
 
 // I = gamma_dot d / sqrt(P / rho_p); |gamma_dot| is used. Nothing unless P, d and rho_p are > 0.
 std::optional<double> inertial_number(double shear_rate, double diameter, double pressure, double density);

@@ -34,7 +34,7 @@ struct Settings {
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
     std::int64_t persistence_every = 1;
-    std::int64_t persistence_intervals = 4;
+    std::int64_t persistence_intervals = 2;
     // steps of the persistence run after the main run: up to the next multiple of
     // persistence_every (the first snapshot), then the intervals
     std::int64_t persistence_run_steps() const {
