@@ -41,6 +41,15 @@ double mid_gap_shear_rate(std::span<const double> y, std::span<const double> u, 
     return sxx > 0 ? std::abs(sxy / sxx) : 0.0;
 }
 
+void set_inertial_numbers(FlowDiagnostics& d, const Profile& profile, double U, double H, double P, double diameter,
+                          double density) {
+    d.inertial_nominal = inertial_number(U / H, diameter, P, density);
+    std::vector<double> y(profile.column("y_over_H")), u(profile.column("u_over_U"));
+    for (double& v : y) v *= H;
+    for (double& v : u) v *= U;
+    d.inertial_mid_gap = inertial_number(mid_gap_shear_rate(y, u, H), diameter, P, density);
+}
+
 std::string to_string(FlowRegime r) {
     switch (r) {
         case FlowRegime::QuasiStatic: return "quasi-static";

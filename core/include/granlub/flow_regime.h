@@ -23,6 +23,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "granlub/results.h"
+
 namespace granlub {
 
 inline constexpr double kQuasiStaticMaxInertialNumber = 1e-3;  // GDR MiDi 2004; da Cruz et al. 2005
@@ -53,5 +55,10 @@ struct FlowDiagnostics {
     std::optional<double> inertial_nominal, inertial_mid_gap, coordination, persistence;
 };
 nlohmann::json flow_regime_json(const FlowDiagnostics& d);
+
+// Fills d's two inertial numbers from a coarse-grained profile (columns y_over_H, u_over_U) of a gap
+// H sheared at U under the mean wall normal stress P (Pa).
+void set_inertial_numbers(FlowDiagnostics& d, const Profile& profile, double U, double H, double P, double diameter,
+                          double density);
 
 }  // namespace granlub

@@ -96,10 +96,10 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     // profile slabs span the gap: the case's H, or the mean plate position under load control
     const double gap = plate ? mean_gap(s, *plate, window).mean : c.cell.gap;
     SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
-    CoordinationSeries z(s.box);
+    CoordinationSeries z(s.box, window.t_start);
     const std::size_t snapshots = for_each_snapshot(dir / kSnapshots, [&](const ParticleSet& g, double step) {
         cg.add_snapshot(g, step * s.time_step);
-        z.add(g);
+        z.add(g, step * s.time_step);
     });
     if (snapshots < 2)
         throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", (dir / kSnapshots).string()));

@@ -18,7 +18,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
-void CoordinationSeries::add(const ParticleSet& p) {
+void CoordinationSeries::add(const ParticleSet& p, double time) {
+    if (time < t_start_ - 1e-12) return;
     const auto t0 = std::chrono::steady_clock::now();
     z_.push_back(coordination_number(touching_pairs(p, box_), p.size()));
     seconds_ += seconds_since(t0);
@@ -50,22 +51,18 @@ nlohmann::json flow_regime_record(const Case& c, const OperatingPoint& pt, const
     FlowDiagnostics d;
     const double U = pt.speed, H = cg.stations().hi;  // H: the gap the profile spans (mean plate gap under load)
     const double P = 0.5 * (out.outputs.at("normal_stress_bottom").value + out.outputs.at("normal_stress_top").value);
-    d.inertial_nominal = inertial_number(U / H, c.grains.diameter, P, c.grains.density);
-    std::vector<double> y(out.profile.column("y_over_H")), u(out.profile.column("u_over_U"));
-    for (double& v : y) v *= H;
-    for (double& v : u) v *= U;
-    d.inertial_mid_gap = inertial_number(mid_gap_shear_rate(y, u, H), c.grains.diameter, P, c.grains.density);
+    set_inertial_numbers(d, out.profile, U, H, P, c.grains.diameter, c.grains.density);
     const auto& zs = z.values();
-    if (out.first_snapshot < zs.size()) {
+    if (!zs.empty()) {
         double sum = 0;
-        for (std::size_t k = out.first_snapshot; k < zs.size(); ++k) sum += zs[k];
-        d.coordination = sum / static_cast<double>(zs.size() - out.first_snapshot);
+        for (double v : zs) sum += v;
+        d.coordination = sum / static_cast<double>(zs.size());
     }
     if (intervals > 0) d.persistence = persisting / static_cast<double>(intervals);  // mean over the intervals
 
     nlohmann::json j = flow_regime_json(d);
     j["mean_normal_stress_Pa"] = P;
-    j["coordination_snapshots"] = zs.size() - std::min(out.first_snapshot, zs.size());
+    j["coordination_snapshots"] = zs.size();
     j["contact_gap_tolerance"] = kContactGapTolerance;
     j["wall_contacts_in_coordination"] = false;
     j["persistence_interval_steps"] = s.persistence_every;

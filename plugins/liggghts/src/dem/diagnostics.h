@@ -15,16 +15,18 @@
 
 namespace granlub::dem {
 
-// Collects the coordination number of each coarse-graining snapshot as it is read.
+// Collects the coordination number of each coarse-graining snapshot from the steady-state start
+// on (earlier ones are skipped: they are not averaged) as the snapshots are read.
 class CoordinationSeries {
 public:
-    explicit CoordinationSeries(const ParticleBox& box) : box_(box) {}
-    void add(const ParticleSet& p);
+    CoordinationSeries(const ParticleBox& box, double t_start) : box_(box), t_start_(t_start) {}
+    void add(const ParticleSet& p, double time);
     const std::vector<double>& values() const { return z_; }
     double seconds() const { return seconds_; }  // time spent finding contacts
 
 private:
     ParticleBox box_;
+    double t_start_;
     std::vector<double> z_;
     double seconds_ = 0;
 };

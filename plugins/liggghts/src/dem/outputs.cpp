@@ -216,7 +216,6 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
     while (first < times.size() && times[first] < t_start - 1e-12) ++first;
     if (times.size() - first < 2) first = times.size() >= 2 ? times.size() - 2 : 0;
     o.profile = cg.profile(U, first, s.blocks);
-    o.first_snapshot = first;
 
     const auto& u = o.profile.column("u_over_U");
     const auto& ue = o.profile.column("u_over_U_stderr");

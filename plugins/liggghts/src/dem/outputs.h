@@ -57,7 +57,6 @@ struct DemOutputs {
     std::map<std::string, Scalar> outputs;
     nlohmann::json run;  // steady-state facts
     std::string line;
-    std::size_t first_snapshot = 0;  // the first snapshot of the steady state
 };
 
 // Stresses (Pa, positive magnitudes, as architecture.md): normal bottom = f_y(bottom)/A, top =
