@@ -61,6 +61,41 @@ std::string dt_unconverged_reason(const nlohmann::json& r) {
     return why;
 }
 
+nlohmann::json dt_refinement_record(double refined_time_step, const std::map<std::string, Scalar>& original,
+                                    const std::map<std::string, Scalar>& refined) {
+    auto both = [&](const std::string& name) -> std::pair<const Scalar*, const Scalar*> {
+        const auto o = original.find(name), r = refined.find(name);
+        if (o == original.end() || r == refined.end()) return {nullptr, nullptr};
+        return {&o->second, &r->second};
+    };
+    nlohmann::json j = {{"time_step_s", refined_time_step}};
+    const auto [nu_o, nu_r] = both("mean_solid_fraction");
+    if (!nu_o) throw Error("internal: dt refinement without mean_solid_fraction in both runs");
+    j["mean_solid_fraction"] = {
+        {"change", nu_r->value - nu_o->value}, {"original", nu_o->value}, {"refined", nu_r->value}};
+    for (const char* name : {"shear_stress_bottom", "shear_stress_top", "normal_stress_bottom", "normal_stress_top",
+                             "slip_bottom", "slip_top"}) {
+        const auto [o, r] = both(name);
+        if (!o) {
+            if (std::string_view(name).starts_with("shear"))
+                throw Error(fmt::format("internal: dt refinement without {} in both runs", name));
+            continue;
+        }
+        const double change = r->value - o->value;
+        const double so = o->stderr_.value_or(0), sr = r->stderr_.value_or(0);
+        const double se = std::sqrt(so * so + sr * sr);
+        auto ratio = [&](double den) { return den != 0 ? change / den : (change == 0 ? 0.0 : std::copysign(1e300, change)); };
+        const double z = ratio(se);
+        j[name] = {{"relative_change", ratio(o->value)},
+                   {"z", z},
+                   {"original", o->value},
+                   {"refined", r->value},
+                   {"original_stderr", so},
+                   {"refined_stderr", sr}};
+    }
+    return j;
+}
+
 Regime read_regime(const nlohmann::json& run) {
     if (!run.is_object() || !run.contains("status"))
         return {RegimeStatus::Unknown, "the summary does not say whether the run reached a steady state (no run.status)"};

@@ -1,6 +1,8 @@
 // The regime status of a result (regime.h) and the failure record (failure_record.h).
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <map>
 
 #include <boost/test/unit_test.hpp>
 
@@ -83,3 +85,32 @@ BOOST_AUTO_TEST_CASE(failure_record_round_trip) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(dt_refinement_record_is_what_read_regime_reads) {
+    using granlub::Scalar;
+    std::map<std::string, Scalar> o = {{"mean_solid_fraction", {0.50, std::nullopt, ""}},
+                                       {"shear_stress_bottom", {100.0, 2.0, "Pa"}},
+                                       {"shear_stress_top", {90.0, 2.0, "Pa"}},
+                                       {"slip_bottom", {0.2, 0.01, "m/s"}}};
+    auto r = o;
+    r["shear_stress_bottom"].value = 103.0;  // 3 %: converged
+    json run;
+    set_regime(run, RegimeStatus::Steady);
+    run["dt_refinement"] = dt_refinement_record(5e-6, o, r);
+    BOOST_TEST(read_regime(run).steady());
+    const json& rec = run["dt_refinement"];
+    BOOST_TEST(rec.at("time_step_s").get<double>() == 5e-6);
+    BOOST_TEST(std::abs(rec.at("shear_stress_bottom").at("relative_change").get<double>() - 0.03) < 1e-12);
+    BOOST_TEST(std::abs(rec.at("shear_stress_bottom").at("z").get<double>() - 3.0 / std::sqrt(8.0)) < 1e-12);
+    BOOST_TEST(rec.contains("slip_bottom"));
+    BOOST_TEST(!rec.contains("slip_top"));  // only what both runs have
+    r["shear_stress_top"].value = 80.0;  // -11 %, 3.5 standard errors
+    run["dt_refinement"] = dt_refinement_record(5e-6, o, r);
+    BOOST_TEST((read_regime(run).status == RegimeStatus::DtUnconverged));
+    r["mean_solid_fraction"].value = 0.51;
+    r["shear_stress_top"].value = 90.0;
+    run["dt_refinement"] = dt_refinement_record(5e-6, o, r);
+    BOOST_TEST((read_regime(run).status == RegimeStatus::DtUnconverged));
+    r.erase("shear_stress_top");
+    BOOST_CHECK_THROW(dt_refinement_record(5e-6, o, r), Error);
+}

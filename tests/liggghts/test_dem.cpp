@@ -15,6 +15,7 @@
 #include "granlub/dem/command.h"
 #include "granlub/error.h"
 #include "granlub/particles.h"
+#include "granlub/regime.h"
 #include "granlub/results.h"
 #include "granlub/sweep.h"
 #include "outputs.h"
@@ -211,4 +212,39 @@ BOOST_AUTO_TEST_CASE(output_readers_parse_rows_and_name_bad_lines) {
                    .find("p2.txt:2: expected: step gap") != std::string::npos);
     BOOST_TEST(error_of([&] { dem::read_plate_series(dir / "missing.txt"); }).find("wrote no plate-position file") !=
                std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(every_result_carries_its_flow_regime_and_refine_dt_reruns_at_half_the_step) {
+    const Run r = run(kCase + "refine_dt = true\n", "refine_dt");
+    BOOST_TEST_REQUIRE(r.code == 0);
+    const Summary s = read_summary(r.dir / "summary.json");
+    const auto& fr = s.run.at("flow_regime");
+    for (const char* key : {"inertial_number", "inertial_number_nominal", "inertial_number_mid_gap",
+                            "coordination_number", "contact_persistence"})
+        BOOST_TEST((fr.at(key).is_number() && std::isfinite(fr.at(key).get<double>())), key);
+    BOOST_TEST(fr.at("regime").is_string());
+    BOOST_TEST(fr.at("contact_persistence").get<double>() >= 0.0);
+    BOOST_TEST(fr.at("contact_persistence").get<double>() <= 1.0);
+    BOOST_TEST(fr.at("persistence_snapshots").get<int>() == 3);
+    BOOST_TEST(!fs::exists(r.dir / "contacts.txt"));  // read and removed
+    // the rerun: twice the steps of half the size, in dt_half/, and a record read_regime accepts
+    const auto& rec = s.run.at("dt_refinement");
+    const double dt = s.run.at("time_step_s").get<double>();
+    BOOST_TEST(rec.at("time_step_s").get<double>() == 0.5 * dt);
+    BOOST_TEST(rec.at("refined_run").at("steps").get<long>() == 2 * s.run.at("steps").get<long>());
+    BOOST_TEST(rec.at("refined_run").at("flow_regime").at("persistence_interval_s").get<double>() ==
+               fr.at("persistence_interval_s").get<double>());
+    BOOST_CHECK_NO_THROW(dt_unconverged_reason(rec));
+    BOOST_TEST((read_regime(s.run).status != RegimeStatus::Unknown));
+    BOOST_TEST((read_regime(s.run).status == (s.run.at("status") == "transient" ? RegimeStatus::Transient
+                                              : dt_unconverged_reason(rec).empty() ? RegimeStatus::Steady
+                                                                                   : RegimeStatus::DtUnconverged)));
+    BOOST_TEST(read_profile(r.dir / "dt_half" / "profile.csv").rows() == 6u);
+    // the main result is the full-step run: the same as without the rerun
+    const Run plain = run(kCase, "refine_dt_off");
+    BOOST_TEST_REQUIRE(plain.code == 0);
+    const Summary p = read_summary(plain.dir / "summary.json");
+    BOOST_TEST(p.value("shear_stress_bottom") == s.value("shear_stress_bottom"));
+    BOOST_TEST(!p.run.contains("dt_refinement"));
+    BOOST_TEST(!fs::exists(plain.dir / "dt_half"));
 }

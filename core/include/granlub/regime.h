@@ -10,11 +10,14 @@
 // is not invented. A steady result whose dt_refinement record shows that halving the time step
 // moves the answer (dt_unconverged_reason) reads as DtUnconverged.
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
+
+#include "granlub/results.h"
 
 namespace granlub {
 
@@ -57,5 +60,14 @@ inline constexpr double kDtMaxStressZ = 2.0;
 // Empty when the record shows convergence; otherwise the reason. Throws Error naming the key when
 // the record is malformed.
 std::string dt_unconverged_reason(const nlohmann::json& dt_refinement);
+
+// Writes the record above from the outputs of the original run and of the rerun at
+// refined_time_step: mean_solid_fraction {"change", "original", "refined"}, and for each of the
+// stresses and slips present in both, {"relative_change", "z", "original", "refined",
+// "original_stderr", "refined_stderr"}. z = change / sqrt(se_o^2 + se_r^2); without any standard
+// error a change counts as 1e300 standard errors (JSON has no infinity). Throws Error when the
+// mean solid fraction or a wall shear stress is missing.
+nlohmann::json dt_refinement_record(double refined_time_step, const std::map<std::string, Scalar>& original,
+                                    const std::map<std::string, Scalar>& refined);
 
 }  // namespace granlub

@@ -11,6 +11,7 @@
 
 #include "granlub/coarse_grain.h"
 #include "granlub/error.h"
+#include "granlub/flow_regime.h"
 #include "granlub/regime.h"
 
 namespace granlub::yade {
@@ -193,6 +194,12 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     sum.run["atom_steps_per_s"] = yade_run_s > 0 ? static_cast<double>(n) * steps / yade_run_s : 0.0;
     if (ds.contains("en")) sum.run["calibrated_en"] = ds["en"];
     sum.run["command"] = "yade -n -j1 -x granlub_yade.py params.json";
+    // the inertial numbers only: the YADE snapshots hold y and velocities, not x and z, so the
+    // coordination number and contact persistence (contacts.h) are not measured here
+    FlowDiagnostics fd;
+    set_inertial_numbers(fd, prof, U, box.gap, 0.5 * (P_b + P_t), c.grains.diameter, c.grains.density);
+    sum.run["flow_regime"] = flow_regime_json(fd);
+    sum.run["flow_regime"]["contacts_not_measured"] = "the YADE snapshots hold y and velocities only (no x, z)";
 
     PointResult r;
     r.profile = std::move(prof);

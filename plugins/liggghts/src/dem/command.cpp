@@ -8,10 +8,12 @@
 #include <fmt/format.h>
 
 #include "deck.h"
+#include "diagnostics.h"
 #include "engine.h"
 #include "granlub/coarse_grain.h"
 #include "granlub/error.h"
 #include "granlub/particles.h"
+#include "granlub/regime.h"
 #include "granlub/results.h"
 #include "outputs.h"
 #include "pvd.h"
@@ -22,6 +24,83 @@ namespace granlub::dem {
 namespace fs = std::filesystem;
 
 namespace {
+
+// One engine run of the point in `dir` with settings s: data file, deck, LIGGGHTS, outputs and
+// the flow-regime evidence.
+struct OneRun {
+    DemOutputs out;
+    EngineRun er;
+};
+
+OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
+                const fs::path& dir, const std::string& prov) {
+    ParticleBox data_box = s.box;
+    data_box.gap = s.box_top();  // load control: room above H for the plate to rise
+    write_file_atomic(dir / kData, data_file(init.particles, data_box, c.grains.density,
+                                             fmt::format("case {} point {} ({})", c.name, p.id, prov)));
+    write_file_atomic(dir / kDeck, deck(c, p, s, init.particles.size(), prov));
+    for (const char* f : {kSnapshots, kContactsFile, kPlateFile}) fs::remove(dir / f);
+    if (s.vtk) fs::remove_all(dir / "post");  // the .pvd lists exactly this run's files
+
+    OneRun r;
+    r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
+
+    const WallSeries walls = read_wall_series(dir / kWallFile);
+    std::optional<PlateSeries> plate;
+    if (s.load) {
+        plate = read_plate_series(dir / kPlateFile);
+        const std::string what = fmt::format("case {} point {} ({})", c.name, p.id, prov);
+        write_file_atomic(dir / kGapFile, gap_csv(s, walls, *plate, what));
+    }
+    const SteadyWindow window = steady_window(s, walls, plate ? &*plate : nullptr);
+    // profile slabs span the gap: the case's H, or the mean plate position under load control
+    const double gap = plate ? mean_gap(s, *plate, window).mean : c.cell.gap;
+    SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
+    CoordinationSeries z(s.box, window.t_start);
+    const std::size_t snapshots = for_each_snapshot(dir / kSnapshots, [&](const ParticleSet& g, double step) {
+        cg.add_snapshot(g, step * s.time_step);
+        z.add(g, step * s.time_step);
+    });
+    if (snapshots < 2)
+        throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", (dir / kSnapshots).string()));
+    fs::remove(dir / kSnapshots);  // large; the deck regenerates it
+
+    if (s.vtk) write_pvd(dir, s.time_step);
+
+    r.out = make_outputs(c, p, s, walls, cg, window, plate ? &*plate : nullptr, init.particles.size());
+    r.out.run["flow_regime"] = flow_regime_record(c, p, s, r.out, cg, z, dir / kContactsFile);
+    fs::remove(dir / kContactsFile);
+    return r;
+}
+
+// run.dt_refinement: the point rerun at half the time step in <dir>/dt_half (its profile.csv and
+// engine files stay there), compared with the main run.
+nlohmann::json refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
+                         const fs::path& dir, const std::string& prov, const DemOutputs& main) {
+    const Settings h = half_step(s);
+    const fs::path sub = dir / kRefineDir;
+    fs::create_directories(sub);
+    const OneRun r = run_once(c, p, h, init, sub, prov);
+    write_file_atomic(sub / "profile.csv",
+                      profile_csv(r.out.profile, {fmt::format("case {} point {}: the rerun at half the time step ({:g} "
+                                                              "s); the point's result is ../profile.csv",
+                                                              c.name, p.id, h.time_step),
+                                                  prov}));
+    nlohmann::json rec = dt_refinement_record(h.time_step, main.outputs, r.out.outputs);
+    nlohmann::json outputs;
+    for (const auto& [name, v] : r.out.outputs)
+        outputs[name] = v.stderr_ ? nlohmann::json{{"value", v.value}, {"stderr", *v.stderr_}}
+                                  : nlohmann::json{{"value", v.value}};
+    rec["refined_run"] = {{"folder", kRefineDir},
+                          {"steps", h.steps},
+                          {"status", r.out.run.at("status")},
+                          {"status_reason", r.out.run.at("status_reason")},
+                          {"steady_state_start_s", r.out.run.at("steady_state_start_s")},
+                          {"wall_clock_s", r.er.wall_clock_s},
+                          {"flow_regime", r.out.run.at("flow_regime")},
+                          {"outputs", outputs}};
+    return rec;
+}
 
 PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, const fs::path& dir) {
     OperatingPoint p = p0;
@@ -35,42 +114,21 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
-    ParticleBox data_box = s.box;
-    data_box.gap = s.box_top();  // load control: room above H for the plate to rise
-    write_file_atomic(dir / kData, data_file(init.particles, data_box, c.grains.density,
-                                             fmt::format("case {} point {} ({})", c.name, p.id, prov)));
-    write_file_atomic(dir / kDeck, deck(c, p, s, init.particles.size(), prov));
-    fs::remove(dir / kSnapshots);
-    fs::remove(dir / kPlateFile);
-    if (s.vtk) fs::remove_all(dir / "post");  // the .pvd lists exactly this run's files
+    const OneRun main = run_once(c, p, s, init, dir, prov);
+    const DemOutputs& out = main.out;
+    const EngineRun& er = main.er;
+    fs::remove_all(dir / kRefineDir);  // a rerun of an older result is not this one's
+    nlohmann::json dt_record;
+    if (s.refine_dt) dt_record = refine_dt(c, p, s, init, dir, prov, out);
 
-    const EngineRun er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
-
-    const WallSeries walls = read_wall_series(dir / kWallFile);
-    std::optional<PlateSeries> plate;
-    if (s.load) {
-        plate = read_plate_series(dir / kPlateFile);
-        const std::string what = fmt::format("case {} point {} ({})", c.name, p.id, prov);
-        write_file_atomic(dir / kGapFile, gap_csv(s, walls, *plate, what));
-    }
-    const SteadyWindow window = steady_window(s, walls, plate ? &*plate : nullptr);
-    // profile slabs span the gap: the case's H, or the mean plate position under load control
-    const double gap = plate ? mean_gap(s, *plate, window).mean : c.cell.gap;
-    SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
-    if (read_snapshots(dir / kSnapshots, s.time_step, cg) < 2)
-        throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", (dir / kSnapshots).string()));
-    fs::remove(dir / kSnapshots);  // large; the deck regenerates it
-
-    if (s.vtk) write_pvd(dir, s.time_step);
-
-    DemOutputs out = make_outputs(c, p, s, walls, cg, window, plate ? &*plate : nullptr, init.particles.size());
     PointResult r;
-    r.profile = std::move(out.profile);
+    r.profile = out.profile;
     r.summary = make_summary(c, p0, "dem", s.seed);
-    r.summary.outputs = std::move(out.outputs);
+    r.summary.outputs = out.outputs;
     r.summary.provenance.settings["resolved"] = s.to_json();
     const double atoms = static_cast<double>(init.particles.size());
     const double loop = er.loop_time_s > 0 ? er.loop_time_s : er.wall_clock_s;
+    const auto engine_steps = s.steps + s.persistence_run_steps();  // the loop time covers both runs
     r.summary.run = out.run;
     r.summary.run["model"] = s.model == Model::Impulse ? "impulse" : "hertz";
     r.summary.run["atoms"] = init.particles.size();
@@ -79,12 +137,22 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     r.summary.run["simulated_time_s"] = static_cast<double>(s.steps) * s.time_step;
     r.summary.run["wall_clock_s"] = er.wall_clock_s;
     r.summary.run["loop_time_s"] = er.loop_time_s;
-    r.summary.run["atom_steps_per_s"] = atoms * static_cast<double>(s.steps) / loop;
+    r.summary.run["atom_steps_per_s"] = atoms * static_cast<double>(engine_steps) / loop;
     r.summary.run["ranks"] = er.ranks;
     r.summary.run["initial_configuration"] = init.file.string();
     r.summary.run["initial_configuration_reused"] = init.reused;
-    r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s]", out.line, init.particles.size(), s.steps,
-                         r.summary.run["atom_steps_per_s"].get<double>());
+    const auto& fr = out.run.at("flow_regime");
+    r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s] regime: {}{}", out.line, init.particles.size(),
+                         s.steps, r.summary.run["atom_steps_per_s"].get<double>(),
+                         fr.at("regime").is_string() ? fr.at("regime").get<std::string>() : std::string("unknown"),
+                         fr.at("enduring_contacts").get<bool>() ? ", enduring contacts" : "");
+    if (s.refine_dt) {
+        r.summary.run["dt_refinement"] = dt_record;
+        const std::string why = dt_unconverged_reason(dt_record);
+        if (!why.empty() && read_regime(r.summary.run).status == RegimeStatus::DtUnconverged)
+            set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
+        r.line += why.empty() ? " dt/2: converged" : " dt/2: NOT CONVERGED (" + why + ")";
+    }
     return r;
 }
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/flow_regime.h"
 #include "granlub/text.h"
 
 namespace granlub::dem {
@@ -32,6 +33,23 @@ std::string pair_matrix(double pp, double bottom, double top, double side) {
     for (const auto& row : m)
         for (double v : row) s += fmt::format(" {}", v);
     return s;
+}
+
+// Contact persistence (granlub's regime diagnostics, flow_regime.h): after the run, with the
+// result outputs closed, a few snapshots a small shear strain apart. Costs persistence_run_steps().
+template <class Line>
+void persistence_block(const Settings& s, Line& line) {
+    line("");
+    line(fmt::format("# contact persistence: {} snapshots {} steps apart (shear strain {:g} at U/H) in {}, after the "
+                     "run; the result outputs are closed first",
+                     s.persistence_intervals + 1, s.persistence_every, kPersistenceStrain, kContactsFile));
+    line("undump cg");
+    if (s.vtk) line("undump vtk");
+    line("unfix walls");
+    if (s.load) line("unfix plate");
+    line(fmt::format("dump contacts all custom {} {} {}", s.persistence_every, kContactsFile, kSnapshotColumns));
+    line("dump_modify contacts sort id");
+    line(fmt::format("run             {}", s.persistence_run_steps()));
 }
 
 }  // namespace
@@ -136,7 +154,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(fmt::format("# wall area A = L W = {} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A", A));
     line("");
     line("# particle snapshots for coarse-graining across the gap");
-    line(fmt::format("dump cg all custom {} {} id y vx vy vz radius", s.snapshot_every, kSnapshots));
+    line(fmt::format("dump cg all custom {} {} {}", s.snapshot_every, kSnapshots, kSnapshotColumns));
     line("dump_modify cg sort id");
     if (s.vtk) {
         line(fmt::format("# ParaView: one VTK XML file per snapshot; granlub writes the collection {}", kPvdFile));
@@ -149,6 +167,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("thermo_modify   norm no lost error");
     if (!s.load) {
         line(fmt::format("run             {}", s.steps));
+        persistence_block(s, line);
         return d;
     }
     // Load control (README "Load control"): a plate servo in the deck. Every servo_every steps the
@@ -181,6 +200,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(top_wall);
     line("next update");
     line("jump SELF servo");
+    persistence_block(s, line);  // after the last servo window (`next` skips the jump)
     return d;
 }
 

@@ -13,7 +13,10 @@ namespace granlub::dem {
 inline constexpr const char* kDeck = "in.granlub";
 inline constexpr const char* kData = "grains.data";
 inline constexpr const char* kWallFile = "walls.txt";       // fix ave/time: wall forces per block
-inline constexpr const char* kSnapshots = "snapshots.txt";  // dump custom: id y vx vy vz radius
+inline constexpr const char* kSnapshots = "snapshots.txt";  // dump custom: kSnapshotColumns
+inline constexpr const char* kContactsFile = "contacts.txt";  // the persistence snapshots after the run
+inline constexpr const char* kSnapshotColumns = "id x y z vx vy vz radius";  // both dumps, sorted by id
+inline constexpr const char* kRefineDir = "dt_half";  // [dem] refine_dt: the rerun at time_step / 2
 inline constexpr const char* kLog = "log.liggghts";
 inline constexpr const char* kPlateFile = "plate.txt";      // control = load: plate position per servo update
 inline constexpr const char* kGapFile = "gap.csv";          // control = load: plate history (granlub's)

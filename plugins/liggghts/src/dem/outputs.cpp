@@ -67,7 +67,7 @@ WallSeries read_wall_series(const fs::path& file) {
     return w;
 }
 
-std::size_t read_snapshots(const fs::path& file, double dt, SliceCoarseGrainer& cg) {
+std::size_t for_each_snapshot(const fs::path& file, const std::function<void(const ParticleSet&, double)>& snapshot) {
     std::ifstream in(file);
     if (!in) throw SolverError(fmt::format("{}: LIGGGHTS wrote no particle snapshots", file.string()));
     std::string l;
@@ -86,16 +86,18 @@ std::size_t read_snapshots(const fs::path& file, double dt, SliceCoarseGrainer& 
         if (!(in >> n)) throw bad("no atom count");
         std::getline(in, l);
         for (int k = 0; k < 4; ++k) std::getline(in, l);  // box bounds
-        std::getline(in, l);                               // ITEM: ATOMS id y vx vy vz radius
-        if (l.find("id y vx vy vz radius") == std::string::npos) throw bad("unexpected columns: " + l);
+        std::getline(in, l);                               // ITEM: ATOMS <columns>
+        if (l != std::string("ITEM: ATOMS ") + kSnapshotColumns && l != std::string("ITEM: ATOMS ") + kSnapshotColumns + " ")
+            throw bad(fmt::format("unexpected columns: '{}' (expected: {})", l, kSnapshotColumns));
         p.clear();
         p.reserve(n);
         for (std::size_t i = 0; i < n; ++i) {
-            double id, y, vx, vy, vz, r;
-            if (!(in >> id >> y >> vx >> vy >> vz >> r)) throw bad("truncated");
-            p.push_back(0.0, y, 0.0, vx, vy, vz, r);
+            double id, x, y, z, vx, vy, vz, r;
+            if (!(in >> id >> x >> y >> z >> vx >> vy >> vz >> r)) throw bad("truncated");
+            if (id != static_cast<double>(i + 1)) throw bad(fmt::format("atom {} has id {} (sorted ids expected)", i + 1, id));
+            p.push_back(x, y, z, vx, vy, vz, r);
         }
-        cg.add_snapshot(p, step * dt);
+        snapshot(p, step);
         ++count;
     }
     return count;

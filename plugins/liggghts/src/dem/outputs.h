@@ -2,6 +2,7 @@
 // and the coarse-grained profile.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "granlub/case.h"
@@ -18,9 +19,10 @@ struct WallSeries {
 };
 WallSeries read_wall_series(const std::filesystem::path& file);
 
-// Feeds every snapshot of a LIGGGHTS `dump custom ... id y vx vy vz radius` file to `cg`
-// (time = step * dt). Returns the number of snapshots read.
-std::size_t read_snapshots(const std::filesystem::path& file, double dt, SliceCoarseGrainer& cg);
+// Calls snapshot(grains, step) for every snapshot of a LIGGGHTS `dump custom ... <kSnapshotColumns>`
+// file (sorted by id: index i is grain id i + 1). Returns the number of snapshots read.
+std::size_t for_each_snapshot(const std::filesystem::path& file,
+                              const std::function<void(const ParticleSet&, double step)>& snapshot);
 
 // control = load: the plate position (gap, m) at the end of each servo window (LIGGGHTS' fix
 // ave/time file; the initial position at step 0 is dropped).

@@ -13,6 +13,9 @@ SectionSpec section() {
            "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
     s.boolean("separate_overlaps", false,
               "impulse model: also remove overlaps by moving grains apart (our assumption, not S&T's)");
+    s.boolean("refine_dt", false,
+              "also rerun every point at half the time step (same seed and initial grains) into the point's "
+              "folder dt_half/; run.dt_refinement compares the two (the result stays the full-step run)");
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");

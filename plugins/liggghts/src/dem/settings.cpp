@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/flow_regime.h"
 
 namespace granlub::dem {
 
@@ -95,6 +96,12 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.stations = static_cast<std::size_t>(s.integer("stations"));
     st.blocks = static_cast<std::size_t>(s.integer("blocks"));
     st.skin = s.real("skin") * c.grains.diameter;
+    st.refine_dt = s.boolean("refine_dt");
+    // a shear strain of kPersistenceStrain at U/H, at most a hundredth of the run
+    const double shear_rate = p.speed / c.cell.gap;
+    const double every = shear_rate > 0 ? std::round(kPersistenceStrain / (shear_rate * st.time_step)) : 1.0;
+    st.persistence_every = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::min(every, 1e12)), 1,
+                                                    std::max<std::int64_t>(1, st.steps / 100));
 
     if (p.control == Control::Load) {
         st.insert_fill = p.solid_fraction > 0 ? p.solid_fraction : s.real("fill_for_load");
@@ -104,6 +111,15 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
         st.insert_fill = p.solid_fraction;
     }
     return st;
+}
+
+Settings half_step(const Settings& s) {
+    Settings h = s;
+    h.time_step = 0.5 * s.time_step;
+    for (std::int64_t* n : {&h.steps, &h.sample_every, &h.snapshot_every, &h.servo_every, &h.persistence_every})
+        *n *= 2;
+    h.refine_dt = false;
+    return h;
 }
 
 nlohmann::json Settings::to_json() const {
@@ -130,7 +146,10 @@ nlohmann::json Settings::to_json() const {
             {"servo_gain", servo_gain},
             {"servo_max_error", servo_max_error},
             {"gap_min_m", gap_min},
-            {"gap_max_m", gap_max}};
+            {"gap_max_m", gap_max},
+            {"refine_dt", refine_dt},
+            {"persistence_every", persistence_every},
+            {"persistence_intervals", persistence_intervals}};
 }
 
 }  // namespace granlub::dem

@@ -30,6 +30,17 @@ struct Settings {
     double velocity_noise = 0;
     double insert_fill = 0;       // solid fraction inserted (point's, or fill_for_load)
     bool vtk = false;
+    bool refine_dt = false;       // also rerun the point at time_step / 2 (run.dt_refinement)
+    // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
+    // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
+    std::int64_t persistence_every = 1;
+    std::int64_t persistence_intervals = 2;
+    // steps of the persistence run after the main run: up to the next multiple of
+    // persistence_every (the first snapshot), then the intervals
+    std::int64_t persistence_run_steps() const {
+        return (persistence_every - steps % persistence_every) % persistence_every +
+               persistence_intervals * persistence_every;
+    }
     int np = 1;
     ParticleBox box;              // the cell (box.gap = the case's gap H)
 
@@ -49,6 +60,10 @@ struct Settings {
 
 // Reads [dem], derives and checks the time step (throws CaseError naming the key).
 Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o);
+
+// The same run at half the time step: the same simulated time, blocks, snapshots, servo windows
+// and persistence interval in seconds, twice the steps.
+Settings half_step(const Settings& s);
 
 // Time step of the impulse model: a grain moving at the reference speed travels
 // `step_fraction` diameters per step. Reference speed: max(U, sqrt(2 g H)).
