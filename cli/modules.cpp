@@ -49,7 +49,9 @@ int check_solvers(const Case& c, const RunOptions& o) {
                 } catch (const CaseError&) {
                     throw;
                 } catch (const Error& e) {
-                    cannot.push_back(fmt::format("point {}: {}", p->id, e.what()));
+                    const std::string why = e.what();
+                    const std::string id = fmt::format("point {}: ", p->id);
+                    cannot.push_back(why.starts_with(id) ? why : id + why);
                 }
             }
         } catch (const CaseError& e) {

@@ -295,31 +295,32 @@ ParticleSet read_particles_csv(const std::filesystem::path& path) {
 namespace {
 // The grain count of a point, checked: the one place both initial_particles() and
 // check_initial_particles() take it from.
-std::size_t point_grains(const Case& c, const OperatingPoint& pt, const ParticleBox& box) {
+std::size_t point_grains(const Case& c, const OperatingPoint& pt, const ParticleBox& box, const std::string& fill_key) {
     try {
         const std::size_t n = grains_for_fill(box, c.grains.diameter, pt.solid_fraction);
         check_fits(box, c.grains.diameter, n);
         return n;
     } catch (const CaseError& e) {
-        throw CaseError(fmt::format("{}: point {}: [operating] solid_fraction = {:g}: {}", c.file.string(), pt.id,
+        throw CaseError(fmt::format("{}: point {}: {} = {:g}: {}", c.file.string(), pt.id, fill_key,
                                     pt.solid_fraction, e.what()));
     }
 }
 }  // namespace
 
-void check_initial_particles(const Case& c, const OperatingPoint& pt, double periodic_depth) {
-    point_grains(c, pt, particle_box(c, periodic_depth));
+void check_initial_particles(const Case& c, const OperatingPoint& pt, double periodic_depth,
+                             const std::string& fill_key) {
+    point_grains(c, pt, particle_box(c, periodic_depth), fill_key);
 }
 
 InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, const std::filesystem::path& root,
-                                   const InsertionOptions& opt_in, double periodic_depth) {
+                                   const InsertionOptions& opt_in, double periodic_depth, const std::string& fill_key) {
     InitialParticles out;
     out.box = particle_box(c, periodic_depth);
     out.file = initial_particles_path(root, pt.id);
     InsertionOptions opt = opt_in;
     opt.wall_speed = pt.speed;
     const double d = c.grains.diameter;
-    const std::size_t n = point_grains(c, pt, out.box);
+    const std::size_t n = point_grains(c, pt, out.box, fill_key);
     const std::string key = fmt::format("key: box={:.17g},{:.17g},{:.17g},{} d={:.17g} n={} U={:.17g} noise={:.17g} seed={}",
                                         out.box.length, out.box.gap, out.box.width, out.box.periodic_z ? "pz" : "wz",
                                         d, n, opt.wall_speed, opt.velocity_noise, opt.seed);

@@ -183,3 +183,23 @@ BOOST_AUTO_TEST_CASE(check_warns_of_implausible_magnitudes) {
     const auto fine = run(exe + " check " + src + "/cases/sawyer2001");
     BOOST_TEST(fine.text.find("warning:") == std::string::npos, fine.text);
 }
+
+// Under load control the DEM inserts [dem] fill_for_load when the case gives no solid fraction:
+// when that does not fit, the error names that key, not one the user never set.
+BOOST_AUTO_TEST_CASE(an_insertion_error_names_the_key_the_fill_came_from) {
+    if (!built("dem")) return;
+    const fs::path dir = fs::temp_directory_path() / "granlub_test_cli_fill_key";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ifstream in(src + "/tests/cli/tiny/case.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    text.replace(text.find("control = \"fill\""), 16, "control = \"load\"\nnormal_stress = 5000");
+    text.replace(text.find("solid_fraction = 0.55"), 21, "");
+    std::ofstream(dir / "case.toml") << text;
+    const auto o = run(exe + " check " + dir.string());
+    BOOST_TEST(o.rc == 2, o.text);
+    BOOST_TEST(o.text.find("point U1.0: [dem] fill_for_load (default) = 0.55: particle insertion: 1050 grains") !=
+                   std::string::npos,
+               o.text);
+    fs::remove_all(dir);
+}

@@ -30,9 +30,12 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     r.blocks = s.integer("blocks");
     r.timeout = s.real("timeout");
 
+    // A case this solver cannot run, not bad input: `granlub run` goes on with the other solvers.
     if (p.control == Control::Load)
-        c.section("operating").fail("control", "granlub yade runs the filled cell only (a servo-controlled top "
-                                               "wall is not implemented in the YADE driver); use control = \"fill\"");
+        throw SolverError(fmt::format("point {}: [operating] control = \"load\": granlub yade runs the filled cell "
+                                      "only (a servo-controlled top wall is not implemented in the YADE driver); "
+                                      "use control = \"fill\"",
+                                      p.id));
 
     // Same initial grains as `granlub dem`: its insertion keys when the case has them.
     r.insertion.wall_speed = p.speed;

@@ -110,7 +110,7 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     InsertionOptions ins;
     ins.seed = s.seed;
     ins.velocity_noise = s.velocity_noise;
-    const InitialParticles init = initial_particles(c, p, results_root(c, o), ins, s.box.width);
+    const InitialParticles init = initial_particles(c, p, results_root(c, o), ins, s.box.width, s.insert_fill_key);
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
@@ -163,7 +163,7 @@ void check(const Case& c, const RunOptions& o) {
         OperatingPoint p = p0;
         const Settings s = resolve(c, p, v);
         p.solid_fraction = s.insert_fill;  // as solve() inserts it
-        check_initial_particles(c, p, s.box.width);  // the depth solve() passes
+        check_initial_particles(c, p, s.box.width, s.insert_fill_key);  // the depth solve() passes
     });
 }
 

@@ -105,10 +105,14 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
 
     if (p.control == Control::Load) {
         st.insert_fill = p.solid_fraction > 0 ? p.solid_fraction : s.real("fill_for_load");
+        st.insert_fill_key = p.solid_fraction > 0 ? "[operating] solid_fraction"
+                                                  : std::string("[dem] fill_for_load") +
+                                                        (s.is_default("fill_for_load") ? " (default)" : "");
         // the plate cannot go below the closest packing of the inserted grains (FCC, 0.7405)
         st.gap_min = st.insert_fill * c.cell.gap / 0.7405;
     } else {
         st.insert_fill = p.solid_fraction;
+        st.insert_fill_key = "[operating] solid_fraction";
     }
     return st;
 }

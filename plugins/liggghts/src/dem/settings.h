@@ -29,6 +29,7 @@ struct Settings {
     std::uint64_t seed = 1;
     double velocity_noise = 0;
     double insert_fill = 0;       // solid fraction inserted (point's, or fill_for_load)
+    std::string insert_fill_key;  // which key it came from, for messages
     bool vtk = false;
     bool refine_dt = false;       // also rerun the point at time_step / 2 (run.dt_refinement)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
