@@ -40,6 +40,7 @@ public:
                 line_start = false;
                 continue;
             }
+            const char before = prev;
             if (!ascii_space(c) && c != '\r') prev = c;
             if (static_cast<unsigned char>(c) >= 0x80)
                 return fail("a non-ASCII character outside a string or comment (put it in quotes)");
@@ -72,6 +73,9 @@ public:
                 continue;
             }
             if (c == '[' || c == '{') {  // in value position: an array or an inline table
+                // only where a value starts (`a = 8888-["x` made toml++ read on as above)
+                if (before != '=' && before != '[' && before != ',')
+                    return fail("a bracket in the middle of a key or value");
                 stack_.push_back(c);
                 expect_key = c == '{';
                 ++i_;

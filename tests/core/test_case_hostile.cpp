@@ -202,6 +202,7 @@ BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
         {"b = 8888-\"\xc2\xa7\x01", "a quote in the middle of a key or value"},
         {"b = 8888-878=8888=\"\xc2\xa7\"", "an '=' where a value or the end of the line was expected"},
         {"[a=b]", "an '=' where a value or the end of the line was expected"},
+        {"b = 8888-[\"\xc2\xa7\x01", "a bracket in the middle of a key or value"},
         {"a = 1\rb = 2", "a carriage return without a line feed"},
         {"[\r\n", "a table header must start with a key"},
         {"a = [1, }", "an array element must be a value"},
