@@ -1,7 +1,11 @@
 // A valid case as TOML text, and a helper to make variants of it for tests.
 #pragma once
+#include <filesystem>
 #include <stdexcept>
 #include <string>
+
+#include "granlub/case.h"
+#include "granlub/error.h"
 
 namespace granlub::test {
 
@@ -37,5 +41,26 @@ inline std::string with(const std::string& from, const std::string& to, std::str
     if (pos == std::string::npos) throw std::logic_error("test text lacks: " + from);
     return text.replace(pos, from.size(), to);
 }
+
+// The CaseError message of parsing `text` as "bad.toml" with the common schema; "" when it parses.
+inline std::string error_of(const std::string& text) {
+    try {
+        parse_case(text, "bad.toml", Schema::common());
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// A fresh folder under the system temp folder, removed at the end of the scope.
+struct TmpDir {
+    std::filesystem::path path;
+    explicit TmpDir(const std::string& name)
+        : path(std::filesystem::temp_directory_path() / ("granlub_test_" + name)) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~TmpDir() { std::filesystem::remove_all(path); }
+};
 
 }  // namespace granlub::test

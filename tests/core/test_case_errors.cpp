@@ -13,6 +13,7 @@
 
 using namespace granlub;
 using granlub::test::kValidCase;
+using granlub::test::error_of;
 using granlub::test::with;
 
 namespace {
@@ -23,14 +24,6 @@ struct Bad {
     std::vector<std::string> expect;  // substrings the message must contain
 };
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_case(text, "bad.toml", Schema::common());
-    } catch (const CaseError& e) {
-        return e.what();
-    }
-    return "";
-}
 
 }  // namespace
 

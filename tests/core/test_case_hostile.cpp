@@ -16,20 +16,14 @@
 #include "granlub/text.h"
 
 using namespace granlub;
+using granlub::test::TmpDir;
 using granlub::test::kValidCase;
+using granlub::test::error_of;
 using granlub::test::with;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_case(text, "bad.toml", Schema::common());
-    } catch (const CaseError& e) {
-        return e.what();
-    }
-    return "";
-}
 
 std::string load_error(const fs::path& p) {
     try {
@@ -40,14 +34,6 @@ std::string load_error(const fs::path& p) {
     return "";
 }
 
-struct TmpDir {
-    fs::path path;
-    explicit TmpDir(const std::string& name) : path(fs::temp_directory_path() / ("granlub_test_" + name)) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TmpDir() { fs::remove_all(path); }
-};
 
 }  // namespace
 

@@ -11,18 +11,11 @@
 #include "granlub/results.h"
 
 using namespace granlub;
+using granlub::test::TmpDir;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct TmpDir {
-    fs::path path;
-    explicit TmpDir(const std::string& name) : path(fs::temp_directory_path() / ("granlub_test_" + name)) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TmpDir() { fs::remove_all(path); }
-};
 
 Case test_case() { return parse_case(granlub::test::kValidCase, "t.toml", Schema::common()); }
 
