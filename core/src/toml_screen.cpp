@@ -146,6 +146,15 @@ private:
             const char c = t_[i_];
             if (!multi && c == '\n') return true;  // unterminated: toml++ says so
             if (q == '"' && c == '\\') {
+                // No escape starts with a non-ASCII character; toml++ 3.3 trips on one after a
+                // backslash (and, in multi-line strings, after the blanks it skips there).
+                std::size_t k = i_ + 1;
+                while (multi && k < t_.size() && ascii_space(t_[k])) ++k;
+                if (k < t_.size() && static_cast<unsigned char>(t_[k]) >= 0x80) {
+                    i_ = k;
+                    fail("a non-ASCII character after a backslash (not a TOML escape)");
+                    return false;
+                }
                 if (multi && line_ending_backslash()) {
                     // toml++ skips the whitespace that follows and trips on a non-ASCII character
                     while (i_ < t_.size() && (ascii_space(t_[i_]) || t_[i_] == '\r' || t_[i_] == '\n')) ++i_;
