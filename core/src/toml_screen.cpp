@@ -27,13 +27,15 @@ public:
         bool line_start = true;  // at the start of a line, outside any value
         char prev = '\n';        // the last character outside strings, blanks and comments
         bool expect_key = true;  // a key may come (line start, after '{' or ','): an '=' is due
+        bool in_header = false;  // inside [table] or [[table]]
         while (i_ < t_.size()) {
             const char c = t_[i_];
             if (c == '#') { skip_comment(); continue; }
             if (c == '"' || c == '\'') {
                 // A string starts a key or a value, never the middle of one (`8888-"x`): there the
                 // screen and toml++ would disagree on what is inside a string.
-                if (prev != '\n' && prev != '=' && prev != '[' && prev != ',' && prev != '{' && prev != '.')
+                const bool dotted_key = prev == '.' && (expect_key || in_header);  // a."b", never 0."b"
+                if (prev != '\n' && prev != '=' && prev != '[' && prev != ',' && prev != '{' && !dotted_key)
                     return fail("a quote in the middle of a key or value");
                 if (!string()) return problem_;
                 prev = '"';
@@ -45,7 +47,7 @@ public:
             if (static_cast<unsigned char>(c) >= 0x80)
                 return fail("a non-ASCII character outside a string or comment (put it in quotes)");
             if (c == '\n') {
-                if (stack_.empty()) line_start = expect_key = true;
+                if (stack_.empty()) line_start = expect_key = true, in_header = false;
                 ++i_;
                 continue;
             }
@@ -60,6 +62,7 @@ public:
                 if (i_ < t_.size() && t_[i_] == '[') ++i_;
                 if (!next_is(key_start, "a table header must start with a key, e.g. [walls.top]")) return problem_;
                 line_start = expect_key = false;
+                in_header = true;
                 continue;
             }
             line_start = false;

@@ -192,6 +192,7 @@ BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
         {"b = \"\"\"\\\xc2\xa7\"\"\"", "a non-ASCII character after a backslash"},
         {"b = \"\"\"\\  \xc2\xa7\"\"\"", "a non-ASCII character after a backslash"},
         {"b = \"\\\xc2\xa7\"", "a non-ASCII character after a backslash"},
+        {"b = 0.\"x\xc2\xa7\"", "a quote in the middle of a key or value"},
         {"a = 1\rb = 2", "a carriage return without a line feed"},
         {"[\r\n", "a table header must start with a key"},
         {"a = [1, }", "an array element must be a value"},
@@ -209,13 +210,14 @@ BOOST_AUTO_TEST_CASE(toml_that_trips_tomlplusplus_is_refused_first) {
         "# caf\xc3\xa9 \xc8\x9a in a comment\nname = \"t\"\ntitle = 'caf\xc3\xa9 [=] {}'",
         "name = \"t\"\ntitle = \"\"\"one\\\n   line \xc3\xa9\"\"\"",
         "name = \"t\"\ntitle = \"x\" # [= a = [}",
+        "name = \"t\"\n[walls.\"top\"]\n\"friction\" = 0.3\nroughness.\"x\" = 1",
     };
     for (const auto& f : fine) {
         const std::string text = with("name = \"t\"", f);
         try {
             parse_case(text, "ok.toml", Schema::common());
-        } catch (const CaseError& e) {
-            BOOST_FAIL(f << ": " << e.what());
+        } catch (const CaseError& e) {  // granlub's own checks may refuse it; the screen may not
+            BOOST_TEST(std::string(e.what()).find("TOML syntax error") == std::string::npos, f << ": " << e.what());
         }
     }
     BOOST_TEST(parse_case("\xEF\xBB\xBF" + kValidCase, "bom.toml", Schema::common()).name == "t");  // a BOM
