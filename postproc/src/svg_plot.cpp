@@ -207,10 +207,12 @@ std::vector<Tick> log_ticks(double lo, double hi) {
     auto inside = [&](double v) { return v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9); };
     int decades = 0;
     for (int k = k0; k <= k1; ++k) decades += inside(std::pow(10.0, k)) ? 1 : 0;
-    // Few decades in view: label 2 and 5 (or every mantissa) as well, so the axis can be read.
-    const std::vector<int> labelled = decades >= 2 ? std::vector<int>{1} : decades == 1 || hi / lo > 4
-                                                                              ? std::vector<int>{1, 2, 5}
-                                                                              : std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9};
+    // Up to three decades in view: label 2 and 5 as well (a reader must find 300 Pa); within one
+    // decade every mantissa; more decades: the powers of ten only.
+    const std::vector<int> labelled = decades >= 4                       ? std::vector<int>{1}
+                                      : decades >= 1 || hi / lo > 4 ? std::vector<int>{1, 2, 5}
+                                                                        : std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9};
+    int labels = 0;
     for (int k = k0; k <= k1; ++k) {
         for (int m = 1; m <= 9; ++m) {
             const double v = m * std::pow(10.0, k);
@@ -218,8 +220,18 @@ std::vector<Tick> log_ticks(double lo, double hi) {
             const bool major = std::find(labelled.begin(), labelled.end(), m) != labelled.end();
             std::string label;
             if (major) label = (m == 1 && decades >= 2) ? fmt::format("1e{:+03d}", k) : num(v, 6);
+            labels += major ? 1 : 0;
             ticks.push_back({v, label});
         }
+    }
+    // A narrow span (1.2 to 3.5 m/s) may hold only two mantissas: add the halves (1.5, 2.5).
+    if (labels < 3) {
+        for (int k = k0; k <= k1; ++k)
+            for (int m = 1; m <= 4; ++m) {
+                const double v = (m + 0.5) * std::pow(10.0, k);
+                if (inside(v)) ticks.push_back({v, num(v, 6)});
+            }
+        std::sort(ticks.begin(), ticks.end(), [](const Tick& a, const Tick& b) { return a.value < b.value; });
     }
     return ticks;
 }
