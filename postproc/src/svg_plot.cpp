@@ -209,7 +209,8 @@ std::vector<Tick> log_ticks(double lo, double hi) {
     for (int k = k0; k <= k1; ++k) decades += inside(std::pow(10.0, k)) ? 1 : 0;
     // Up to three decades in view: label 2 and 5 as well (a reader must find 300 Pa); within one
     // decade every mantissa; more decades: the powers of ten only.
-    const std::vector<int> labelled = decades >= 4                       ? std::vector<int>{1}
+    const bool wide = hi / lo > 3.5e3;  // more than three and a half decades
+    const std::vector<int> labelled = wide                               ? std::vector<int>{1}
                                       : decades >= 1 || hi / lo > 4 ? std::vector<int>{1, 2, 5}
                                                                         : std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9};
     int labels = 0;
