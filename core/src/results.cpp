@@ -341,42 +341,6 @@ std::string result_problem(const std::filesystem::path& dir, const Summary& s, c
 }
 }  // namespace
 
-LoadedResult load_result(const std::filesystem::path& dir, const std::string& inputs_hash,
-                         const std::string& case_name) {
-    std::error_code ec;
-    const auto sp = dir / "summary.json";
-    const auto pp = dir / "profile.csv";
-    LoadedResult r;
-    if (!std::filesystem::exists(sp, ec)) {
-        r.status = {ResultState::Missing, sp.string() + " does not exist"};
-        return r;
-    }
-    if (!std::filesystem::is_regular_file(sp, ec) || !std::filesystem::is_regular_file(pp, ec)) {
-        r.status = {ResultState::Corrupt, fmt::format("{} is not a regular file",
-                                                      std::filesystem::is_regular_file(sp, ec) ? pp.string() : sp.string())};
-        return r;
-    }
-    try {
-        Summary s = read_summary(sp);
-        Profile p = read_profile(pp);
-        if (std::string why = result_problem(dir, s, p, case_name); !why.empty()) {
-            r.status = {ResultState::Corrupt, why};
-            return r;
-        }
-        if (s.provenance.inputs_hash != inputs_hash) {
-            r.status = {ResultState::Stale, fmt::format("{}: computed for inputs {}, the case now gives {}",
-                                                        sp.string(), s.provenance.inputs_hash, inputs_hash)};
-            return r;
-        }
-        r.summary = std::move(s);
-        r.profile = std::move(p);
-        r.status = {ResultState::Complete, ""};
-    } catch (const std::exception& e) {  // anything unreadable is corrupt, never fatal to a sweep
-        r.status = {ResultState::Corrupt, e.what()};
-    }
-    return r;
-}
-
 namespace {
 // "[grains] density = 2500 -> 2600, [dem] time (new) = 0.2": what changed between two input sets.
 std::string changed_keys(const std::map<std::string, std::string>& was, const std::map<std::string, std::string>& now) {
@@ -397,19 +361,54 @@ std::string changed_keys(const std::map<std::string, std::string>& was, const st
 }
 }  // namespace
 
-LoadedResult load_result(const std::filesystem::path& dir, const Case& c, const std::string& solver) {
-    LoadedResult r = load_result(dir, c.inputs_hash(solver), c.name);
-    if (r.status.state != ResultState::Stale) return r;
-    try {  // name the keys: the summary was readable a moment ago
-        const Summary old = read_summary(dir / "summary.json");
-        if (!old.provenance.inputs.empty()) {
-            const std::string what = changed_keys(old.provenance.inputs, c.inputs(solver));
-            if (!what.empty())
-                r.status.reason = fmt::format("{}: computed before the case changed: {}", (dir / "summary.json").string(), what);
+ResultKey result_key(const Case& c, const std::string& solver) {
+    return {c.inputs_hash(solver), c.name, c.inputs(solver)};
+}
+
+LoadedResult load_result(const std::filesystem::path& dir, const ResultKey& key) {
+    std::error_code ec;
+    const auto sp = dir / "summary.json";
+    const auto pp = dir / "profile.csv";
+    LoadedResult r;
+    if (!std::filesystem::exists(sp, ec)) {
+        r.status = {ResultState::Missing, sp.string() + " does not exist"};
+        return r;
+    }
+    if (!std::filesystem::is_regular_file(sp, ec) || !std::filesystem::is_regular_file(pp, ec)) {
+        r.status = {ResultState::Corrupt, fmt::format("{} is not a regular file",
+                                                      std::filesystem::is_regular_file(sp, ec) ? pp.string() : sp.string())};
+        return r;
+    }
+    try {
+        Summary s = read_summary(sp);
+        Profile p = read_profile(pp);
+        if (std::string why = result_problem(dir, s, p, key.case_name); !why.empty()) {
+            r.status = {ResultState::Corrupt, why};
+            return r;
         }
-    } catch (const std::exception&) {
+        if (s.provenance.inputs_hash != key.inputs_hash) {
+            // name the keys that changed where both sides are known (older results lack them)
+            const std::string what = s.provenance.inputs.empty() || key.inputs.empty()
+                                         ? std::string()
+                                         : changed_keys(s.provenance.inputs, key.inputs);
+            r.status = {ResultState::Stale,
+                        what.empty() ? fmt::format("{}: computed for inputs {}, the case now gives {}", sp.string(),
+                                                   s.provenance.inputs_hash, key.inputs_hash)
+                                     : fmt::format("{}: computed before the case changed: {}", sp.string(), what)};
+            return r;
+        }
+        r.summary = std::move(s);
+        r.profile = std::move(p);
+        r.status = {ResultState::Complete, ""};
+    } catch (const std::exception& e) {  // anything unreadable is corrupt, never fatal to a sweep
+        r.status = {ResultState::Corrupt, e.what()};
     }
     return r;
+}
+
+LoadedResult load_result(const std::filesystem::path& dir, const std::string& inputs_hash,
+                         const std::string& case_name) {
+    return load_result(dir, ResultKey{inputs_hash, case_name, {}});
 }
 
 ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash,

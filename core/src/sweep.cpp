@@ -40,11 +40,11 @@ void for_each_run(const Case& c, const RunOptions& o,
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve) {
     const auto points = c.select(o.point);
     const auto root = results_root(c, o);
-    const std::string hash = c.inputs_hash(solver);
+    const ResultKey key = result_key(c, solver);
     int failed = 0;
     for (const OperatingPoint* p : points) {
         const auto dir = result_dir(root, solver, p->id);
-        const LoadedResult prev = load_result(dir, c, solver);  // compare's definition of complete too
+        const LoadedResult prev = load_result(dir, key);  // compare's definition of complete too
         const ResultStatus& st = prev.status;
         if (st.state == ResultState::Complete && !o.force) {
             const std::string differs = run_options_differ(*prev.summary, o);

@@ -71,7 +71,7 @@ Run load_run(const Case& c, const std::filesystem::path& root, const std::string
     r.solver = solver;
     r.point = &p;
     r.dir = result_dir(root, solver, p.id);
-    LoadedResult loaded = load_result(r.dir, c, solver);  // the solvers' definition too
+    LoadedResult loaded = load_result(r.dir, result_key(c, solver));  // the solvers' definition too
     r.status = std::move(loaded.status);
     r.summary = std::move(loaded.summary);
     r.profile = std::move(loaded.profile);

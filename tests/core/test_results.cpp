@@ -150,7 +150,7 @@ BOOST_AUTO_TEST_CASE(resume_detection) {
     BOOST_TEST((stale.state == ResultState::Stale));
     BOOST_TEST(stale.reason.find("computed for inputs") != std::string::npos);
     // Given the case, the reason names the key that changed, not two hashes.
-    const auto named = load_result(dir, changed, "toy").status;
+    const auto named = load_result(dir, result_key(changed, "toy")).status;
     BOOST_TEST((named.state == ResultState::Stale));
     BOOST_TEST(named.reason.find("computed before the case changed: [grains] density = 2500 -> 2600") !=
                    std::string::npos,

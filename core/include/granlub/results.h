@@ -111,11 +111,16 @@ struct LoadedResult {
 // number is not finite, a standard error is negative, y_over_H is not increasing within [0, 1],
 // max_solid_fraction is not positive, or the summary names another solver, point (both taken
 // from the folder, <root>/<solver>/<point>) or case (when `case_name` is given). Stale: all that
-// holds but the summary's inputs_hash differs from `inputs_hash`. Never throws for bad files.
+// holds but the summary's inputs_hash differs from the key's. Never throws for bad files.
+struct ResultKey {
+    std::string inputs_hash;                    // Case::inputs_hash(solver)
+    std::string case_name;                      // "" = not checked
+    std::map<std::string, std::string> inputs;  // Case::inputs(solver): a stale reason names the changed keys
+};
+ResultKey result_key(const Case& c, const std::string& solver);  // computed once per sweep
+LoadedResult load_result(const std::filesystem::path& dir, const ResultKey& key);
 LoadedResult load_result(const std::filesystem::path& dir, const std::string& inputs_hash,
                          const std::string& case_name = "");
-// The same for `solver`'s results of case `c`; a stale result's reason names the keys that changed.
-LoadedResult load_result(const std::filesystem::path& dir, const Case& c, const std::string& solver);
 ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash,
                            const std::string& case_name = "");
 
