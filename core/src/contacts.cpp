@@ -56,20 +56,26 @@ ContactList touching_pairs(const ParticleSet& p, const ParticleBox& box, double 
         cz[a] = az.cell(p.z[a]);
         cells[index(cx[a], cy[a], cz[a])].push_back(static_cast<std::uint32_t>(a));
     }
-    auto neighbours = [](const Axis& ax_, long c) {  // distinct cells c-1, c, c+1 (few cells: wraps coincide)
-        std::vector<long> v;
-        for (long d = -1; d <= 1; ++d) {
-            long k = c + d;
-            if (ax_.periodic) k = ((k % ax_.n) + ax_.n) % ax_.n;
-            else if (k < 0 || k >= ax_.n) continue;
-            if (std::find(v.begin(), v.end(), k) == v.end()) v.push_back(k);
+    // Per axis and cell, the distinct cells c-1, c, c+1 (with few cells the wraps coincide): made
+    // once, so the pair loop allocates nothing.
+    auto neighbours = [](const Axis& ax_) {
+        std::vector<std::vector<long>> all(static_cast<std::size_t>(ax_.n));
+        for (long c = 0; c < ax_.n; ++c) {
+            auto& v = all[static_cast<std::size_t>(c)];
+            for (long d = -1; d <= 1; ++d) {
+                long k = c + d;
+                if (ax_.periodic) k = ((k % ax_.n) + ax_.n) % ax_.n;
+                else if (k < 0 || k >= ax_.n) continue;
+                if (std::find(v.begin(), v.end(), k) == v.end()) v.push_back(k);
+            }
         }
-        return v;
+        return all;
     };
+    const auto nx = neighbours(ax), ny = neighbours(ay), nz = neighbours(az);
     for (std::size_t a = 0; a < n; ++a)
-        for (long i : neighbours(ax, cx[a]))
-            for (long j : neighbours(ay, cy[a]))
-                for (long k : neighbours(az, cz[a]))
+        for (long i : nx[static_cast<std::size_t>(cx[a])])
+            for (long j : ny[static_cast<std::size_t>(cy[a])])
+                for (long k : nz[static_cast<std::size_t>(cz[a])])
                     for (std::uint32_t b : cells[index(i, j, k)]) {
                         if (b <= a) continue;
                         const double dx = ax.image(p.x[b] - p.x[a]), dy = p.y[b] - p.y[a];
