@@ -50,11 +50,12 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     if (s.load) {
         plate = read_plate_series(dir / kPlateFile);
         const std::string what = fmt::format("case {} point {} ({})", c.name, p.id, prov);
-        write_file_atomic(dir / kGapFile, gap_csv(s, walls, *plate, what));
+        write_file_atomic(dir / kGapFile,
+                          gap_csv(s, s.time_step, walls.step, top_normal_stress(s, walls), *plate, what));
     }
     const SteadyWindow window = steady_window(s, walls, plate ? &*plate : nullptr);
     // profile slabs span the gap: the case's H, or the mean plate position under load control
-    const double gap = plate ? mean_gap(s, *plate, window).mean : c.cell.gap;
+    const double gap = plate ? mean_gap(*plate, window, s.blocks).mean : c.cell.gap;
     SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
     CoordinationSeries z(s.box, window.t_start);
     const std::size_t snapshots = for_each_snapshot(dir / kSnapshots, [&](const ParticleSet& g, double step) {

@@ -19,7 +19,6 @@ inline constexpr const char* kSnapshotColumns = "id x y z vx vy vz radius";  // 
 inline constexpr const char* kRefineDir = "dt_half";  // [dem] refine_dt: the rerun at time_step / 2
 inline constexpr const char* kLog = "log.liggghts";
 inline constexpr const char* kPlateFile = "plate.txt";      // control = load: plate position per servo update
-inline constexpr const char* kGapFile = "gap.csv";          // control = load: plate history (granlub's)
 inline constexpr const char* kPvdFile = "post/particles.pvd";  // --vtk: ParaView collection
 
 // Atom types: grains, bottom wall, top wall, side walls (restitution and friction per pair).

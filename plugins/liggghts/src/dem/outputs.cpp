@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <numbers>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -118,60 +117,16 @@ PlateSeries read_plate_series(const fs::path& file) {
 }
 
 SteadyWindow steady_window(const Settings& s, const WallSeries& w, const PlateSeries* plate) {
-    SteadyWindow win;
-    for (std::size_t col : {1u, 4u, 0u, 3u}) {  // normal and shear force, bottom and top (MSER is scale-free)
-        const SteadyState ss = detect_steady_state(w.columns.at(col));
-        win.wall_start = std::max(win.wall_start, ss.start);
-        win.steady = win.steady && ss.steady;
-    }
-    auto wall_begin = [&](std::size_t i) { return w.step[i] - static_cast<double>(s.sample_every); };
-    if (plate) {
-        const SteadyState ss = detect_steady_state(plate->gap);
-        win.steady = win.steady && ss.steady;
-        const std::size_t last = plate->step.size() - 1;
-        const double begin = plate->step[std::min(ss.start, last)] - static_cast<double>(s.servo_every);
-        while (win.wall_start + 1 < w.step.size() && wall_begin(win.wall_start) < begin - 0.5) ++win.wall_start;
-        while (win.plate_start + 1 < plate->step.size() &&
-               plate->step[win.plate_start] - static_cast<double>(s.servo_every) < wall_begin(win.wall_start) - 0.5)
-            ++win.plate_start;
-    }
-    win.t_start = win.wall_start < w.step.size() ? wall_begin(win.wall_start) * s.time_step : 0.0;
-    return win;
+    // normal and shear force, bottom and top
+    std::vector<std::span<const double>> series;
+    for (std::size_t col : {1u, 4u, 0u, 3u}) series.emplace_back(w.columns.at(col));
+    return granlub::steady_window(series, w.step, s.sample_every, s.time_step, plate, s.servo_every);
 }
 
-BlockEstimate mean_gap(const Settings& s, const PlateSeries& plate, const SteadyWindow& w) {
-    return block_average(std::span<const double>(plate.gap).subspan(w.plate_start), s.blocks);
-}
-
-std::vector<double> window_stresses(const Settings& s, const WallSeries& w, const PlateSeries& plate) {
-    const double A = s.box.length * s.box.width;
-    std::vector<double> out;
-    std::size_t i = 0;
-    for (std::size_t j = 0; j < plate.step.size(); ++j) {
-        double sum = 0;
-        std::size_t n = 0;
-        while (i < w.step.size() && w.step[i] <= plate.step[j] + 0.5) {
-            if (w.step[i] > plate.step[j] - static_cast<double>(s.servo_every) + 0.5) {
-                sum += -w.columns[4][i] / A;
-                ++n;
-            }
-            ++i;
-        }
-        out.push_back(n > 0 ? sum / static_cast<double>(n) : -1.0);
-    }
-    return out;
-}
-
-std::string gap_csv(const Settings& s, const WallSeries& w, const PlateSeries& plate, const std::string& comment) {
-    const std::vector<double> p_w = window_stresses(s, w, plate);
-    std::string out = fmt::format("# {}\n# plate (top wall) position after each servo window of {} steps; stress = "
-                                  "top-wall normal stress averaged over the window; target {} Pa\n"
-                                  "time_s,gap_m,normal_stress_top_Pa\n",
-                                  comment, s.servo_every, s.target_stress);
-    for (std::size_t j = 0; j < plate.step.size(); ++j)
-        out += fmt::format("{},{},{}\n", plate.step[j] * s.time_step, plate.gap[j],
-                           p_w[j] >= 0 ? fmt::format("{}", p_w[j]) : std::string(""));
-    return out;
+std::vector<double> top_normal_stress(const Settings& s, const WallSeries& w) {
+    std::vector<double> v(w.columns.at(4));
+    for (double& x : v) x *= -1.0 / (s.box.length * s.box.width);
+    return v;
 }
 
 DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings& s, const WallSeries& w,
@@ -186,7 +141,7 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
         for (double& x : v) x *= sign / A;
         return v;
     };
-    const std::vector<double> sig_b = series(1, 1.0), sig_t = series(4, -1.0);
+    const std::vector<double> sig_b = series(1, 1.0), sig_t = top_normal_stress(s, w);
     const std::vector<double> tau_b = series(0, 1.0), tau_t = series(3, -1.0);
 
     const std::size_t start = win.wall_start;
@@ -226,38 +181,17 @@ DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings&
     o.outputs["mean_solid_fraction"] = Scalar{cg.mean_solid_fraction(first, cg.snapshots()), std::nullopt, ""};
     std::string load_line;
     if (plate) {
-        // the grains' volume over the mean gap: exact for the grain count (the slabs end at the mean
-        // gap, so the coarse-grained value would miss grains while the plate is above it)
-        const BlockEstimate g = mean_gap(s, *plate, win);
-        const double vg = std::numbers::pi / 6.0 * std::pow(c.grains.diameter, 3);
-        const double nu = static_cast<double>(grains) * vg / (A * g.mean);
-        o.outputs["gap"] = Scalar{g.mean, g.stderr_, "m"};
-        o.outputs["mean_solid_fraction"] = Scalar{nu, nu * g.stderr_ / g.mean, ""};
-        const Scalar& top = o.outputs["normal_stress_top"];
-        auto at_a_limit = [&](double h) { return h <= s.gap_min * (1 + 1e-9) || h >= s.gap_max * (1 - 1e-9); };
-        const auto at_limit = static_cast<std::size_t>(std::count_if(plate->gap.begin(), plate->gap.end(), at_a_limit));
-        const bool limit_now = at_a_limit(plate->gap.back());
-        // windows whose stress error hit the upper clamp (their plate move was capped)
-        std::size_t clamped = 0;
-        for (double pw : window_stresses(s, w, *plate))
-            if (pw > (1.0 + s.servo_max_error) * s.target_stress) ++clamped;
-        o.run["load_control"] = {
-            {"target_normal_stress_Pa", s.target_stress},
-            {"normal_stress_top_over_target", top.value / s.target_stress},
-            {"deviation_in_stderr",  // 0 when there is no error bar (never inf/NaN in a result)
-             top.stderr_.value_or(0) > 0 ? (top.value - s.target_stress) / *top.stderr_ : 0.0},
-            {"gap_initial_m", s.box.gap},
-            {"gap_mean_m", g.mean},
-            {"gap_stderr_m", g.stderr_},
-            {"gap_final_m", plate->gap.back()},
-            {"servo_updates", plate->gap.size()},
-            {"servo_updates_used", plate->gap.size() - win.plate_start},
-            {"updates_at_plate_limit", at_limit},
-            {"updates_error_clamped", clamped},
-            {"plate_at_limit_at_end", limit_now},
-            {"gap_file", kGapFile}};
-        load_line = fmt::format(" gap={:.4g} mm (P_top/P={:.3f}{})", 1e3 * g.mean, top.value / s.target_stress,
-                                limit_now ? ", PLATE AT ITS LIMIT: target not reachable" : "");
+        o.run["load_control"] = load_summary({.servo = s,
+                                              .initial_gap = s.box.gap,
+                                              .wall_step = w.step,
+                                              .top_stress = sig_t,
+                                              .plate = *plate,
+                                              .window = win,
+                                              .blocks = s.blocks,
+                                              .grains = grains,
+                                              .grain_diameter = c.grains.diameter,
+                                              .area = A},
+                                             o.outputs, load_line);
     }
     o.outputs["max_solid_fraction"] = Scalar{c.cell.max_solid_fraction, std::nullopt, ""};
 

@@ -7,6 +7,7 @@
 
 #include "granlub/case.h"
 #include "granlub/coarse_grain.h"
+#include "granlub/load_control.h"
 #include "granlub/results.h"
 #include "settings.h"
 
@@ -24,33 +25,15 @@ WallSeries read_wall_series(const std::filesystem::path& file);
 std::size_t for_each_snapshot(const std::filesystem::path& file,
                               const std::function<void(const ParticleSet&, double step)>& snapshot);
 
-// control = load: the plate position (gap, m) at the end of each servo window (LIGGGHTS' fix
-// ave/time file; the initial position at step 0 is dropped).
-struct PlateSeries {
-    std::vector<double> step;
-    std::vector<double> gap;
-};
+// control = load: the plate position (gap, m) at the end of each servo window, from LIGGGHTS' fix
+// ave/time file (the initial position at step 0 is dropped).
 PlateSeries read_plate_series(const std::filesystem::path& file);
 
-// Where the steady state starts: MSER-5 on the four wall-stress series and (load control) on the
-// plate position; the latest start wins. Indices into the wall and plate series.
-struct SteadyWindow {
-    std::size_t wall_start = 0;
-    std::size_t plate_start = 0;
-    double t_start = 0;  // s
-    bool steady = true;
-};
+// The steady window (granlub/load_control.h) of the four wall-force series and, under load, the plate.
 SteadyWindow steady_window(const Settings& s, const WallSeries& walls, const PlateSeries* plate);
 
-// Mean gap (m) and its block standard error over the steady part of the plate history.
-BlockEstimate mean_gap(const Settings& s, const PlateSeries& plate, const SteadyWindow& w);
-
-// The top-wall normal stress (Pa) averaged over each servo window of the plate history (the
-// wall-force blocks inside it; -1 for a window without blocks).
-std::vector<double> window_stresses(const Settings& s, const WallSeries& walls, const PlateSeries& plate);
-
-// gap.csv: time_s, gap_m, normal_stress_top_Pa (the top-wall stress averaged over each servo window).
-std::string gap_csv(const Settings& s, const WallSeries& walls, const PlateSeries& plate, const std::string& comment);
+// The top-wall normal stress (Pa) per wall-force block: -f_y(top) / (L W).
+std::vector<double> top_normal_stress(const Settings& s, const WallSeries& walls);
 
 struct DemOutputs {
     Profile profile;

@@ -1,6 +1,7 @@
 // The [dem] case section: one line per key (type, default, range, unit, doc). Apart from the
 // engine pipeline so that it compiles with core alone (the case-parser fuzzer builds it).
 #include "granlub/dem/command.h"
+#include "granlub/servo.h"
 #include "settings.h"
 
 namespace granlub::dem {
@@ -34,14 +35,7 @@ SectionSpec section() {
            "initial velocity noise per component, standard deviation / U, on the linear Couette profile");
     s.real("periodic_depth", 0.0, Range::non_negative(), "m",
            "depth across z when [cell] width = 0 (periodic); 0 = 10 grain diameters");
-    s.real("fill_for_load", 0.55, Range::open(0, 0.74), "",
-           "control = load: solid fraction inserted when [operating] solid_fraction is not given");
-    s.integer("servo_every", 0, Range::closed(0, 1e8),
-              "control = load: steps between top-plate updates (force averaged over them); 0 = sample_every");
-    s.real("servo_gain", 0.05, Range::open_closed(0, 0.1), "",
-           "control = load: plate move per update in grain diameters per unit relative stress error");
-    s.real("servo_max_gap", 1.5, Range::open_closed(1, 4), "",
-           "control = load: highest plate position (the box top) as a multiple of [cell] gap");
+    add_servo_keys(s);  // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/servo.h)
     return s;
 }
 

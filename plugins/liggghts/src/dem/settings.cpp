@@ -63,29 +63,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
                                                           st.time, steps, st.time_step, kMaxSteps));
     st.steps = static_cast<std::int64_t>(steps);
     st.sample_every = s.integer("sample_every");
-    if (p.control == Control::Load) {
-        st.load = true;
-        st.target_stress = p.normal_stress;
-        if (!(st.target_stress > 0))  // core rejects this already; a guard for hand-built points
-            throw SolverError(fmt::format("point {}: control = \"load\" needs [operating] normal_stress > 0 "
-                                          "(got {:g} Pa)",
-                                          p.id, st.target_stress));
-        const auto every = s.integer("servo_every");
-        st.servo_every = every > 0 ? every : st.sample_every;
-        if (st.servo_every % st.sample_every != 0)
-            s.fail("servo_every", fmt::format("servo_every = {} must be a multiple of sample_every = {} (the plate "
-                                              "history is matched to the wall-force blocks), or 0 (= sample_every)",
-                                              st.servo_every, st.sample_every));
-        st.servo_gain = s.real("servo_gain");
-        st.servo_max_error = kServoMaxError;
-        st.gap_max = s.real("servo_max_gap") * c.cell.gap;
-        // whole servo windows
-        st.steps = (st.steps + st.servo_every - 1) / st.servo_every * st.servo_every;
-        if (st.steps < 20 * st.servo_every)
-            s.fail("servo_every", fmt::format("{} steps of {:g} s give only {} plate updates of {} steps; at least 20 "
-                                              "are needed (shorten servo_every or run longer)",
-                                              st.steps, st.time_step, st.steps / st.servo_every, st.servo_every));
-    }
+    static_cast<ServoSettings&>(st) = resolve_servo(c, p, s, st.sample_every, st.time_step, st.steps);
     if (st.steps < 20 * st.sample_every)
         s.fail(o.full ? "time_full" : "time",
                fmt::format("{:g} s is {} steps of {:g} s: fewer than 20 wall-stress samples of {} steps "
@@ -103,17 +81,6 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.persistence_every = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::min(every, 1e12)), 1,
                                                     std::max<std::int64_t>(1, st.steps / 100));
 
-    if (p.control == Control::Load) {
-        st.insert_fill = p.solid_fraction > 0 ? p.solid_fraction : s.real("fill_for_load");
-        st.insert_fill_key = p.solid_fraction > 0 ? "[operating] solid_fraction"
-                                                  : std::string("[dem] fill_for_load") +
-                                                        (s.is_default("fill_for_load") ? " (default)" : "");
-        // the plate cannot go below the closest packing of the inserted grains (FCC, 0.7405)
-        st.gap_min = st.insert_fill * c.cell.gap / 0.7405;
-    } else {
-        st.insert_fill = p.solid_fraction;
-        st.insert_fill_key = "[operating] solid_fraction";
-    }
     return st;
 }
 
@@ -127,33 +94,27 @@ Settings half_step(const Settings& s) {
 }
 
 nlohmann::json Settings::to_json() const {
-    return {{"model", model == Model::Impulse ? "impulse" : "hertz"},
-            {"beta0", beta0},
-            {"separate_overlaps", separate},
-            {"time_step_s", time_step},
-            {"time_s", time},
-            {"steps", steps},
-            {"sample_every", sample_every},
-            {"snapshot_every", snapshot_every},
-            {"stations", stations},
-            {"blocks", blocks},
-            {"skin_m", skin},
-            {"seed", seed},
-            {"velocity_noise", velocity_noise},
-            {"insert_fill", insert_fill},
-            {"ranks", np},
-            {"box_m", {box.length, box.gap, box.width}},
-            {"periodic_z", box.periodic_z},
-            {"control", load ? "load" : "fill"},
-            {"target_normal_stress_Pa", target_stress},
-            {"servo_every", servo_every},
-            {"servo_gain", servo_gain},
-            {"servo_max_error", servo_max_error},
-            {"gap_min_m", gap_min},
-            {"gap_max_m", gap_max},
-            {"refine_dt", refine_dt},
-            {"persistence_every", persistence_every},
-            {"persistence_intervals", persistence_intervals}};
+    nlohmann::json j = ServoSettings::to_json();
+    j.update(nlohmann::json{{"model", model == Model::Impulse ? "impulse" : "hertz"},
+                            {"beta0", beta0},
+                            {"separate_overlaps", separate},
+                            {"time_step_s", time_step},
+                            {"time_s", time},
+                            {"steps", steps},
+                            {"sample_every", sample_every},
+                            {"snapshot_every", snapshot_every},
+                            {"stations", stations},
+                            {"blocks", blocks},
+                            {"skin_m", skin},
+                            {"seed", seed},
+                            {"velocity_noise", velocity_noise},
+                            {"ranks", np},
+                            {"box_m", {box.length, box.gap, box.width}},
+                            {"periodic_z", box.periodic_z},
+                            {"refine_dt", refine_dt},
+                            {"persistence_every", persistence_every},
+                            {"persistence_intervals", persistence_intervals}});
+    return j;
 }
 
 }  // namespace granlub::dem

@@ -8,13 +8,16 @@
 
 #include "granlub/case.h"
 #include "granlub/particles.h"
+#include "granlub/servo.h"
 #include "granlub/sweep.h"
 
 namespace granlub::dem {
 
 enum class Model { Impulse, Hertz };
 
-struct Settings {
+// The servo part (control = "load": the top wall is a plate moved by the deck every servo_every
+// steps, see deck.h and README "Load control") is shared with granlub yade (granlub/servo.h).
+struct Settings : ServoSettings {
     Model model = Model::Impulse;
     double beta0 = 0;             // Walton's tangential restitution (impulse); 0 = stick limit
     bool separate = false;        // impulse: remove overlaps (position correction)
@@ -28,8 +31,6 @@ struct Settings {
     double skin = 0;              // neighbour skin, m
     std::uint64_t seed = 1;
     double velocity_noise = 0;
-    double insert_fill = 0;       // solid fraction inserted (point's, or fill_for_load)
-    std::string insert_fill_key;  // which key it came from, for messages
     bool vtk = false;
     bool refine_dt = false;       // also rerun the point at time_step / 2 (run.dt_refinement)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
@@ -45,15 +46,6 @@ struct Settings {
     int np = 1;
     ParticleBox box;              // the cell (box.gap = the case's gap H)
 
-    // control = "load": the top wall is a plate moved by the deck every servo_every steps from
-    // the top-wall force averaged over those steps (see deck.h, README "Load control").
-    bool load = false;
-    double target_stress = 0;         // Pa, the point's normal_stress
-    std::int64_t servo_every = 0;     // steps between plate updates (a multiple of sample_every)
-    double servo_gain = 0;            // plate move per update, diameters per unit relative error
-    double servo_max_error = 0;       // relative stress error is clamped to [-1, servo_max_error]
-    double gap_min = 0;               // plate limits, m: closest packing of the grains ...
-    double gap_max = 0;               // ... and the box top (servo_max_gap x H)
     double box_top() const { return load ? gap_max : box.gap; }
 
     nlohmann::json to_json() const;
@@ -69,10 +61,6 @@ Settings half_step(const Settings& s);
 // Time step of the impulse model: a grain moving at the reference speed travels
 // `step_fraction` diameters per step. Reference speed: max(U, sqrt(2 g H)).
 double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fraction);
-
-// Upper clamp of the relative stress error in a servo update: spikes of the impulsive top-wall
-// force raise the plate by at most this many gains (a stress below target lowers it by at most 1).
-inline constexpr double kServoMaxError = 3.0;
 
 // Largest safe displacement per step for the impulse model, in diameters (contacts are found
 // only by overlap; more than this risks tunnelling and deep overlaps).
