@@ -9,6 +9,9 @@
 #               (or periodic z), gravity along -y, centripetal body force v_x^2/(R_a - z) along -z.
 #               Side walls slide with the bottom wall, as in `granlub dem`.
 #               Writes wallforce.csv, samples.bin and, last, driver_summary.json.
+#               With a "servo" object (control = "load"): the top wall is a plate moved every
+#               servo.every steps by the servo of `granlub dem` (core/include/granlub/servo.h);
+#               its position after each window goes to plate.csv.
 #   "collision" binary collisions (grain-grain and grain-wall for every wall material): the
 #               measured normal restitution of the contact law as run, in collision.json.
 #
@@ -103,6 +106,17 @@ def load_params(path):
             if steps % every:
                 raise ParamError("run.steps = %d is not a multiple of run.%s = %d" % (steps, k, every))
         need(r, "body_force_every", "run", int, positive=True)
+        sv = p.get("servo")
+        if sv is not None:
+            for k in ("target_stress", "step", "max_error", "gap_min", "gap_max"):
+                need(sv, k, "servo", positive=True)
+            every = need(sv, "every", "servo", int, positive=True)
+            if every % r["sample_every"] or steps % every:
+                raise ParamError("servo.every = %d must be a multiple of run.sample_every = %d and divide "
+                                 "run.steps = %d" % (every, r["sample_every"], steps))
+            if not sv["gap_min"] < cell["gap"] <= sv["gap_max"]:
+                raise ParamError("servo: the plate limits [%g, %g] m must hold the initial gap %g m"
+                                 % (sv["gap_min"], sv["gap_max"], cell["gap"]))
         if not os.path.isfile(p.get("initial_file", "")):
             raise ParamError("initial_file %r: no such file" % p.get("initial_file"))
     return p
@@ -360,10 +374,13 @@ def run_couette(p):
     en = calibrate_viscel(p) if p["model"] == "viscel" and p["contact"].get("calibrate", True) else None
     grains = read_initial(p["initial_file"])
 
+    servo = p.get("servo")
+    top_max = servo["gap_max"] if servo else H  # highest top-wall position
+
     O.reset()
     t = d  # wall half thickness
-    Y0 = H  # granlub y = 0 sits at YADE y = Y0; the y period is 3H (yade.md section 2)
-    Ly = 3 * H
+    Y0 = H  # granlub y = 0 sits at YADE y = Y0; the y period is H + top_max + H (yade.md section 2)
+    Ly = 2 * H + top_max
     if periodic_z:
         Lz, Z0 = W, 0.5 * W
         wall_z = 1000 * W
@@ -382,8 +399,8 @@ def run_couette(p):
         # side walls slide with the bottom wall, as in the annular cell (cases/sawyer2001) and
         # `granlub dem` (fix wall/gran ... zplane ... shear x U)
         for sgn in (-1, 1):
-            sides.append(wall_box((0.5 * L, Y0 + 0.5 * H, Z0 + sgn * (0.5 * W + t)),
-                                  (big, 0.5 * H + 2 * t, t), ids["side"], p))
+            sides.append(wall_box((0.5 * L, Y0 + 0.5 * top_max, Z0 + sgn * (0.5 * W + t)),
+                                  (big, 0.5 * top_max + 2 * t, t), ids["side"], p))
         moving += sides
     for w in moving:
         O.bodies[w].state.vel = Vector3(U, 0, 0)  # kinematic: NewtonIntegrator moves it
@@ -411,6 +428,13 @@ def run_couette(p):
                "side: x force on each side wall\n" % every)
     fcsv.write("step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2\n")
     fbin = open(os.path.join(out, "samples.bin"), "wb")
+    A = L * W
+    state["f_servo"], state["h"] = 0.0, H  # top-wall force summed over the servo window; plate position
+    fplate = None
+    if servo:
+        fplate = open(os.path.join(out, "plate.csv"), "w")
+        fplate.write("# plate (top wall) position after each servo window of %d steps, m\n" % servo["every"])
+        fplate.write("step,gap\n")
 
     def averaging():
         # After NewtonIntegrator, every step: the force of the grains on each wall is summed
@@ -431,8 +455,29 @@ def run_couette(p):
             fcsv.write("%d,%s\n" % (k, ",".join("%.17g" % (v / every) for v in f)))
             state["f"], state["steps"] = [0.0] * 8, 0
             state["rows"] += 1
+        if servo:
+            state["f_servo"] += ft[1]
+            if k % servo["every"] == 0:
+                plate_update(k)
         if k % snap_every == 0:
             snapshot()
+
+    def plate_update(k):
+        # The servo of `granlub dem` (core/include/granlub/servo.h): P_top is the top-wall stress
+        # averaged over the window (the force summed every step), the commanded position moves by
+        # step * clamp((P_top - P)/P, -1, max_error) and stays in [gap_min, gap_max]. The plate
+        # travels there at constant speed over the next window instead of jumping: a jump of
+        # 0.05 d onto resting grains would be an overlap of 0.05 d with stiff contacts.
+        P = servo["target_stress"]
+        p_top = state["f_servo"] / servo["every"] / A
+        state["f_servo"] = 0.0
+        err = min(max((p_top - P) / P, -1.0), servo["max_error"])
+        b = O.bodies[top].state
+        b.pos = Vector3(b.pos[0], Y0 + state["h"] + t, b.pos[2])  # no drift from the integration
+        fplate.write("%d,%.17g\n" % (k, state["h"]))
+        h = min(max(state["h"] + servo["step"] * err, servo["gap_min"]), servo["gap_max"])
+        b.vel = Vector3(0, (h - state["h"]) / (servo["every"] * O.dt), 0)
+        state["h"] = h
 
     def snapshot():
         # granlub coordinates; columns y, vx, vy, vz (what the slab coarse-graining needs)
@@ -484,6 +529,8 @@ def run_couette(p):
     wall_clock_run = time.time() - t_run
     fcsv.close()
     fbin.close()
+    if fplate:
+        fplate.close()
     if state["rows"] != total // every or state["snapshots"] != total // snap_every:
         raise RuntimeError("wrote %d wall-force rows and %d snapshots, expected %d and %d"
                            % (state["rows"], state["snapshots"], total // every, total // snap_every))

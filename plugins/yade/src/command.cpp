@@ -19,27 +19,32 @@ namespace fs = std::filesystem;
 namespace {
 
 nlohmann::json settings_json(const Settings& s) {
-    return {{"model", to_string(s.model)},
-            {"contact_time", s.contact_time},
-            {"tangential_restitution", s.tangential_restitution},
-            {"wall_mass", s.wall_mass},
-            {"calibrate_restitution", s.calibrate_restitution},
-            {"dt", s.dt},
-            {"steps", s.steps},
-            {"sample_every", s.sample_every},
-            {"snapshot_every", s.snapshot_every},
-            {"body_force_every", s.body_force_every},
-            {"stations", s.stations},
-            {"blocks", s.blocks},
-            {"seed", s.insertion.seed},
-            {"velocity_noise", s.insertion.velocity_noise},
-            {"periodic_depth", s.periodic_depth}};
+    nlohmann::json j = s.servo.to_json();
+    j.update(nlohmann::json{{"model", to_string(s.model)},
+                            {"contact_time", s.contact_time},
+                            {"tangential_restitution", s.tangential_restitution},
+                            {"wall_mass", s.wall_mass},
+                            {"calibrate_restitution", s.calibrate_restitution},
+                            {"dt", s.dt},
+                            {"steps", s.steps},
+                            {"sample_every", s.sample_every},
+                            {"snapshot_every", s.snapshot_every},
+                            {"body_force_every", s.body_force_every},
+                            {"stations", s.stations},
+                            {"blocks", s.blocks},
+                            {"seed", s.insertion.seed},
+                            {"velocity_noise", s.insertion.velocity_noise},
+                            {"periodic_depth", s.periodic_depth}});
+    return j;
 }
 
-PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint& p, const fs::path& dir) {
+PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint& p0, const fs::path& dir) {
     // Everything that can be wrong with the inputs is checked before YADE starts.
-    const Settings s = resolve_settings(c, p, o);
-    const InitialParticles init = initial_particles(c, p, results_root(c, o), s.insertion, s.periodic_depth);
+    const Settings s = resolve_settings(c, p0, o);
+    OperatingPoint p = p0;
+    p.solid_fraction = s.servo.insert_fill;  // under load: the point's, or fill_for_load
+    const InitialParticles init =
+        initial_particles(c, p, results_root(c, o), s.insertion, s.periodic_depth, s.servo.insert_fill_key);
     const DriverPaths paths = locate_driver();
 
     const auto steps = static_cast<double>(s.steps);
@@ -56,7 +61,7 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
     fs::remove(dir / "driver_summary.json");  // a stale marker must not pass for this run's
     run_driver(paths, dir, couette_params(c, p, s, init.box, init.file), p.id, timeout, poll);
 
-    Summary base = make_summary(c, p, "yade", s.insertion.seed);
+    Summary base = make_summary(c, p0, "yade", s.insertion.seed);
     base.provenance.settings = settings_json(s);
     base.provenance.settings["initial_file"] = init.file.string();
     base.provenance.settings["initial_file_reused"] = init.reused;
@@ -69,9 +74,11 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
 }  // namespace
 
 void check(const Case& c, const RunOptions& o) {
-    for_each_run(c, o, [&](const OperatingPoint& p, const RunOptions& v) {
-        const Settings s = resolve_settings(c, p, v);
-        check_initial_particles(c, p, s.periodic_depth);
+    for_each_run(c, o, [&](const OperatingPoint& p0, const RunOptions& v) {
+        const Settings s = resolve_settings(c, p0, v);
+        OperatingPoint p = p0;
+        p.solid_fraction = s.servo.insert_fill;  // as solve_point() inserts it
+        check_initial_particles(c, p, s.periodic_depth, s.servo.insert_fill_key);
     });
 }
 

@@ -79,6 +79,15 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
                 {"snapshot_every", s.snapshot_every},
                 {"body_force_every", s.body_force_every}};
     j["initial_file"] = fs::absolute(initial_file).string();
+    if (s.servo.load) {  // the plate servo of granlub/servo.h, lengths in m
+        const ServoSettings& v = s.servo;
+        j["servo"] = {{"target_stress", v.target_stress},
+                      {"every", v.servo_every},
+                      {"step", v.servo_gain * c.grains.diameter},
+                      {"max_error", v.servo_max_error},
+                      {"gap_min", v.gap_min},
+                      {"gap_max", v.gap_max}};
+    }
     return j;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <span>
 #include <sstream>
 
@@ -12,6 +13,7 @@
 #include "granlub/coarse_grain.h"
 #include "granlub/error.h"
 #include "granlub/flow_regime.h"
+#include "granlub/load_control.h"
 #include "granlub/regime.h"
 
 namespace granlub::yade {
@@ -19,14 +21,15 @@ namespace granlub::yade {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-WallForces read_wall_forces(const fs::path& file) {
+namespace {
+
+// The numeric columns of a driver CSV file with the given header ('#' comment lines skipped).
+std::vector<std::vector<double>> read_csv_table(const fs::path& file, const std::string& expected,
+                                                const std::string& what) {
     std::ifstream in(file);
-    if (!in) throw SolverError(fmt::format("{}: missing (the YADE run wrote no wall forces)", file.string()));
-    WallForces w;
-    std::vector<double>* cols[] = {&w.step,   &w.fx_bottom, &w.fy_bottom, &w.fz_bottom, &w.fx_top,
-                                   &w.fy_top, &w.fz_top,    &w.fx_side1,  &w.fx_side2};
-    constexpr std::size_t kCols = std::size(cols);
-    const std::string expected = "step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2";
+    if (!in) throw SolverError(fmt::format("{}: missing (the YADE run wrote no {})", file.string(), what));
+    const auto kCols = static_cast<std::size_t>(std::count(expected.begin(), expected.end(), ',') + 1);
+    std::vector<std::vector<double>> cols(kCols);
     std::string line;
     bool header = false;
     for (int n = 1; std::getline(in, line); ++n) {
@@ -45,12 +48,27 @@ WallForces read_wall_forces(const fs::path& file) {
             const double v = std::strtod(cell.c_str(), &end);
             if (k >= kCols || end == cell.c_str() || *end != '\0' || !std::isfinite(v))
                 throw SolverError(fmt::format("{}:{}: malformed row '{}'", file.string(), n, line));
-            cols[k++]->push_back(v);
+            cols[k++].push_back(v);
         }
         if (k != kCols) throw SolverError(fmt::format("{}:{}: {} values, expected {}", file.string(), n, k, kCols));
     }
     if (!header) throw SolverError(fmt::format("{}: no header row", file.string()));
-    return w;
+    return cols;
+}
+
+}  // namespace
+
+WallForces read_wall_forces(const fs::path& file) {
+    auto t = read_csv_table(file, "step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2",
+                            "wall forces");
+    return WallForces{std::move(t[0]), std::move(t[1]), std::move(t[2]), std::move(t[3]), std::move(t[4]),
+                      std::move(t[5]), std::move(t[6]), std::move(t[7]), std::move(t[8])};
+}
+
+PlateSeries read_plate(const fs::path& file) {
+    auto t = read_csv_table(file, "step,gap", "plate positions");
+    if (t[0].size() < 2) throw SolverError(fmt::format("{}: fewer than 2 plate positions", file.string()));
+    return PlateSeries{std::move(t[0]), std::move(t[1])};
 }
 
 namespace {
@@ -115,10 +133,6 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
         throw SolverError(fmt::format("{}: {} rows, expected {}", (dir / "wallforce.csv").string(), w.rows(),
                                       expected_rows));
 
-    SliceCoarseGrainer cg(Stations{0.0, box.gap, static_cast<std::size_t>(s.stations)}, box.length * box.width);
-    coarse_grain_samples(dir / "samples.bin", n, snapshots, dt * static_cast<double>(s.snapshot_every), radius, cg);
-    if (cg.snapshots() < 2) throw SolverError(fmt::format("point {}: fewer than 2 particle snapshots", p.id));
-
     // Stresses on the grains' side of each wall, positive for a sheared, compressed layer: the
     // grains push the bottom wall to -y and the top wall to +y, drag the bottom (and side) walls
     // to -x and the top wall to +x.
@@ -126,14 +140,27 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     const std::vector<double> sig_b = times(w.fy_bottom, -1.0 / A), sig_t = times(w.fy_top, 1.0 / A);
     const std::vector<double> tau_b = times(w.fx_bottom, -1.0 / A), tau_t = times(w.fx_top, 1.0 / A);
 
-    std::size_t start = 0;
-    bool steady = true;
-    for (const auto* v : {&sig_b, &sig_t, &tau_b, &tau_t}) {
-        const SteadyState ss = detect_steady_state(*v);
-        start = std::max(start, ss.start);
-        steady = steady && ss.steady;
+    std::optional<PlateSeries> plate;
+    if (s.servo.load) {
+        plate = read_plate(dir / "plate.csv");
+        const auto expected_updates = static_cast<std::size_t>(s.steps / s.servo.servo_every);
+        if (plate->step.size() != expected_updates)
+            throw SolverError(fmt::format("{}: {} plate positions, expected {}", (dir / "plate.csv").string(),
+                                          plate->step.size(), expected_updates));
+        write_file_atomic(dir / kGapFile, gap_csv(s.servo, dt, w.step, sig_t, *plate,
+                                                  fmt::format("case {} point {} (granlub yade)", c.name, p.id)));
     }
-    const double t_start = start < w.rows() ? (w.step[start] - static_cast<double>(s.sample_every)) * dt : 0.0;
+    const SteadyWindow win = steady_window({sig_b, sig_t, tau_b, tau_t}, w.step, s.sample_every, dt,
+                                           plate ? &*plate : nullptr, s.servo.servo_every);
+    const std::size_t start = win.wall_start;
+    const bool steady = win.steady;
+    const double t_start = win.t_start;
+
+    // profile slabs span the gap: the case's H, or the mean plate position under load control
+    const double gap = plate ? mean_gap(*plate, win, static_cast<std::size_t>(s.blocks)).mean : box.gap;
+    SliceCoarseGrainer cg(Stations{0.0, gap, static_cast<std::size_t>(s.stations)}, box.length * box.width);
+    coarse_grain_samples(dir / "samples.bin", n, snapshots, dt * static_cast<double>(s.snapshot_every), radius, cg);
+    if (cg.snapshots() < 2) throw SolverError(fmt::format("point {}: fewer than 2 particle snapshots", p.id));
     const auto blocks = static_cast<std::size_t>(s.blocks);
     auto est = [&](const std::vector<double>& v) {
         return block_average(std::span<const double>(v).subspan(std::min(start, v.size())), blocks);
@@ -167,9 +194,21 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     // slip: wall speed minus the mean velocity of the slab next to the wall (the wall layer)
     sum.set("slip_bottom", U * (1.0 - u.front()), "m/s", U * ue.front());
     sum.set("slip_top", U * u.back(), "m/s", U * ue.back());
-    const double nu = cg.mean_solid_fraction(first, cg.snapshots());
-    sum.set("mean_solid_fraction", nu, "");
+    sum.set("mean_solid_fraction", cg.mean_solid_fraction(first, cg.snapshots()), "");
     sum.set("max_solid_fraction", c.cell.max_solid_fraction, "");  // as granlub dem: the case's nu_max
+    std::string load_line;
+    if (plate)  // gap, mean_solid_fraction over the mean gap, run.load_control: as granlub dem
+        sum.run["load_control"] = load_summary({.servo = s.servo,
+                                                .initial_gap = box.gap,
+                                                .wall_step = w.step,
+                                                .top_stress = sig_t,
+                                                .plate = *plate,
+                                                .window = win,
+                                                .blocks = blocks,
+                                                .grains = n,
+                                                .grain_diameter = c.grains.diameter,
+                                                .area = A},
+                                               sum.outputs, load_line);
 
     const auto steps = ds.at("steps").get<double>();
     const double yade_run_s = ds.at("wall_clock_run_s").get<double>();
@@ -205,11 +244,11 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     r.profile = std::move(prof);
     r.summary = std::move(sum);
     r.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa slip={:.3f}/{:.3f} U{}"
-                         "  [{} grains, {} steps, {:.3g} atom-steps/s]",
-                         nu, P_b, P_t, T_b, T_t, 1.0 - u.front(), u.back(),
+                         "{}  [{} grains, {} steps, {:.3g} atom-steps/s]",
+                         r.summary.value("mean_solid_fraction"), P_b, P_t, T_b, T_t, 1.0 - u.front(), u.back(),
                          steady ? fmt::format(" (steady from {:.3g} s)", t_start)
                                 : " (NO steady state detected: run longer)",
-                         n, ds.at("steps").get<long long>(), r.summary.run["atom_steps_per_s"].get<double>());
+                         load_line, n, ds.at("steps").get<long long>(), r.summary.run["atom_steps_per_s"].get<double>());
     return r;
 }
 

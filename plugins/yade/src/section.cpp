@@ -1,6 +1,8 @@
 // The [yade] case section: one line per key (type, default, range, unit, doc).
 #include "granlub/yade/command.h"
 
+#include "granlub/servo.h"
+
 namespace granlub::yade {
 
 SectionSpec section() {
@@ -29,6 +31,7 @@ SectionSpec section() {
     s.integer("blocks", 10, Range::closed(2, 1e4), "blocks for the standard errors (block averaging)");
     s.real("timeout", 0.0, Range::non_negative(), "s",
            "wall-clock limit of one YADE run; 0 = 600 s + 100 us per grain-step (a guard against hangs, generous for shared machines)");
+    add_servo_keys(s);  // control = load: fill_for_load, servo_every, servo_gain, servo_max_gap (as [dem])
     return s;
 }
 

@@ -30,13 +30,6 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     r.blocks = s.integer("blocks");
     r.timeout = s.real("timeout");
 
-    // A case this solver cannot run, not bad input: `granlub run` goes on with the other solvers.
-    if (p.control == Control::Load)
-        throw SolverError(fmt::format("point {}: [operating] control = \"load\": granlub yade runs the filled cell "
-                                      "only (a servo-controlled top wall is not implemented in the YADE driver); "
-                                      "use control = \"fill\"",
-                                      p.id));
-
     // Same initial grains as `granlub dem`: its insertion keys when the case has them.
     r.insertion.wall_speed = p.speed;
     if (c.sections.count("dem")) {
@@ -72,9 +65,15 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
                                      rows, r.sample_every, r.dt, 2 * r.blocks, time_key,
                                      static_cast<double>(2 * r.blocks * r.sample_every) * r.dt));
     r.steps = rows * r.sample_every;
+    r.servo = resolve_servo(c, p, s, r.sample_every, r.dt, r.steps);
+    // snapshots at whole wall-force blocks (under load: whole servo windows)
+    const std::int64_t unit = r.servo.load ? r.servo.servo_every : r.sample_every;
     const std::int64_t snapshots = s.integer("snapshots");
-    r.snapshot_every = r.sample_every * std::max<std::int64_t>(1, rows / snapshots);
-    r.steps -= r.steps % r.snapshot_every;  // whole snapshot intervals (drops < snapshots rows)
+    r.snapshot_every = unit * std::max<std::int64_t>(1, r.steps / unit / snapshots);
+    if (r.servo.load)  // rounded up: at least the plate updates resolve_servo() checked
+        r.steps = (r.steps + r.snapshot_every - 1) / r.snapshot_every * r.snapshot_every;
+    else
+        r.steps -= r.steps % r.snapshot_every;  // whole snapshot intervals (drops < snapshots rows)
     return r;
 }
 

@@ -22,7 +22,8 @@ struct DriverPaths {
 // Throws SolverError saying what is missing and how to get it.
 DriverPaths locate_driver();
 
-// Parameter files. Materials: "grain" (grain-grain), "bottom", "top" (the point's walls) and
+// Parameter files. Under load control couette_params() has a "servo" object (target_stress Pa,
+// every steps, step m per unit relative error, max_error, gap_min and gap_max m). Materials: "grain" (grain-grain), "bottom", "top" (the point's walls) and
 // "side" (the side walls, which slide with the bottom wall and take its restitution and friction,
 // as in `granlub dem`).
 nlohmann::json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,

@@ -8,6 +8,7 @@
 
 #include "granlub/case.h"
 #include "granlub/particles.h"
+#include "granlub/servo.h"
 #include "granlub/sweep.h"
 
 namespace granlub::yade {
@@ -33,10 +34,14 @@ struct Settings {
     // periodic_depth when the case has a [dem] section, else the core defaults; --seed overrides.
     InsertionOptions insertion;
     double periodic_depth = 0;
+    // control = "load": the top wall is a plate the driver moves every servo_every steps, the
+    // servo of `granlub dem` (granlub/servo.h) with the same keys in [yade]
+    ServoSettings servo;
 };
 
 
-// Reads [yade] for point p; --full selects time_full, --seed overrides the seed.
+// Reads [yade] for point p; --full selects time_full, --seed overrides the seed. Under load,
+// steps are whole servo windows and whole snapshot intervals (rounded up).
 // Throws CaseError (file, key, value, what is allowed) for settings that cannot work.
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o);
 
