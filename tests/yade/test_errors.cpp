@@ -116,12 +116,12 @@ BOOST_AUTO_TEST_CASE(bad_inputs_are_rejected_before_yade_starts) {
     const fs::path marker = dir / "yade-started";
     ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "touch '" + marker.string() + "'; exit 0").string());
     const auto root = dir / "results";
-    // a time step too large for the contact, more grains than fit, load control
+    // a time step too large for the contact, more grains than fit, too few plate updates under load
     const Case c1 = tiny_case("", "", "dt = 5e-6\n");
     const Case c2 = tiny_case_edits({{"annulus_radius = 0.0762", "annulus_radius = 0.0762\nmax_solid_fraction = 0.74"},
                                      {"solid_fraction = 0.5", "solid_fraction = 0.73"}},
                                     "");
-    const Case c3 = tiny_case("control = \"fill\"", "control = \"load\"\nnormal_stress = 5e3");
+    const Case c3 = tiny_case("control = \"fill\"", "control = \"load\"\nnormal_stress = 5e3", "servo_every = 1000\n");
     for (const Case* c : {&c1, &c2, &c3}) {
         BOOST_TEST(run(*c, options(root)) == 1);
         BOOST_TEST(!fs::exists(marker));

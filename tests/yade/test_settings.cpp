@@ -13,6 +13,7 @@
 using namespace granlub;
 using namespace granlub::yade;
 using granlub::yade::test::tiny_case;
+using granlub::yade::test::tiny_case_edits;
 
 namespace {
 template <class F>
@@ -78,19 +79,72 @@ BOOST_AUTO_TEST_CASE(too_short_run_is_rejected) {
     BOOST_TEST(has(e, "blocks"));
 }
 
-// Not bad input but a case YADE cannot run: a SolverError, so that `granlub run` goes on with the others.
-BOOST_AUTO_TEST_CASE(load_control_is_rejected) {
-    const Case c = tiny_case("control = \"fill\"", "control = \"load\"\nnormal_stress = 5e3");
-    std::string e;
-    try {
-        resolve_settings(c, c.points.at(0), RunOptions{});
-    } catch (const CaseError&) {
-        BOOST_FAIL("load control is not bad input");
-    } catch (const SolverError& x) {
-        e = x.what();
+// control = "load": the servo of granlub dem, its keys declared once (granlub/servo.h) in [yade].
+const char* kFill = "control = \"fill\"";
+const char* kLoad = "control = \"load\"\nnormal_stress = 5e3";
+
+BOOST_AUTO_TEST_CASE(load_control_settings) {
+    const Case c = tiny_case(kFill, kLoad, "servo_every = 100\n");
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    BOOST_TEST(s.servo.load);
+    BOOST_TEST(s.servo.target_stress == 5e3);
+    BOOST_TEST(s.servo.servo_every == 100);
+    BOOST_TEST(s.servo.servo_gain == 0.05);
+    BOOST_TEST(s.servo.servo_max_error == kServoMaxError);
+    BOOST_TEST(s.servo.gap_max == 1.5 * c.cell.gap);
+    BOOST_TEST(s.servo.gap_min == 0.5 * c.cell.gap / kClosestPacking);  // the point's solid_fraction
+    BOOST_TEST(s.servo.insert_fill_key == "[operating] solid_fraction");
+    BOOST_TEST(s.steps == 3000);  // 30 plate updates
+    // servo_every = 0 is sample_every; without solid_fraction the grains fill to fill_for_load
+    const Case d = tiny_case("control = \"fill\"\nsolid_fraction = 0.5", kLoad);
+    const Settings sd = resolve_settings(d, d.points.at(0), RunOptions{});
+    BOOST_TEST(sd.servo.servo_every == 50);
+    BOOST_TEST(sd.servo.insert_fill == 0.55);
+    BOOST_TEST(sd.servo.insert_fill_key == "[yade] fill_for_load (default)");
+    // the driver gets the servo, lengths in m
+    const ParticleBox box{c.cell.length, c.cell.gap, c.cell.width, false};
+    const auto j = couette_params(c, c.points.at(0), s, box, "/tmp/particles.csv");
+    BOOST_TEST(j.at("servo").at("every").get<long long>() == 100);
+    BOOST_TEST(j.at("servo").at("step").get<double>() == 0.05 * c.grains.diameter);
+    BOOST_TEST(j.at("servo").at("gap_max").get<double>() == s.servo.gap_max);
+    const Case f = tiny_case();
+    BOOST_TEST(!couette_params(f, f.points.at(0), resolve_settings(f, f.points.at(0), RunOptions{}), box, "/tmp/p.csv")
+                    .contains("servo"));
+}
+
+BOOST_AUTO_TEST_CASE(load_control_runs_whole_servo_windows_and_snapshot_intervals) {
+    // 1.52e-3 s: 61 blocks of 50 steps = 3050 steps, rounded up to 31 windows of 100
+    const Case c = tiny_case_edits({{kFill, kLoad}, {"time = 1.5e-3", "time = 1.52e-3"}}, "servo_every = 100\n");
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    BOOST_TEST(s.steps == 3100);
+    BOOST_TEST(s.snapshot_every == 100);
+    // 46 windows and 4 snapshots: a snapshot every 11 windows, the run rounded up to 55 windows
+    const Case d = tiny_case_edits({{kFill, kLoad}, {"time = 1.5e-3", "time = 2.3e-3"}, {"snapshots = 30", "snapshots = 4"}},
+                                   "servo_every = 100\n");
+    const Settings sd = resolve_settings(d, d.points.at(0), RunOptions{});
+    BOOST_TEST(sd.snapshot_every == 1100);
+    BOOST_TEST(sd.steps == 5500);
+    BOOST_TEST(sd.steps % sd.servo.servo_every == 0);
+}
+
+BOOST_AUTO_TEST_CASE(bad_servo_settings_give_clear_errors) {
+    auto error = [](const std::string& extra) {
+        return error_of([&] {
+            const Case c = tiny_case(kFill, kLoad, extra);
+            resolve_settings(c, c.points.at(0), RunOptions{});
+        });
+    };
+    for (const auto& [extra, words] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+             {"servo_gain = 0.5\n", {"case.toml", "[yade] servo_gain", "0.5", "allowed", "(0, 0.1]"}},
+             {"servo_gain = 0.0\n", {"[yade] servo_gain"}},
+             {"servo_max_gap = 5.0\n", {"[yade] servo_max_gap", "5", "allowed", "(1, 4]"}},
+             {"fill_for_load = 0.8\n", {"[yade] fill_for_load", "0.8"}},
+             {"servo_every = 75\n", {"case.toml", "[yade] servo_every", "75", "multiple of sample_every = 50"}},
+             {"servo_every = 1000\n", {"[yade] servo_every", "3 plate updates", "at least 20"}}}) {
+        const std::string e = error(extra);
+        BOOST_TEST_MESSAGE(e);
+        for (const auto& w : words) BOOST_TEST(has(e, w), w << " in: " << e);
     }
-    BOOST_TEST(has(e, "control"));
-    BOOST_TEST(has(e, "fill"));
 }
 
 BOOST_AUTO_TEST_CASE(bad_keys_are_rejected_by_the_schema) {
