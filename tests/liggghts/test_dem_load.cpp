@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <numbers>
 #include <regex>
 #include <sstream>
 
@@ -18,6 +17,7 @@
 #include "granlub/results.h"
 #include "granlub/sweep.h"
 #include "settings.h"
+#include "load_checks.h"
 #include "tiny_cell.h"
 
 using namespace granlub;
@@ -62,25 +62,7 @@ const Run& run_load(double stress) {
 BOOST_AUTO_TEST_CASE(plate_reaches_the_target_normal_stress) {
     const Run& r = run_load(30.0);
     BOOST_TEST_REQUIRE(r.code == 0);
-    const Scalar& top = r.summary.outputs.at("normal_stress_top");
-    const double se = top.stderr_.value_or(0);
-    BOOST_TEST_MESSAGE("P_top " << top.value << " +- " << se << " Pa, target 30 Pa, gap "
-                                << r.summary.value("gap") << " m");
-    BOOST_TEST(se > 0.0);
-    // the time average over the steady windows equals the target within 3 block standard errors
-    BOOST_TEST(std::abs(top.value - 30.0) < 3.0 * se);
-    // the error bar itself is informative (not a wide scatter that would pass anything)
-    BOOST_TEST(se < 0.15 * 30.0);
-    const auto& lc = r.summary.run.at("load_control");
-    BOOST_TEST(lc.at("target_normal_stress_Pa").get<double>() == 30.0);
-    BOOST_TEST(!lc.at("plate_at_limit_at_end").get<bool>());
-    // the window average is the target only while the error clamp is rare
-    BOOST_TEST(lc.at("updates_error_clamped").get<std::size_t>() < lc.at("servo_updates").get<std::size_t>() / 20);
-    // the plate moved from its start (6 mm) and stays inside its limits
-    const double gap = r.summary.value("gap");
-    BOOST_TEST(std::abs(gap - 6e-3) > 1e-4);
-    BOOST_TEST(gap > 0.4 * 6e-3 / 0.7405);
-    BOOST_TEST(gap < 1.5 * 6e-3);
+    test::check_target_reached(r.summary, 30.0, 6e-3, 0.4);
 }
 
 BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap) {
@@ -88,43 +70,8 @@ BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap) {
     BOOST_TEST_REQUIRE(r.code == 0);
     const Case c = parse_case(kCase, "tiny_load.toml", schema());
     BOOST_TEST((result_status(r.dir, c.inputs_hash("dem")).state == ResultState::Complete));
-    for (const char* name : kStandardOutputs) {
-        BOOST_TEST_REQUIRE(r.summary.outputs.count(name) == 1u, name);
-        BOOST_TEST(std::isfinite(r.summary.value(name)), name);
-    }
-    const double gap = r.summary.value("gap");
-    BOOST_TEST(r.summary.outputs.at("gap").unit == "m");
-    BOOST_TEST(r.summary.outputs.at("gap").stderr_.value_or(0) > 0.0);
-    // mean solid fraction = N V_grain / (A gap)
-    const double n = static_cast<double>(r.summary.run.at("atoms").get<long>());
-    const double nu = n * std::numbers::pi / 6.0 * 1e-9 / (8e-3 * 6e-3 * gap);
-    BOOST_TEST(std::abs(r.summary.value("mean_solid_fraction") - nu) < 1e-12);
-    // the profile spans the mean gap: its slab solid fractions add up to the grains' volume
-    // (to a few per cent: grains above the mean gap while the plate is higher are cut off);
-    // slabs over the initial 6 mm would give ~10 % less
-    const Profile p = read_profile(r.dir / "profile.csv");
-    BOOST_TEST_REQUIRE(p.rows() == 6u);
-    double sum = 0;
-    for (double v : p.column("solid_fraction")) sum += v;
-    BOOST_TEST_MESSAGE("profile mean nu " << sum / 6 << ", N V / (A gap) " << nu);
-    BOOST_TEST(std::abs(sum / 6.0 - nu) < 0.03 * nu);
-    // the plate history: time, gap and window stress per servo update
-    std::ifstream in(r.dir / "gap.csv");
-    BOOST_TEST_REQUIRE(static_cast<bool>(in));
-    std::string line;
-    std::size_t rows = 0;
-    bool header = false;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        if (!header) {
-            BOOST_TEST(line == "time_s,gap_m,normal_stress_top_Pa");
-            header = true;
-            continue;
-        }
-        ++rows;
-    }
-    BOOST_TEST(rows == r.summary.run.at("load_control").at("servo_updates").get<std::size_t>());
-    BOOST_TEST(rows == 100u);  // 10000 steps / 100
+    test::check_load_results(r.summary, r.dir, r.summary.run.at("atoms").get<double>(), 1e-3, 8e-3 * 6e-3, 6,
+                             100);  // 10000 steps / 100
     // the readable deck carries the servo
     std::ifstream deck(r.dir / "in.granlub");
     std::stringstream ss;
@@ -138,13 +85,7 @@ BOOST_AUTO_TEST_CASE(higher_load_gives_a_smaller_gap_and_denser_packing) {
     const Run& hi = run_load(120.0);
     BOOST_TEST_REQUIRE(lo.code == 0);
     BOOST_TEST_REQUIRE(hi.code == 0);
-    const Scalar& g_lo = lo.summary.outputs.at("gap");
-    const Scalar& g_hi = hi.summary.outputs.at("gap");
-    BOOST_TEST_MESSAGE("gap at 30 Pa " << g_lo.value << ", at 120 Pa " << g_hi.value);
-    BOOST_TEST(g_hi.value < g_lo.value - 3.0 * std::hypot(*g_lo.stderr_, *g_hi.stderr_));
-    BOOST_TEST(hi.summary.value("mean_solid_fraction") > lo.summary.value("mean_solid_fraction"));
-    const Scalar& top = hi.summary.outputs.at("normal_stress_top");
-    BOOST_TEST(std::abs(top.value - 120.0) < 3.0 * top.stderr_.value_or(0));
+    test::check_higher_load(lo.summary, hi.summary, 120.0);
 }
 
 BOOST_AUTO_TEST_CASE(bad_servo_settings_give_clear_errors) {

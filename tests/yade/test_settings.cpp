@@ -119,8 +119,8 @@ BOOST_AUTO_TEST_CASE(load_control_runs_whole_servo_windows_and_snapshot_interval
     BOOST_TEST(s.steps == 3100);
     BOOST_TEST(s.snapshot_every == 100);
     // 46 windows and 4 snapshots: a snapshot every 11 windows, the run rounded up to 55 windows
-    const Case d = tiny_case_edits({{kFill, kLoad}, {"time = 1.5e-3", "time = 2.3e-3"}, {"snapshots = 30", "snapshots = 4"}},
-                                   "servo_every = 100\n");
+    const Case d = tiny_case_edits(
+        {{kFill, kLoad}, {"time = 1.5e-3", "time = 2.3e-3"}, {"snapshots = 30", "snapshots = 4"}}, "servo_every = 100\n");
     const Settings sd = resolve_settings(d, d.points.at(0), RunOptions{});
     BOOST_TEST(sd.snapshot_every == 1100);
     BOOST_TEST(sd.steps == 5500);

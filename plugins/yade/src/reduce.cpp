@@ -248,7 +248,8 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
                          r.summary.value("mean_solid_fraction"), P_b, P_t, T_b, T_t, 1.0 - u.front(), u.back(),
                          steady ? fmt::format(" (steady from {:.3g} s)", t_start)
                                 : " (NO steady state detected: run longer)",
-                         load_line, n, ds.at("steps").get<long long>(), r.summary.run["atom_steps_per_s"].get<double>());
+                         load_line, n, ds.at("steps").get<long long>(),
+                         r.summary.run["atom_steps_per_s"].get<double>());
     return r;
 }
 
