@@ -75,12 +75,13 @@ BOOST_AUTO_TEST_CASE(keys_are_printed_from_their_declarations) {
 }
 
 namespace {
-// cases/sawyer2001 with `from` replaced by `to` (or appended when `from` is empty), in a scratch folder.
+// cases/sawyer2001_fill (no solver sections) with `from` replaced by `to` (or appended when `from` is
+// empty), in a scratch folder.
 fs::path edited_case(const std::string& name, const std::string& from, const std::string& to) {
     const fs::path dir = fs::temp_directory_path() / ("granlub_test_cli_" + name);
     fs::remove_all(dir);
     fs::create_directories(dir);
-    std::ifstream in(src + "/cases/sawyer2001/case.toml");
+    std::ifstream in(src + "/cases/sawyer2001_fill/case.toml");
     std::string text((std::istreambuf_iterator<char>(in)), {});
     if (from.empty()) text += "\n" + to + "\n";
     else text.replace(text.find(from), from.size(), to);
@@ -142,7 +143,7 @@ BOOST_AUTO_TEST_CASE(a_case_file_cannot_run_commands) {
     fs::remove(pwned);
     for (const std::string sub : {"check", "dem", "yade", "run"}) {
         if (sub != "check" && sub != "run" && !built(sub)) continue;
-        const fs::path dir = edited_case("inject", "name = \"sawyer2001\"",
+        const fs::path dir = edited_case("inject", "name = \"sawyer2001_fill\"",
                                          "name = \"x\\nshell touch " + pwned.string() + " #\"");
         const auto o = run(exe + " " + sub + " " + dir.string());
         BOOST_TEST(o.rc == 2, sub << ": " << o.text);

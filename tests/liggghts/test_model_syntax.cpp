@@ -71,7 +71,7 @@ void check_examples(const fs::path& page) {
             BOOST_TEST(run.exit_code == 0, run.output);
             const auto r = results(run.output);
             BOOST_TEST_REQUIRE(r.count("x2") == 1u);
-            const bool separate = line.find("separate on") != std::string::npos;
+            const bool separate = line.find("separate off") == std::string::npos;  // on by default
             if (pair) {
                 close(r.at("x2"), separate ? 0.0495 : 0.05);  // the pair overlapping by 1 mm, at rest
             } else if (line.find("zplane 0.0") != std::string::npos) {

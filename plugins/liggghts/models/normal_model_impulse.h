@@ -26,12 +26,29 @@
     of implementation of S&T's sequential resolution; with newton off a
     ghost grain's impulses of the current step are not seen.)
 
-    Setting `separate on` (default off) also removes each overlap by moving
-    the two grains apart along e_n, in inverse proportion to their masses (a
-    wall stays). Contacts are found by overlap only, so without it grains
-    pushed together by gravity, the centripetal force and the shear stay
-    overlapped and are re-hit every step. This position correction is our
-    assumption, not stated by Sawyer & Tichy.
+    What Sawyer & Tichy state and what we add. S&T define the operator for
+    a collision (Eq. 19) and resolve overlaps one after the other; they say
+    nothing about grains that stay in contact. We add, as settings:
+
+    separate on|off (default on; our assumption). Also removes each overlap
+    by moving the two grains apart along e_n, in inverse proportion to their
+    masses (a wall stays), without touching the velocities: a position
+    projection kept apart from the momentum, as split-impulse and
+    contact-dynamics solvers do (Catto 2005; Acary 2013, CMAME 256:224).
+    Contacts are found by overlap only, so without it grains pressed
+    together by gravity, a load or the shear stay overlapped, are re-hit
+    every step and sink into each other (a resting bed of 324 grains: median
+    overlap 16 % of the radii sum after 1 s; with it 0.1 %). Measured on
+    the sawyer2001 cell at 5.5 kPa: without it nu = 0.74 (jammed far above
+    random close packing), with it 0.59 and first-order convergence in dt.
+
+    bounce_speed V (default 0; our assumption). Restitution only for
+    approach speeds above V, e = 0 below, as Chrono, Bullet and Box2D do for
+    resting contacts. Measured on sawyer2001 at 5.5 kPa, U = 1.4 m/s (4913
+    grains): nu = 0.645 / 0.640 / 0.636 at dt = 11.2 / 5.5 / 2.7 us without
+    it, 0.649 / 0.644 with V = 0.05 m/s, 0.644 / 0.639 with 0.005 m/s; it
+    neither changes the answer nor speeds up its convergence in dt, so it
+    is off by default.
 
     Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
     LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree.
@@ -61,15 +78,22 @@ namespace ContactModels
     NormalModel(LAMMPS * lmp, IContactHistorySetup * hsetup, class ContactModelBase * c) :
       NormalModelBase(lmp, hsetup, c),
       coeffRest(NULL),
-      separate(false)
+      separate(true),
+      bounceSpeed(0.0)
     {}
 
-    // separate on: also remove the overlap (see above); off (default): velocities only
+    // separate on (default): also remove the overlap (see above); off: velocities only.
+    // bounce_speed V: restitution only for approach speeds above V (below, e = 0)
     inline void registerSettings(Settings & settings)
     {
-      settings.registerOnOff("separate", separate, false);
+      settings.registerOnOff("separate", separate, true);
+      settings.registerDoubleSetting("bounce_speed", bounceSpeed, 0.0);
     }
-    inline void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+    inline void postSettings(IContactHistorySetup *, ContactModelBase *)
+    {
+      if (!(bounceSpeed >= 0.0))
+        error->all(FLERR, "model impulse: bounce_speed must be >= 0 (m/s; 0 = restitution at every speed)");
+    }
 
     inline void connectToProperties(PropertyRegistry & registry)
     {
@@ -99,7 +123,7 @@ namespace ContactModels
       }
       double Fn = 0.0;
       if (vn < 0.0) {
-        const double e = coeffRest[sidata.itype][sidata.jtype];
+        const double e = -vn > bounceSpeed ? coeffRest[sidata.itype][sidata.jtype] : 0.0;
         Fn = sidata.meff * (1.0 + e) * (-vn) / dt;   // S&T 2001, Eq. 19
       }
       if (separate) remove_overlap(sidata);
@@ -169,6 +193,7 @@ namespace ContactModels
 
     double ** coeffRest;
     bool separate;
+    double bounceSpeed;
   };
 }
 }

@@ -62,7 +62,9 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     const double A = box.length * box.width;
     const std::string model = impulse ? fmt::format("model impulse tangential impulse") : "model hertz tangential history";
     const std::string settings =
-        impulse ? fmt::format(" beta0 {}{}", s.beta0, s.separate ? " separate on" : "") : "";
+        impulse ? fmt::format(" beta0 {} separate {}{}", s.beta0, s.separate ? "on" : "off",
+                             s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "")
+                : "";
     std::string d;
     // LIGGGHTS runs every line as a command (`shell` included): a line break inside a line, from
     // whatever text reached it, must never start one. Case text is checked at parse time; this

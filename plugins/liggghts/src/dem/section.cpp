@@ -12,8 +12,12 @@ SectionSpec section() {
              "contact model: Sawyer & Tichy impulse operator, or LIGGGHTS' Hertz-Mindlin (soft-sphere reference)");
     s.real("beta0", 0.0, Range::closed(-1, 1), "",
            "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
-    s.boolean("separate_overlaps", false,
-              "impulse model: also remove overlaps by moving grains apart (our assumption, not S&T's)");
+    s.boolean("separate_overlaps", true,
+              "impulse model: also remove overlaps by moving grains apart (our assumption, not S&T's; "
+              "without it enduring contacts sink into each other)");
+    s.real("bounce_speed", 0.0, Range::closed(0, 1e3), "m/s",
+           "impulse model: restitution only for approach speeds above this (below, e = 0); 0 = at every speed "
+           "(our assumption, not S&T's)");
     s.boolean("refine_dt", false,
               "also rerun every point at half the time step (same seed and initial grains) into the point's "
               "folder dt_half/; run.dt_refinement compares the two (the result stays the full-step run)");
@@ -21,7 +25,8 @@ SectionSpec section() {
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");
     s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
-           "impulse model: diameters travelled per step at max(U, sqrt(2 g H))");
+           "impulse model: diameters travelled per step at the larger of U, sqrt(2 g H) and, under load "
+           "control, sqrt(12 P / (pi rho)) (the load's push on one grain over one diameter)");
     s.real("hertz_step_fraction", 0.15, Range::open_closed(0, 0.3), "",
            "hertz model: time step as a fraction of the Rayleigh time");
     s.integer("sample_every", 100, Range::closed(1, 1e8),

@@ -12,9 +12,16 @@
 
 namespace granlub::dem {
 
+double impulse_reference_speed(const Case& c, const OperatingPoint& p) {
+    const double v_fall = std::sqrt(2.0 * c.gravity * c.cell.gap);
+    const double v_load = p.control == Control::Load
+                              ? std::sqrt(12.0 * p.normal_stress / (std::numbers::pi * c.grains.density))
+                              : 0.0;
+    return std::max({p.speed, v_fall, v_load});
+}
+
 double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fraction) {
-    const double v_ref = std::max(p.speed, std::sqrt(2.0 * c.gravity * c.cell.gap));
-    return step_fraction * c.grains.diameter / v_ref;
+    return step_fraction * c.grains.diameter / impulse_reference_speed(c, p);
 }
 
 
@@ -24,6 +31,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.model = s.string("model") == "hertz" ? Model::Hertz : Model::Impulse;
     st.beta0 = s.real("beta0");
     st.separate = s.boolean("separate_overlaps");
+    st.bounce_speed = s.real("bounce_speed");
     st.box = particle_box(c, s.real("periodic_depth"));
     st.np = std::max(1, o.np);
     st.vtk = o.vtk;
@@ -38,7 +46,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
 
     // time step: derived from the case, or given and checked
     const double given = s.real("time_step");
-    const double v_ref = std::max(p.speed, std::sqrt(2.0 * c.gravity * c.cell.gap));
+    const double v_ref = impulse_reference_speed(c, p);
     if (st.model == Model::Impulse) {
         st.time_step = given > 0 ? given : impulse_time_step(c, p, s.real("step_fraction"));
         const double frac = st.time_step * v_ref / c.grains.diameter;
@@ -98,6 +106,7 @@ nlohmann::json Settings::to_json() const {
     j.update(nlohmann::json{{"model", model == Model::Impulse ? "impulse" : "hertz"},
                             {"beta0", beta0},
                             {"separate_overlaps", separate},
+                            {"bounce_speed", bounce_speed},
                             {"time_step_s", time_step},
                             {"time_s", time},
                             {"steps", steps},
