@@ -4,14 +4,34 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/results.h"
 
 namespace granlub::test {
+
+struct LoadRun {
+    int code = 1;
+    std::filesystem::path dir;  // the point's result folder
+    Summary summary;            // read when code == 0
+};
+
+// Runs solve(stress) -> {exit code, result folder} once per load and caches (several test cases
+// read the same runs). Call it from one place per test program (the cache is per Solve type).
+template <class Solve>
+const LoadRun& cached_load_run(double stress, Solve solve) {
+    static std::map<double, LoadRun> cache;
+    if (auto it = cache.find(stress); it != cache.end()) return it->second;
+    LoadRun r;
+    std::tie(r.code, r.dir) = solve(stress);
+    if (r.code == 0) r.summary = read_summary(r.dir / "summary.json");
+    return cache.emplace(stress, std::move(r)).first->second;
+}
 
 // The servo reached the target: P_top within 3 block standard errors of it, an informative error
 // bar, rare error clamps, and a plate that moved from its start H and stays inside its limits.

@@ -37,40 +37,28 @@ const std::string kCase = test::tiny_cell("tiny_load", "control = \"load\"\nnorm
 Schema schema() { return test::dem_schema(); }
 using test::edit;
 
-struct Run {
-    int code = 1;
-    fs::path dir;
-    Summary summary;
-};
-
-// Runs once per load and caches (several test cases read the same runs).
-const Run& run_load(double stress) {
-    static std::map<double, Run> cache;
-    auto it = cache.find(stress);
-    if (it != cache.end()) return it->second;
-    const std::string text =
-        edit(kCase, "normal_stress = \\[30.0\\]", "normal_stress = [" + std::to_string(stress) + "]");
-    const Case c = parse_case(text, "tiny_load.toml", schema());
-    RunOptions o;
-    o.results_root = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_dem_load" / std::to_string(int(stress));
-    fs::remove_all(o.results_root);
-    Run r;
-    r.code = dem::run(c, o);
-    r.dir = result_dir(o.results_root, "dem", c.points.front().id);
-    if (r.code == 0) r.summary = read_summary(r.dir / "summary.json");
-    return cache.emplace(stress, std::move(r)).first->second;
+const test::LoadRun& run_load(double stress) {
+    return test::cached_load_run(stress, [](double P) {
+        const std::string text =
+            edit(kCase, "normal_stress = \\[30.0\\]", "normal_stress = [" + std::to_string(P) + "]");
+        const Case c = parse_case(text, "tiny_load.toml", schema());
+        RunOptions o;
+        o.results_root = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_dem_load" / std::to_string(int(P));
+        fs::remove_all(o.results_root);
+        return std::pair(dem::run(c, o), result_dir(o.results_root, "dem", c.points.front().id));
+    });
 }
 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(plate_reaches_the_target_normal_stress) {
-    const Run& r = run_load(30.0);
+    const test::LoadRun& r = run_load(30.0);
     BOOST_TEST_REQUIRE(r.code == 0);
     test::check_target_reached(r.summary, 30.0, 6e-3, 0.4);
 }
 
 BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap) {
-    const Run& r = run_load(30.0);
+    const test::LoadRun& r = run_load(30.0);
     BOOST_TEST_REQUIRE(r.code == 0);
     const Case c = parse_case(kCase, "tiny_load.toml", schema());
     BOOST_TEST((result_status(r.dir, c.inputs_hash("dem")).state == ResultState::Complete));
@@ -85,8 +73,8 @@ BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap) {
 }
 
 BOOST_AUTO_TEST_CASE(higher_load_gives_a_smaller_gap_and_denser_packing) {
-    const Run& lo = run_load(30.0);
-    const Run& hi = run_load(120.0);
+    const test::LoadRun& lo = run_load(30.0);
+    const test::LoadRun& hi = run_load(120.0);
     BOOST_TEST_REQUIRE(lo.code == 0);
     BOOST_TEST_REQUIRE(hi.code == 0);
     test::check_higher_load(lo.summary, hi.summary, 120.0);

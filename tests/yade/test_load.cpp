@@ -5,7 +5,7 @@
 #define BOOST_TEST_MODULE yade_load
 #include <boost/test/unit_test.hpp>
 
-#include <map>
+#include <utility>
 
 #include "granlub/results.h"
 #include "load_checks.h"
@@ -30,38 +30,26 @@ Case load_case(double stress) {
                            "contact_time = 5e-5\nservo_every = 100\nstations = 6\n");
 }
 
-struct Run {
-    int code = 1;
-    fs::path dir;
-    Summary summary;
-};
-
-// Runs once per load and caches (several test cases read the same runs).
-const Run& run_load(double stress) {
-    static std::map<double, Run> cache;
-    auto it = cache.find(stress);
-    if (it != cache.end()) return it->second;
-    const Case c = load_case(stress);
-    RunOptions o;
-    o.results_root = scratch("load-" + std::to_string(static_cast<int>(stress)));
-    Run r;
-    r.code = run(c, o);
-    r.dir = result_dir(o.results_root, "yade", c.points.front().id);
-    if (r.code == 0) r.summary = read_summary(r.dir / "summary.json");
-    return cache.emplace(stress, std::move(r)).first->second;
+const checks::LoadRun& run_load(double stress) {
+    return checks::cached_load_run(stress, [](double P) {
+        const Case c = load_case(P);
+        RunOptions o;
+        o.results_root = scratch("load-" + std::to_string(static_cast<int>(P)));
+        return std::pair(run(c, o), result_dir(o.results_root, "yade", c.points.front().id));
+    });
 }
 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(plate_reaches_the_target_normal_stress, *boost::unit_test::precondition(YadeInstalled())) {
-    const Run& r = run_load(200.0);
+    const checks::LoadRun& r = run_load(200.0);
     BOOST_TEST_REQUIRE(r.code == 0);
     checks::check_target_reached(r.summary, 200.0, 4e-3, 0.5);
 }
 
 BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap,
                      *boost::unit_test::precondition(YadeInstalled())) {
-    const Run& r = run_load(200.0);
+    const checks::LoadRun& r = run_load(200.0);
     BOOST_TEST_REQUIRE(r.code == 0);
     const Case c = load_case(200.0);
     BOOST_TEST((result_status(r.dir, c.inputs_hash("yade")).state == ResultState::Complete));
@@ -75,8 +63,8 @@ BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap,
 
 BOOST_AUTO_TEST_CASE(higher_load_gives_a_smaller_gap_and_denser_packing,
                      *boost::unit_test::precondition(YadeInstalled())) {
-    const Run& lo = run_load(200.0);
-    const Run& hi = run_load(800.0);
+    const checks::LoadRun& lo = run_load(200.0);
+    const checks::LoadRun& hi = run_load(800.0);
     BOOST_TEST_REQUIRE(lo.code == 0);
     BOOST_TEST_REQUIRE(hi.code == 0);
     checks::check_higher_load(lo.summary, hi.summary, 800.0);
