@@ -80,6 +80,10 @@ BOOST_AUTO_TEST_CASE(plate_reaches_the_target_normal_stress) {
     BOOST_TEST(!lc.at("plate_at_limit_at_end").get<bool>());
     // the window average is the target only while the error clamp is rare
     BOOST_TEST(lc.at("updates_error_clamped").get<std::size_t>() < lc.at("servo_updates").get<std::size_t>() / 20);
+    // a loaded bed of rigid grains does not sink into itself (the model's default overlap removal)
+    const auto& fr = r.summary.run.at("flow_regime");
+    BOOST_TEST_MESSAGE("overlap/(r_i+r_j): max " << fr.at("max_overlap") << " mean " << fr.at("mean_overlap"));
+    BOOST_TEST(fr.at("max_overlap").get<double>() < 0.02);  // below one step of travel at the wall speed
     // the plate moved from its start (6 mm) and stays inside its limits
     const double gap = r.summary.value("gap");
     BOOST_TEST(std::abs(gap - 6e-3) > 1e-4);
