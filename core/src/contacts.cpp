@@ -88,6 +88,25 @@ ContactList touching_pairs(const ParticleSet& p, const ParticleBox& box, double 
     return out;
 }
 
+OverlapStats overlaps(const ParticleSet& p, const ParticleBox& box, const ContactList& pairs) {
+    // the minimum images of touching_pairs(): x always periodic, z when the box says so
+    const auto image = [](double d, double period) { return d - period * std::round(d / period); };
+    OverlapStats o;
+    double sum = 0;
+    for (const auto& [a, b] : pairs) {
+        const double dx = image(p.x[b] - p.x[a], box.length), dy = p.y[b] - p.y[a];
+        const double dz = box.periodic_z ? image(p.z[b] - p.z[a], box.width) : p.z[b] - p.z[a];
+        const double reach = p.radius[a] + p.radius[b];
+        const double rel = (reach - std::sqrt(dx * dx + dy * dy + dz * dz)) / reach;
+        if (rel <= 0) continue;
+        ++o.overlapping;
+        sum += rel;
+        o.max = std::max(o.max, rel);
+    }
+    if (o.overlapping) o.mean = sum / static_cast<double>(o.overlapping);
+    return o;
+}
+
 double coordination_number(const ContactList& pairs, std::size_t grains) {
     return grains > 0 ? 2.0 * static_cast<double>(pairs.size()) / static_cast<double>(grains) : 0.0;
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <regex>
 
@@ -19,6 +20,7 @@
 #include "granlub/results.h"
 #include "granlub/sweep.h"
 #include "outputs.h"
+#include "run_driver.h"
 #include "settings.h"
 #include "tiny_cell.h"
 
@@ -107,6 +109,27 @@ BOOST_AUTO_TEST_CASE(same_seed_same_numbers) {
     const Summary sa = read_summary(a.dir / "summary.json"), sb = read_summary(b.dir / "summary.json");
     BOOST_TEST(sa.value("normal_stress_top") == sb.value("normal_stress_top"));
     BOOST_TEST(sa.value("shear_stress_bottom") == sb.value("shear_stress_bottom"));
+}
+
+// Points run side by side (one LIGGGHTS process each) give exactly what they give one at a time.
+BOOST_AUTO_TEST_CASE(points_side_by_side_give_the_same_numbers) {
+    const Case c = parse_case(edit(kCase, "speed = \\[1.0\\]", "speed = [1.0, 1.5, 2.0]"), "tiny.toml", schema());
+    BOOST_TEST_REQUIRE(points_at_once(RunOptions{.threads = 4}, 3) == 3);
+    std::map<int, fs::path> roots;
+    for (const int threads : {1, 3}) {
+        RunOptions o;
+        o.threads = threads;
+        o.results_root = scratch("side_by_side_" + std::to_string(threads));
+        BOOST_TEST_REQUIRE(dem::run(c, o) == 0);
+        roots[threads] = o.results_root;
+    }
+    for (const auto& p : c.points) {
+        const Summary a = read_summary(result_dir(roots[1], "dem", p.id) / "summary.json");
+        const Summary b = read_summary(result_dir(roots[3], "dem", p.id) / "summary.json");
+        for (const char* name : kStandardOutputs) BOOST_TEST(a.value(name) == b.value(name), p.id << " " << name);
+        BOOST_TEST(test::read_text(result_dir(roots[1], "dem", p.id) / "profile.csv") ==
+                   test::read_text(result_dir(roots[3], "dem", p.id) / "profile.csv"));
+    }
 }
 
 BOOST_AUTO_TEST_CASE(hertz_reference_runs_with_the_grains_elastic_constants) {

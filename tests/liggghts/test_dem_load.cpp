@@ -55,6 +55,10 @@ BOOST_AUTO_TEST_CASE(plate_reaches_the_target_normal_stress) {
     const test::LoadRun& r = run_load(30.0);
     BOOST_TEST_REQUIRE(r.code == 0);
     test::check_target_reached(r.summary, 30.0, 6e-3, 0.4);
+    // a loaded bed of rigid grains does not sink into itself (the model's default overlap removal)
+    const auto& fr = r.summary.run.at("flow_regime");
+    BOOST_TEST_MESSAGE("overlap/(r_i+r_j): max " << fr.at("max_overlap") << " mean " << fr.at("mean_overlap"));
+    BOOST_TEST(fr.at("max_overlap").get<double>() < 0.02);  // below one step of travel at the wall speed
 }
 
 BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap) {

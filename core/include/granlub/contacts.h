@@ -25,6 +25,15 @@ inline constexpr double kContactGapTolerance = 0.01;  // surface gap / (r_i + r_
 using ContactList = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 ContactList touching_pairs(const ParticleSet& p, const ParticleBox& box, double tolerance = kContactGapTolerance);
 
+// Overlaps of the listed pairs, (r_i + r_j - distance) / (r_i + r_j), counting only pairs that
+// overlap: how far rigid grains interpenetrate (0 when none does).
+struct OverlapStats {
+    std::size_t overlapping = 0;
+    double max = 0;
+    double mean = 0;  // over the overlapping pairs
+};
+OverlapStats overlaps(const ParticleSet& p, const ParticleBox& box, const ContactList& pairs);
+
 // Mean contacts per grain, 2 |pairs| / grains (0 for no grains).
 double coordination_number(const ContactList& pairs, std::size_t grains);
 

@@ -44,7 +44,13 @@ void for_each_run(const Case& c, const RunOptions& o,
                   const std::function<void(const OperatingPoint&, const RunOptions&)>& check);
 
 // Returns the process exit code: 0 if every selected point is complete afterwards, 1 otherwise.
-// Failures of one point are reported and the sweep goes on with the next.
-int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve);
+// Failures of one point are reported and the sweep goes on with the next. Up to `points_at_once`
+// points run side by side (solvers whose points are separate processes: see points_at_once()).
+int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve,
+              int points_at_once = 1);
+
+// How many single-process points fit the machine: --threads (default: all cores) over --np ranks
+// per point, at least 1 and at most `points`.
+int points_at_once(const RunOptions& o, int points);
 
 }  // namespace granlub

@@ -73,6 +73,24 @@ BOOST_AUTO_TEST_CASE(a_periodic_image_pair_counts) {
     BOOST_TEST(touching_pairs(q, ParticleBox{L, L, W, false}).empty());  // side walls: no image
 }
 
+BOOST_AUTO_TEST_CASE(overlaps_measure_interpenetration_through_periodic_images) {
+    const double d = 1e-3, L = 10 * d, W = 10 * d;
+    ParticleSet p;
+    p.push_back(0.2 * d, 5 * d, 0, 0, 0, 0, 0.5 * d);
+    p.push_back(L - 0.7 * d, 5 * d, 0, 0, 0, 0, 0.5 * d);  // 0.9 d apart through x = 0: overlap 0.1 d
+    p.push_back(5 * d, 5 * d, 0, 0, 0, 0, 0.5 * d);
+    p.push_back(5 * d, 5.97 * d, 0, 0, 0, 0, 0.5 * d);  // 0.97 d apart: overlap 0.03 d
+    p.push_back(5 * d, 7.0 * d, 0, 0, 0, 0, 0.5 * d);   // 1.03 d from the one below: touching, not overlapping
+    const ParticleBox box{L, L, W, true};
+    const ContactList pairs = touching_pairs(p, box, 0.05);
+    BOOST_TEST_REQUIRE(pairs.size() == 3u);
+    const OverlapStats o = overlaps(p, box, pairs);
+    BOOST_TEST(o.overlapping == 2u);
+    BOOST_TEST(std::abs(o.max - 0.1) < 1e-12);
+    BOOST_TEST(std::abs(o.mean - 0.065) < 1e-12);
+    BOOST_TEST(overlaps(p, box, {}).max == 0.0);
+}
+
 BOOST_AUTO_TEST_CASE(persistence_counts_the_pairs_that_stay) {
     const ContactList before = {{0, 1}, {0, 2}, {1, 3}, {2, 3}};
     const ContactList after = {{0, 1}, {1, 2}, {2, 3}, {4, 5}};

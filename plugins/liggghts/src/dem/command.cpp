@@ -169,7 +169,10 @@ void check(const Case& c, const RunOptions& o) {
 }
 
 int run(const Case& c, const RunOptions& o) {
-    return run_sweep(c, "dem", o, [&](const OperatingPoint& p, const fs::path& dir) { return solve(c, p, o, dir); });
+    // each point is its own LIGGGHTS process of --np ranks: as many side by side as cores allow
+    const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
+    return run_sweep(
+        c, "dem", o, [&](const OperatingPoint& p, const fs::path& dir) { return solve(c, p, o, dir); }, at_once);
 }
 
 }  // namespace granlub::dem

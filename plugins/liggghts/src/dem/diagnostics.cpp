@@ -1,6 +1,7 @@
 // Flow-regime evidence of one LIGGGHTS run (diagnostics.h).
 #include "diagnostics.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -21,7 +22,12 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 void CoordinationSeries::add(const ParticleSet& p, double time) {
     if (time < t_start_ - 1e-12) return;
     const auto t0 = std::chrono::steady_clock::now();
-    z_.push_back(coordination_number(touching_pairs(p, box_), p.size()));
+    const ContactList pairs = touching_pairs(p, box_);
+    z_.push_back(coordination_number(pairs, p.size()));
+    const OverlapStats o = overlaps(p, box_, pairs);
+    max_overlap_ = std::max(max_overlap_, o.max);
+    overlap_sum_ += o.mean * static_cast<double>(o.overlapping);
+    overlapping_ += o.overlapping;
     seconds_ += seconds_since(t0);
 }
 
@@ -65,6 +71,9 @@ nlohmann::json flow_regime_record(const Case& c, const OperatingPoint& pt, const
     j["coordination_snapshots"] = zs.size();
     j["contact_gap_tolerance"] = kContactGapTolerance;
     j["wall_contacts_in_coordination"] = false;
+    // rigid grains should not interpenetrate: overlap / (r_i + r_j) of grain pairs, steady snapshots
+    j["max_overlap"] = z.max_overlap();
+    j["mean_overlap"] = z.mean_overlap();
     j["persistence_interval_steps"] = s.persistence_every;
     j["persistence_interval_s"] = static_cast<double>(s.persistence_every) * s.time_step;
     j["persistence_snapshots"] = pairs.size();

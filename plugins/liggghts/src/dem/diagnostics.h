@@ -23,12 +23,17 @@ public:
     void add(const ParticleSet& p, double time);
     const std::vector<double>& values() const { return z_; }
     double seconds() const { return seconds_; }  // time spent finding contacts
+    // over the same snapshots: the deepest overlap and the mean of the overlapping pairs' overlaps
+    double max_overlap() const { return max_overlap_; }
+    double mean_overlap() const { return overlapping_ ? overlap_sum_ / static_cast<double>(overlapping_) : 0.0; }
 
 private:
     ParticleBox box_;
     double t_start_;
     std::vector<double> z_;
     double seconds_ = 0;
+    double max_overlap_ = 0, overlap_sum_ = 0;
+    std::size_t overlapping_ = 0;
 };
 
 // run.flow_regime: flow_regime_json() plus how it was measured and what it cost.
