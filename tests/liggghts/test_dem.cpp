@@ -114,7 +114,9 @@ BOOST_AUTO_TEST_CASE(same_seed_same_numbers) {
 // Points run side by side (one LIGGGHTS process each) give exactly what they give one at a time.
 BOOST_AUTO_TEST_CASE(points_side_by_side_give_the_same_numbers) {
     const Case c = parse_case(edit(kCase, "speed = \\[1.0\\]", "speed = [1.0, 1.5, 2.0]"), "tiny.toml", schema());
-    BOOST_TEST_REQUIRE(points_at_once(RunOptions{.threads = 4}, 3) == 3);
+    RunOptions four;
+    four.threads = 4;
+    BOOST_TEST_REQUIRE(points_at_once(four, 3) == 3);
     std::map<int, fs::path> roots;
     for (const int threads : {1, 3}) {
         RunOptions o;

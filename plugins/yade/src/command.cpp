@@ -83,6 +83,8 @@ void check(const Case& c, const RunOptions& o) {
 }
 
 int run(const Case& c, const RunOptions& o) {
+    // each point is one single-threaded YADE process (-j1): as many side by side as cores allow
+    const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
     return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {
             return solve_point(c, o, p, dir);
@@ -93,7 +95,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    });
+    }, at_once);
 }
 
 }  // namespace granlub::yade
