@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "metrics.h"
+#include "scope.h"
 #include "stats.h"
 #include "text.h"
 
@@ -143,9 +144,14 @@ std::vector<Figure> stress_figures(const Collection& col) {
         f.y.label = stress_label(q);
         f.y.log = true;
         std::vector<std::string> not_fitted;
+        bool controlled = false, lattice = false;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
-                auto series = points_by_state(col, solver, groups[g].points, with_group(solver, groups[g].label),
+                // The automaton's "stresses" are lattice analogues: said in the legend, beside the markers.
+                const std::string label = with_group(lattice_stresses(solver) ? solver + " (lattice analogue)" : solver,
+                                                     groups[g].label);
+                lattice = lattice || (lattice_stresses(solver) && col.any_usable(solver));
+                auto series = points_by_state(col, solver, groups[g].points, label,
                                               [&](const Run& r, const OperatingPoint& p, Series& s) {
                                                   s.x.push_back(p.speed);
                                                   s.y.push_back(*r.scalar(q));
@@ -153,7 +159,9 @@ std::vector<Figure> stress_figures(const Collection& col) {
                                               });
                 for (auto& s : series) s.open = s.open || g % 2 == 1;
                 const StressFit fit = stress_fit(col, groups[g], solver, q);
-                if (fit.steady_points + fit.other_points > 0 && !fit.fit)
+                if (controlled_stress(groups[g], q))
+                    controlled = true;
+                else if (fit.steady_points + fit.other_points > 0 && !fit.fit)
                     not_fitted.push_back(fit.steady_points < kMinFitPoints
                                              ? fmt::format("{} has {} steady point{} (a fit needs {})",
                                                            with_group(solver, groups[g].label), fit.steady_points,
@@ -177,6 +185,9 @@ std::vector<Figure> stress_figures(const Collection& col) {
                 if (!line.x.empty()) f.series.push_back(std::move(line));
             }
         }
+        if (controlled)
+            f.caption += " Under load control this normal stress follows the load (the control variable): not fitted.";
+        if (lattice) f.caption += std::string(" Note: ") + kLatticeStressNote + ".";
         if (!not_fitted.empty()) {
             f.caption += " No power law:";
             for (std::size_t i = 0; i < not_fitted.size(); ++i) f.caption += (i ? "; " : " ") + not_fitted[i];

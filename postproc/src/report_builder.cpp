@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "granlub/results.h"
+#include "scope.h"
 #include "text.h"
 
 namespace granlub::postproc {
@@ -14,6 +15,10 @@ std::string value_pm(const std::optional<double>& v, const std::optional<double>
     if (!v) return "";
     if (se && *se > 0) return fmt::format("{} ± {}", num(*v, digits), num(*se, 2));
     return num(*v, digits);
+}
+
+std::optional<double> scaled(const std::optional<double>& v, double factor) {
+    return v ? std::optional(*v * factor) : std::nullopt;
 }
 
 std::string list_text(const std::vector<std::string>& v) {
@@ -134,10 +139,16 @@ Table status_table(const Collection& col) {
     return t;
 }
 
-Table key_numbers(const Collection& col) {
+Table key_numbers(const Case& c, const Collection& col) {
+    // Under load control the gap and the solid fraction are results and P_top is held at the target: the
+    // table shows them (a bottom-wall σ_yy alone would read as if the fill were fixed).
+    const bool load = std::any_of(col.points.begin(), col.points.end(),
+                                  [](const OperatingPoint* p) { return p->control == Control::Load; });
     Table t;
-    t.header = {"solver", "point", "status", "ν̄/ν_max", "σ_yy bottom (Pa)", "τ_xy bottom (Pa)", "τ_xy top (Pa)",
-                "slip bottom / U", "slip top / U", "wall clock (s)"};
+    t.header = {"solver", "point", "status", "ν̄/ν_max"};
+    if (load) t.header.insert(t.header.end(), {"gap (mm)", "P_top / target"});
+    t.header.insert(t.header.end(), {"σ_yy bottom (Pa)", "τ_xy bottom (Pa)", "τ_xy top (Pa)", "slip bottom / U",
+                                     "slip top / U", "wall clock (s)"});
     for (const OperatingPoint* p : col.points) {
         for (const auto& s : col.solvers) {
             const Run& r = col.run(s, p->id);
@@ -145,8 +156,27 @@ Table key_numbers(const Collection& col) {
             // Values of a result that is not steady are shown greyed, never as results.
             const std::string cls = r.steady() ? "" : r.state_class();
             std::vector<Cell> row{{s, ""}, {p->id, ""}, {r.state_name(), r.state_class()}};
-            for (const char* q : {"nu_bar_over_numax", "normal_stress_bottom", "shear_stress_bottom", "shear_stress_top",
-                                  "slip_bottom_over_U", "slip_top_over_U"})
+            row.push_back({value_pm(r.scalar("nu_bar_over_numax"), r.scalar_stderr("nu_bar_over_numax")), cls});
+            if (load) {
+                // A solver with a fixed gap (no "gap" output) solves for ν̄ at the case's gap.
+                const bool moving = r.scalar("gap").has_value();
+                row.push_back({moving ? value_pm(scaled(r.scalar("gap"), 1e3), scaled(r.scalar_stderr("gap"), 1e3))
+                                      : num(c.cell.gap * 1e3) + " (fixed)",
+                               cls});
+                const double per = p->control == Control::Load && p->normal_stress > 0 ? 1 / p->normal_stress : 0;
+                row.push_back({lattice_stresses(s) ? "— (lattice, fixed fill)"
+                               : per > 0 ? value_pm(scaled(r.scalar("normal_stress_top"), per),
+                                                  scaled(r.scalar_stderr("normal_stress_top"), per), 3)
+                                       : "",
+                               cls});
+            }
+            // The automaton's stresses are lattice analogues: marked in every cell, not only in a footnote.
+            const char* lattice = lattice_stresses(s) ? " (lattice)" : "";
+            for (const char* q : {"normal_stress_bottom", "shear_stress_bottom", "shear_stress_top"}) {
+                const std::string v = value_pm(r.scalar(q), r.scalar_stderr(q));
+                row.push_back({v.empty() ? v : v + lattice, cls});
+            }
+            for (const char* q : {"slip_bottom_over_U", "slip_top_over_U"})
                 row.push_back({value_pm(r.scalar(q), r.scalar_stderr(q)), cls});
             const auto& run = r.summary->run;
             row.push_back({run.is_object() && run.contains("wall_clock_s") && run["wall_clock_s"].is_number()
@@ -155,6 +185,18 @@ Table key_numbers(const Collection& col) {
                            ""});
             t.rows.push_back(std::move(row));
         }
+    }
+    return t;
+}
+
+Table scope_table(const Case& c, const Collection& col) {
+    Table t;
+    t.header = {"solver", "body forces", "wall stresses", "run length"};
+    for (const auto& s : col.solvers) {
+        if (!col.any_usable(s)) continue;
+        const SolverScope sc = solver_scope(c, col, s);
+        t.rows.push_back({{s, ""}, {sc.body_forces, ""}, {sc.stresses, lattice_stresses(s) ? "transient" : ""},
+                          {sc.run_length, ""}});
     }
     return t;
 }
@@ -188,7 +230,9 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
         }
     if (!problems.rows.empty()) rep.table(std::move(problems));
     rep.heading("Key numbers", 3);
-    rep.table(key_numbers(col));
+    rep.table(key_numbers(c, col));
+    rep.heading("What each solver's numbers mean", 3);
+    rep.table(scope_table(c, col));
 
     rep.heading("How to read this report");
     rep.text("Geometry: y/H = 0 is the moving wall (speed U), y/H = 1 the stationary wall. Profiles are "
