@@ -212,7 +212,7 @@ std::vector<Figure> slip_figures(const Collection& col) {
         const std::string wall = bottom ? "moving wall" : "stationary wall";
         Figure f;
         f.name = bottom ? "slip_bottom" : "slip_top";
-        f.title = "Slip at the " + wall;
+        f.title = "Slip at the " + wall + (swept ? " against roughness" : " against wall speed");
         f.caption = (bottom ? "Slip (U − u(0)) / U" : "Slip u(H) / U") +
                     (swept ? std::string(" against the ") + wall + "'s roughness R"
                            : fmt::format(" against U (the case has one roughness, R = {})",
@@ -251,7 +251,7 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
     f.name = "solid_fraction";
     f.title = "Mean solid fraction";
     f.caption = "Mean solid fraction over the gap divided by each model's own ν_max, per point "
-                "(bars ±1 standard error); black: the fill target ν/ν_max of the case.";
+                "(bars ±1 standard error).";
     f.x.label = "operating point";
     f.y.label = "mean ν / ν_max";
     const std::size_t n = col.solvers.size();
@@ -279,7 +279,13 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
         target.x.push_back(static_cast<double>(i));
         target.y.push_back(col.points[i]->solid_fraction / case_nu_max);
     }
-    if (!target.x.empty()) f.series.push_back(std::move(target));
+    // Only the points under fill control have a target; under load control ν̄ is a result.
+    if (!target.x.empty()) {
+        f.series.push_back(std::move(target));
+        f.caption += " Black hollow triangles: the fill target ν/ν_max of the case.";
+    }
+    if (std::any_of(col.points.begin(), col.points.end(), [](const OperatingPoint* p) { return p->control == Control::Load; }))
+        f.caption += " Under load control ν̄ is a result (the gap moves or the model solves for it), not a target.";
     note_unsteady(f);
     return f;
 }

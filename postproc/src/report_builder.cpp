@@ -284,7 +284,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     else
         rep.table(std::move(ex));
 
-    rep.heading("Slip against wall roughness");
+    rep.heading("Slip at the walls");  // against roughness or speed: the figure titles say which
     rep.figures(figs.slip);
     rep.heading("Mean solid fraction");
     rep.figures(figs.solid_fraction);
