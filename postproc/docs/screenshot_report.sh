@@ -12,7 +12,9 @@ mkdir -p "$out/figures"
 # The page's height: long enough for the whole report (chromium cuts the screenshot at the window).
 height=${HEIGHT:-20000}
 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size="$width,$height" \
-  --screenshot="$out/page.png" "file://$report/index.html" 2>/dev/null
+  --screenshot="$out/page.png" "file://$report/index.html" 2>"$out/chromium.log" ||
+  { cat "$out/chromium.log" >&2; exit 1; }
+test -s "$out/page.png" || { echo "chromium wrote no $out/page.png (see $out/chromium.log)" >&2; exit 1; }
 for svg in "$report"/plots/*.svg; do
   rsvg-convert -w 900 -b white -o "$out/figures/$(basename "$svg" .svg).png" "$svg"
 done

@@ -1,5 +1,7 @@
 #include "report.h"
 
+#include <cctype>
+
 #include <fmt/format.h>
 
 #include "text.h"
@@ -50,6 +52,33 @@ Report& Report::links(std::vector<std::pair<std::string, std::string>> l) {
     return *this;
 }
 
+Report& Report::fold(std::string summary, bool open) {
+    Block b;
+    b.kind = Block::Kind::FoldBegin;
+    b.text = std::move(summary);
+    b.open = open;
+    blocks.push_back(std::move(b));
+    return *this;
+}
+Report& Report::end_fold() {
+    Block b;
+    b.kind = Block::Kind::FoldEnd;
+    blocks.push_back(std::move(b));
+    return *this;
+}
+
+std::string heading_id(const std::string& text) {
+    std::string id = "s-";
+    for (unsigned char ch : text) {
+        if (std::isalnum(ch))
+            id += static_cast<char>(std::tolower(ch));
+        else if (ch < 0x80 && id.back() != '-')
+            id += '-';  // non-ASCII (ν, σ) is left out
+    }
+    while (id.back() == '-') id.pop_back();
+    return id;
+}
+
 namespace {
 
 constexpr const char* kStyle = R"(
@@ -72,6 +101,12 @@ figure { margin: 0; max-width: 540px; }
 figure svg { width: 100%; height: auto; border: 1px solid #eee; }
 figcaption { font-size: .85em; color: #444; }
 pre { background: #f7f7f7; padding: .8em; overflow-x: auto; font-size: .85em; }
+nav { position: sticky; top: 0; background: #ffffffee; border-bottom: 1px solid #ccc; padding: .4em 0;
+      display: flex; flex-wrap: wrap; font-size: .9em; z-index: 1; }
+nav a { margin-right: 1.2em; color: #0072B2; text-decoration: none; white-space: nowrap; }
+h2 { scroll-margin-top: 2.5em; }
+details { margin: .4em 0 .8em; }
+summary { cursor: pointer; font-weight: bold; font-size: 1.05em; padding: .2em 0; }
 )";
 
 std::string html_cell(const Cell& c, const char* tag) {
@@ -96,11 +131,24 @@ std::string render_html(const Report& r) {
                       "<meta charset=\"utf-8\"/>\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>\n";
     out += fmt::format("<title>{}</title>\n<style>{}</style>\n</head>\n<body>\n<h1>{}</h1>\n", xml_escape(r.title),
                        kStyle, xml_escape(r.title));
+    out += "<nav>";
+    for (const auto& b : r.blocks)
+        if (b.kind == Block::Kind::Heading && b.level == 2)
+            out += fmt::format("<a href=\"#{}\">{}</a>", heading_id(b.text), xml_escape(b.text));
+    out += "</nav>\n";
     for (const auto& b : r.blocks) {
         switch (b.kind) {
             case Block::Kind::Heading:
-                out += fmt::format("<h{0}>{1}</h{0}>\n", b.level, xml_escape(b.text));
+                if (b.level == 2)
+                    out += fmt::format("<h2 id=\"{}\">{}</h2>\n", heading_id(b.text), xml_escape(b.text));
+                else
+                    out += fmt::format("<h{0}>{1}</h{0}>\n", b.level, xml_escape(b.text));
                 break;
+            case Block::Kind::FoldBegin:
+                out += fmt::format("<details{}>\n<summary>{}</summary>\n", b.open ? " open=\"open\"" : "",
+                                   xml_escape(b.text));
+                break;
+            case Block::Kind::FoldEnd: out += "</details>\n"; break;
             case Block::Kind::Text: out += fmt::format("<p>{}</p>\n", xml_escape(b.text)); break;
             case Block::Kind::Pre: out += fmt::format("<pre>{}</pre>\n", xml_escape(b.text)); break;
             case Block::Kind::Table:
@@ -138,6 +186,8 @@ std::string render_markdown(const Report& r) {
     for (const auto& b : r.blocks) {
         switch (b.kind) {
             case Block::Kind::Heading: out += fmt::format("{} {}\n\n", std::string(static_cast<std::size_t>(b.level), '#'), b.text); break;
+            case Block::Kind::FoldBegin: out += fmt::format("#### {}\n\n", b.text); break;
+            case Block::Kind::FoldEnd: break;
             case Block::Kind::Text: out += b.text + "\n\n"; break;
             case Block::Kind::Pre: out += "```\n" + b.text + (b.text.ends_with('\n') ? "" : "\n") + "```\n\n"; break;
             case Block::Kind::Table: {

@@ -1,6 +1,8 @@
 #include "report_builder.h"
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -43,10 +45,12 @@ const char* short_label(const std::string& key) {
 }
 
 void difference_tables(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
+    bool first_fold = true;  // the first point unfolded, the others one click away
     for (const OperatingPoint* p : col.points) {
         const auto runs = col.usable(p->id);
         if (runs.size() < 2) continue;
-        rep.heading(fmt::format("Point {}", p->id), 3);
+        rep.fold(fmt::format("Point {}", p->id), first_fold);
+        first_fold = false;
         Table prof;
         prof.header = {"solvers (a − b)"};
         for (const auto& q : kProfileQuantities) prof.header.push_back(std::string(q.short_label) + ": RMS (max at y/H; noise)");
@@ -104,6 +108,72 @@ void difference_tables(Report& rep, const Collection& col, const std::vector<Met
                  "that is not steady is not compared (“—, transient”): a transient's difference is not a model "
                  "difference.");
         rep.table(std::move(sc));
+        rep.end_fold();
+    }
+}
+
+// "key" -> text of every leaf of a JSON object, nested keys joined by '.'.
+void flatten(const nlohmann::json& j, const std::string& prefix, std::map<std::string, std::string>& out) {
+    if (j.is_object()) {
+        for (const auto& [k, v] : j.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, out);
+        return;
+    }
+    out[prefix] = j.is_string() ? j.get<std::string>() : j.dump();
+}
+
+// Who computed what: one row per run (version, time, seed, hashes), then each solver's settings
+// as a key-value table (folded), a value that differs between points given per point.
+void provenance_section(Report& rep, const Collection& col) {
+    Table prov;
+    prov.header = {"solver", "point", "granlub", "written (UTC)", "seed", "case hash", "inputs hash"};
+    for (const OperatingPoint* p : col.points)
+        for (const auto& s : col.solvers) {
+            const Run& r = col.run(s, p->id);
+            if (!r.usable()) continue;
+            const Provenance& pv = r.summary->provenance;
+            prov.rows.push_back({{s, ""},
+                                 {p->id, ""},
+                                 {pv.version, ""},
+                                 {pv.utc_time, ""},
+                                 {pv.seed ? std::to_string(*pv.seed) : "—", ""},
+                                 {pv.case_hash, "code"},
+                                 {pv.inputs_hash, "code"}});
+        }
+    rep.table(std::move(prov));
+    rep.text("Each run's full record (inputs, settings, run diagnostics) is its summary.json: "
+             "results/<solver>/<point>/summary.json.");
+    for (const auto& s : col.solvers) {
+        std::vector<std::pair<std::string, std::map<std::string, std::string>>> per_point;
+        for (const OperatingPoint* p : col.points)
+            if (const Run& r = col.run(s, p->id); r.usable()) {
+                std::map<std::string, std::string> kv;
+                flatten(r.summary->provenance.settings, "", kv);
+                per_point.emplace_back(p->id, std::move(kv));
+            }
+        if (per_point.empty()) continue;
+        std::set<std::string> keys;
+        for (const auto& [id, kv] : per_point)
+            for (const auto& [k, v] : kv) keys.insert(k);
+        Table t;
+        t.header = {"setting", "value"};
+        for (const auto& k : keys) {
+            auto value = [&](const std::map<std::string, std::string>& kv) {
+                const auto it = kv.find(k);
+                return it == kv.end() ? std::string("—") : it->second;
+            };
+            const std::string v0 = value(per_point.front().second);
+            const bool same = std::all_of(per_point.begin(), per_point.end(),
+                                          [&](const auto& pp) { return value(pp.second) == v0; });
+            std::string v = v0;
+            if (!same) {
+                v.clear();
+                for (const auto& [id, kv] : per_point) v += (v.empty() ? "" : "; ") + id + ": " + value(kv);
+            }
+            t.rows.push_back({{k, "code"}, {v, ""}});
+        }
+        rep.fold(fmt::format("Settings of {} ({} keys)", s, keys.size()));
+        rep.table(std::move(t));
+        rep.end_fold();
     }
 }
 
@@ -195,7 +265,7 @@ Table scope_table(const Case& c, const Collection& col) {
     for (const auto& s : col.solvers) {
         if (!col.any_usable(s)) continue;
         const SolverScope sc = solver_scope(c, col, s);
-        t.rows.push_back({{s, ""}, {sc.body_forces, ""}, {sc.stresses, lattice_stresses(s) ? "transient" : ""},
+        t.rows.push_back({{s, ""}, {sc.body_forces, ""}, {sc.stresses, ""},
                           {sc.run_length, ""}});
     }
     return t;
@@ -250,8 +320,9 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     for (const OperatingPoint* p : col.points) {
         const auto it = figs.profiles.find(p->id);
         if (it == figs.profiles.end()) continue;
-        rep.heading(fmt::format("Point {}", p->id), 3);
+        rep.fold(fmt::format("Point {}", p->id), it == figs.profiles.find(col.points.front()->id));
         rep.figures(it->second);
+        rep.end_fold();
     }
 
     rep.heading("Wall stresses against speed");
@@ -296,24 +367,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     difference_tables(rep, col, metrics);
 
     rep.heading("Provenance of every run");
-    Table prov;
-    prov.header = {"solver", "point", "granlub", "written (UTC)", "seed", "inputs hash", "case hash", "run", "settings"};
-    for (const OperatingPoint* p : col.points)
-        for (const auto& s : col.solvers) {
-            const Run& r = col.run(s, p->id);
-            if (!r.usable()) continue;
-            const Provenance& pv = r.summary->provenance;
-            prov.rows.push_back({{s, ""},
-                                 {p->id, ""},
-                                 {pv.version, ""},
-                                 {pv.utc_time, ""},
-                                 {pv.seed ? std::to_string(*pv.seed) : "", ""},
-                                 {pv.inputs_hash, "code"},
-                                 {pv.case_hash, "code"},
-                                 {r.summary->run.dump(), "code"},
-                                 {pv.settings.dump(), "code"}});
-        }
-    rep.table(std::move(prov));
+    provenance_section(rep, col);
 
     rep.heading("Files");
     std::vector<std::pair<std::string, std::string>> files = {
