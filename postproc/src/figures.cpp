@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -74,6 +75,25 @@ void note_unsteady(Figure& f) {
         f.caption += " Hollow faded markers and dotted lines are results that are NOT steady (the legend says "
                      "which: transient, dt-unconverged or status unknown); shown for information only, left out of "
                      "fits and differences.";
+}
+
+// Under load control the top plate is held at the target stress: drawn as a black dotted line at
+// the target over the speeds of the load-controlled points (one line per target value).
+void add_load_target(const Collection& col, Figure& f) {
+    std::map<double, std::vector<double>> speeds;
+    for (const OperatingPoint* p : col.points)
+        if (p->control == Control::Load && p->normal_stress > 0) speeds[p->normal_stress].push_back(p->speed);
+    for (const auto& [target, u] : speeds) {
+        Series line;
+        line.style = 6;  // black
+        line.dashed = true;
+        line.label = speeds.size() == 1 ? "load target" : fmt::format("load target {} Pa", num(target));
+        const auto [lo, hi] = std::minmax_element(u.begin(), u.end());
+        line.x = {*lo / 1.1, *hi * 1.1};
+        line.y = {target, target};
+        f.series.push_back(std::move(line));
+    }
+    if (!speeds.empty()) f.caption += " Black dashed: the load target of the case.";
 }
 
 }  // namespace
@@ -187,6 +207,7 @@ std::vector<Figure> stress_figures(const Collection& col) {
         }
         if (controlled)
             f.caption += " Under load control this normal stress follows the load (the control variable): not fitted.";
+        if (q == std::string("normal_stress_top")) add_load_target(col, f);
         if (lattice) f.caption += std::string(" Note: ") + kLatticeStressNote + ".";
         if (!not_fitted.empty()) {
             f.caption += " No power law:";

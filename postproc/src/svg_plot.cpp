@@ -253,6 +253,10 @@ std::vector<Tick> log_ticks(double lo, double hi) {
             ticks.push_back({v, label});
         }
     }
+    // Fewer than three labels (1300 to 6000 Pa: 2000 and 5000): label every mantissa.
+    if (labels < 3)
+        for (auto& t : ticks)
+            if (t.label.empty()) t.label = num(t.value, 6), ++labels;
     // A narrow span (1.2 to 3.5 m/s) may hold only two mantissas: add the halves (1.5, 2.5).
     if (labels < 3) {
         for (int k = k0; k <= k1; ++k)
@@ -289,6 +293,16 @@ std::string render_svg(const Figure& f) {
         xt = m.x.log ? log_ticks(m.x.lo, m.x.hi) : linear_ticks(m.x.lo, m.x.hi);
     }
     yt = m.y.log ? log_ticks(m.y.lo, m.y.hi) : linear_ticks(m.y.lo, m.y.hi);
+    // A y label closer than a text line to the one below it (4500 under 5000 on a narrow log axis) is dropped; its
+    // tick stays, as a minor one.
+    double last_y = std::numeric_limits<double>::infinity();
+    for (auto& t : yt) {
+        if (t.label.empty()) continue;
+        if (last_y - m.py(t.value) < 18)
+            t.label.clear();
+        else
+            last_y = m.py(t.value);
+    }
     out += "<g stroke=\"#e3e3e3\" stroke-width=\"1\">";
     for (const auto& t : xt)
         if (!t.label.empty() && f.x.categories.empty())

@@ -91,6 +91,10 @@ BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) 
         BOOST_TEST(row.at("a").empty(), q);
         BOOST_TEST(row.at("note").find("load control") != std::string::npos, row.at("note"));
     }
+    // The target drawn in the top-wall figure, said in its caption.
+    const std::string top = test::slurp(s.o.results_root / "report" / "plots" / "stress_normal_stress_top.svg");
+    BOOST_TEST(top.find(">load target</text>") != std::string::npos);
+    BOOST_TEST(md.find("Black dashed: the load target of the case.") != std::string::npos);
     const auto tau = test::read_metrics_row(metrics, "exponent", "all", "shear_stress_bottom", "continuum", "");
     BOOST_TEST(std::stod(tau.at("a")) == 2.0, boost::test_tools::tolerance(1e-9));
 }
