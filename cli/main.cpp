@@ -52,10 +52,14 @@ CLI::Validator integer_in(std::int64_t lo, std::int64_t hi, std::string what, st
         shown.empty() ? fmt::format("{} to {}", lo, hi) : shown);
 }
 
-void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
+void add_point(CLI::App* sub, Args& a) {
     sub->add_option("--point", a.opt.point,
                     "only this operating point, e.g. U2.0 (default: every point; `granlub check CASE` lists the ids)")
         ->type_name("ID");
+}
+
+void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
+    add_point(sub, a);
     sub->add_flag("--force", a.opt.force,
                   "recompute points whose results are complete and current (default: off, such results are kept)");
     sub->add_flag("--full", a.opt.full,
@@ -106,6 +110,7 @@ int main(int argc, char** argv) {
     if (granlub::cli::have_compare()) {
         compare = app.add_subcommand("compare", "compare every solver's results for a case: results/report/");
         add_case(compare, a);
+        add_point(compare, a);  // the report of one point (README: compare cases/jasti2006 --point U2.0_R0.25)
     }
 
     auto* run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");

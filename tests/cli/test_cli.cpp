@@ -99,6 +99,8 @@ BOOST_AUTO_TEST_CASE(every_option_says_its_default) {
     BOOST_TEST(help.find("--threads N") != std::string::npos, help);
     BOOST_TEST(help.find("--results DIR") != std::string::npos, help);
     BOOST_TEST(help.find("INT:INT") == std::string::npos, help);
+    if (top.find("\n  compare") != std::string::npos)
+        BOOST_TEST(run(exe + " compare --help").text.find("--point ID") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(keys_are_printed_from_their_declarations) {
