@@ -8,75 +8,66 @@
 
 namespace granlub::postproc {
 
-Report& Report::heading(std::string t, int level) {
+namespace {
+Block block_of(Block::Kind kind, std::string text = "") {
     Block b;
-    b.kind = Block::Kind::Heading;
-    b.text = std::move(t);
-    b.level = level;
-    blocks.push_back(std::move(b));
+    b.kind = kind;
+    b.text = std::move(text);
+    return b;
+}
+}  // namespace
+
+Report& Report::heading(std::string t, int level) {
+    blocks.push_back(block_of(Block::Kind::Heading, std::move(t)));
+    blocks.back().level = level;
     return *this;
 }
 Report& Report::text(std::string t) {
-    Block b;
-    b.kind = Block::Kind::Text;
-    b.text = std::move(t);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Text, std::move(t)));
     return *this;
 }
 Report& Report::table(Table t) {
-    Block b;
-    b.kind = Block::Kind::Table;
-    b.table = std::move(t);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Table));
+    blocks.back().table = std::move(t);
     return *this;
 }
 Report& Report::figures(std::vector<FigureRef> f) {
-    Block b;
-    b.kind = Block::Kind::Figures;
-    b.figures = std::move(f);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Figures));
+    blocks.back().figures = std::move(f);
     return *this;
 }
 Report& Report::pre(std::string t) {
-    Block b;
-    b.kind = Block::Kind::Pre;
-    b.text = std::move(t);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Pre, std::move(t)));
     return *this;
 }
 Report& Report::links(std::vector<std::pair<std::string, std::string>> l) {
-    Block b;
-    b.kind = Block::Kind::Links;
-    b.links = std::move(l);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Links));
+    blocks.back().links = std::move(l);
     return *this;
 }
-
 Report& Report::fold(std::string summary, bool open) {
-    Block b;
-    b.kind = Block::Kind::FoldBegin;
-    b.text = std::move(summary);
-    b.open = open;
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::FoldBegin, std::move(summary)));
+    blocks.back().open = open;
     return *this;
 }
 Report& Report::end_fold() {
-    Block b;
-    b.kind = Block::Kind::FoldEnd;
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::FoldEnd));
     return *this;
 }
 
 std::string heading_id(const std::string& text) {
-    std::string id = "s-";
+    std::string slug;
+    bool dash = false;  // a run of separators becomes one '-'
     for (unsigned char ch : text) {
-        if (std::isalnum(ch))
-            id += static_cast<char>(std::tolower(ch));
-        else if (ch < 0x80 && id.back() != '-')
-            id += '-';  // non-ASCII (ν, σ) is left out
+        if (std::isalnum(ch)) {
+            if (dash && !slug.empty()) slug.push_back('-');
+            slug.push_back(static_cast<char>(std::tolower(ch)));
+            dash = false;
+        } else if (ch < 0x80) {
+            dash = true;  // non-ASCII (ν, σ) is left out
+        }
     }
-    while (id.back() == '-') id.pop_back();
-    return id;
+    return fmt::format("s-{}", slug);
 }
 
 namespace {
@@ -192,7 +183,7 @@ std::string render_markdown(const Report& r) {
             case Block::Kind::Pre: out += "```\n" + b.text + (b.text.ends_with('\n') ? "" : "\n") + "```\n\n"; break;
             case Block::Kind::Table: {
                 out += "|";
-                for (const auto& h : b.table.header) out += " " + md_escape(h) + " |";
+                for (const auto& h : b.table.header) out += fmt::format(" {} |", md_escape(h));
                 out += "\n|";
                 for (std::size_t i = 0; i < b.table.header.size(); ++i) out += "---|";
                 out += "\n";
