@@ -165,6 +165,7 @@ std::vector<Figure> stress_figures(const Collection& col) {
         f.y.log = true;
         std::vector<std::string> not_fitted;
         bool controlled = false, lattice = false;
+        std::size_t short_groups = 0;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
                 // The automaton's "stresses" are lattice analogues: said in the legend, beside the markers.
@@ -181,6 +182,8 @@ std::vector<Figure> stress_figures(const Collection& col) {
                 const StressFit fit = stress_fit(col, groups[g], solver, q);
                 if (controlled_stress(groups[g], q))
                     controlled = true;
+                else if (groups[g].points.size() < static_cast<std::size_t>(kMinFitPoints))
+                    ++short_groups;  // one sentence for all of them, not one per solver
                 else if (fit.steady_points + fit.other_points > 0 && !fit.fit)
                     not_fitted.push_back(fit.steady_points < kMinFitPoints
                                              ? fmt::format("{} has {} steady point{} (a fit needs {})",
@@ -208,6 +211,13 @@ std::vector<Figure> stress_figures(const Collection& col) {
         if (controlled)
             f.caption += " Under load control this normal stress follows the load (the control variable): not fitted.";
         if (q == std::string("normal_stress_top")) add_load_target(col, f);
+        const std::size_t short_count = short_groups / std::max<std::size_t>(1, col.solvers.size());
+        if (short_count == groups.size())
+            f.caption += fmt::format(" No power law: no group of points that differ only in speed has {} speeds.",
+                                     kMinFitPoints);
+        else if (short_count > 0)
+            f.caption += fmt::format(" No power law for {} of the {} speed groups (fewer than {} speeds).", short_count,
+                                     groups.size(), kMinFitPoints);
         if (lattice) f.caption += std::string(" Note: ") + kLatticeStressNote + ".";
         if (!not_fitted.empty()) {
             f.caption += " No power law:";

@@ -331,6 +331,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     ex.header = {"solver", "speed group"};
     for (const char* q : kStressOutputs) ex.header.push_back(std::string("n, ") + short_label(q));
     for (const auto& group : speed_groups(col.points)) {
+        if (group.points.size() < static_cast<std::size_t>(kMinFitPoints)) continue;  // never fittable
         const std::string g = group.label.empty() ? "all" : group.label;
         for (const auto& s : col.solvers) {
             std::vector<Cell> row{{s, ""}, {g, ""}};
@@ -349,8 +350,8 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
         }
     }
     if (ex.rows.empty())
-        rep.text(fmt::format("No stress–speed exponent: it needs at least {} steady results at two or more speeds "
-                             "from the same solver.",
+        rep.text(fmt::format("No stress–speed exponent: it needs at least {} steady results from the same solver at "
+                             "as many speeds, with everything else equal.",
                              kMinFitPoints));
     else
         rep.table(std::move(ex));

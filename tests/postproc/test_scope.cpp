@@ -27,11 +27,11 @@ std::string md_row(const std::string& md, const std::string& section, const std:
 constexpr const char* kScope = "### What each solver's numbers mean";
 constexpr const char* kKey = "### Key numbers";
 
-// The same synthetic case with [operating] control = "load" (target 1000 Pa).
-test::SyntheticCase load_case_of(const std::string& name) {
+// The synthetic case with `from` replaced by `to` in its case.toml.
+test::SyntheticCase edited_case(const std::string& name, const std::string& from, const std::string& to) {
     auto s = test::make_case(name);
     std::string text = test::slurp(s.dir / "case.toml");
-    text.replace(text.find("control = \"fill\""), 16, "control = \"load\"");
+    text.replace(text.find(from), from.size(), to);
     std::ofstream(s.dir / "case.toml") << text;
     s.c = load_case(s.dir, Schema::common());
     return s;
@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
 }
 
 BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) {
-    auto s = load_case_of("scope_load");
+    auto s = edited_case("scope_load", "control = \"fill\"", "control = \"load\"");  // target 1000 Pa
     test::write_solver(s, "continuum");
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
@@ -97,6 +97,18 @@ BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) 
     BOOST_TEST(md.find("Black dashed: the load target of the case.") != std::string::npos);
     const auto tau = test::read_metrics_row(metrics, "exponent", "all", "shear_stress_bottom", "continuum", "");
     BOOST_TEST(std::stod(tau.at("a")) == 2.0, boost::test_tools::tolerance(1e-9));
+}
+
+// Two speeds can never give a fit: one sentence says so, no per-solver list, no exponent table.
+BOOST_AUTO_TEST_CASE(too_few_speeds_say_so_once) {
+    auto s = edited_case("scope_two_speeds", "speed = [1.0, 2.0, 4.0]", "speed = [1.0, 2.0]");
+    for (const char* solver : {"continuum", "dem"}) test::write_solver(s, solver);
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
+    BOOST_TEST(md.find("No power law: no group of points that differ only in speed has 3 speeds.") != std::string::npos);
+    BOOST_TEST(md.find("has 2 steady points (a fit needs 3)") == std::string::npos);
+    BOOST_TEST(md.find("| solver | speed group |") == std::string::npos);
+    BOOST_TEST(md.find("No stress–speed exponent") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
