@@ -315,7 +315,8 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
         f.series.push_back(std::move(target));
         f.caption += " Black hollow triangles: the fill target ν/ν_max of the case.";
     }
-    if (std::any_of(col.points.begin(), col.points.end(), [](const OperatingPoint* p) { return p->control == Control::Load; }))
+    const auto load = [](const OperatingPoint* p) { return p->control == Control::Load; };
+    if (std::any_of(col.points.begin(), col.points.end(), load))
         f.caption += " Under load control ν̄ is a result (the gap moves or the model solves for it), not a target.";
     note_unsteady(f);
     return f;

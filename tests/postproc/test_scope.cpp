@@ -105,7 +105,8 @@ BOOST_AUTO_TEST_CASE(too_few_speeds_say_so_once) {
     for (const char* solver : {"continuum", "dem"}) test::write_solver(s, solver);
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
-    BOOST_TEST(md.find("No power law: no group of points that differ only in speed has 3 speeds.") != std::string::npos);
+    BOOST_TEST(md.find("No power law: no group of points that differ only in speed has 3 speeds.") !=
+               std::string::npos);
     BOOST_TEST(md.find("has 2 steady points (a fit needs 3)") == std::string::npos);
     BOOST_TEST(md.find("| solver | speed group |") == std::string::npos);
     BOOST_TEST(md.find("No stress–speed exponent") != std::string::npos);
