@@ -31,12 +31,15 @@ struct Args {
 };
 
 void add_case(CLI::App* sub, Args& a) {
-    sub->add_option("CASE", a.case_path, "case directory (holding case.toml) or a case .toml file")->required();
-    sub->add_option("--results", a.results, "results folder (default: CASE/results)");
+    sub->add_option("CASE", a.case_path, "case directory (holding case.toml) or a case .toml file")
+        ->required()
+        ->type_name("DIR|FILE");
+    sub->add_option("--results", a.results, "results folder (default: CASE/results)")->type_name("DIR");
 }
 
 // An integer option in [lo, hi], parsed exactly: no wrap-around of -1 into 2^64 - 1, no 1e23.
-CLI::Validator integer_in(std::int64_t lo, std::int64_t hi, std::string what) {
+// `shown` is the range as --help prints it (default "lo to hi").
+CLI::Validator integer_in(std::int64_t lo, std::int64_t hi, std::string what, std::string shown = "") {
     return CLI::Validator(
         [lo, hi, what](std::string& text) -> std::string {
             std::int64_t v = 0;
@@ -46,21 +49,36 @@ CLI::Validator integer_in(std::int64_t lo, std::int64_t hi, std::string what) {
                 return fmt::format("'{}' is not {} (allowed: an integer from {} to {})", text, what, lo, hi);
             return "";
         },
-        fmt::format("INT in [{}, {}]", lo, hi));
+        shown.empty() ? fmt::format("{} to {}", lo, hi) : shown);
+}
+
+void add_point(CLI::App* sub, Args& a) {
+    sub->add_option("--point", a.opt.point,
+                    "only this operating point, e.g. U2.0 (default: every point; `granlub check CASE` lists the ids)")
+        ->type_name("ID");
 }
 
 void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
-    sub->add_option("--point", a.opt.point, "only this operating point (see `granlub check CASE` for ids)");
-    sub->add_flag("--force", a.opt.force, "recompute points whose results are complete and current");
-    sub->add_flag("--full", a.opt.full, "full-fidelity run lengths (the case's *_full keys)");
-    sub->add_flag("--vtk", a.opt.vtk, "also write ParaView files");
+    add_point(sub, a);
+    sub->add_flag("--force", a.opt.force,
+                  "recompute points whose results are complete and current (default: off, such results are kept)");
+    sub->add_flag("--full", a.opt.full,
+                  "full-fidelity run lengths from the case's *_full keys, e.g. [dem] time_full in s of simulated "
+                  "time (default: off, the quick lengths: [dem] time, [automaton] steps ...)");
+    sub->add_flag("--vtk", a.opt.vtk, "also write ParaView (VTK) files where the solver supports it (default: off)");
     if (stochastic) {
-        sub->add_option("--seed", a.seed, "random seed, as the case key seed (default: the case's seed)")
-            ->check(integer_in(0, std::numeric_limits<std::int64_t>::max(), "a seed"));
-        sub->add_option("--threads", a.opt.threads, "worker threads (default: all cores)")
+        sub->add_option("--seed", a.seed,
+                        "random seed, a whole number (default: each solver's [SOLVER] seed key of the case)")
+            ->type_name("N")
+            ->check(integer_in(0, std::numeric_limits<std::int64_t>::max(), "a seed", "0 to 2^63 - 1"));
+        sub->add_option("--threads", a.opt.threads, "worker threads, a count (default: 0 = all cores)")
+            ->type_name("N")
             ->check(integer_in(0, 1024, "a thread count"));
     }
-    if (mpi) sub->add_option("--np", a.opt.np, "MPI ranks for LIGGGHTS (default: 1)")->check(integer_in(1, 4096, "a rank count"));
+    if (mpi)
+        sub->add_option("--np", a.opt.np, "MPI ranks for LIGGGHTS, a count (default: 1)")
+            ->type_name("N")
+            ->check(integer_in(1, 4096, "a rank count"));
 }
 
 }  // namespace
@@ -77,7 +95,8 @@ int main(int argc, char** argv) {
 
     auto* keys = app.add_subcommand("keys", "print every case key (type, default, range, unit, meaning) as Markdown");
     std::string keys_section;
-    keys->add_option("SECTION", keys_section, "only this section, e.g. continuum");
+    keys->add_option("SECTION", keys_section, "only this section, e.g. continuum (default: every section)")
+        ->type_name("NAME");
 
     std::vector<std::pair<CLI::App*, const granlub::cli::SolverModule*>> solver_cmds;
     for (const auto& m : granlub::cli::solver_modules()) {
@@ -91,6 +110,7 @@ int main(int argc, char** argv) {
     if (granlub::cli::have_compare()) {
         compare = app.add_subcommand("compare", "compare every solver's results for a case: results/report/");
         add_case(compare, a);
+        add_point(compare, a);  // the report of one point (README: compare cases/jasti2006 --point U2.0_R0.25)
     }
 
     auto* run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");
@@ -98,7 +118,9 @@ int main(int argc, char** argv) {
     add_run_options(run, a, true, true);
     std::vector<std::string> names;
     for (const auto& m : granlub::cli::solver_modules()) names.push_back(m.name);
-    run->add_option("--solvers", a.solvers, fmt::format("solvers to run (default: all: {})", fmt::join(names, ",")))
+    run->add_option("--solvers", a.solvers,
+                    fmt::format("solvers to run, comma-separated (default: all: {})", fmt::join(names, ",")))
+        ->type_name("LIST")
         ->delimiter(',')
         ->check(CLI::IsMember(names));
 

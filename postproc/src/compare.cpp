@@ -129,7 +129,7 @@ int compare(const Case& c, const RunOptions& o) {
 
 std::string summary_table(const Case& c, const RunOptions& o) {
     const Collection col = collect(c, o);
-    Table t = key_numbers(col);
+    Table t = key_numbers(c, col);
     // Rows for what is not usable, so the table also says what failed; then why, under the table.
     std::string why;
     for (const auto& s : col.solvers)

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 
 #include <fmt/format.h>
 
 #include "metrics.h"
+#include "scope.h"
 #include "stats.h"
 #include "text.h"
 
@@ -73,6 +75,25 @@ void note_unsteady(Figure& f) {
         f.caption += " Hollow faded markers and dotted lines are results that are NOT steady (the legend says "
                      "which: transient, dt-unconverged or status unknown); shown for information only, left out of "
                      "fits and differences.";
+}
+
+// Under load control the top plate is held at the target stress: drawn as a black dotted line at
+// the target over the speeds of the load-controlled points (one line per target value).
+void add_load_target(const Collection& col, Figure& f) {
+    std::map<double, std::vector<double>> speeds;
+    for (const OperatingPoint* p : col.points)
+        if (p->control == Control::Load && p->normal_stress > 0) speeds[p->normal_stress].push_back(p->speed);
+    for (const auto& [target, u] : speeds) {
+        Series line;
+        line.style = 6;  // black
+        line.dashed = true;
+        line.label = speeds.size() == 1 ? "load target" : fmt::format("load target {} Pa", num(target));
+        const auto [lo, hi] = std::minmax_element(u.begin(), u.end());
+        line.x = {*lo / 1.1, *hi * 1.1};
+        line.y = {target, target};
+        f.series.push_back(std::move(line));
+    }
+    if (!speeds.empty()) f.caption += " Black dashed: the load target of the case.";
 }
 
 }  // namespace
@@ -143,9 +164,15 @@ std::vector<Figure> stress_figures(const Collection& col) {
         f.y.label = stress_label(q);
         f.y.log = true;
         std::vector<std::string> not_fitted;
+        bool controlled = false, lattice = false;
+        std::size_t short_groups = 0;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
-                auto series = points_by_state(col, solver, groups[g].points, with_group(solver, groups[g].label),
+                // The automaton's "stresses" are lattice analogues: said in the legend, beside the markers.
+                const std::string label = with_group(lattice_stresses(solver) ? solver + " (lattice analogue)" : solver,
+                                                     groups[g].label);
+                lattice = lattice || (lattice_stresses(solver) && col.any_usable(solver));
+                auto series = points_by_state(col, solver, groups[g].points, label,
                                               [&](const Run& r, const OperatingPoint& p, Series& s) {
                                                   s.x.push_back(p.speed);
                                                   s.y.push_back(*r.scalar(q));
@@ -153,7 +180,11 @@ std::vector<Figure> stress_figures(const Collection& col) {
                                               });
                 for (auto& s : series) s.open = s.open || g % 2 == 1;
                 const StressFit fit = stress_fit(col, groups[g], solver, q);
-                if (fit.steady_points + fit.other_points > 0 && !fit.fit)
+                if (controlled_stress(groups[g], q))
+                    controlled = true;
+                else if (groups[g].points.size() < static_cast<std::size_t>(kMinFitPoints))
+                    ++short_groups;  // one sentence for all of them, not one per solver
+                else if (fit.steady_points + fit.other_points > 0 && !fit.fit)
                     not_fitted.push_back(fit.steady_points < kMinFitPoints
                                              ? fmt::format("{} has {} steady point{} (a fit needs {})",
                                                            with_group(solver, groups[g].label), fit.steady_points,
@@ -177,6 +208,17 @@ std::vector<Figure> stress_figures(const Collection& col) {
                 if (!line.x.empty()) f.series.push_back(std::move(line));
             }
         }
+        if (controlled)
+            f.caption += " Under load control this normal stress follows the load (the control variable): not fitted.";
+        if (q == std::string("normal_stress_top")) add_load_target(col, f);
+        const std::size_t short_count = short_groups / std::max<std::size_t>(1, col.solvers.size());
+        if (short_count == groups.size())
+            f.caption += fmt::format(" No power law: no group of points that differ only in speed has {} speeds.",
+                                     kMinFitPoints);
+        else if (short_count > 0)
+            f.caption += fmt::format(" No power law for {} of the {} speed groups (fewer than {} speeds).", short_count,
+                                     groups.size(), kMinFitPoints);
+        if (lattice) f.caption += std::string(" Note: ") + kLatticeStressNote + ".";
         if (!not_fitted.empty()) {
             f.caption += " No power law:";
             for (std::size_t i = 0; i < not_fitted.size(); ++i) f.caption += (i ? "; " : " ") + not_fitted[i];
@@ -201,7 +243,7 @@ std::vector<Figure> slip_figures(const Collection& col) {
         const std::string wall = bottom ? "moving wall" : "stationary wall";
         Figure f;
         f.name = bottom ? "slip_bottom" : "slip_top";
-        f.title = "Slip at the " + wall;
+        f.title = "Slip at the " + wall + (swept ? " against roughness" : " against wall speed");
         f.caption = (bottom ? "Slip (U − u(0)) / U" : "Slip u(H) / U") +
                     (swept ? std::string(" against the ") + wall + "'s roughness R"
                            : fmt::format(" against U (the case has one roughness, R = {})",
@@ -240,7 +282,7 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
     f.name = "solid_fraction";
     f.title = "Mean solid fraction";
     f.caption = "Mean solid fraction over the gap divided by each model's own ν_max, per point "
-                "(bars ±1 standard error); black: the fill target ν/ν_max of the case.";
+                "(bars ±1 standard error).";
     f.x.label = "operating point";
     f.y.label = "mean ν / ν_max";
     const std::size_t n = col.solvers.size();
@@ -268,7 +310,14 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
         target.x.push_back(static_cast<double>(i));
         target.y.push_back(col.points[i]->solid_fraction / case_nu_max);
     }
-    if (!target.x.empty()) f.series.push_back(std::move(target));
+    // Only the points under fill control have a target; under load control ν̄ is a result.
+    if (!target.x.empty()) {
+        f.series.push_back(std::move(target));
+        f.caption += " Black hollow triangles: the fill target ν/ν_max of the case.";
+    }
+    const auto load = [](const OperatingPoint* p) { return p->control == Control::Load; };
+    if (std::any_of(col.points.begin(), col.points.end(), load))
+        f.caption += " Under load control ν̄ is a result (the gap moves or the model solves for it), not a target.";
     note_unsteady(f);
     return f;
 }

@@ -54,7 +54,7 @@ std::string gnuplot_script(const Figure& f) {
     if (f.y.log) out += "set logscale y\n";
     // The same frame and legend corner as the report's SVG.
     const Layout l = layout(f);
-    constexpr const char* kKey[] = {"top right", "top left", "bottom right", "bottom left"};
+    constexpr const char* kKey[] = {"top right", "top left", "bottom right", "bottom left", "below"};
     out += fmt::format("set key {}\n", kKey[l.legend_corner]);
     if (!f.x.categories.empty()) {
         out += "set xtics (";

@@ -86,6 +86,13 @@ std::vector<PointGroup> roughness_groups(const std::vector<const OperatingPoint*
     return g;
 }
 
+bool controlled_stress(const PointGroup& group, const std::string& q) {
+    // The top plate carries the load; the bottom wall carries the load plus the grains' weight:
+    // both follow the control, so a power law in U would fit the case, not the model.
+    return (q == "normal_stress_top" || q == "normal_stress_bottom") && !group.points.empty() &&
+           group.points.front()->control == Control::Load;
+}
+
 StressFit stress_fit(const Collection& col, const PointGroup& group, const std::string& solver, const std::string& q) {
     StressFit out;
     std::vector<double> u, s;
@@ -102,7 +109,9 @@ StressFit stress_fit(const Collection& col, const PointGroup& group, const std::
         s.push_back(*r.scalar(q));
         se.push_back(r.scalar_stderr(q));
     }
-    if (out.steady_points < kMinFitPoints)
+    if (controlled_stress(group, q))
+        out.why_not = "not fitted: the load control sets it (the control variable, not a result)";
+    else if (out.steady_points < kMinFitPoints)
         out.why_not = fmt::format("not fitted: {} steady point{} (needs {})", out.steady_points,
                                   out.steady_points == 1 ? "" : "s", kMinFitPoints);
     else if (!(out.fit = power_fit(u, s, se)))

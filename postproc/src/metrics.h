@@ -45,6 +45,9 @@ struct StressFit {
     int steady_points = 0, other_points = 0;  // usable points in the group: steady, and not steady
     std::string why_not;                      // when no fit: "not fitted: 2 steady points (needs 3)"
 };
+// Under load control the normal stresses are the control variable (the top one is held at the
+// target): they are never fitted.
+bool controlled_stress(const PointGroup& group, const std::string& q);
 StressFit stress_fit(const Collection& col, const PointGroup& group, const std::string& solver, const std::string& q);
 
 std::vector<MetricRow> compute_metrics(const Collection& col);

@@ -1,53 +1,73 @@
 #include "report.h"
 
+#include <cctype>
+
 #include <fmt/format.h>
 
 #include "text.h"
 
 namespace granlub::postproc {
 
-Report& Report::heading(std::string t, int level) {
+namespace {
+Block block_of(Block::Kind kind, std::string text = "") {
     Block b;
-    b.kind = Block::Kind::Heading;
-    b.text = std::move(t);
-    b.level = level;
-    blocks.push_back(std::move(b));
+    b.kind = kind;
+    b.text = std::move(text);
+    return b;
+}
+}  // namespace
+
+Report& Report::heading(std::string t, int level) {
+    blocks.push_back(block_of(Block::Kind::Heading, std::move(t)));
+    blocks.back().level = level;
     return *this;
 }
 Report& Report::text(std::string t) {
-    Block b;
-    b.kind = Block::Kind::Text;
-    b.text = std::move(t);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Text, std::move(t)));
     return *this;
 }
 Report& Report::table(Table t) {
-    Block b;
-    b.kind = Block::Kind::Table;
-    b.table = std::move(t);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Table));
+    blocks.back().table = std::move(t);
     return *this;
 }
 Report& Report::figures(std::vector<FigureRef> f) {
-    Block b;
-    b.kind = Block::Kind::Figures;
-    b.figures = std::move(f);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Figures));
+    blocks.back().figures = std::move(f);
     return *this;
 }
 Report& Report::pre(std::string t) {
-    Block b;
-    b.kind = Block::Kind::Pre;
-    b.text = std::move(t);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Pre, std::move(t)));
     return *this;
 }
 Report& Report::links(std::vector<std::pair<std::string, std::string>> l) {
-    Block b;
-    b.kind = Block::Kind::Links;
-    b.links = std::move(l);
-    blocks.push_back(std::move(b));
+    blocks.push_back(block_of(Block::Kind::Links));
+    blocks.back().links = std::move(l);
     return *this;
+}
+Report& Report::fold(std::string summary, bool open) {
+    blocks.push_back(block_of(Block::Kind::FoldBegin, std::move(summary)));
+    blocks.back().open = open;
+    return *this;
+}
+Report& Report::end_fold() {
+    blocks.push_back(block_of(Block::Kind::FoldEnd));
+    return *this;
+}
+
+std::string heading_id(const std::string& text) {
+    std::string slug;
+    bool dash = false;  // a run of separators becomes one '-'
+    for (unsigned char ch : text) {
+        if (std::isalnum(ch)) {
+            if (dash && !slug.empty()) slug.push_back('-');
+            slug.push_back(static_cast<char>(std::tolower(ch)));
+            dash = false;
+        } else if (ch < 0x80) {
+            dash = true;  // non-ASCII (ν, σ) is left out
+        }
+    }
+    return fmt::format("s-{}", slug);
 }
 
 namespace {
@@ -72,6 +92,12 @@ figure { margin: 0; max-width: 540px; }
 figure svg { width: 100%; height: auto; border: 1px solid #eee; }
 figcaption { font-size: .85em; color: #444; }
 pre { background: #f7f7f7; padding: .8em; overflow-x: auto; font-size: .85em; }
+nav { position: sticky; top: 0; background: #ffffffee; border-bottom: 1px solid #ccc; padding: .4em 0;
+      display: flex; flex-wrap: wrap; font-size: .9em; z-index: 1; }
+nav a { margin-right: 1.2em; color: #0072B2; text-decoration: none; white-space: nowrap; }
+h2 { scroll-margin-top: 2.5em; }
+details { margin: .4em 0 .8em; }
+summary { cursor: pointer; font-weight: bold; font-size: 1.05em; padding: .2em 0; }
 )";
 
 std::string html_cell(const Cell& c, const char* tag) {
@@ -96,11 +122,24 @@ std::string render_html(const Report& r) {
                       "<meta charset=\"utf-8\"/>\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>\n";
     out += fmt::format("<title>{}</title>\n<style>{}</style>\n</head>\n<body>\n<h1>{}</h1>\n", xml_escape(r.title),
                        kStyle, xml_escape(r.title));
+    out += "<nav>";
+    for (const auto& b : r.blocks)
+        if (b.kind == Block::Kind::Heading && b.level == 2)
+            out += fmt::format("<a href=\"#{}\">{}</a>", heading_id(b.text), xml_escape(b.text));
+    out += "</nav>\n";
     for (const auto& b : r.blocks) {
         switch (b.kind) {
             case Block::Kind::Heading:
-                out += fmt::format("<h{0}>{1}</h{0}>\n", b.level, xml_escape(b.text));
+                if (b.level == 2)
+                    out += fmt::format("<h2 id=\"{}\">{}</h2>\n", heading_id(b.text), xml_escape(b.text));
+                else
+                    out += fmt::format("<h{0}>{1}</h{0}>\n", b.level, xml_escape(b.text));
                 break;
+            case Block::Kind::FoldBegin:
+                out += fmt::format("<details{}>\n<summary>{}</summary>\n", b.open ? " open=\"open\"" : "",
+                                   xml_escape(b.text));
+                break;
+            case Block::Kind::FoldEnd: out += "</details>\n"; break;
             case Block::Kind::Text: out += fmt::format("<p>{}</p>\n", xml_escape(b.text)); break;
             case Block::Kind::Pre: out += fmt::format("<pre>{}</pre>\n", xml_escape(b.text)); break;
             case Block::Kind::Table:
@@ -138,11 +177,13 @@ std::string render_markdown(const Report& r) {
     for (const auto& b : r.blocks) {
         switch (b.kind) {
             case Block::Kind::Heading: out += fmt::format("{} {}\n\n", std::string(static_cast<std::size_t>(b.level), '#'), b.text); break;
+            case Block::Kind::FoldBegin: out += fmt::format("#### {}\n\n", b.text); break;
+            case Block::Kind::FoldEnd: break;
             case Block::Kind::Text: out += b.text + "\n\n"; break;
             case Block::Kind::Pre: out += "```\n" + b.text + (b.text.ends_with('\n') ? "" : "\n") + "```\n\n"; break;
             case Block::Kind::Table: {
                 out += "|";
-                for (const auto& h : b.table.header) out += " " + md_escape(h) + " |";
+                for (const auto& h : b.table.header) out += fmt::format(" {} |", md_escape(h));
                 out += "\n|";
                 for (std::size_t i = 0; i < b.table.header.size(); ++i) out += "---|";
                 out += "\n";

@@ -25,9 +25,11 @@ struct FigureRef {
 };
 
 struct Block {
-    enum class Kind { Heading, Text, Table, Figures, Pre, Links } kind = Kind::Text;
+    // FoldBegin .. FoldEnd: a section the reader opens (HTML <details>; Markdown a heading).
+    enum class Kind { Heading, Text, Table, Figures, Pre, Links, FoldBegin, FoldEnd } kind = Kind::Text;
     int level = 2;                                   // Heading
-    std::string text;                                // Heading, Text, Pre
+    bool open = false;                               // FoldBegin: shown unfolded
+    std::string text;                                // Heading, Text, Pre, FoldBegin (its summary)
     Table table;                                     // Table
     std::vector<FigureRef> figures;                  // Figures (shown side by side)
     std::vector<std::pair<std::string, std::string>> links;  // Links: (label, relative href)
@@ -43,9 +45,14 @@ struct Report {
     Report& figures(std::vector<FigureRef> f);
     Report& pre(std::string text);
     Report& links(std::vector<std::pair<std::string, std::string>> l);
+    Report& fold(std::string summary, bool open = false);  // until end_fold()
+    Report& end_fold();
 };
 
-std::string render_html(const Report& r);      // one self-contained, well-formed (XHTML-style) file
+// One self-contained, well-formed (XHTML-style) file; a navigation bar links every level-2 heading
+// (id "s-" + its slug).
+std::string render_html(const Report& r);
+std::string heading_id(const std::string& text);  // "Wall stresses against speed" -> "s-wall-stresses-against-speed"
 std::string render_markdown(const Report& r);  // figures as links to plots/<name>.svg
 
 }  // namespace granlub::postproc

@@ -1,10 +1,13 @@
 #include "report_builder.h"
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 #include <fmt/format.h>
 
 #include "granlub/results.h"
+#include "scope.h"
 #include "text.h"
 
 namespace granlub::postproc {
@@ -14,6 +17,10 @@ std::string value_pm(const std::optional<double>& v, const std::optional<double>
     if (!v) return "";
     if (se && *se > 0) return fmt::format("{} ± {}", num(*v, digits), num(*se, 2));
     return num(*v, digits);
+}
+
+std::optional<double> scaled(const std::optional<double>& v, double factor) {
+    return v ? std::optional(*v * factor) : std::nullopt;
 }
 
 std::string list_text(const std::vector<std::string>& v) {
@@ -38,10 +45,12 @@ const char* short_label(const std::string& key) {
 }
 
 void difference_tables(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
+    bool first_fold = true;  // the first point unfolded, the others one click away
     for (const OperatingPoint* p : col.points) {
         const auto runs = col.usable(p->id);
         if (runs.size() < 2) continue;
-        rep.heading(fmt::format("Point {}", p->id), 3);
+        rep.fold(fmt::format("Point {}", p->id), first_fold);
+        first_fold = false;
         Table prof;
         prof.header = {"solvers (a − b)"};
         for (const auto& q : kProfileQuantities) prof.header.push_back(std::string(q.short_label) + ": RMS (max at y/H; noise)");
@@ -99,6 +108,72 @@ void difference_tables(Report& rep, const Collection& col, const std::vector<Met
                  "that is not steady is not compared (“—, transient”): a transient's difference is not a model "
                  "difference.");
         rep.table(std::move(sc));
+        rep.end_fold();
+    }
+}
+
+// "key" -> text of every leaf of a JSON object, nested keys joined by '.'.
+void flatten(const nlohmann::json& j, const std::string& prefix, std::map<std::string, std::string>& out) {
+    if (j.is_object()) {
+        for (const auto& [k, v] : j.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, out);
+        return;
+    }
+    out[prefix] = j.is_string() ? j.get<std::string>() : j.dump();
+}
+
+// Who computed what: one row per run (version, time, seed, hashes), then each solver's settings
+// as a key-value table (folded), a value that differs between points given per point.
+void provenance_section(Report& rep, const Collection& col) {
+    Table prov;
+    prov.header = {"solver", "point", "granlub", "written (UTC)", "seed", "case hash", "inputs hash"};
+    for (const OperatingPoint* p : col.points)
+        for (const auto& s : col.solvers) {
+            const Run& r = col.run(s, p->id);
+            if (!r.usable()) continue;
+            const Provenance& pv = r.summary->provenance;
+            prov.rows.push_back({{s, ""},
+                                 {p->id, ""},
+                                 {pv.version, ""},
+                                 {pv.utc_time, ""},
+                                 {pv.seed ? std::to_string(*pv.seed) : "—", ""},
+                                 {pv.case_hash, "code"},
+                                 {pv.inputs_hash, "code"}});
+        }
+    rep.table(std::move(prov));
+    rep.text("Each run's full record (inputs, settings, run diagnostics) is its summary.json: "
+             "results/<solver>/<point>/summary.json.");
+    for (const auto& s : col.solvers) {
+        std::vector<std::pair<std::string, std::map<std::string, std::string>>> per_point;
+        for (const OperatingPoint* p : col.points)
+            if (const Run& r = col.run(s, p->id); r.usable()) {
+                std::map<std::string, std::string> kv;
+                flatten(r.summary->provenance.settings, "", kv);
+                per_point.emplace_back(p->id, std::move(kv));
+            }
+        if (per_point.empty()) continue;
+        std::set<std::string> keys;
+        for (const auto& [id, kv] : per_point)
+            for (const auto& [k, v] : kv) keys.insert(k);
+        Table t;
+        t.header = {"setting", "value"};
+        for (const auto& k : keys) {
+            auto value = [&](const std::map<std::string, std::string>& kv) {
+                const auto it = kv.find(k);
+                return it == kv.end() ? std::string("—") : it->second;
+            };
+            const std::string v0 = value(per_point.front().second);
+            const bool same = std::all_of(per_point.begin(), per_point.end(),
+                                          [&](const auto& pp) { return value(pp.second) == v0; });
+            std::string v = v0;
+            if (!same) {
+                v.clear();
+                for (const auto& [id, kv] : per_point) v += (v.empty() ? "" : "; ") + id + ": " + value(kv);
+            }
+            t.rows.push_back({{k, "code"}, {v, ""}});
+        }
+        rep.fold(fmt::format("Settings of {} ({} keys)", s, keys.size()));
+        rep.table(std::move(t));
+        rep.end_fold();
     }
 }
 
@@ -134,10 +209,16 @@ Table status_table(const Collection& col) {
     return t;
 }
 
-Table key_numbers(const Collection& col) {
+Table key_numbers(const Case& c, const Collection& col) {
+    // Under load control the gap and the solid fraction are results and P_top is held at the target: the
+    // table shows them (a bottom-wall σ_yy alone would read as if the fill were fixed).
+    const bool load = std::any_of(col.points.begin(), col.points.end(),
+                                  [](const OperatingPoint* p) { return p->control == Control::Load; });
     Table t;
-    t.header = {"solver", "point", "status", "ν̄/ν_max", "σ_yy bottom (Pa)", "τ_xy bottom (Pa)", "τ_xy top (Pa)",
-                "slip bottom / U", "slip top / U", "wall clock (s)"};
+    t.header = {"solver", "point", "status", "ν̄/ν_max"};
+    if (load) t.header.insert(t.header.end(), {"gap (mm)", "P_top / target"});
+    t.header.insert(t.header.end(), {"σ_yy bottom (Pa)", "τ_xy bottom (Pa)", "τ_xy top (Pa)", "slip bottom / U",
+                                     "slip top / U", "wall clock (s)"});
     for (const OperatingPoint* p : col.points) {
         for (const auto& s : col.solvers) {
             const Run& r = col.run(s, p->id);
@@ -145,8 +226,27 @@ Table key_numbers(const Collection& col) {
             // Values of a result that is not steady are shown greyed, never as results.
             const std::string cls = r.steady() ? "" : r.state_class();
             std::vector<Cell> row{{s, ""}, {p->id, ""}, {r.state_name(), r.state_class()}};
-            for (const char* q : {"nu_bar_over_numax", "normal_stress_bottom", "shear_stress_bottom", "shear_stress_top",
-                                  "slip_bottom_over_U", "slip_top_over_U"})
+            row.push_back({value_pm(r.scalar("nu_bar_over_numax"), r.scalar_stderr("nu_bar_over_numax")), cls});
+            if (load) {
+                // A solver with a fixed gap (no "gap" output) solves for ν̄ at the case's gap.
+                const bool moving = r.scalar("gap").has_value();
+                row.push_back({moving ? value_pm(scaled(r.scalar("gap"), 1e3), scaled(r.scalar_stderr("gap"), 1e3))
+                                      : num(c.cell.gap * 1e3) + " (fixed)",
+                               cls});
+                const double per = p->control == Control::Load && p->normal_stress > 0 ? 1 / p->normal_stress : 0;
+                row.push_back({lattice_stresses(s) ? "— (lattice, fixed fill)"
+                               : per > 0 ? value_pm(scaled(r.scalar("normal_stress_top"), per),
+                                                  scaled(r.scalar_stderr("normal_stress_top"), per), 3)
+                                       : "",
+                               cls});
+            }
+            // The automaton's stresses are lattice analogues: marked in every cell, not only in a footnote.
+            const char* lattice = lattice_stresses(s) ? " (lattice)" : "";
+            for (const char* q : {"normal_stress_bottom", "shear_stress_bottom", "shear_stress_top"}) {
+                const std::string v = value_pm(r.scalar(q), r.scalar_stderr(q));
+                row.push_back({v.empty() ? v : v + lattice, cls});
+            }
+            for (const char* q : {"slip_bottom_over_U", "slip_top_over_U"})
                 row.push_back({value_pm(r.scalar(q), r.scalar_stderr(q)), cls});
             const auto& run = r.summary->run;
             row.push_back({run.is_object() && run.contains("wall_clock_s") && run["wall_clock_s"].is_number()
@@ -155,6 +255,18 @@ Table key_numbers(const Collection& col) {
                            ""});
             t.rows.push_back(std::move(row));
         }
+    }
+    return t;
+}
+
+Table scope_table(const Case& c, const Collection& col) {
+    Table t;
+    t.header = {"solver", "body forces", "wall stresses", "run length"};
+    for (const auto& s : col.solvers) {
+        if (!col.any_usable(s)) continue;
+        const SolverScope sc = solver_scope(c, col, s);
+        t.rows.push_back({{s, ""}, {sc.body_forces, ""}, {sc.stresses, ""},
+                          {sc.run_length, ""}});
     }
     return t;
 }
@@ -188,7 +300,9 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
         }
     if (!problems.rows.empty()) rep.table(std::move(problems));
     rep.heading("Key numbers", 3);
-    rep.table(key_numbers(col));
+    rep.table(key_numbers(c, col));
+    rep.heading("What each solver's numbers mean", 3);
+    rep.table(scope_table(c, col));
 
     rep.heading("How to read this report");
     rep.text("Geometry: y/H = 0 is the moving wall (speed U), y/H = 1 the stationary wall. Profiles are "
@@ -206,8 +320,9 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     for (const OperatingPoint* p : col.points) {
         const auto it = figs.profiles.find(p->id);
         if (it == figs.profiles.end()) continue;
-        rep.heading(fmt::format("Point {}", p->id), 3);
+        rep.fold(fmt::format("Point {}", p->id), it == figs.profiles.find(col.points.front()->id));
         rep.figures(it->second);
+        rep.end_fold();
     }
 
     rep.heading("Wall stresses against speed");
@@ -216,6 +331,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     ex.header = {"solver", "speed group"};
     for (const char* q : kStressOutputs) ex.header.push_back(std::string("n, ") + short_label(q));
     for (const auto& group : speed_groups(col.points)) {
+        if (group.points.size() < static_cast<std::size_t>(kMinFitPoints)) continue;  // never fittable
         const std::string g = group.label.empty() ? "all" : group.label;
         for (const auto& s : col.solvers) {
             std::vector<Cell> row{{s, ""}, {g, ""}};
@@ -234,13 +350,13 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
         }
     }
     if (ex.rows.empty())
-        rep.text(fmt::format("No stress–speed exponent: it needs at least {} steady results at two or more speeds "
-                             "from the same solver.",
+        rep.text(fmt::format("No stress–speed exponent: it needs at least {} steady results from the same solver at "
+                             "as many speeds, with everything else equal.",
                              kMinFitPoints));
     else
         rep.table(std::move(ex));
 
-    rep.heading("Slip against wall roughness");
+    rep.heading("Slip at the walls");  // against roughness or speed: the figure titles say which
     rep.figures(figs.slip);
     rep.heading("Mean solid fraction");
     rep.figures(figs.solid_fraction);
@@ -252,24 +368,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     difference_tables(rep, col, metrics);
 
     rep.heading("Provenance of every run");
-    Table prov;
-    prov.header = {"solver", "point", "granlub", "written (UTC)", "seed", "inputs hash", "case hash", "run", "settings"};
-    for (const OperatingPoint* p : col.points)
-        for (const auto& s : col.solvers) {
-            const Run& r = col.run(s, p->id);
-            if (!r.usable()) continue;
-            const Provenance& pv = r.summary->provenance;
-            prov.rows.push_back({{s, ""},
-                                 {p->id, ""},
-                                 {pv.version, ""},
-                                 {pv.utc_time, ""},
-                                 {pv.seed ? std::to_string(*pv.seed) : "", ""},
-                                 {pv.inputs_hash, "code"},
-                                 {pv.case_hash, "code"},
-                                 {r.summary->run.dump(), "code"},
-                                 {pv.settings.dump(), "code"}});
-        }
-    rep.table(std::move(prov));
+    provenance_section(rep, col);
 
     rep.heading("Files");
     std::vector<std::pair<std::string, std::string>> files = {

@@ -20,9 +20,11 @@ struct ReportFigures {
 Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
                     const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files);
 
-// Key numbers per solver and point (nu_bar/nu_max, wall stresses, slip/U, wall clock); used by
-// the report and by summary_table().
-Table key_numbers(const Collection& col);
+// Key numbers per solver and point (nu_bar/nu_max, wall stresses, slip/U, wall clock; under load
+// control also the gap and P_top / target); used by the report and by summary_table().
+Table key_numbers(const Case& c, const Collection& col);
+// Per solver: the body forces it models, what its wall stresses are, how long it ran (scope.h).
+Table scope_table(const Case& c, const Collection& col);
 // Result state per solver (rows, missing solvers included) and point (columns).
 Table status_table(const Collection& col);
 

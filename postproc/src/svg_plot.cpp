@@ -181,7 +181,35 @@ int legend_corner(const Figure& f, const Mapper& m) {
             }
         if (count < best_count) best = c, best_count = count;
     }
-    return static_cast<int>(best);
+    // No corner is free of data: below the frame, where it covers nothing.
+    return best_count == 0 ? static_cast<int>(best) : kLegendBelow;
+}
+
+// The legend below the frame: as many columns as fit the figure's width.
+std::size_t below_columns(const Figure& f) {
+    const double lw = legend_size(f).first;
+    return std::max<std::size_t>(1, static_cast<std::size_t>((kWidth - 20) / lw));
+}
+std::size_t legend_entries(const Figure& f) {
+    return static_cast<std::size_t>(
+        std::count_if(f.series.begin(), f.series.end(), [](const Series& s) { return !s.label.empty(); }));
+}
+double height_of(const Figure& f, int corner) {
+    if (corner != kLegendBelow) return kHeight;
+    const std::size_t cols = below_columns(f), rows = (legend_entries(f) + cols - 1) / cols;
+    return kHeight + 8 + 18 * static_cast<double>(rows);
+}
+
+// Two neighbouring tick labels (about 7.8 px per character) would touch.
+bool labels_collide(const std::vector<Tick>& ticks, const Mapper& m) {
+    double last_right = -std::numeric_limits<double>::infinity();
+    for (const auto& t : ticks) {
+        if (t.label.empty()) continue;
+        const double half = 3.9 * static_cast<double>(t.label.rfind("1e", 0) == 0 ? 4 : utf8_length(t.label));
+        if (m.px(t.value) - half < last_right + 4) return true;
+        last_right = m.px(t.value) + half;
+    }
+    return false;
 }
 
 }  // namespace
@@ -225,6 +253,10 @@ std::vector<Tick> log_ticks(double lo, double hi) {
             ticks.push_back({v, label});
         }
     }
+    // Fewer than three labels (1300 to 6000 Pa: 2000 and 5000): label every mantissa.
+    if (labels < 3)
+        for (auto& t : ticks)
+            if (t.label.empty()) t.label = num(t.value, 6), ++labels;
     // A narrow span (1.2 to 3.5 m/s) may hold only two mantissas: add the halves (1.5, 2.5).
     if (labels < 3) {
         for (int k = k0; k <= k1; ++k)
@@ -239,15 +271,17 @@ std::vector<Tick> log_ticks(double lo, double hi) {
 
 std::string render_svg(const Figure& f) {
     Mapper m{axis_range(f.x, f.series, true), axis_range(f.y, f.series, false)};
+    const int corner = legend_corner(f, m);
+    const double height = height_of(f, corner);
     const std::string clip = f.name + "-clip";
     std::string out;
     out.reserve(16384);
     out += fmt::format(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
         "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"13\">\n",
-        kWidth, kHeight);
+        kWidth, height);
     out += fmt::format("<title>{}</title>\n", xml_escape(f.title));
-    out += fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>\n", kWidth, kHeight);
+    out += fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>\n", kWidth, height);
     out += fmt::format("<defs><clipPath id=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath></defs>\n",
                        clip, kX0, kY0, kX1 - kX0, kY1 - kY0);
 
@@ -259,6 +293,16 @@ std::string render_svg(const Figure& f) {
         xt = m.x.log ? log_ticks(m.x.lo, m.x.hi) : linear_ticks(m.x.lo, m.x.hi);
     }
     yt = m.y.log ? log_ticks(m.y.lo, m.y.hi) : linear_ticks(m.y.lo, m.y.hi);
+    // A y label closer than a text line to the one below it (4500 under 5000 on a narrow log axis) is dropped; its
+    // tick stays, as a minor one.
+    double last_y = std::numeric_limits<double>::infinity();
+    for (auto& t : yt) {
+        if (t.label.empty()) continue;
+        if (last_y - m.py(t.value) < 18)
+            t.label.clear();
+        else
+            last_y = m.py(t.value);
+    }
     out += "<g stroke=\"#e3e3e3\" stroke-width=\"1\">";
     for (const auto& t : xt)
         if (!t.label.empty() && f.x.categories.empty())
@@ -276,17 +320,19 @@ std::string render_svg(const Figure& f) {
         out += fmt::format("<line x1=\"{1}\" y1=\"{0:.2f}\" x2=\"{2}\" y2=\"{0:.2f}\"/>", m.py(t.value), kX0, kX0 + len);
     }
     out += "</g>\n<g fill=\"#222222\">";
-    for (const auto& t : xt)
-        if (!t.label.empty())
-            out += fmt::format("<text x=\"{:.2f}\" y=\"{}\" text-anchor=\"middle\">{}</text>", m.px(t.value), kY1 + 18,
-                               tick_text(t.label));
+    const bool stagger = labels_collide(xt, m);
+    for (std::size_t i = 0; i < xt.size(); ++i)
+        if (const auto& t = xt[i]; !t.label.empty())
+            out += fmt::format("<text x=\"{:.2f}\" y=\"{}\" text-anchor=\"middle\">{}</text>", m.px(t.value),
+                               kY1 + 18 + (stagger && i % 2 == 1 ? 16 : 0), tick_text(t.label));
     for (const auto& t : yt)
         if (!t.label.empty())
             out += fmt::format("<text x=\"{}\" y=\"{:.2f}\" text-anchor=\"end\">{}</text>", kX0 - 6, m.py(t.value) + 4.5,
                                tick_text(t.label));
     out += "</g>\n";
-    out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n", (kX0 + kX1) / 2,
-                       kHeight - 12, xml_escape(f.x.label));
+    if (!stagger)  // staggered labels take the axis title's row; they name the points themselves
+        out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n",
+                           (kX0 + kX1) / 2, kHeight - 12, xml_escape(f.x.label));
     // The y label clears the widest tick label.
     std::size_t widest = 0;
     for (const auto& t : yt) widest = std::max(widest, t.label.rfind("1e", 0) == 0 ? std::size_t{4} : utf8_length(t.label));
@@ -337,22 +383,25 @@ std::string render_svg(const Figure& f) {
     out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#333333\"/>\n", kX0,
                        kY0, kX1 - kX0, kY1 - kY0);
 
-    // Legend in the frame corner that covers the fewest data points.
+    // Legend in a frame corner free of data points, else below the frame (never over a marker).
     std::vector<const Series*> entries;
     for (const auto& s : f.series)
         if (!s.label.empty()) entries.push_back(&s);
     if (!entries.empty()) {
         const auto [lw, lh] = legend_size(f);
-        const auto corners = legend_corners(lw, lh);
-        const std::size_t best = static_cast<std::size_t>(legend_corner(f, m));
-        const auto [lx, ly] = corners[best];
-        out += fmt::format(
-            "<g><rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#ffffff\" "
-            "fill-opacity=\"0.88\" stroke=\"#bbbbbb\"/>\n",
-            lx, ly, lw, lh);
+        const std::size_t cols = corner == kLegendBelow ? below_columns(f) : 1;
+        const auto [x0, ly] = corner == kLegendBelow ? std::pair(10.0, kHeight) : legend_corners(lw, lh)[corner];
+        if (corner != kLegendBelow)
+            out += fmt::format(
+                "<g><rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"#ffffff\" "
+                "fill-opacity=\"0.88\" stroke=\"#bbbbbb\"/>\n",
+                x0, ly, lw, lh);
+        else
+            out += "<g>\n";
         for (std::size_t k = 0; k < entries.size(); ++k) {
             const Series& s = *entries[k];
-            const double y = ly + 13 + 18 * static_cast<double>(k);
+            const double y = ly + 13 + 18 * static_cast<double>(k / cols);
+            const double lx = corner == kLegendBelow ? 10.0 + lw * static_cast<double>(k % cols) : x0;
             if (s.mark == Mark::Line) {
                 if (s.err.size() == s.y.size() && !s.y.empty())
                     out += fmt::format(

@@ -11,7 +11,9 @@ namespace granlub::postproc {
 std::string render_svg(const Figure& f);
 
 // Axis limits and legend corner as render_svg chooses them (0 top right, 1 top left, 2 bottom
-// right, 3 bottom left), so the gnuplot script draws the same frame.
+// right, 3 bottom left: the first corner free of data points; kLegendBelow when none is, the
+// legend then below the frame), so the gnuplot script draws the same frame.
+inline constexpr int kLegendBelow = 4;
 struct Layout {
     double xlo, xhi, ylo, yhi;
     int legend_corner;

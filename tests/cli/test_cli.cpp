@@ -1,6 +1,8 @@
 #define BOOST_TEST_MODULE granlub command
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -62,6 +64,43 @@ BOOST_AUTO_TEST_CASE(version_and_help) {
     auto h = run(exe + " --help");
     BOOST_TEST(h.rc == 0);
     BOOST_TEST(h.text.find("check") != std::string::npos);
+}
+
+// Every subcommand's --help gives each option its default (and the value's kind), so a reader
+// need not look the command up elsewhere.
+BOOST_AUTO_TEST_CASE(every_option_says_its_default) {
+    const std::string top = run(exe + " --help").text;
+    std::vector<std::string> commands;
+    std::istringstream lines(top.substr(top.find("Subcommands:")));
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("  ", 0) == 0 && line.size() > 2 && line[2] != ' ')
+            commands.push_back(line.substr(2, line.find(' ', 2) - 2));
+    BOOST_TEST_REQUIRE(commands.size() >= 4u, top);
+    for (const auto& c : commands) {
+        const auto h = run(exe + " " + c + " --help");
+        BOOST_TEST(h.rc == 0, c);
+        std::istringstream in(h.text);
+        std::vector<std::string> options;
+        for (std::string l; std::getline(in, l);) {
+            // An option or positional starts at column 2 ("--x", "CASE"); its text may go on below.
+            if (l.rfind("  -", 0) == 0 || (l.rfind("  ", 0) == 0 && l.size() > 2 && std::isupper(l[2])))
+                options.push_back(l);
+            else if (l.rfind("   ", 0) == 0 && !options.empty())
+                options.back() += l;
+        }
+        BOOST_TEST(options.size() >= 2u, c);
+        for (const auto& o : options)
+            if (o.find("--help") == std::string::npos)
+                BOOST_TEST((o.find("default") != std::string::npos || o.find("REQUIRED") != std::string::npos),
+                           c << ": " << o);
+    }
+    // The kinds of values: a count, a folder, not CLI11's bare "INT:INT in [...]".
+    const std::string help = run(exe + " run --help").text;
+    BOOST_TEST(help.find("--threads N") != std::string::npos, help);
+    BOOST_TEST(help.find("--results DIR") != std::string::npos, help);
+    BOOST_TEST(help.find("INT:INT") == std::string::npos, help);
+    if (top.find("\n  compare") != std::string::npos)
+        BOOST_TEST(run(exe + " compare --help").text.find("--point ID") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(keys_are_printed_from_their_declarations) {

@@ -95,6 +95,9 @@ BOOST_AUTO_TEST_CASE(axis_ticks) {
     // A narrow span (the speeds 1.4 to 2.8 m/s): every mantissa and the halves between.
     const std::vector<std::string> narrow = {"1.5", "2", "2.5", "3", "3.5"};
     BOOST_TEST(labels(log_ticks(1.2, 3.5)) == narrow, boost::test_tools::per_element());
+    // Under a decade with only 2000 and 5000 of 1-2-5 inside: every thousand is labelled, not the halves.
+    const std::vector<std::string> load = {"2000", "3000", "4000", "5000", "6000"};
+    BOOST_TEST(labels(log_ticks(1300.0, 6500.0)) == load, boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

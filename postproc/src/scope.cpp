@@ -1,0 +1,95 @@
+#include "scope.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "text.h"
+
+namespace granlub::postproc {
+namespace {
+
+std::optional<double> run_number(const Run& r, const char* key) {
+    const auto& run = r.summary->run;
+    if (run.is_object() && run.contains(key) && run[key].is_number()) return run[key].get<double>();
+    return std::nullopt;
+}
+
+std::string run_text(const Run& r, const char* key) {
+    const auto& run = r.summary->run;
+    return run.is_object() && run.contains(key) && run[key].is_string() ? run[key].get<std::string>() : "";
+}
+
+// "0.1 s" or "0.0015–0.1 s" over the usable runs; counts (digits 0) as whole numbers.
+std::string range_text(const std::vector<double>& v, const char* unit, int digits = 3) {
+    if (v.empty()) return "";
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    auto f = [&](double x) { return digits == 0 ? fmt::format("{:.0f}", x) : num(x, digits); };
+    return f(*lo) == f(*hi) ? fmt::format("{} {}", f(*lo), unit) : fmt::format("{}–{} {}", f(*lo), f(*hi), unit);
+}
+
+}  // namespace
+
+bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }
+
+SolverScope solver_scope(const Case& c, const Collection& col, const std::string& solver) {
+    std::vector<const Run*> runs;
+    for (const OperatingPoint* p : col.points)
+        if (const Run& r = col.run(solver, p->id); r.usable()) runs.push_back(&r);
+    SolverScope s;
+    if (runs.empty()) return s;
+    const Run& first = *runs.front();
+    std::vector<double> simulated, steady_from, steps, iterations;
+    for (const Run* r : runs) {
+        if (auto v = run_number(*r, "simulated_time_s")) simulated.push_back(*v);
+        if (auto v = run_number(*r, "steady_state_start_s")) steady_from.push_back(*v);
+        if (auto v = run_number(*r, "steps")) steps.push_back(*v);
+        if (auto v = run_number(*r, "iterations")) iterations.push_back(*v);
+    }
+    const bool particles = !simulated.empty();
+
+    // The solvers that leave out body forces say so in their run block; the particle engines apply
+    // the case's gravity.
+    if (std::string note = run_text(first, "body_forces"); !note.empty())
+        s.body_forces = "gravity " + note;
+    else if (note = run_text(first, "ignored"); !note.empty())
+        s.body_forces = "ignores " + note;
+    else if (particles && c.gravity > 0) {
+        const double nu = first.summary->value("mean_solid_fraction");
+        std::vector<double> difference;  // the measured P_bot − P_top of each run
+        for (const Run* r : runs)
+            if (auto b = r->scalar("normal_stress_bottom"), t = r->scalar("normal_stress_top"); b && t)
+                difference.push_back(*b - *t);
+        s.body_forces = fmt::format("gravity g = {} m/s² acts on the grains: P_bot − P_top includes their weight, "
+                                    "ρ ν̄ g H ≈ {} Pa",
+                                    num(c.gravity, 3), num(c.grains.density * nu * c.gravity * c.cell.gap, 2));
+        if (!difference.empty()) s.body_forces += " (measured P_bot − P_top: " + range_text(difference, "Pa") + ")";
+    } else if (particles)
+        s.body_forces = "no gravity ([body_forces] gravity = 0)";
+    else
+        s.body_forces = "not stated in its summary";
+
+    if (lattice_stresses(solver))
+        s.stresses = "lattice analogues in Pa (wall momentum per lattice step × ρ_p ν_max U², ∝ U² by construction): "
+                     "not measured stresses, not comparable with the others";
+    else if (particles)
+        s.stresses = "time-averaged wall force / wall area (Pa) over the steady window";
+    else if (!iterations.empty())
+        s.stresses = "kinetic-theory wall stresses (Pa) of the steady solution";
+    else
+        s.stresses = "as its summary gives them";
+
+    if (particles) {
+        s.run_length = range_text(simulated, "s") + " simulated";
+        if (!steady_from.empty()) s.run_length += ", averaged from " + range_text(steady_from, "s");
+        if (!steps.empty()) s.run_length += " (" + range_text(steps, "steps", 0) + ")";
+    } else if (!iterations.empty())
+        s.run_length = "steady solution, " + range_text(iterations, "iterations", 0);
+    else if (!steps.empty()) {
+        s.run_length = range_text(steps, "lattice steps", 0);
+        if (auto reps = run_number(first, "replicas")) s.run_length += fmt::format(" × {} replicas", num(*reps, 3));
+    }
+    return s;
+}
+
+}  // namespace granlub::postproc

@@ -1,0 +1,117 @@
+// What each solver's numbers mean, on the page: the scope table (body forces, what the wall
+// stresses are, run length), the automaton's lattice stresses marked wherever they appear, and
+// under load control the gap and P_top / target in the key numbers with the controlled normal
+// stresses never fitted.
+#include <fstream>
+#include <regex>
+
+#include <boost/test/unit_test.hpp>
+
+#include "granlub/postproc/command.h"
+#include "granlub/results.h"
+#include "synthetic.h"
+
+using namespace granlub;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The Markdown table row that starts with `| first | second |`, the first after `section`.
+std::string md_row(const std::string& md, const std::string& section, const std::string& first,
+                   const std::string& second = "") {
+    const std::string start = "| " + first + " |" + (second.empty() ? "" : " " + second + " |");
+    const auto at = md.find(start, md.find(section));
+    return at == std::string::npos ? std::string() : md.substr(at, md.find('\n', at) - at);
+}
+
+constexpr const char* kScope = "### What each solver's numbers mean";
+constexpr const char* kKey = "### Key numbers";
+
+// The synthetic case with `from` replaced by `to` in its case.toml.
+test::SyntheticCase edited_case(const std::string& name, const std::string& from, const std::string& to) {
+    auto s = test::make_case(name);
+    std::string text = test::slurp(s.dir / "case.toml");
+    text.replace(text.find(from), from.size(), to);
+    std::ofstream(s.dir / "case.toml") << text;
+    s.c = load_case(s.dir, Schema::common());
+    return s;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(scope)
+
+BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
+    auto s = test::make_case("scope_fill");
+    for (const char* solver : {"continuum", "automaton", "dem"}) test::write_solver(s, solver);
+    for (const OperatingPoint& p : s.c.points) {
+        test::patch_run(s, "continuum", p.id, {{"body_forces", "not modelled: p_yy uniform"}, {"iterations", 4}});
+        test::patch_run(s, "automaton", p.id, {{"ignored", "gravity: no body force"}, {"steps", 10000}});
+        test::patch_run(s, "dem", p.id, {{"simulated_time_s", p.speed == 1.0 ? 0.25 : 0.5}, {"steps", 20000}});
+    }
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
+
+    const std::string continuum = md_row(md, kScope, "continuum");
+    BOOST_TEST(continuum.find("gravity not modelled: p_yy uniform") != std::string::npos, continuum);
+    BOOST_TEST(md_row(md, kScope, "automaton").find("ignores gravity: no body force") != std::string::npos);
+    BOOST_TEST(md_row(md, kScope, "automaton").find("lattice analogues") != std::string::npos);
+    // DEM: the case's gravity (9.81 by default) and its weight per area rho nu g H = 2500 * 0.52 * 9.81 * 5e-3 = 64 Pa
+    // (the synthetic DEM's nu_bar is 0.56: 69 Pa); its run length from simulated_time_s over the points.
+    const std::string dem = md_row(md, kScope, "dem");
+    BOOST_TEST(dem.find("P_bot − P_top includes their weight") != std::string::npos, dem);
+    BOOST_TEST(dem.find("≈ 69 Pa") != std::string::npos, dem);
+    // Measured: the synthetic DEM's sigma_b - sigma_t = 100 U^1.5 over U = 1, 2, 4 -> 100 to 800 Pa.
+    BOOST_TEST(dem.find("(measured P_bot − P_top: 100–800 Pa)") != std::string::npos, dem);
+    BOOST_TEST(dem.find("0.25–0.5 s simulated") != std::string::npos, dem);
+    BOOST_TEST(dem.find("(20000 steps)") != std::string::npos, dem);
+
+    // The automaton's stresses are marked in every key-number cell and named in the stress captions.
+    const std::string key = md_row(md, kKey, "automaton", "U1.0");
+    BOOST_TEST(std::regex_search(key, std::regex(R"(\| 900 \(lattice\) \| 360 \(lattice\) \|)")), key);
+    BOOST_TEST(md_row(md, kKey, "continuum", "U1.0").find("(lattice)") == std::string::npos);
+    const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
+    BOOST_TEST(html.find("automaton (lattice analogue)") != std::string::npos);
+    BOOST_TEST(html.find("stresses are lattice analogues") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) {
+    auto s = edited_case("scope_load", "control = \"fill\"", "control = \"load\"");  // target 1000 Pa
+    test::write_solver(s, "continuum");
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
+    BOOST_TEST(md.find("| ν̄/ν_max | gap (mm) | P_top / target |") != std::string::npos);
+    // The synthetic continuum: sigma_top = 900 U^2 against the 1000 Pa target; its gap is the case's (5 mm).
+    const std::string u1 = md_row(md, kKey, "continuum", "U1.0");
+    BOOST_TEST(u1.find("| 5 (fixed) | 0.9 |") != std::string::npos, u1);
+    BOOST_TEST(md_row(md, kKey, "continuum", "U2.0").find("| 5 (fixed) | 3.6 |") != std::string::npos);
+
+    // The normal stresses follow the load: no exponent, the reason instead; the shear stresses are fitted (n = 2).
+    const auto metrics = s.o.results_root / "report" / "metrics.csv";
+    for (const char* q : {"normal_stress_top", "normal_stress_bottom"}) {
+        const auto row = test::read_metrics_row(metrics, "exponent", "all", q, "continuum", "");
+        BOOST_TEST(row.at("a").empty(), q);
+        BOOST_TEST(row.at("note").find("load control") != std::string::npos, row.at("note"));
+    }
+    // The target drawn in the top-wall figure, said in its caption.
+    const std::string top = test::slurp(s.o.results_root / "report" / "plots" / "stress_normal_stress_top.svg");
+    BOOST_TEST(top.find(">load target</text>") != std::string::npos);
+    BOOST_TEST(md.find("Black dashed: the load target of the case.") != std::string::npos);
+    const auto tau = test::read_metrics_row(metrics, "exponent", "all", "shear_stress_bottom", "continuum", "");
+    BOOST_TEST(std::stod(tau.at("a")) == 2.0, boost::test_tools::tolerance(1e-9));
+}
+
+// Two speeds can never give a fit: one sentence says so, no per-solver list, no exponent table.
+BOOST_AUTO_TEST_CASE(too_few_speeds_say_so_once) {
+    auto s = edited_case("scope_two_speeds", "speed = [1.0, 2.0, 4.0]", "speed = [1.0, 2.0]");
+    for (const char* solver : {"continuum", "dem"}) test::write_solver(s, solver);
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
+    BOOST_TEST(md.find("No power law: no group of points that differ only in speed has 3 speeds.") !=
+               std::string::npos);
+    BOOST_TEST(md.find("has 2 steady points (a fit needs 3)") == std::string::npos);
+    BOOST_TEST(md.find("| solver | speed group |") == std::string::npos);
+    BOOST_TEST(md.find("No stress–speed exponent") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
