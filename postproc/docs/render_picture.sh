@@ -1,12 +1,12 @@
 #!/bin/sh
-# Renders a page of a report (six of its figures, 2 x 3) to report-page.png for the README.
+# Renders a page of a report (six of its figures, 2 x 3) to docs/report-page.png, the READMEs' picture.
 # Usage: postproc/docs/render_picture.sh RESULTS/report POINT_SLUG [OUT.png]
 #   e.g. postproc/docs/render_picture.sh cases/sawyer2001/results/report u2-0
 # Needs rsvg-convert (librsvg2-bin, .ci/packages).
 set -eu
 report=$1
 slug=$2
-out=${3:-$(dirname "$0")/report-page.png}
+out=${3:-$(dirname "$0")/../../docs/report-page.png}
 plots=$report/plots
 page=$(mktemp --suffix=.svg)
 trap 'rm -f "$page"' EXIT
