@@ -95,7 +95,8 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
                win.steady ? ""
                           : fmt::format("no steady state detected in {:.3g} s of simulated time: run longer (--full)",
                                         in.simulated_s));
-    o.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa slip={:.3f}/{:.3f} U{}{}",
+    o.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa "
+                         "slip={:.3f}/{:.3f} U{}{}",
                          o.outputs.at("mean_solid_fraction").value, P_b, P_t, T_b, T_t, 1.0 - u.front(), u.back(),
                          win.steady ? fmt::format(" (steady from {:.3g} s)", win.t_start)
                                     : " (NO steady state detected: run longer)",
