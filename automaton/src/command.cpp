@@ -63,7 +63,7 @@ std::vector<double> means(const std::vector<Stat>& v, double scale = 1) {
 }
 std::vector<double> sems(const std::vector<Stat>& v, double scale = 1) {
     std::vector<double> out;
-    for (const Stat& s : v) out.push_back(s.sem * scale);
+    for (const Stat& s : v) out.push_back(s.stderr_ * scale);
     return out;
 }
 
@@ -133,7 +133,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
     // rho nu_max d^3 (a full lattice = nu_max), area d x d per column and a step of d/U:
     // stress = rho nu_max U^2 x (momentum per step per column in units of cell mass x U).
     const double stress = c.grains.density * nu_max * U * U;
-    auto sc = [](const Stat& st, double f) { return std::pair{st.mean * f, st.sem * std::abs(f)}; };
+    auto sc = [](const Stat& st, double f) { return std::pair{st.mean * f, st.stderr_ * std::abs(f)}; };
     auto put = [&](const std::string& name, const Stat& st, double f, const std::string& unit) {
         const auto [v, e] = sc(st, f);
         s.set(name, v, unit, e);
@@ -204,7 +204,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
                r.steady.reached ? "" : "no steady state: " + r.steady.note);
 
     out.line = fmt::format("{}x{} N={} slip {:.3f}/{:.3f} U (+-{:.4f}) tau {:.3g}/{:.3g} Pa{}", r.rows,
-                           r.columns, r.particles, r.slip_bottom.mean, r.slip_top.mean, r.slip_bottom.sem,
+                           r.columns, r.particles, r.slip_bottom.mean, r.slip_top.mean, r.slip_bottom.stderr_,
                            s.value("shear_stress_bottom"), s.value("shear_stress_top"),
                            r.steady.reached ? "" : "  NOT STEADY: " + r.steady.note) +
                (rp.used ? fmt::format("  [runs to {} steps, du {:.4f} U, dnu {:.4f}]", steps_run, rp.du.back(),

@@ -22,20 +22,6 @@ Lattice make_lattice(const Params& p, int replica) {
 
 namespace {
 
-// Mean and standard error of the mean of samples (sd / sqrt(n), sd with n - 1).
-Stat mean_sem(const std::vector<double>& v) {
-    Stat s;
-    if (v.empty()) return s;
-    double sum = 0;
-    for (double x : v) sum += x;
-    s.mean = sum / static_cast<double>(v.size());
-    if (v.size() < 2) return s;
-    double ss = 0;
-    for (double x : v) ss += (x - s.mean) * (x - s.mean);
-    s.sem = std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
-    return s;
-}
-
 // Least-squares line u = a + b eta through rows 1..H-2 (§4.3); returns {1 - a, a + b}.
 std::pair<double, double> fit_slips(const std::vector<double>& u, int rows) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
@@ -120,13 +106,13 @@ EnsembleResult pool(const Params& p, const std::vector<std::vector<Block>>& bloc
         v.reserve(win.size());
         for (const Block* b : win)
             if (!needs_grains || b->has[r]) v.push_back(field(*b)[r]);
-        return mean_sem(v);
+        return mean_and_stderr(v);
     };
     auto scalar = [&](auto field) {
         std::vector<double> v;
         v.reserve(win.size());
         for (const Block* b : win) v.push_back(field(*b));
-        return mean_sem(v);
+        return mean_and_stderr(v);
     };
     auto& R = out.rows_;
     for (int r = 0; r < H; ++r) {

@@ -1,4 +1,4 @@
-// Coarse-graining across the gap: slice volumes, block averages, MSER-5 (see coarse_grain.h).
+// Coarse-graining across the gap: slice volumes, MSER-5, profiles (see coarse_grain.h).
 #include "granlub/coarse_grain.h"
 
 #include <algorithm>
@@ -18,30 +18,6 @@ double sphere_slice_volume(double yc, double r, double a, double b) {
     if (!(hi > lo)) return 0.0;
     // pi * integral_lo^hi (r^2 - t^2) dt
     return std::numbers::pi * (r * r * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3.0);
-}
-
-BlockEstimate block_average(std::span<const double> x, std::size_t blocks) {
-    BlockEstimate e;
-    if (x.empty() || blocks == 0) return e;
-    blocks = std::min(blocks, x.size());
-    const std::size_t len = x.size() / blocks;
-    std::vector<double> means(blocks, 0.0);
-    for (std::size_t b = 0; b < blocks; ++b) {
-        for (std::size_t i = 0; i < len; ++i) means[b] += x[b * len + i];
-        means[b] /= static_cast<double>(len);
-    }
-    double m = 0;
-    for (double v : means) m += v;
-    m /= static_cast<double>(blocks);
-    e.mean = m;
-    e.blocks = blocks;
-    if (blocks >= 2) {
-        double s2 = 0;
-        for (double v : means) s2 += (v - m) * (v - m);
-        s2 /= static_cast<double>(blocks - 1);
-        e.stderr_ = std::sqrt(s2 / static_cast<double>(blocks));
-    }
-    return e;
 }
 
 SteadyState detect_steady_state(std::span<const double> x, std::size_t batch) {
@@ -162,16 +138,11 @@ Profile SliceCoarseGrainer::profile(double U, std::size_t first, std::size_t blo
         for (std::size_t b = 0; b < nb; ++b) per.push_back(fields(first + b * len, first + (b + 1) * len));
     }
     auto stderr_of = [&](std::vector<double> Fields::*member, double scale) {
-        std::vector<double> e(n, 0.0);
+        std::vector<double> e(n, 0.0), values(per.size());
         if (per.size() < 2) return e;
         for (std::size_t k = 0; k < n; ++k) {
-            double m = 0;
-            for (const auto& f : per) m += (f.*member)[k];
-            m /= static_cast<double>(per.size());
-            double s2 = 0;
-            for (const auto& f : per) s2 += ((f.*member)[k] - m) * ((f.*member)[k] - m);
-            s2 /= static_cast<double>(per.size() - 1);
-            e[k] = std::sqrt(s2 / static_cast<double>(per.size())) / scale;
+            for (std::size_t b = 0; b < per.size(); ++b) values[b] = (per[b].*member)[k];
+            e[k] = mean_and_stderr(values).stderr_ / scale;
         }
         return e;
     };

@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE(momentum_balance_jh) {
     p.run.replicas = 2;
     const EnsembleResult r = run_ensemble(p);
     const double in = r.tangential_bottom.mean, out = -r.tangential_top.mean;
-    const double se = std::hypot(r.tangential_bottom.sem, r.tangential_top.sem);
+    const double se = std::hypot(r.tangential_bottom.stderr_, r.tangential_top.stderr_);
     BOOST_TEST(in > 0);
     BOOST_TEST(std::abs(in - out) < 5 * se + 1e-12);
 }
@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(same_seed_same_numbers_any_thread_count) {
     const EnsembleResult c = run_ensemble(p);
     for (int y = 0; y < a.rows; ++y) {
         BOOST_TEST(a.rows_.u[y].mean == b.rows_.u[y].mean);  // bitwise
-        BOOST_TEST(a.rows_.u[y].sem == b.rows_.u[y].sem);
+        BOOST_TEST(a.rows_.u[y].stderr_ == b.rows_.u[y].stderr_);
         BOOST_TEST(a.rows_.nu[y].mean == b.rows_.nu[y].mean);
         BOOST_TEST(b.rows_.temp[y].mean == c.rows_.temp[y].mean);
     }

@@ -30,9 +30,9 @@ Params ci(double R = 0.65) {
 
 // |ours - ref| within the derived tolerance; prints the numbers either way.
 void near(const std::string& what, const Stat& ours, double ref, double ref_rounding, double spec_tol) {
-    const double tol = std::min(spec_tol, 5 * std::hypot(ours.sem, kRefScatter) + ref_rounding);
-    BOOST_TEST_MESSAGE(what << ": " << ours.mean << " +- " << ours.sem << " vs " << ref << " (tol " << tol << ")");
-    BOOST_CHECK_MESSAGE(std::abs(ours.mean - ref) <= tol, what << ": " << ours.mean << " +- " << ours.sem
+    const double tol = std::min(spec_tol, 5 * std::hypot(ours.stderr_, kRefScatter) + ref_rounding);
+    BOOST_TEST_MESSAGE(what << ": " << ours.mean << " +- " << ours.stderr_ << " vs " << ref << " (tol " << tol << ")");
+    BOOST_CHECK_MESSAGE(std::abs(ours.mean - ref) <= tol, what << ": " << ours.mean << " +- " << ours.stderr_
                                                                << " vs reference " << ref << ", tolerance " << tol);
 }
 

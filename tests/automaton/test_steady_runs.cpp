@@ -25,11 +25,12 @@ Params runs(std::uint64_t seed = 1) {
 
 // |a - b| within 5 combined standard errors (the suite's convention, test_statistics.cpp).
 void agree(const std::string& what, const Stat& a, const Stat& b) {
-    const double tol = 5 * std::hypot(a.sem, b.sem);
-    BOOST_TEST_MESSAGE(what << ": runs " << a.mean << " +- " << a.sem << ", blocks " << b.mean << " +- " << b.sem);
-    BOOST_CHECK_MESSAGE(a.sem > 0 && b.sem > 0 && std::abs(a.mean - b.mean) <= tol,
-                        what << ": runs " << a.mean << " +- " << a.sem << " vs blocks " << b.mean << " +- " << b.sem
-                             << " (tolerance " << tol << ")");
+    const double tol = 5 * std::hypot(a.stderr_, b.stderr_);
+    BOOST_TEST_MESSAGE(what << ": runs " << a.mean << " +- " << a.stderr_ << ", blocks " << b.mean << " +- "
+                            << b.stderr_);
+    BOOST_CHECK_MESSAGE(a.stderr_ > 0 && b.stderr_ > 0 && std::abs(a.mean - b.mean) <= tol,
+                        what << ": runs " << a.mean << " +- " << a.stderr_ << " vs blocks " << b.mean << " +- "
+                             << b.stderr_ << " (tolerance " << tol << ")");
 }
 
 }  // namespace

@@ -10,9 +10,9 @@
 //          temperature      T_k  = (1/3) sum_c [ sum_i V_ik v_ic^2 / sum_i V_ik - u_kc^2 ]
 //          i.e. T from the velocity fluctuations about the local mean velocity of the same
 //          averaging window (architecture.md: T = <C^2>/3), sums running over all snapshots used.
-// Standard errors come from block averaging (Flyvbjerg & Petersen 1989, J. Chem. Phys. 91:461):
-// the snapshots are cut into contiguous blocks, each block gives its own profile, and the
-// standard error is the standard deviation of the block values / sqrt(blocks).
+// Standard errors come from block averaging (granlub/block_average.h): the snapshots are cut into
+// contiguous blocks, each block gives its own profile, and the standard error is that of the
+// block values.
 // The steady state is detected on a scalar time series (e.g. wall stress) with MSER-5
 // (White 1997, Simulation 69:323; White, Cobb & Spratt 2000): the truncation point d that
 // minimises the squared standard error of the remaining batch means.
@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "granlub/block_average.h"
 #include "granlub/particles.h"
 #include "granlub/results.h"
 
@@ -38,15 +39,6 @@ struct Stations {
 
 // how: volume of the sphere (centre yc, radius r) between the planes y = a and y = b (a <= b).
 double sphere_slice_volume(double yc, double r, double a, double b);
-
-// Mean and standard error of a series from `blocks` contiguous blocks (the last samples that do
-// not fill a block are dropped). stderr is 0 when blocks < 2.
-struct BlockEstimate {
-    double mean = 0;
-    double stderr_ = 0;
-    std::size_t blocks = 0;
-};
-BlockEstimate block_average(std::span<const double> series, std::size_t blocks);
 
 // MSER-5 truncation point on a series of samples, in samples. `steady` is false when the best
 // truncation lies beyond half of the series (no steady state detected yet).

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
-#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -14,7 +13,6 @@
 #include "granlub/error.h"
 #include "granlub/flow_regime.h"
 #include "granlub/load_control.h"
-#include "granlub/regime.h"
 
 namespace granlub::yade {
 
@@ -58,10 +56,10 @@ std::vector<std::vector<double>> read_csv_table(const fs::path& file, const std:
 
 }  // namespace
 
-WallForces read_wall_forces(const fs::path& file) {
+WallForceSeries read_wall_forces(const fs::path& file) {
     auto t = read_csv_table(file, "step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2",
                             "wall forces");
-    return WallForces{std::move(t[0]), std::move(t[1]), std::move(t[2]), std::move(t[3]), std::move(t[4]),
+    return WallForceSeries{std::move(t[0]), std::move(t[1]), std::move(t[2]), std::move(t[3]), std::move(t[4]),
                       std::move(t[5]), std::move(t[6]), std::move(t[7]), std::move(t[8])};
 }
 
@@ -110,12 +108,6 @@ void coarse_grain_samples(const fs::path& file, std::size_t n, std::size_t snaps
     }
 }
 
-std::vector<double> times(const std::vector<double>& v, double k) {
-    std::vector<double> o(v);
-    for (double& x : o) x *= k;
-    return o;
-}
-
 }  // namespace
 
 PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
@@ -127,18 +119,13 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     if (n != radius.size())
         throw SolverError(fmt::format("{}: {} grains, the initial file has {}", (dir / "driver_summary.json").string(),
                                       n, radius.size()));
-    const WallForces w = read_wall_forces(dir / "wallforce.csv");
+    WallForceSeries w = read_wall_forces(dir / "wallforce.csv");
     const auto expected_rows = static_cast<std::size_t>(s.steps / s.sample_every);
     if (w.rows() != expected_rows)
         throw SolverError(fmt::format("{}: {} rows, expected {}", (dir / "wallforce.csv").string(), w.rows(),
                                       expected_rows));
-
-    // Stresses on the grains' side of each wall, positive for a sheared, compressed layer: the
-    // grains push the bottom wall to -y and the top wall to +y, drag the bottom (and side) walls
-    // to -x and the top wall to +x.
-    const double A = box.length * box.width;
-    const std::vector<double> sig_b = times(w.fy_bottom, -1.0 / A), sig_t = times(w.fy_top, 1.0 / A);
-    const std::vector<double> tau_b = times(w.fx_bottom, -1.0 / A), tau_t = times(w.fx_top, 1.0 / A);
+    if (box.periodic_z) w.fx_side1.clear(), w.fx_side2.clear();  // no side walls
+    const WallStresses st = wall_stresses(w, box);
 
     std::optional<PlateSeries> plate;
     if (s.servo.load) {
@@ -147,68 +134,33 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
         if (plate->step.size() != expected_updates)
             throw SolverError(fmt::format("{}: {} plate positions, expected {}", (dir / "plate.csv").string(),
                                           plate->step.size(), expected_updates));
-        write_file_atomic(dir / kGapFile, gap_csv(s.servo, dt, w.step, sig_t, *plate,
+        write_file_atomic(dir / kGapFile, gap_csv(s.servo, dt, w.step, st.normal_top, *plate,
                                                   fmt::format("case {} point {} (granlub yade)", c.name, p.id)));
     }
-    const SteadyWindow win = steady_window({sig_b, sig_t, tau_b, tau_t}, w.step, s.sample_every, dt,
-                                           plate ? &*plate : nullptr, s.servo.servo_every);
-    const std::size_t start = win.wall_start;
-    const bool steady = win.steady;
-    const double t_start = win.t_start;
+    const SteadyWindow win = wall_steady_window(st, w, s.sample_every, dt, plate ? &*plate : nullptr,
+                                                s.servo.servo_every);
 
     // profile slabs span the gap: the case's H, or the mean plate position under load control
-    const double gap = plate ? mean_gap(*plate, win, static_cast<std::size_t>(s.blocks)).mean : box.gap;
+    const auto blocks = static_cast<std::size_t>(s.blocks);
+    const double gap = plate ? mean_gap(*plate, win, blocks).mean : box.gap;
     SliceCoarseGrainer cg(Stations{0.0, gap, static_cast<std::size_t>(s.stations)}, box.length * box.width);
     coarse_grain_samples(dir / "samples.bin", n, snapshots, dt * static_cast<double>(s.snapshot_every), radius, cg);
     if (cg.snapshots() < 2) throw SolverError(fmt::format("point {}: fewer than 2 particle snapshots", p.id));
-    const auto blocks = static_cast<std::size_t>(s.blocks);
-    auto est = [&](const std::vector<double>& v) {
-        return block_average(std::span<const double>(v).subspan(std::min(start, v.size())), blocks);
-    };
+    ParticleReduction red = reduce_particles({.c = c,
+                                              .speed = p.speed,
+                                              .box = box,
+                                              .forces = w,
+                                              .stresses = st,
+                                              .cg = cg,
+                                              .window = win,
+                                              .plate = plate ? &*plate : nullptr,
+                                              .servo = s.servo,
+                                              .blocks = blocks,
+                                              .grains = n,
+                                              .simulated_s = ds.at("simulated_time").get<double>()});
     Summary sum = std::move(base);
-    auto put = [&](const std::string& name, const BlockEstimate& e, const char* unit) {
-        sum.set(name, e.mean, unit, e.stderr_);
-        return e.mean;
-    };
-    const double P_b = put("normal_stress_bottom", est(sig_b), "Pa");
-    const double P_t = put("normal_stress_top", est(sig_t), "Pa");
-    const double T_b = put("shear_stress_bottom", est(tau_b), "Pa");
-    const double T_t = put("shear_stress_top", est(tau_t), "Pa");
-    if (!box.periodic_z) {  // side walls: shear stress on each (area L H), mean of both
-        std::vector<double> side(w.rows());
-        const double As = box.length * box.gap;
-        for (std::size_t i = 0; i < side.size(); ++i) side[i] = -0.5 * (w.fx_side1[i] + w.fx_side2[i]) / As;
-        put("shear_stress_side", est(side), "Pa");
-    }
-
-    // snapshots from the steady state on
-    const auto& ts = cg.times();
-    std::size_t first = 0;
-    while (first < ts.size() && ts[first] < t_start - 1e-12) ++first;
-    if (ts.size() - first < 2) first = ts.size() - 2;
-    Profile prof = cg.profile(p.speed, first, blocks);
-
-    const auto& u = prof.column("u_over_U");
-    const auto& ue = prof.column("u_over_U_stderr");
-    const double U = p.speed;
-    // slip: wall speed minus the mean velocity of the slab next to the wall (the wall layer)
-    sum.set("slip_bottom", U * (1.0 - u.front()), "m/s", U * ue.front());
-    sum.set("slip_top", U * u.back(), "m/s", U * ue.back());
-    sum.set("mean_solid_fraction", cg.mean_solid_fraction(first, cg.snapshots()), "");
-    sum.set("max_solid_fraction", c.cell.max_solid_fraction, "");  // as granlub dem: the case's nu_max
-    std::string load_line;
-    if (plate)  // gap, mean_solid_fraction over the mean gap, run.load_control: as granlub dem
-        sum.run["load_control"] = load_summary({.servo = s.servo,
-                                                .initial_gap = box.gap,
-                                                .wall_step = w.step,
-                                                .top_stress = sig_t,
-                                                .plate = *plate,
-                                                .window = win,
-                                                .blocks = blocks,
-                                                .grains = n,
-                                                .grain_diameter = c.grains.diameter,
-                                                .area = A},
-                                               sum.outputs, load_line);
+    for (auto& [name, v] : red.outputs) sum.outputs[name] = std::move(v);
+    sum.run.update(red.run);
 
     const auto steps = ds.at("steps").get<double>();
     const double yade_run_s = ds.at("wall_clock_run_s").get<double>();
@@ -218,15 +170,6 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     sum.run["steps"] = ds.at("steps");
     sum.run["time_step_s"] = dt;
     sum.run["simulated_time_s"] = ds.at("simulated_time");
-    sum.run["steady_state_detected"] = steady;
-    sum.run["steady_state_start_s"] = t_start;
-    set_regime(sum.run, steady ? RegimeStatus::Steady : RegimeStatus::Transient,
-               steady ? "" : fmt::format("no steady state detected in {:.3g} s of simulated time: run longer (--full)",
-                                         ds.at("simulated_time").get<double>()));
-    sum.run["wall_samples"] = w.rows();
-    sum.run["wall_samples_used"] = w.rows() - std::min(start, w.rows());
-    sum.run["snapshots"] = cg.snapshots();
-    sum.run["snapshots_used"] = cg.snapshots() - first;
     sum.run["max_overlap_over_d"] = ds.at("max_overlap_over_d");
     sum.run["yade_wall_clock_s"] = ds.at("wall_clock_s");
     sum.run["loop_time_s"] = yade_run_s;
@@ -236,20 +179,16 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     // the inertial numbers only: the YADE snapshots hold y and velocities, not x and z, so the
     // coordination number and contact persistence (contacts.h) are not measured here
     FlowDiagnostics fd;
-    set_inertial_numbers(fd, prof, U, box.gap, 0.5 * (P_b + P_t), c.grains.diameter, c.grains.density);
+    const double P_mean = 0.5 * (sum.value("normal_stress_bottom") + sum.value("normal_stress_top"));
+    set_inertial_numbers(fd, red.profile, p.speed, box.gap, P_mean, c.grains.diameter, c.grains.density);
     sum.run["flow_regime"] = flow_regime_json(fd);
     sum.run["flow_regime"]["contacts_not_measured"] = "the YADE snapshots hold y and velocities only (no x, z)";
 
     PointResult r;
-    r.profile = std::move(prof);
+    r.profile = std::move(red.profile);
     r.summary = std::move(sum);
-    r.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa slip={:.3f}/{:.3f} U{}"
-                         "{}  [{} grains, {} steps, {:.3g} atom-steps/s]",
-                         r.summary.value("mean_solid_fraction"), P_b, P_t, T_b, T_t, 1.0 - u.front(), u.back(),
-                         steady ? fmt::format(" (steady from {:.3g} s)", t_start)
-                                : " (NO steady state detected: run longer)",
-                         load_line, n, ds.at("steps").get<long long>(),
-                         r.summary.run["atom_steps_per_s"].get<double>());
+    r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s]", red.line, n,
+                         ds.at("steps").get<long long>(), r.summary.run["atom_steps_per_s"].get<double>());
     return r;
 }
 

@@ -90,6 +90,18 @@ BOOST_AUTO_TEST_CASE(block_average_of_independent_samples) {
     BOOST_TEST(e.stderr_ < 1.8 * expected);
 }
 
+BOOST_AUTO_TEST_CASE(mean_and_stderr_of_block_values) {
+    // 1, 2, 3, 4: mean 2.5, sample variance 5/3, standard error sqrt(5/3 / 4)
+    const std::vector<double> v{1, 2, 3, 4};
+    const auto e = mean_and_stderr(v);
+    BOOST_TEST(e.mean == 2.5);
+    BOOST_TEST(std::abs(e.stderr_ - std::sqrt(5.0 / 12.0)) < 1e-15);
+    BOOST_TEST(e.blocks == 4u);
+    const std::vector<double> one{7};
+    BOOST_TEST(mean_and_stderr(one).stderr_ == 0.0);  // one block: no error estimate
+    BOOST_TEST(mean_and_stderr({}).blocks == 0u);
+}
+
 BOOST_AUTO_TEST_CASE(mser_finds_the_end_of_a_transient) {
     std::mt19937_64 g(3);
     std::normal_distribution<double> nd(0.0, 0.1);

@@ -12,6 +12,7 @@
 #include "granlub/automaton/params.h"
 #include "granlub/automaton/philox.h"
 #include "granlub/automaton/sampler.h"
+#include "granlub/block_average.h"
 
 namespace granlub::automaton {
 
@@ -20,10 +21,7 @@ using Lattice = Engine<Philox>;
 // A lattice built and filled for replica r of `p` (§2.7).
 Lattice make_lattice(const Params& p, int replica);
 
-struct Stat {
-    double mean = 0;
-    double sem = 0;  // standard error of the mean over the window blocks
-};
+using Stat = BlockEstimate;  // mean and standard error over the window blocks
 
 struct RowStats {
     std::vector<Stat> u;       // the mode's velocity: <u_p> (jh) or <u_p dx> (vector), over U

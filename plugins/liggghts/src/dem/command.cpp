@@ -45,15 +45,16 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     OneRun r;
     r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
 
-    const WallSeries walls = read_wall_series(dir / kWallFile);
+    const WallForceSeries walls = wall_forces(read_wall_series(dir / kWallFile));
+    const WallStresses stresses = wall_stresses(walls, s.box);
     std::optional<PlateSeries> plate;
     if (s.load) {
         plate = read_plate_series(dir / kPlateFile);
         const std::string what = fmt::format("case {} point {} ({})", c.name, p.id, prov);
-        write_file_atomic(dir / kGapFile,
-                          gap_csv(s, s.time_step, walls.step, top_normal_stress(s, walls), *plate, what));
+        write_file_atomic(dir / kGapFile, gap_csv(s, s.time_step, walls.step, stresses.normal_top, *plate, what));
     }
-    const SteadyWindow window = steady_window(s, walls, plate ? &*plate : nullptr);
+    const SteadyWindow window = wall_steady_window(stresses, walls, s.sample_every, s.time_step,
+                                                   plate ? &*plate : nullptr, s.servo_every);
     // profile slabs span the gap: the case's H, or the mean plate position under load control
     const double gap = plate ? mean_gap(*plate, window, s.blocks).mean : c.cell.gap;
     SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
@@ -68,7 +69,18 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
 
     if (s.vtk) write_pvd(dir, s.time_step);
 
-    r.out = make_outputs(c, p, s, walls, cg, window, plate ? &*plate : nullptr, init.particles.size());
+    r.out = reduce_particles({.c = c,
+                              .speed = p.speed,
+                              .box = s.box,
+                              .forces = walls,
+                              .stresses = stresses,
+                              .cg = cg,
+                              .window = window,
+                              .plate = plate ? &*plate : nullptr,
+                              .servo = s,
+                              .blocks = s.blocks,
+                              .grains = init.particles.size(),
+                              .simulated_s = static_cast<double>(s.steps) * s.time_step});
     r.out.run["flow_regime"] = flow_regime_record(c, p, s, r.out, cg, z, dir / kContactsFile);
     fs::remove(dir / kContactsFile);
     return r;

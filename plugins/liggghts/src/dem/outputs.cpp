@@ -1,4 +1,4 @@
-// Reading LIGGGHTS' wall-force and snapshot files and forming the point's results (outputs.h).
+// Reading LIGGGHTS' wall-force, plate and snapshot files (outputs.h).
 #include "outputs.h"
 
 #include <algorithm>
@@ -11,7 +11,6 @@
 
 #include "deck.h"
 #include "granlub/error.h"
-#include "granlub/regime.h"
 
 namespace granlub::dem {
 
@@ -116,103 +115,17 @@ PlateSeries read_plate_series(const fs::path& file) {
     return p;
 }
 
-SteadyWindow steady_window(const Settings& s, const WallSeries& w, const PlateSeries* plate) {
-    // normal and shear force, bottom and top
-    std::vector<std::span<const double>> series;
-    for (std::size_t col : {1u, 4u, 0u, 3u}) series.emplace_back(w.columns.at(col));
-    return granlub::steady_window(series, w.step, s.sample_every, s.time_step, plate, s.servo_every);
-}
-
-std::vector<double> top_normal_stress(const Settings& s, const WallSeries& w) {
-    std::vector<double> v(w.columns.at(4));
-    for (double& x : v) x *= -1.0 / (s.box.length * s.box.width);
-    return v;
-}
-
-DemOutputs make_outputs(const Case& c, const OperatingPoint& pt, const Settings& s, const WallSeries& w,
-                        const SliceCoarseGrainer& cg, const SteadyWindow& win, const PlateSeries* plate,
-                        std::size_t grains) {
-    DemOutputs o;
-    const double A = s.box.length * s.box.width;
-    const double U = pt.speed;
-    // the four stresses as time series (Pa)
-    auto series = [&](std::size_t col, double sign) {
+WallForceSeries wall_forces(const WallSeries& w) {
+    auto grains_on_wall = [&](std::size_t col) {
         std::vector<double> v(w.columns.at(col));
-        for (double& x : v) x *= sign / A;
+        for (double& x : v) x = -x;
         return v;
     };
-    const std::vector<double> sig_b = series(1, 1.0), sig_t = top_normal_stress(s, w);
-    const std::vector<double> tau_b = series(0, 1.0), tau_t = series(3, -1.0);
-
-    const std::size_t start = win.wall_start;
-    const bool steady = win.steady;
-    const double t_start = win.t_start;
-    auto est = [&](const std::vector<double>& v) {
-        return block_average(std::span<const double>(v).subspan(start), s.blocks);
-    };
-    auto put = [&](const std::string& name, const BlockEstimate& e) {
-        o.outputs[name] = Scalar{e.mean, e.stderr_, "Pa"};
-    };
-    put("normal_stress_bottom", est(sig_b));
-    put("normal_stress_top", est(sig_t));
-    put("shear_stress_bottom", est(tau_b));
-    put("shear_stress_top", est(tau_t));
-    if (w.columns.size() >= 8) {  // side walls: shear stress on each (area L H), mean of both
-        std::vector<double> side(w.columns[6].size());
-        const double As = s.box.length * s.box.gap;
-        for (std::size_t i = 0; i < side.size(); ++i) side[i] = 0.5 * (w.columns[6][i] + w.columns[7][i]) / As;
-        const auto e = est(side);
-        o.outputs["shear_stress_side"] = Scalar{e.mean, e.stderr_, "Pa"};
-    }
-
-    // snapshots from the steady state on
-    const auto& times = cg.times();
-    std::size_t first = 0;
-    while (first < times.size() && times[first] < t_start - 1e-12) ++first;
-    if (times.size() - first < 2) first = times.size() >= 2 ? times.size() - 2 : 0;
-    o.profile = cg.profile(U, first, s.blocks);
-
-    const auto& u = o.profile.column("u_over_U");
-    const auto& ue = o.profile.column("u_over_U_stderr");
-    const std::size_t n = u.size();
-    // slip: wall speed minus the mean velocity of the slab next to the wall (the wall layer)
-    o.outputs["slip_bottom"] = Scalar{U * (1.0 - u[0]), U * ue[0], "m/s"};
-    o.outputs["slip_top"] = Scalar{U * u[n - 1], U * ue[n - 1], "m/s"};
-    o.outputs["mean_solid_fraction"] = Scalar{cg.mean_solid_fraction(first, cg.snapshots()), std::nullopt, ""};
-    std::string load_line;
-    if (plate) {
-        o.run["load_control"] = load_summary({.servo = s,
-                                              .initial_gap = s.box.gap,
-                                              .wall_step = w.step,
-                                              .top_stress = sig_t,
-                                              .plate = *plate,
-                                              .window = win,
-                                              .blocks = s.blocks,
-                                              .grains = grains,
-                                              .grain_diameter = c.grains.diameter,
-                                              .area = A},
-                                             o.outputs, load_line);
-    }
-    o.outputs["max_solid_fraction"] = Scalar{c.cell.max_solid_fraction, std::nullopt, ""};
-
-    o.run.update(nlohmann::json{{"steady_state_detected", steady},
-             {"steady_state_start_s", t_start},
-             {"wall_samples", w.step.size()},
-             {"wall_samples_used", w.step.size() - start},
-             {"snapshots", cg.snapshots()},
-             {"snapshots_used", cg.snapshots() - first}});
-    const double simulated = static_cast<double>(s.steps) * s.time_step;
-    set_regime(o.run, steady ? RegimeStatus::Steady : RegimeStatus::Transient,
-               steady ? "" : fmt::format("no steady state detected in {:.3g} s of simulated time: run longer (--full)",
-                                         simulated));
-    o.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa slip={:.3f}/{:.3f} U{}",
-                         o.outputs["mean_solid_fraction"].value, o.outputs["normal_stress_bottom"].value,
-                         o.outputs["normal_stress_top"].value, o.outputs["shear_stress_bottom"].value,
-                         o.outputs["shear_stress_top"].value, o.outputs["slip_bottom"].value / U,
-                         o.outputs["slip_top"].value / U,
-                         steady ? fmt::format(" (steady from {:.3g} s)", t_start) : " (NO steady state detected: run longer)");
-    o.line += load_line;
-    return o;
+    WallForceSeries f{w.step,
+                      grains_on_wall(0), grains_on_wall(1), grains_on_wall(2),
+                      grains_on_wall(3), grains_on_wall(4), grains_on_wall(5), {}, {}};
+    if (w.columns.size() >= 8) f.fx_side1 = grains_on_wall(6), f.fx_side2 = grains_on_wall(7);
+    return f;
 }
 
 }  // namespace granlub::dem

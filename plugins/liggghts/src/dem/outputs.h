@@ -1,5 +1,5 @@
-// From LIGGGHTS' output files to granlub results: wall stresses (steady state, block errors)
-// and the coarse-grained profile.
+// Reading LIGGGHTS' output files into the engine-independent series that granlub/particle_reduction.h
+// turns into the point's results.
 #pragma once
 #include <filesystem>
 #include <functional>
@@ -8,6 +8,7 @@
 #include "granlub/case.h"
 #include "granlub/coarse_grain.h"
 #include "granlub/load_control.h"
+#include "granlub/particle_reduction.h"
 #include "granlub/results.h"
 #include "settings.h"
 
@@ -29,26 +30,11 @@ std::size_t for_each_snapshot(const std::filesystem::path& file,
 // ave/time file (the initial position at step 0 is dropped).
 PlateSeries read_plate_series(const std::filesystem::path& file);
 
-// The steady window (granlub/load_control.h) of the four wall-force series and, under load, the plate.
-SteadyWindow steady_window(const Settings& s, const WallSeries& walls, const PlateSeries* plate);
+// The common series (granlub/particle_reduction.h): LIGGGHTS records the force of each wall on the
+// grains, the reduction takes the force of the grains on the walls, so every column changes sign.
+WallForceSeries wall_forces(const WallSeries& walls);
 
-// The top-wall normal stress (Pa) per wall-force block: -f_y(top) / (L W).
-std::vector<double> top_normal_stress(const Settings& s, const WallSeries& walls);
-
-struct DemOutputs {
-    Profile profile;
-    std::map<std::string, Scalar> outputs;
-    nlohmann::json run;  // steady-state facts
-    std::string line;
-};
-
-// Stresses (Pa, positive magnitudes, as architecture.md): normal bottom = f_y(bottom)/A, top =
-// -f_y(top)/A; shear bottom = f_x(bottom)/A, top = -f_x(top)/A, with f the force of the wall
-// on the grains and A = L W. Steady state: MSER-5 on each of the four series, the latest start.
-// Load control: also `gap` (m, the mean plate position), mean_solid_fraction = N V_grain / (A gap),
-// and the servo facts in `run`. `grains` = N.
-DemOutputs make_outputs(const Case& c, const OperatingPoint& p, const Settings& s, const WallSeries& walls,
-                        const SliceCoarseGrainer& cg, const SteadyWindow& window, const PlateSeries* plate,
-                        std::size_t grains);
+// The point's results: the shared particle reduction (granlub/particle_reduction.h).
+using DemOutputs = ParticleReduction;
 
 }  // namespace granlub::dem

@@ -1,9 +1,6 @@
-// From the driver's raw outputs to granlub's result files, with the definitions of `granlub dem`
-// (plugins/liggghts/src/dem/outputs.cpp) and the shared code (core/include/granlub/coarse_grain.h):
-// stresses = wall force / wall area from wall-force means over blocks of sample_every steps;
-// steady state = the latest MSER-5 truncation of the four wall-stress series; standard errors by
-// block averaging; profiles by exact sphere-slice coarse-graining of the snapshots from the
-// steady state on; slip from the slabs next to the walls.
+// From the driver's raw outputs to granlub's result files: this file reads the driver's outputs;
+// stresses, steady state, standard errors, profile, slips and the console line are the shared
+// particle reduction of `granlub dem` as well (granlub/particle_reduction.h).
 //
 // Driver outputs read here (all in the point folder):
 //   driver_summary.json  written last by the driver: counts, dt, timings, YADE version
@@ -17,17 +14,16 @@
 #include <vector>
 
 #include "granlub/case.h"
+#include "granlub/particle_reduction.h"
 #include "granlub/particles.h"
 #include "granlub/sweep.h"
 #include "granlub/yade/settings.h"
 
 namespace granlub::yade {
 
-struct WallForces {  // one row per sample interval; forces of the grains on the walls, N
-    std::vector<double> step, fx_bottom, fy_bottom, fz_bottom, fx_top, fy_top, fz_top, fx_side1, fx_side2;
-    std::size_t rows() const { return step.size(); }
-};
-WallForces read_wall_forces(const std::filesystem::path& file);
+// wallforce.csv: the forces of the grains on the walls, as the shared reduction takes them (the
+// side-wall columns are always there; reduce_point drops them for a box periodic across z).
+WallForceSeries read_wall_forces(const std::filesystem::path& file);
 
 // Builds the point's profile and summary (summary starts as `base`, from make_summary()).
 // `radius` gives each grain's radius in file order. Throws SolverError on missing or
