@@ -2,7 +2,7 @@
 // steps 1000-2999) against the reference prototype's numbers in §6.1-6.3. Each tolerance is
 // derived from standard errors: 5 sigma of (our measured standard error combined with the
 // reference's seed-to-seed scatter, 0.001 per §4.4/§6.1) plus the rounding of the printed
-// reference, and never looser than the spec's own tolerance.
+// reference, and never looser than the plan's own tolerance (§7.2).
 #define BOOST_TEST_MODULE automaton_statistics
 #include <boost/test/unit_test.hpp>
 

@@ -59,7 +59,7 @@ struct DemOutputs {
     std::string line;
 };
 
-// Stresses (Pa, positive magnitudes, as architecture.md): normal bottom = f_y(bottom)/A, top =
+// Stresses (Pa, positive magnitudes, as docs/architecture.md): normal bottom = f_y(bottom)/A, top =
 // -f_y(top)/A; shear bottom = f_x(bottom)/A, top = -f_x(top)/A, with f the force of the wall
 // on the grains and A = L W. Steady state: MSER-5 on each of the four series, the latest start.
 // Load control: also `gap` (m, the mean plate position), mean_solid_fraction = N V_grain / (A gap),
