@@ -71,7 +71,7 @@ Profile make_profile(const EnsembleResult& r, double nu_max) {
     Profile p;
     std::vector<double> eta, row;
     for (int y = 0; y < r.rows; ++y) {
-        eta.push_back((y + 0.5) / r.rows);  // eta = (y + 0.5)/H, ca-model.md §2.1
+        eta.push_back((y + 0.5) / r.rows);  // eta = (y + 0.5)/H, docs/automaton-model.md §2.1
         row.push_back(y);
     }
     const auto& R = r.rows_;

@@ -22,7 +22,7 @@ Lattice make_lattice(const Params& p, int replica) {
 
 namespace {
 
-// Least-squares line u = a + b eta through rows 1..H-2 (§4.3); returns {1 - a, a + b}.
+// Least-squares line u = a + b eta through rows 1..H-2 (docs/automaton-model.md §4.3); returns {1 - a, a + b}.
 std::pair<double, double> fit_slips(const std::vector<double>& u, int rows) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
     for (int r = 1; r <= rows - 2; ++r) {
@@ -163,7 +163,7 @@ EnsembleResult pool(const Params& p, const std::vector<std::vector<Block>>& bloc
 
 namespace {
 
-// One replica's lattice and sampler, kept between the runs of the §7.6 protocol.
+// One replica's lattice and sampler, kept between the runs of the §4.5 protocol.
 struct Replica {
     Lattice lattice;
     Sampler sampler;
@@ -234,7 +234,7 @@ std::vector<std::vector<Block>> blocks_of(const std::vector<std::unique_ptr<Repl
     return blocks;
 }
 
-// The parameters of run T of the §7.6 protocol: T steps, read over their second half [ASSUMED].
+// The parameters of run T of the §4.5 protocol: T steps, read over their second half [ASSUMED].
 Params run_of_length(const Params& p, std::int64_t T) {
     Params q = p;
     q.run.steps = T;
@@ -271,7 +271,7 @@ EnsembleResult run_ensemble(const Params& p, const Observer& observer) {
         advance(p, sampler_run, reps, 0, p.run.steps, threads, observer, 0, total);
         res = pool(p, blocks_of(reps));
     } else {
-        // JH06 (§7.6): run T_1 < T_2 < ... and stop when consecutive readings match. A run of T
+        // JH06 (§4.5): run T_1 < T_2 < ... and stop when consecutive readings match. A run of T
         // steps is the first T steps of a longer run with the same seed, so run T_k continues run
         // T_(k-1) instead of restarting: same numbers, half the cost.
         RunsProtocol rp;

@@ -1,4 +1,4 @@
-// The failure of JH06's literal steady-state protocol (ca-model.md §7.6), as a clear error.
+// The failure of JH06's literal steady-state protocol (docs/automaton-model.md §4.5), as a clear error.
 #include <fmt/format.h>
 
 #include "granlub/automaton/ensemble.h"
@@ -17,7 +17,7 @@ void require_converged(const std::string& point, const Params& p, const RunsProt
                                     rp.du.back(), rp.du_row, rp.dnu.back(), rp.dnu_row,
                                     rp.lengths[rp.lengths.size() - 2], rp.lengths.back());
     throw SolverError(fmt::format(
-        "point {}: [automaton] steady_state = \"runs\" (JH06, ca-model.md §7.6) did not converge: runs of {} steps "
+        "point {}: [automaton] steady_state = \"runs\" (JH06's literal protocol) did not converge: runs of {} steps "
         "({} replicas) never agreed within runs_tol_u = {} U and runs_tol_nu = {} before runs_max_steps = {}; {}. "
         "Try: a larger runs_max_steps, more replicas (less noise per reading), or steady_state = \"blocks\". A run "
         "that needs more than ~2000 steps points to a jammed configuration (e.g. vector mode with "

@@ -1,4 +1,4 @@
-// The [automaton] section: every switch of ca-model.md §2.6 with the spec's default.
+// The [automaton] section: every switch of the model (docs/automaton-model.md) with its default.
 #include "granlub/automaton/command.h"
 
 namespace granlub::automaton {
@@ -8,7 +8,7 @@ namespace granlub::automaton {
 constexpr double kMaxSteps = 1e8;
 
 SectionSpec section() {
-    SectionSpec s("automaton", "lattice cellular automaton (Jasti & Higgs 2006; ca-model.md)");
+    SectionSpec s("automaton", "lattice cellular automaton (Jasti & Higgs 2006)");
     s.choice("mode", "jh", {"jh", "vector"},
              "rules: jh = JH06 as specified (scalar u_p); vector = momentum-consistent variant [ASSUMED]");
     s.real_optional("fill", Range::open_closed(0, 1), "",
@@ -39,16 +39,16 @@ SectionSpec section() {
     s.real("steady_tol_u", 0.02, Range::positive(), "", "block test: max |change of u/U| between consecutive blocks");
     s.real("steady_tol_nu", 0.02, Range::positive(), "", "block test: max |change of occupancy| between blocks");
     s.choice("steady_state", "blocks", {"blocks", "runs"},
-             "steady-state protocol: blocks = block test of ca-model.md §4.4 over `steps`; runs = JH06's literal "
-             "protocol (§7.6): runs of runs_start, 2 runs_start, ... steps until consecutive runs agree");
+             "steady-state protocol: blocks = block test over `steps` (docs/automaton-model.md §4.4); runs = JH06's "
+             "literal protocol (§4.5): runs of runs_start, 2 runs_start, ... steps until consecutive runs agree");
     s.integer("runs_start", 1000, Range::closed(1, kMaxSteps),
               "steady_state = \"runs\": first run length T_1 (a multiple of 2 x block); each run doubles it");
     s.integer("runs_max_steps", 16000, Range::closed(1, kMaxSteps),
               "steady_state = \"runs\": step limit; the point fails if runs up to this length never agree");
     s.real("runs_tol_u", 0.01, Range::positive(), "",
-           "steady_state = \"runs\": max |change of u/U| between consecutive runs (JH06 / §7.6)");
+           "steady_state = \"runs\": max |change of u/U| between consecutive runs (JH06)");
     s.real("runs_tol_nu", 0.01, Range::positive(), "",
-           "steady_state = \"runs\": max |change of occupancy| between consecutive runs (§7.6)");
+           "steady_state = \"runs\": max |change of occupancy| between consecutive runs");
     s.integer("timeseries_every", 10, Range::closed(0, kMaxSteps), "write <u_p>, u(row 0), u(top row) every this many steps (0 = none)");
     s.integer("vtk_every", 100, Range::closed(1, kMaxSteps), "lattice snapshot interval (steps) with --vtk");
     s.validate = [](const Section& sec) {

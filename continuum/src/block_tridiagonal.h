@@ -1,5 +1,5 @@
 // Block-tridiagonal LU with 2x2 blocks (block Thomas algorithm), for the interleaved (u, s)
-// Newton systems of the FV solver (guide §6.1: bandwidth 3 in blocks). O(N), no allocation after
+// Newton systems of the FV solver (docs/continuum-model.md §6.1: bandwidth 3 in blocks). O(N), no allocation after
 // construction; two right-hand sides at once for the bordered Fill-mode system.
 #pragma once
 #include <cmath>

@@ -1,4 +1,4 @@
-// Vertex-centred FV + Newton (guide §6.1). See fv_solver.h for the method.
+// Vertex-centred FV + Newton (docs/continuum-model.md §6.1). See fv_solver.h for the method.
 #include "granlub/continuum/fv_solver.h"
 
 #include <algorithm>
@@ -32,7 +32,7 @@ struct Local {
 
 enum class Kind { Interior, Bottom, Top };
 
-// Flux balance of node i's control volume (guide §6.1). Bottom/top are the wall half-cells.
+// Flux balance of node i's control volume (§6.1). Bottom/top are the wall half-cells.
 template <class S>
 void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, double L, S& Ru, S& Rn) {
     const double L2 = L * L;
@@ -146,7 +146,7 @@ public:
         J_.solve(x_);
         dlam = 0;
         if (fill_) {
-            // Bordered system [J c; r 0]: x = x1 - dlam x2, r.x = -g  (guide §6.1 "Fill mode")
+            // Bordered system [J c; r 0]: x = x1 - dlam x2, r.x = -g  (§6.1 "Fill mode")
             for (std::size_t i = 0; i < n_; ++i) y_[i] = Fl_[i];
             J_.solve(y_);
             double rx1 = 0, rx2 = 0;
@@ -269,7 +269,7 @@ NewtonReport newton_fv(const Problem& p, const SolverSettings& st, Solution& sol
     sol.Pi = fv.fill() ? std::exp(lam) : p.Pi;
     sol.residual = rep.residual;
     if (rep.converged) {
-        // Guard against the spurious "empty channel" branch (guide §6.4).
+        // Guard against the spurious "empty channel" branch (§6.3).
         const double m = fv.mean_nu();
         if (m < 0.01) {
             rep.converged = false;
@@ -321,7 +321,7 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
     } catch (const SolverError& e) {
         first_why = e.what();
     }
-    // Automatic continuation (guide §6.1): from an easy problem (Lambda <= 5, moderate Pi or
+    // Automatic continuation (§6.1): from an easy problem (Lambda <= 5, moderate Pi or
     // mean nu) to the target, in ln Lambda and ln Pi (Load) or mean nu (Fill), halving the step
     // when Newton fails (or after a step that needed many iterations).
     Problem start = p;

@@ -35,8 +35,8 @@ double excess(const Problem& p, double nu) {
 }  // namespace
 
 UniformShear uniform_shear_load(const Problem& p) {
-    // Scan down from the cap in logit space for the dense sign change (guide §6.1: the dense
-    // root; the dilute root is the spurious "empty channel" side, guide §6.4).
+    // Scan down from the cap in logit space for the dense sign change (docs/continuum-model.md §6.1: the dense
+    // root; the dilute root is the spurious "empty channel" side, §6.3).
     const double cap = p.closures->cap();
     const auto nu_of = [cap](double s) { return cap / (1.0 + std::exp(-s)); };
     double s_hi = 30.0, f_hi = excess(p, nu_of(s_hi));

@@ -82,7 +82,7 @@ double energy_balance_defect(const Problem& p, const Solution& s) {
         const auto b = wall_coefficients(p, w, nu);
         const auto& r = w.params;
         const double e = r.r6 * L * b.b6.v + r.r7 * L * Pi * b.b7.v * us * us + r.r8 * Pi * b.b8.v * us * du;
-        // bottom: nu' = -e with u_s = 1 - u; top: nu' = +e' with u_s = u (guide §5)
+        // bottom: nu' = -e with u_s = 1 - u; top: nu' = +e' with u_s = u (docs/continuum-model.md §5)
         return top ? e : -e;
     };
     const double K0 = node_coefficients(*p.closures, s.nu.front()).K;

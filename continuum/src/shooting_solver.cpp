@@ -1,4 +1,4 @@
-// Shooting cross-check (guide §6.2). See shooting_solver.h.
+// Shooting cross-check (docs/continuum-model.md §6.2). See shooting_solver.h.
 #include "granlub/continuum/shooting_solver.h"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 #
 #   yade -n -j1 -x granlub_yade.py params.json
 #
-# params.json is written by `granlub yade` (plugins/yade/src/params.cpp); this script never
+# params.json is written by `granlub yade` (plugins/yade/src/driver.cpp); this script never
 # generates code from it. Two tasks:
 #   "couette"   the plane Couette cell of `granlub dem`: grains from the shared initial file,
 #               flat walls at y = 0 (moving at +U along x) and y = H, side walls at z = +-W/2
@@ -16,9 +16,9 @@
 #               measured normal restitution of the contact law as run, in collision.json.
 #
 # Geometry inside YADE: YADE's cell is periodic in all three directions, so the gap is placed
-# inside a taller y period (yade.md section 2): YADE y = y + Y0 with walls outside [Y0, Y0 + H].
+# inside a taller y period (docs/yade-notes.md §2): YADE y = y + Y0 with walls outside [Y0, Y0 + H].
 # Walls are thin boxes, much longer than the x period, with allowBiggerThanPeriod and the
-# collider sorting along y, the wall-normal axis (yade.md section 5: utils.wall hangs a periodic
+# collider sorting along y, the wall-normal axis (docs/yade-notes.md §5: utils.wall hangs a periodic
 # collider; sorting along x loses wall contacts). Outputs use granlub's coordinates.
 #
 # Exit codes: 0 done, 2 bad parameters (message on stderr), 1 any other failure.
@@ -179,7 +179,7 @@ def viscel_restitution(p, en, wall):
 
 def calibrate_viscel(p):
     """ViscElMat's linear spring-dashpot (Pournin 2001) with the attractive part of the force
-    clipped gives e slightly off en (yade.md section 3: en 0.9 -> 0.9003, 0.6 -> 0.6250). The
+    clipped gives e slightly off en (docs/yade-notes.md §3: en 0.9 -> 0.9003, 0.6 -> 0.6250). The
     restitution of the model is velocity-independent, so en is found once per pair by a secant
     search on the measured e of one binary collision. Returns en per material."""
     en = {}
@@ -242,7 +242,7 @@ def build_materials(p, en_override=None):
     if p["model"] == "viscel":
         # Law2_ScGeom_ViscElPhys_Basic: kn = m*(pi^2 + ln^2 en)/tc^2, cn = -2 m* ln(en)/tc
         # (Pournin et al. 2001); the tangential dashpot with et -> 0 stops sliding at zero slip,
-        # as in Walton's operator with beta0 = 0 (yade.md section 3).
+        # as in Walton's operator with beta0 = 0 (docs/yade-notes.md §3).
         en = en_override if en_override is not None else {n: mats[n]["restitution"] for n in mats}
         ip2 = Ip2_ViscElMat_ViscElMat_ViscElPhys(en=MatchMaker(matches=pairs(lambda n: en[n]), algo="avg"),
                                                  frictAngle=MatchMaker(matches=pairs(fric), algo="avg"))
@@ -262,7 +262,7 @@ def wall_box(center, half, mat, p):
     b = utils.box(center=center, extents=half, fixed=True, material=mat, color=(0.5, 0.5, 0.5))
     if p["model"] == "viscel":
         # ViscElMat needs a wall mass: with mass 0 the reduced mass becomes m/2 and e is wrong
-        # (yade.md section 3: 0.9285 instead of 0.9).
+        # (docs/yade-notes.md §3: 0.9285 instead of 0.9).
         b.state.mass = p["contact"]["wall_mass"]
     return O.bodies.append(b)
 
@@ -379,7 +379,7 @@ def run_couette(p):
 
     O.reset()
     t = d  # wall half thickness
-    Y0 = H  # granlub y = 0 sits at YADE y = Y0; the y period is H + top_max + H (yade.md section 2)
+    Y0 = H  # granlub y = 0 sits at YADE y = Y0; the y period is H + top_max + H (docs/yade-notes.md §2)
     Ly = 2 * H + top_max
     if periodic_z:
         Lz, Z0 = W, 0.5 * W
@@ -525,7 +525,7 @@ def run_couette(p):
     centripetal()
 
     t_run = time.time()
-    O.run(total, True)  # total > 0 is checked: O.run(0, True) never returns (yade.md section 5)
+    O.run(total, True)  # total > 0 is checked: O.run(0, True) never returns (docs/yade-notes.md §5)
     wall_clock_run = time.time() - t_run
     fcsv.close()
     fbin.close()

@@ -1,4 +1,4 @@
-// A scripted random source for the rule tests (ca-model.md §7.1): every draw the engine makes
+// A scripted random source for the rule tests (docs/automaton-model.md §7.1): every draw the engine makes
 // must have been scripted, in order, so a test fixes the exact outcome of every rule and also
 // proves which draws a rule makes.
 #pragma once

@@ -170,7 +170,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
     BOOST_TEST(e.find("tf_rounding") != std::string::npos, e);
     e = error_of(case_text("", "t_avg_start = 600\n"));
     BOOST_TEST(e.find("t_avg_start") != std::string::npos, e);
-    // steady-state protocol keys (ca-model.md §7.6): file, key, value and what is allowed
+    // steady-state protocol keys (docs/automaton-model.md §4.5): file, key, value and what is allowed
     e = error_of(case_text("", "steady_state = \"forever\"\n"));
     BOOST_TEST(e.find("test.toml") != std::string::npos, e);
     BOOST_TEST(e.find("steady_state") != std::string::npos, e);
@@ -194,7 +194,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
 }
 
 BOOST_AUTO_TEST_CASE(runs_protocol_is_recorded_and_its_failure_writes_nothing) {
-    // JH06's literal protocol (ca-model.md §7.6): run lengths and final differences in run{}.
+    // JH06's literal protocol (§4.5): run lengths and final differences in run{}.
     const Case c = parse_case(case_text("", "steady_state = \"runs\"\n"), "test.toml", schema());
     RunOptions o;
     o.results_root = fresh_dir("runs");

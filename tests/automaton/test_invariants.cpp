@@ -1,4 +1,4 @@
-// The invariants of ca-model.md §3.5 over long random runs (every rule variant), and
+// The invariants of docs/automaton-model.md §3.5 over long random runs (every rule variant), and
 // determinism: same seed = same numbers, for any thread count.
 #define BOOST_TEST_MODULE automaton_invariants
 #include <boost/test/unit_test.hpp>

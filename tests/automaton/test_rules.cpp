@@ -1,4 +1,4 @@
-// Deterministic rule tests of ca-model.md §7.1 with a scripted random source: the exact
+// Deterministic rule tests of docs/automaton-model.md §7.1 with a scripted random source: the exact
 // outcome of every rule (move, wrap, time factor, both walls, grain-grain, exhaustion, vector
 // mode) and the algebra of JH06 Eqs. 6-9.
 #define BOOST_TEST_MODULE automaton_rules

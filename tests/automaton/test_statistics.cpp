@@ -1,8 +1,8 @@
-// Statistical regression tests of ca-model.md §7.2 (cheap CI variant: 3000 steps averaged over
-// steps 1000-2999) against the reference prototype's numbers in §6.2-6.3. Each tolerance is
+// Statistical regression tests of docs/automaton-model.md §7.2 (cheap CI variant: 3000 steps averaged over
+// steps 1000-2999) against the reference prototype's numbers in §6.1-6.3. Each tolerance is
 // derived from standard errors: 5 sigma of (our measured standard error combined with the
-// reference's seed-to-seed scatter, 0.001 per §4.4/§6.2) plus the rounding of the printed
-// reference, and never looser than the spec's own tolerance.
+// reference's seed-to-seed scatter, 0.001 per §4.4/§6.1) plus the rounding of the printed
+// reference, and never looser than the plan's own tolerance (§7.2).
 #define BOOST_TEST_MODULE automaton_statistics
 #include <boost/test/unit_test.hpp>
 
@@ -40,7 +40,7 @@ void near(const std::string& what, const Stat& ours, double ref, double ref_roun
 
 BOOST_AUTO_TEST_CASE(default_case_profiles) {
     const EnsembleResult r = run_ensemble(ci());
-    // u/U: §6.2 (mean of seeds A and B, 3 decimals); nu: §6.3 "base" row (3 decimals).
+    // u/U: §6.1 (mean of seeds A and B, 3 decimals); nu: §6.3 "base" row (3 decimals).
     const double u_ref[10] = {0.8535, 0.848, 0.7905, 0.7305, 0.6655, 0.5975, 0.5215, 0.442, 0.341, 0.3425};
     const double nu_ref[10] = {0.786, 0.832, 0.840, 0.852, 0.862, 0.868, 0.874, 0.874, 0.880, 0.834};
     for (int y = 0; y < 10; ++y) {
@@ -59,7 +59,7 @@ BOOST_AUTO_TEST_CASE(default_case_profiles) {
     BOOST_TEST(r.rows_.nu[9].mean < nu_max);
     BOOST_TEST(r.steady.reached, r.steady.note);
     BOOST_TEST(r.steady.step <= 1000);
-    // Event counts per run scale to the prototype's (§6.2: 2.76e6 moves, 1.38e7 collisions per
+    // Event counts per run scale to the prototype's (§6.1: 2.76e6 moves, 1.38e7 collisions per
     // 8.5e6 updates): as rates per grain-step.
     near("moves per update", r.moves, 2.76e6 / 8.5e6, 0.005 / 8.5, 0.01);
     near("grain collisions per update", r.pp, 1.38e7 / 8.5e6, 0.005 / 0.85, 0.05);

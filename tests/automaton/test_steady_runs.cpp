@@ -1,4 +1,4 @@
-// JH06's literal steady-state protocol (ca-model.md §7.6, [automaton] steady_state = "runs"):
+// JH06's literal steady-state protocol (docs/automaton-model.md §4.5, [automaton] steady_state = "runs"):
 // it converges on the JH06 default lattice, its profile agrees with the block protocol's (§4.4)
 // within the measured standard errors, and a tight step limit gives a clear failure.
 #define BOOST_TEST_MODULE automaton_steady_runs
@@ -47,7 +47,7 @@ BOOST_AUTO_TEST_CASE(converges_on_the_jh06_lattice_and_agrees_with_the_block_pro
     BOOST_TEST(rp.du.size() == rp.lengths.size() - 1);
     BOOST_TEST(rp.du.back() < p.run.runs_tol_u);
     BOOST_TEST(rp.dnu.back() < p.run.runs_tol_nu);
-    // §7.6: the transient is ~100 steps; needing more than 2000 steps would indicate a bug.
+    // §4.5: the transient is ~100 steps; needing more than 2000 steps would indicate a bug.
     BOOST_TEST(rp.lengths.back() <= 2000);
     BOOST_TEST(r.steady.reached);
     BOOST_TEST(r.steady.step == rp.lengths.back() / 2);  // read over the last run's second half

@@ -1,4 +1,4 @@
-// Shared set-up for the continuum suites: the dimensionless problems of continuum-theory.md.
+// Shared set-up for the continuum suites: the dimensionless problems of docs/continuum-model.md.
 #pragma once
 #include <cmath>
 #include <memory>
@@ -37,7 +37,7 @@ inline Problem problem(const Spec& s) {
     return p;
 }
 
-// S&T 2001 case (guide §1) at speed U and load P.
+// S&T 2001 case (docs/continuum-model.md §1) at speed U and load P.
 inline Spec sawyer(double U, double P = 5.5e3) {
     Spec s;
     s.U = U;
@@ -45,7 +45,7 @@ inline Spec sawyer(double U, double P = 5.5e3) {
     return s;
 }
 
-// Jasti & Higgs 2006 continuum case (guide §7.4): H = 4 mm, e_p = 0.85, e_w = 0.65, R = 0.65.
+// Jasti & Higgs 2006 continuum case (§7.4): H = 4 mm, e_p = 0.85, e_w = 0.65, R = 0.65.
 inline Spec jasti(double P = 5.5e3) {
     Spec s;
     s.U = 2.0;

@@ -1,4 +1,4 @@
-// Closure checks of continuum-theory.md §8.1-8.3: function values, analytic derivatives, elastic
+// Closure checks of docs/continuum-model.md §8.1-8.3: function values, analytic derivatives, elastic
 // limits and homogeneous simple shear, plus the g0 / wall registries.
 #define BOOST_TEST_MODULE continuum_closures
 #include <array>
@@ -15,7 +15,7 @@ using namespace granlub::continuum::testing;
 
 namespace {
 
-// Values of guide §8.1 at e_p = 0.9, nu_max = 0.65, alpha = 1, e_w = 0.9 (K-family b5, b6).
+// Values of §8.1 at e_p = 0.9, nu_max = 0.65, alpha = 1, e_w = 0.9 (K-family b5, b6).
 struct Row {
     double nu, g0, dg0, fp, dfp, fmu, fk, fphi, fgam, G, M, K, B1, B2, b3, b4, b5, b6;
 };
@@ -44,7 +44,7 @@ void check_row(const std::string& g0, const Row& r) {
         const auto w = make_wall_family("k")->coefficients(s, WallParams{0.9, 0.5, 0.5, 0.5, 0.5, 0.0}, 0.65);
         BOOST_CHECK_CLOSE_FRACTION(w.b5.v, r.b5, tol);
         BOOST_CHECK_CLOSE_FRACTION(w.b6.v, r.b6, tol);
-        BOOST_CHECK_CLOSE_FRACTION(w.b8.v, r.b4, tol);  // b8 = b4 (guide §4.1)
+        BOOST_CHECK_CLOSE_FRACTION(w.b8.v, r.b4, tol);  // b8 = b4 (§4.1)
     }
 }
 
@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(johnson_jackson_b5_b6) {
     }
 }
 
-// Every analytic/dual derivative against central differences of the value (guide §8.1: ~1e-9).
+// Every analytic/dual derivative against central differences of the value (§8.1: ~1e-9).
 BOOST_AUTO_TEST_CASE(derivatives_match_finite_differences) {
     for (const auto& name : g0_names()) {
         for (double ep : {0.85, 0.9}) {
@@ -113,7 +113,7 @@ BOOST_AUTO_TEST_CASE(derivatives_match_finite_differences) {
                     BOOST_CHECK_CLOSE_FRACTION(s.dg.d[0], fd(a.dg.v, b.dg.v), 1e-6);
                     const auto na = node_coefficients(*c, nu - h), nb = node_coefficients(*c, nu + h);
                     const auto n = node_coefficients(*c, nu);
-                    // B1 = (ln M)', B2 = (ln K)' (guide §3)
+                    // B1 = (ln M)', B2 = (ln K)' (§3)
                     BOOST_CHECK_CLOSE_FRACTION(n.dM / n.M, fd(std::log(na.M), std::log(nb.M)), 1e-6);
                     BOOST_CHECK_CLOSE_FRACTION(n.dK / n.K, fd(std::log(na.K), std::log(nb.K)), 1e-6);
                     BOOST_CHECK_CLOSE_FRACTION(n.dC, fd(na.C, nb.C), 1e-6);
@@ -133,7 +133,7 @@ BOOST_AUTO_TEST_CASE(derivatives_match_finite_differences) {
     }
 }
 
-// Guide §8.2: e = 1, nu -> 0 gives the Chapman-Enskog dilute viscosity and conductivity. The
+// §8.2: e = 1, nu -> 0 gives the Chapman-Enskog dilute viscosity and conductivity. The
 // kinetic parts scale as 1/g0, and the 1/3-power g0 tends to 1 only as nu^(1/3), so the limit is
 // checked on f g0 (exact up to O(nu g0)).
 BOOST_AUTO_TEST_CASE(elastic_dilute_limits) {
@@ -149,7 +149,7 @@ BOOST_AUTO_TEST_CASE(elastic_dilute_limits) {
     }
 }
 
-// Guide §8.3: homogeneous simple shear, production = dissipation. Per rho sigma^2 gdot^2 (stresses)
+// §8.3: homogeneous simple shear, production = dissipation. Per rho sigma^2 gdot^2 (stresses)
 // and (sigma gdot)^2 (temperature): T = f_mu/f_gamma, p = f_p T, tau = f_mu sqrt(T).
 BOOST_AUTO_TEST_CASE(homogeneous_simple_shear_tables) {
     struct Shear { double nu, T, p, tau, ratio; };
@@ -182,7 +182,7 @@ BOOST_AUTO_TEST_CASE(homogeneous_simple_shear_tables) {
     }
 }
 
-// Guide §8.3 limits: dilute tau/p -> sqrt(5(1-e^2)/(8 eta (2-eta))); dense T/(sigma gdot)^2 and
+// §8.3 limits: dilute tau/p -> sqrt(5(1-e^2)/(8 eta (2-eta))); dense T/(sigma gdot)^2 and
 // tau/p -> the g0-independent values.
 BOOST_AUTO_TEST_CASE(simple_shear_limits) {
     const std::array<std::array<double, 4>, 2> expect{{{0.9, 0.34503, 0.807955, 0.304278},

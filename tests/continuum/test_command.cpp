@@ -150,7 +150,7 @@ solid_fraction = 0.595
         for (const char* q : {"normal_stress_bottom", "shear_stress_bottom", "slip_bottom"})
             BOOST_TEST(std::abs(a.summary.value(q) / b.summary.value(q) - 1) < 1e-5, q);
         BOOST_TEST(b.summary.run.at("method").get<std::string>() == "shooting");
-        // guide §7.5: P = 3761 Pa at U = 1.4 and 15044 Pa at U = 2.8
+        // docs/continuum-model.md §7.5: P = 3761 Pa at U = 1.4 and 15044 Pa at U = 2.8
         const double P = fv.points[i].speed < 2 ? 3761 : 15044;
         BOOST_TEST(std::abs(a.summary.value("normal_stress_bottom") - P) < 1.0);
     }

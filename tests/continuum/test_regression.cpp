@@ -1,5 +1,5 @@
-// Regression numbers of continuum-theory.md §7 (guide §8.6), FV with N = 200 as in the guide.
-// Tolerances follow the digits printed in the guide (about 1e-4 relative).
+// Regression numbers of docs/continuum-model.md §7 (§8.6), FV with N = 200 as in the reference.
+// Tolerances follow the digits printed in the reference (about 1e-4 relative).
 #define BOOST_TEST_MODULE continuum_regression
 #include <array>
 #include <cmath>
@@ -28,7 +28,7 @@ Result solve(const Spec& sp, int cells = 200) {
 double at(const std::vector<double>& v, int tenth) { return v[static_cast<std::size_t>(20 * tenth)]; }
 }  // namespace
 
-// Guide §7.1: default model (K, OGAWA), S&T at P = 5.5 kPa.
+// §7.1: default model (K, OGAWA), S&T at P = 5.5 kPa.
 BOOST_AUTO_TEST_CASE(sawyer_tichy_default_model) {
     struct Row { double U, nu, nu_c, nu_w, us, tau, ratio; };
     for (const auto& r : {Row{1.4, 0.61039, 0.61278, 0.60549, 0.24783, 1512.30, 0.27496},
@@ -47,7 +47,7 @@ BOOST_AUTO_TEST_CASE(sawyer_tichy_default_model) {
     }
 }
 
-// Guide §7.2 default-model profiles (T in m^2/s^2): rows y/H = 0 .. 0.5.
+// §7.2 default-model profiles (T in m^2/s^2): rows y/H = 0 .. 0.5.
 BOOST_AUTO_TEST_CASE(sawyer_tichy_default_profiles) {
     const double u[3][6] = {{0.8230, 0.7552, 0.6895, 0.6254, 0.5625, 0.5000},
                             {0.8231, 0.7553, 0.6896, 0.6255, 0.5625, 0.5000},
@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(sawyer_tichy_default_profiles) {
     }
 }
 
-// Guide §7.2: JJ / LS reference numbers.
+// §7.2: JJ / LS reference numbers.
 BOOST_AUTO_TEST_CASE(sawyer_tichy_jj_ls) {
     struct Row { double U, nu, us, tau, nu_c, nu_w; };
     for (const auto& r : {Row{1.4, 0.58785, 0.18358, 1613.68, 0.58868, 0.58619},
@@ -94,7 +94,7 @@ BOOST_AUTO_TEST_CASE(sawyer_tichy_jj_ls) {
     }
 }
 
-// Guide §7.2 sensitivity table: mean nu for each wall family and g0 (3 decimals).
+// §7.2 sensitivity table: mean nu for each wall family and g0 (3 decimals).
 BOOST_AUTO_TEST_CASE(sawyer_tichy_g0_and_wall_variants) {
     struct Row { const char* wall; const char* g0; std::array<double, 3> nu; };
     const Row rows[] = {{"k", "ogawa", {0.610, 0.578, 0.530}}, {"k", "ls", {0.592, 0.565, 0.529}},
@@ -115,7 +115,7 @@ BOOST_AUTO_TEST_CASE(sawyer_tichy_g0_and_wall_variants) {
     }
 }
 
-// Guide §7.2 "other variants of the default".
+// §7.2 "other variants of the default".
 BOOST_AUTO_TEST_CASE(sawyer_tichy_model_variants) {
     struct Row { const char* what; std::array<double, 3> nu; };
     const auto variant = [](int which, Spec sp) {
@@ -149,7 +149,7 @@ BOOST_AUTO_TEST_CASE(sawyer_tichy_model_variants) {
     }
 }
 
-// Guide §7.4: Jasti & Higgs parameters, default model, load and fill.
+// §7.4: Jasti & Higgs parameters, default model, load and fill.
 BOOST_AUTO_TEST_CASE(jasti_higgs_default_model) {
     struct Row { double P, nu, nu_c, nu_w, us, tau; };
     for (const auto& r : {Row{2.5e3, 0.54535, 0.54825, 0.53956, 0.2584, 880.6},
@@ -173,7 +173,7 @@ BOOST_AUTO_TEST_CASE(jasti_higgs_default_model) {
             const auto [o, s] = solve(sp);
             const double P = sp.rho * 4.0 / s.Pi;
             BOOST_TEST(std::abs(o.nu_mean - r.nu) < 1e-9);
-            BOOST_TEST(rel(P, r.P) < 2e-3);  // the guide prints P to 3 digits
+            BOOST_TEST(rel(P, r.P) < 2e-3);  // the reference gives P to 3 digits
             BOOST_TEST(std::abs(o.nu_centre - r.nu_c) < 2e-5);
             BOOST_TEST(std::abs(o.nu_bottom - r.nu_w) < 2e-5);
             BOOST_TEST(rel(o.tau_bottom * P, r.tau) < 1e-4);
@@ -193,7 +193,7 @@ BOOST_AUTO_TEST_CASE(jasti_higgs_default_model) {
     }
 }
 
-// Guide §7.4: with JJ walls the J&H flow is denser at the walls than in the centre.
+// §7.4: with JJ walls the J&H flow is denser at the walls than in the centre.
 BOOST_AUTO_TEST_CASE(jasti_higgs_jj_walls_are_dense) {
     Spec sp = jasti();
     sp.wall = "jj";
@@ -204,7 +204,7 @@ BOOST_AUTO_TEST_CASE(jasti_higgs_jj_walls_are_dense) {
     BOOST_TEST(std::abs(o.tau_bottom - 0.382) < 6e-4);
 }
 
-// Guide §7.4: slip against roughness (all R equal), both families.
+// §7.4: slip against roughness (all R equal), both families.
 BOOST_AUTO_TEST_CASE(jasti_higgs_slip_against_roughness) {
     const double R[7] = {0.10, 0.20, 0.35, 0.50, 0.65, 0.80, 1.00};
     const double k_slip[7] = {0.354, 0.273, 0.201, 0.158, 0.129, 0.109, 0.089};
@@ -226,7 +226,7 @@ BOOST_AUTO_TEST_CASE(jasti_higgs_slip_against_roughness) {
     }
 }
 
-// Guide §7.5: fill mode at nu_mean = 0.595 with S&T parameters: Pi = 1.32887 and tau/P = 0.2745
+// §7.5: fill mode at nu_mean = 0.595 with S&T parameters: Pi = 1.32887 and tau/P = 0.2745
 // at every speed, so P and tau scale with U^2.
 BOOST_AUTO_TEST_CASE(sawyer_tichy_fill_mode) {
     const double U[5] = {0.4, 0.8, 1.4, 2.0, 2.8};

@@ -1,4 +1,4 @@
-// Solver checks of continuum-theory.md §8.4-8.5: adiabatic walls (exact uniform solution),
+// Solver checks of docs/continuum-model.md §8.4-8.5: adiabatic walls (exact uniform solution),
 // symmetry, constant shear stress, global energy balance, Bagnold invariance, FV vs shooting,
 // second-order mesh convergence, continuation and clean failure.
 #define BOOST_TEST_MODULE continuum_solver
@@ -29,7 +29,7 @@ double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
 }
 }  // namespace
 
-// Guide §8.4: with R6 = R7 = R8 = 0 the solution is uniform shear at the root of
+// §8.4: with R6 = R7 = R8 = 0 the solution is uniform shear at the root of
 // Lambda^2 f_gamma = Pi f_mu f_p (1 - 2 u_s)^2.
 BOOST_AUTO_TEST_CASE(adiabatic_walls_give_the_uniform_shear_solution) {
     struct Expect { const char* wall; double nu, us, tau; };
@@ -49,7 +49,7 @@ BOOST_AUTO_TEST_CASE(adiabatic_walls_give_the_uniform_shear_solution) {
                 BOOST_TEST(std::abs(s.u[i] - (1 - h.slip_bottom - h.shear * s.y[i])) < 1e-8);
             BOOST_CHECK_CLOSE_FRACTION(o.slip_bottom, e.us, 1e-7);
             BOOST_CHECK_CLOSE_FRACTION(o.tau_bottom * sp.P, e.tau, 1e-7);
-            // the same tau as homogeneous LSJC simple shear at that nu (guide §8.3)
+            // the same tau as homogeneous LSJC simple shear at that nu (§8.3)
             const auto st = p.closures->state(e.nu);
             const double gdot = h.shear * sp.U / sp.H;
             const double tau_ss = sp.rho * sp.d * sp.d * gdot * gdot * std::pow(st.fmu.v, 1.5) / std::sqrt(st.fgam.v);
@@ -58,7 +58,7 @@ BOOST_AUTO_TEST_CASE(adiabatic_walls_give_the_uniform_shear_solution) {
     }
 }
 
-// Guide §8.5: symmetry, constant shear stress (discretely exact), global energy balance.
+// §8.5: symmetry, constant shear stress (discretely exact), global energy balance.
 BOOST_AUTO_TEST_CASE(invariants_of_every_solution) {
     for (const char* wall : {"k", "jj"}) {
         for (Mode mode : {Mode::Load, Mode::Fill}) {
@@ -137,7 +137,7 @@ BOOST_AUTO_TEST_CASE(energy_balance_converges_at_second_order) {
     }
 }
 
-// Guide §6.1 "Accuracy": second order in nu_mean and tau under mesh refinement.
+// §6.1 "Accuracy": second order in nu_mean and tau under mesh refinement.
 BOOST_AUTO_TEST_CASE(second_order_mesh_convergence) {
     for (const char* wall : {"k", "jj"}) {
         Spec sp = sawyer(2.0);
@@ -152,7 +152,7 @@ BOOST_AUTO_TEST_CASE(second_order_mesh_convergence) {
         }
         BOOST_TEST_MESSAGE(wall << ": nu errors " << e_nu[0] << " " << e_nu[1] << " " << e_nu[2] << "; tau errors "
                                 << e_tau[0] << " " << e_tau[1] << " " << e_tau[2]);
-        BOOST_TEST(e_nu[0] < 1e-4);  // guide: N = 25 already within ~2e-5
+        BOOST_TEST(e_nu[0] < 1e-4);  // reference: N = 25 already within ~2e-5
         for (std::size_t k = 0; k + 1 < e_nu.size(); ++k) {
             BOOST_TEST(std::log2(e_nu[k] / e_nu[k + 1]) > 1.8);
             BOOST_TEST(std::log2(e_nu[k] / e_nu[k + 1]) < 2.3);
@@ -162,15 +162,15 @@ BOOST_AUTO_TEST_CASE(second_order_mesh_convergence) {
     }
 }
 
-// Guide §5, §7.5: the dimensionless solution depends on (U, P) only through Pi = rho U^2/P.
+// §5, §7.5: the dimensionless solution depends on (U, P) only through Pi = rho U^2/P.
 BOOST_AUTO_TEST_CASE(bagnold_invariance) {
-    const double expect_tau_over_U2 = 771.5801;  // Pa s^2/m^2 (guide §7.5)
+    const double expect_tau_over_U2 = 771.5801;  // Pa s^2/m^2 (§7.5)
     Solution ref;
     for (auto [U, P] : {std::pair{0.7, 1375.0}, std::pair{1.4, 5500.0}, std::pair{2.8, 22000.0}}) {
         const Problem p = problem(sawyer(U, P));
         const Solution s = solve_fv(p, mesh(200));
         const auto o = observe(p, s);
-        // 1e-5: the guide's value is mesh-converged; N = 200 carries ~4e-6 discretisation error
+        // 1e-5: the reference value is mesh-converged; N = 200 carries ~4e-6 discretisation error
         BOOST_CHECK_CLOSE_FRACTION(o.tau_bottom * P / (U * U), expect_tau_over_U2, 1e-5);
         BOOST_TEST(std::abs(o.nu_mean - 0.610387) < 1e-6);
         BOOST_TEST(std::abs(o.slip_bottom - 0.177020) < 1e-6);
@@ -183,7 +183,7 @@ BOOST_AUTO_TEST_CASE(bagnold_invariance) {
     }
 }
 
-// Guide §6.2: the independent shooting solver agrees with FV to <= 1e-5 (profiles and Pi), for
+// §6.2: the independent shooting solver agrees with FV to <= 1e-5 (profiles and Pi), for
 // both wall families, both controls, equal and unequal walls.
 BOOST_AUTO_TEST_CASE(finite_volumes_agree_with_shooting) {
     for (const char* wall : {"k", "jj"}) {
@@ -216,7 +216,7 @@ BOOST_AUTO_TEST_CASE(finite_volumes_agree_with_shooting) {
     }
 }
 
-// Guide §7.6-7.7: continuation across Pi and large gaps (core nearly jammed).
+// §7.6-7.7: continuation across Pi and large gaps (core nearly jammed).
 BOOST_AUTO_TEST_CASE(extreme_points_and_large_gaps_converge) {
     struct Gap { double over_d, nu, nu_c, nu_w, slip; int cells; };
     for (const auto& g : {Gap{10, 0.622, 0.626, 0.613, 0.116, 200}, Gap{20, 0.641, 0.644, 0.633, 0.077, 200},
@@ -232,7 +232,7 @@ BOOST_AUTO_TEST_CASE(extreme_points_and_large_gaps_converge) {
             BOOST_TEST(std::abs(o.slip_bottom - g.slip) < 1e-3);
         }
     }
-    // Pi = 50 -> nu_mean 0.228, Pi = 0.02 -> 0.649 (guide §7.6)
+    // Pi = 50 -> nu_mean 0.228, Pi = 0.02 -> 0.649 (§7.6)
     for (auto [Pi, nu] : {std::pair{50.0, 0.228}, std::pair{0.02, 0.649}}) {
         Problem p = problem(sawyer(2.0));
         p.Pi = Pi;
@@ -266,7 +266,7 @@ BOOST_AUTO_TEST_CASE(failures_are_clean) {
     }
 }
 
-// Dufour flag (guide §7.3): effect < 1e-4 on nu_mean; JJ/LS at S&T U = 1.4.
+// Dufour flag (§7.3): effect < 1e-4 on nu_mean; JJ/LS at S&T U = 1.4.
 BOOST_AUTO_TEST_CASE(dufour_term_is_switchable_and_small) {
     Spec sp = sawyer(1.4);
     sp.wall = "jj";
@@ -279,7 +279,7 @@ BOOST_AUTO_TEST_CASE(dufour_term_is_switchable_and_small) {
     BOOST_TEST(on.nu_mean != off.nu_mean);
 }
 
-// Newton converges in a handful of iterations from the uniform-shear guess (guide §6.1: 3-5).
+// Newton converges in a handful of iterations from the uniform-shear guess (§6.1: 3-5).
 BOOST_AUTO_TEST_CASE(newton_is_quadratic_from_the_uniform_guess) {
     for (double U : {1.4, 2.0, 2.8}) {
         const Problem p = problem(sawyer(U));

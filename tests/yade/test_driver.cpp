@@ -25,7 +25,7 @@ namespace tt = boost::test_tools;
 namespace {
 
 // Restitution targets that differ per material, including low ones where ViscElMat's e_n and
-// the measured e differ most (yade.md section 3). Side walls take the bottom wall's material.
+// the measured e differ most (docs/yade-notes.md §3). Side walls take the bottom wall's material.
 const std::pair<std::string, std::string> kGrains85{"restitution = 0.9\nfriction = 0.5\n\n[walls]",
                                                     "restitution = 0.85\nfriction = 0.5\n\n[walls]"};
 const std::pair<std::string, std::string> kMixedWalls{

@@ -1,6 +1,6 @@
-// g0 of Carnahan & Starling 1969: g0 = (2 - nu)/(2 (1 - nu)^3) (guide §2.5). It has no nu_max
+// g0 of Carnahan & Starling 1969: g0 = (2 - nu)/(2 (1 - nu)^3) (docs/continuum-model.md §2.3). It has no nu_max
 // singularity, so the logit map is capped at 0.95 and nu > nu_max is reported as unphysical
-// (guide §6.1, §6.4). It overshoots nu_max for the S&T case (guide §7.2).
+// (§6.1, §6.3). It overshoots nu_max for the S&T case (§7.2).
 #include "granlub/continuum/g0/radial_distribution.h"
 
 namespace granlub::continuum {

@@ -1,5 +1,5 @@
 // g0 of Lun & Savage 1986 (Acta Mech. 63:15) [LIT]: g0 = (1 - nu/nu_max)^{-2.5 nu_max}
-// (guide §2.5; OpenFOAM radialModel `LunSavage`). The guide's first alternative.
+// (docs/continuum-model.md §2.3; OpenFOAM radialModel `LunSavage`). The first alternative to the default.
 #include <cmath>
 
 #include "granlub/continuum/g0/radial_distribution.h"

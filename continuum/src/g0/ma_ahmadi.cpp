@@ -1,4 +1,4 @@
-// g0 of Ma & Ahmadi 1986 [LIT] (guide §2.5):
+// g0 of Ma & Ahmadi 1986 [LIT] (docs/continuum-model.md §2.3):
 //   g0 = (1 + 2.5 nu + 4.5904 nu^2 + 4.515439 nu^3) / [1 - (nu/nu_max)^3]^0.67802
 #include <cmath>
 

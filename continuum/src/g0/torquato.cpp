@@ -1,4 +1,4 @@
-// g0 of Torquato 1995 [LIT] (guide §2.5): Carnahan-Starling below the freezing point
+// g0 of Torquato 1995 [LIT] (docs/continuum-model.md §2.3): Carnahan-Starling below the freezing point
 // nu_f = 0.49, then g_f (nu_max - nu_f)/(nu_max - nu) with g_f = CS(nu_f).
 #include "granlub/continuum/g0/radial_distribution.h"
 

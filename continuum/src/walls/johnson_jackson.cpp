@@ -1,4 +1,4 @@
-// Wall family JJ: Johnson & Jackson 1987 in GKL form (guide §4.3). Traction and dissipation are
+// Wall family JJ: Johnson & Jackson 1987 in GKL form (docs/continuum-model.md §4.3). Traction and dissipation are
 // JJ's [SRC: MFiX bc_theta.f]; mapping them onto the GKL R-scaled terms is our [ASSUMPTION]:
 //   b5 = (pi sqrt3/(6 nu_max)) nu g0 / f_mu                 (R5 = specularity phi')
 //   b6 = (pi sqrt3/(4 nu_max)) (1 - e_w^2) nu g0 / G

@@ -1,11 +1,11 @@
-// Wall family K: kinetic, P-based, Jenkins-Richman-structured (guide §4.2) [ASSUMPTION; DERIVED].
+// Wall family K: kinetic, P-based, Jenkins-Richman-structured (docs/continuum-model.md §4.2) [ASSUMPTION; DERIVED].
 // A Maxwellian at the wall with the wall normal stress equal to P (the Jenkins & Richman 1986
 // device) gives the collision rate; a fraction R5 of collisions is diffuse (Hui et al. 1984).
 //   b5 = sqrt(2/pi) f_p / ((1 + e_w) f_mu)                 traction / (mu u_s)
 //   b6 = sqrt(2/pi) (1 - e_w) f_p / G                       normal-collision dissipation
 //   b7 = f_t sqrt(2/pi) f_p^2 / ((1 + e_w) G)               slip dissipation (f_t = 0 default)
 //   b8 = f_mu f_p / G                                       slip work (= b4)
-// The guide's recommended default: it reproduces J&H's dilute walls and S&T's equal slip/U.
+// The default: it reproduces J&H's dilute walls and S&T's equal slip/U.
 #include <cmath>
 #include <numbers>
 

@@ -11,8 +11,8 @@ std::unique_ptr<WallFamily> make_wall_johnson_jackson();
 
 const std::vector<WallEntry>& wall_registry() {
     static const std::vector<WallEntry> table = {
-        {"k", "kinetic, P-based, Jenkins-Richman-structured (guide §4.2; default)", make_wall_kinetic},
-        {"jj", "Johnson & Jackson 1987 in GKL form (guide §4.3)", make_wall_johnson_jackson},
+        {"k", "kinetic, P-based, Jenkins-Richman-structured (default)", make_wall_kinetic},
+        {"jj", "Johnson & Jackson 1987 in GKL form", make_wall_johnson_jackson},
     };
     return table;
 }

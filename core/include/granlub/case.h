@@ -1,5 +1,5 @@
 // The case model: cases/NAME/case.toml parsed, validated and resolved into operating points.
-// Contract: ../shared/docs/architecture.md ("The case file"). SI units everywhere.
+// Contract: docs/architecture.md ("The case file"). SI units everywhere.
 #pragma once
 #include <cstddef>
 #include <filesystem>

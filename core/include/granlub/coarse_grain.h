@@ -1,6 +1,8 @@
 // Coarse-graining particle snapshots into profiles across the gap, shared by the particle solvers.
-// Three independent choices, as in MercuryDPM's Kernel/CG (Weinhart et al. 2012, Granular Matter
-// 14:289, "From discrete particles to continuum fields near a boundary"):
+// It is described by the three aspects MercuryDPM's CG separates (Weinhart et al. 2012, Granular
+// Matter 14:289, "From discrete particles to continuum fields near a boundary"), but here each aspect
+// has exactly one implementation, fixed in SliceCoarseGrainer; none is a template parameter or a
+// run-time option:
 //   where: Stations, equal slabs across the gap y in [0, H] (averaged over x and z);
 //   how:   each grain's volume is split between the slabs by exact sphere-slice volumes
 //          V_k = pi * integral over the slab of (r^2 - (y - y_c)^2) dy;
@@ -9,10 +11,10 @@
 //                                                                          for equal densities)
 //          temperature      T_k  = (1/3) sum_c [ sum_i V_ik v_ic^2 / sum_i V_ik - u_kc^2 ]
 //          i.e. T from the velocity fluctuations about the local mean velocity of the same
-//          averaging window (architecture.md: T = <C^2>/3), sums running over all snapshots used.
-// Standard errors come from block averaging (granlub/block_average.h): the snapshots are cut into
-// contiguous blocks, each block gives its own profile, and the standard error is that of the
-// block values.
+//          averaging window (docs/architecture.md: T = <C^2>/3), sums running over all snapshots used.
+// Standard errors come from block averaging (granlub/block_average.h; Flyvbjerg & Petersen 1989,
+// J. Chem. Phys. 91:461): the snapshots are cut into contiguous blocks, each block gives its own
+// profile, and the standard error is that of the block values.
 // The steady state is detected on a scalar time series (e.g. wall stress) with MSER-5
 // (White 1997, Simulation 69:323; White, Cobb & Spratt 2000): the truncation point d that
 // minimises the squared standard error of the remaining batch means.

@@ -1,9 +1,9 @@
 // Particle sets shared by the particle solvers (plugins/liggghts, plugins/yade): the box a case
 // point gives them, a deterministic non-overlapping insertion to a requested fill, and the
 // initial-configuration file both engines start from, so that their differences come from the
-// physics alone (architecture.md, "Data flow").
+// physics alone (docs/architecture.md, "Data flow").
 //
-// Geometry (architecture.md): x along the flow, periodic with length cell.length; y across the
+// Geometry (docs/architecture.md): x along the flow, periodic with length cell.length; y across the
 // gap, moving wall at y = 0, stationary wall at y = H; z across the width, walls at z = +-W/2 or
 // periodic when cell.width = 0 (then the particle solvers use a periodic depth, see ParticleBox).
 //

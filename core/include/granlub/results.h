@@ -1,5 +1,5 @@
 // The results model: results/<solver>/<point>/{profile.csv, summary.json}.
-// Contract: ../shared/docs/architecture.md ("Results").
+// Contract: docs/architecture.md ("Results").
 //
 // profile.csv: '#' comment lines (provenance), a header row, one row per station across the gap.
 //   Required columns: y_over_H, u_over_U, solid_fraction, temperature_over_U2; statistical

@@ -2,12 +2,13 @@
 // unit and a one-line doc. The declaration drives validation, `granlub check` output and the
 // key tables in the READMEs (idea borrowed from deal.II's ParameterHandler).
 //
-// A module declares its own section in one function, one line per key:
+// A module declares its own section in one function, one line per key (continuum/src/section.cpp
+// is a full example):
 //
 //   SectionSpec s("continuum", "GKL continuum solver");
-//   s.choice("g0", "ogawa", {"ogawa", "ls", "cs", "ma", "torq"}, "radial distribution g0");
-//   s.integer("cells", 200, Range::at_least(8), "", "finite-volume cells across the gap");
-//   s.real("tolerance", 1e-10, Range::positive(), "", "Newton tolerance on the scaled residual");
+//   s.choice("method", "fv", {"fv", "shooting"}, "solver");
+//   s.integer("cells", 200, Range::closed(100, 1e6), "finite-volume cells across the gap");
+//   s.real("tolerance", 1e-10, Range::positive(), "", "Newton tolerance on the max-norm residual");
 #pragma once
 #include <cstdint>
 #include <functional>

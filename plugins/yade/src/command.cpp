@@ -48,7 +48,7 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
     const DriverPaths paths = locate_driver();
 
     const auto steps = static_cast<double>(s.steps);
-    // a guard against hangs (yade.md section 5), not a performance limit: a 2-core machine shared
+    // a guard against hangs (docs/yade-notes.md §5), not a performance limit: a 2-core machine shared
     // by several jobs ran YADE 6x slower than a quiet one
     const double timeout = s.timeout > 0 ? s.timeout : 600.0 + 1e-4 * static_cast<double>(init.particles.size()) * steps;
     Progress progress(fmt::format("yade {}", p.id), static_cast<std::uint64_t>(steps));

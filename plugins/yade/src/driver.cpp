@@ -108,7 +108,7 @@ void run_driver(const DriverPaths& paths, const fs::path& dir, json params, cons
         std::ofstream l(log, std::ios::trunc);
         l << fmt::format("# {} -n -j1 -x granlub_yade.py params.json   (in {})\n", paths.yade.string(), dir.string());
     }
-    // -n: no GUI; -j1: one thread, bitwise reproducible (yade.md section 5); -x: exit at the end
+    // -n: no GUI; -j1: one thread, bitwise reproducible (docs/yade-notes.md §5); -x: exit at the end
     const ProcessResult r = run_process({paths.yade.string(), "-n", "-j1", "-x", "granlub_yade.py", "params.json"},
                                         dir, log, timeout_s, poll);
     if (r.exit_code == 0 && !r.timed_out && !r.signal) return;

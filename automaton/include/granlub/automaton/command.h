@@ -1,5 +1,5 @@
 // `granlub automaton CASE [--point ID] [--seed N] [--vtk] [--full]`: the Jasti-Higgs lattice
-// cellular automaton on every operating point of a case (ca-model.md; automaton/README.md).
+// cellular automaton on every operating point of a case (docs/automaton-model.md; automaton/README.md).
 #pragma once
 #include "granlub/case.h"
 #include "granlub/schema.h"

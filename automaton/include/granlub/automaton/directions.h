@@ -1,4 +1,4 @@
-// The eight lattice directions of the CA (ca-model.md §2.2), numbered k = 0..7 counter-clockwise
+// The eight lattice directions of the CA (docs/automaton-model.md §2.2), numbered k = 0..7 counter-clockwise
 // from +x (E). JH06's "1-direction" is +x, the direction of the moving bottom wall; we assume the
 // paper's Fig. 4 numbers them the same way (paper number = k + 1) [ASSUMED].
 #pragma once
@@ -12,7 +12,7 @@ enum Dir : std::uint8_t { E = 0, NE = 1, N = 2, NW = 3, W = 4, SW = 5, S = 6, SE
 inline constexpr std::array<int, 8> kDx = {+1, +1, 0, -1, -1, -1, 0, +1};
 inline constexpr std::array<int, 8> kDy = {0, +1, +1, +1, 0, -1, -1, -1};
 
-// Specular reflection at a horizontal wall: (dx, dy) -> (dx, -dy)  [RECON, ca-model.md §3.3].
+// Specular reflection at a horizontal wall: (dx, dy) -> (dx, -dy)  [RECON, §3.3].
 inline constexpr std::array<std::uint8_t, 8> kReflect = {E, SE, S, SW, W, NW, N, NE};
 // The drag notch at the moving wall: turn 45 degrees toward +x, never past NE  [ASSUMED, §3.3].
 // Only used on reflected (upward) directions: NW -> N, N -> NE, NE -> NE.

@@ -1,4 +1,4 @@
-// The lattice and its update: JH06's asynchronous CA (ca-model.md §2-3, optional §5).
+// The lattice and its update: JH06's asynchronous CA (docs/automaton-model.md §2-3, optional §5).
 //
 // Data layout (§8): a flat occupancy grid of columns x (rows + 2) cells holding particle indices
 // or the sentinels EMPTY / WALL_BOTTOM / WALL_TOP, column-major (x (H + 2) + y + 1) so that a
@@ -81,7 +81,7 @@ public:
         magic_ = ~std::uint64_t{0} / stride_ + 1;
     }
 
-    // JH06's initial state (§2.7): N distinct random cells, random directions, u_p uniform on
+    // JH06's initial state (§2.5): N distinct random cells, random directions, u_p uniform on
     // (0, s0_max], clocks at a random phase. Draws come from the rule stream.
     void fill_random(const LatticeSpec& spec) {
         const std::int64_t n = spec.particles();

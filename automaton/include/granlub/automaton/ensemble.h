@@ -18,7 +18,7 @@ namespace granlub::automaton {
 
 using Lattice = Engine<Philox>;
 
-// A lattice built and filled for replica r of `p` (§2.7).
+// A lattice built and filled for replica r of `p` (§2.5).
 Lattice make_lattice(const Params& p, int replica);
 
 using Stat = BlockEstimate;  // mean and standard error over the window blocks
@@ -39,7 +39,7 @@ struct SteadyState {
     std::string note;            // why not, when not
 };
 
-// JH06's literal steady-state protocol (ca-model.md §7.6), when run.steady_protocol = Runs.
+// JH06's literal steady-state protocol (docs/automaton-model.md §4.5), when run.steady_protocol = Runs.
 struct RunsProtocol {
     bool used = false;
     bool converged = false;              // consecutive readings agreed before runs_max_steps
@@ -82,7 +82,7 @@ EnsembleResult run_ensemble(const Params& p, const Observer& observer = {});
 EnsembleResult pool(const Params& p, const std::vector<std::vector<Block>>& blocks);
 SteadyState steady_state(const RunSpec& run, const std::vector<Block>& blocks);
 
-// §7.6: throws SolverError when the runs protocol reached runs_max_steps without two agreeing
+// §4.5: throws SolverError when the runs protocol reached runs_max_steps without two agreeing
 // runs, naming the point, the run lengths, the last differences (and rows) and what to try.
 void require_converged(const std::string& point, const Params& p, const RunsProtocol& rp);
 

@@ -1,5 +1,6 @@
 // Plain parameters of one CA run, in lattice units (U = 1, cell = one grain diameter).
-// Names and defaults follow ca-model.md §2.6; the tags say where each rule comes from.
+// Names and defaults are the [automaton] keys (automaton/README.md); the tags say where each rule
+// comes from (docs/automaton-model.md §1).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -11,7 +12,7 @@ enum class TfRounding { Round, Ceil, Accumulate };  // §2.4 [ASSUMED]
 enum class WallSpeed { Sequential, ByIncidence };   // §3.3 [ASSUMED]
 enum class StruckDir { Line, Keep };                 // §3.4 [ASSUMED]
 enum class VecBlocked { Deflect, Wait };             // §5 [ASSUMED]
-enum class SteadyProtocol { Blocks, Runs };          // §4.4 block test, or JH06's literal runs (§7.6)
+enum class SteadyProtocol { Blocks, Runs };          // §4.4 block test, or JH06's literal runs (§4.5)
 
 // The collision rules and their switches.
 struct Rules {
@@ -31,7 +32,7 @@ struct Rules {
     VecBlocked vec_blocked = VecBlocked::Deflect;
 };
 
-// Lattice size and initial state (§2.1, §2.7).
+// Lattice size and initial state (§2.1, §2.5).
 struct LatticeSpec {
     int columns = 100;     // L, periodic along x
     int rows = 10;         // H particle rows between the wall rows y = -1 and y = H
@@ -54,13 +55,13 @@ struct RunSpec {
     double steady_tol_nu = 0.02;
     int steady_pairs = 3;             // consecutive passing block pairs
     double drift_tol = 0.005;         // max |slope| of <u_p>(block) over the last 5 blocks, U/block
-    // JH06's literal protocol (§7.6): runs of T_1 = runs_start, T_k = 2 T_(k-1) steps; each run's
+    // JH06's literal protocol (§4.5): runs of T_1 = runs_start, T_k = 2 T_(k-1) steps; each run's
     // reading is its average over its second half [ASSUMED]; stop when consecutive readings agree.
     SteadyProtocol steady_protocol = SteadyProtocol::Blocks;
     std::int64_t runs_start = 1000;      // T_1, a multiple of 2 x block
     std::int64_t runs_max_steps = 16000; // step limit: fail if T_k would exceed it
-    double runs_tol_u = 0.01;            // max_y |du| / U between consecutive runs (§7.6)
-    double runs_tol_nu = 0.01;           // max_y |dnu| between consecutive runs (§7.6)
+    double runs_tol_u = 0.01;            // max_y |du| / U between consecutive runs (§4.5)
+    double runs_tol_nu = 0.01;           // max_y |dnu| between consecutive runs (§4.5)
     std::int64_t snapshot_every = 0;  // 0: no lattice snapshots
 };
 

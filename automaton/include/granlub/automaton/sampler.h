@@ -1,4 +1,4 @@
-// Measurements of one replica (ca-model.md §4.2-4.4): per-row sums of every sampled step,
+// Measurements of one replica (docs/automaton-model.md §4.2-4.4): per-row sums of every sampled step,
 // closed into blocks of `block` steps counted from step 0. Blocks serve both the steady-state
 // test (all blocks) and the averages with standard errors (blocks inside the sampling window).
 #pragma once

@@ -1,4 +1,4 @@
-// The speed equations of JH06 acting on the scalar u_p (lattice units, U = 1), ca-model.md §3.3-3.4.
+// The speed equations of JH06 acting on the scalar u_p (lattice units, U = 1), docs/automaton-model.md §3.3-3.4.
 // Results are clamped to [0, 1]: mathematically every rule is a convex combination of values in
 // [0, U] (§3.5); the clamp only removes last-bit rounding above U.
 #pragma once

@@ -1,6 +1,6 @@
 // Forward-mode dual numbers with N derivative directions. The closures are templated on the
 // scalar type, so evaluating them with Dual<1> in nu gives exact d/dnu, and the finite-volume
-// stencil evaluated with Dual<7> gives exact Jacobian rows (guide §2.6: exact derivatives, never
+// stencil evaluated with Dual<7> gives exact Jacobian rows (docs/continuum-model.md §2.4: exact derivatives, never
 // nested numerical differentiation).
 #pragma once
 #include <array>

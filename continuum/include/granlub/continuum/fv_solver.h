@@ -1,7 +1,7 @@
-// Vertex-centred finite volumes + Newton in logit-nu (guide §6.1).
+// Vertex-centred finite volumes + Newton in logit-nu (docs/continuum-model.md §6.1).
 //   unknowns (u^_i, s_i) interleaved, nu_i = cap / (1 + exp(-s_i)); in Fill mode also lambda = ln Pi
 //   face coefficients are node averages; wall half-cells take their fluxes from the wall conditions
-//   exact Jacobian: node closures in Dual<1>, the stencil in Dual<7> (guide §2.6)
+//   exact Jacobian: node closures in Dual<1>, the stencil in Dual<7> (§2.4)
 //   linear algebra: block-tridiagonal (2x2 Eigen blocks) LU, bordered for the Fill constraint
 #pragma once
 #include <string>

@@ -1,7 +1,7 @@
-// The uniform-shear solution (guide §6.1 "Initial guess", §8.4): nu uniform, u linear with slip.
+// The uniform-shear solution (docs/continuum-model.md §6.1 "Initial guess", §8.4): nu uniform, u linear with slip.
 // With adiabatic walls (R6 = R7 = R8 = 0) it is the exact solution; otherwise the initial guess.
 //   Lambda^2 f_gamma(nu) = Pi f_mu f_p s^2,   s = -u^' = 1/(1 + 1/k0 + 1/k1),  k = R5 Lambda b5(nu)
-// (for equal walls s = 1 - 2 u_s with u_s = 1/(2 + R5 Lambda b5), as in the guide).
+// (for equal walls s = 1 - 2 u_s with u_s = 1/(2 + R5 Lambda b5), docs/continuum-model.md §6.1).
 #pragma once
 #include "granlub/continuum/problem.h"
 

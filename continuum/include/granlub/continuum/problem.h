@@ -1,11 +1,11 @@
-// The dimensionless GKL Couette problem (guide §5) and its solution.
+// The dimensionless GKL Couette problem (docs/continuum-model.md §5) and its solution.
 //   y^ = y/H, u^ = u/U, Lambda = H/sigma, Pi = rho_p U^2 / P_y
-//   (M u^')' = 0,   (K nu')' = Pi M u^'^2 - Lambda^2 C                       (guide §3, §5)
+//   (M u^')' = 0,   (K nu')' = Pi M u^'^2 - Lambda^2 C                       (§3, §5)
 //   y^ = 0 (moving):  u^' = -R5 Lambda b5 (1 - u^)
 //                     nu' = -[R6 Lambda b6 + R7 Lambda Pi b7 (1-u^)^2 + R8 Pi b8 (1-u^) u^']
 //   y^ = 1 (fixed):   u^' = -R5 Lambda b5 u^
 //                     nu' = +R6 Lambda b6 + R7 Lambda Pi b7 u^2 + R8 Pi b8 u^ u^'
-// (S&T 2001 Eqs. 13-15 with the sign table of guide §1.)
+// (S&T 2001 Eqs. 13-15 with the sign table of §1.)
 #pragma once
 #include <memory>
 #include <string>
@@ -54,7 +54,7 @@ struct SolverSettings {
     int max_continuation_steps = 200;
 };
 
-// Scalar outputs of a solution, dimensionless (guide §5 "Outputs").
+// Scalar outputs of a solution, dimensionless (§5 "Outputs").
 struct Observables {
     double nu_mean = 0, nu_centre = 0, nu_bottom = 0, nu_top = 0;
     double slip_bottom = 0, slip_top = 0;  // u_s/U: 1 - u^(0) and u^(1), both >= 0
@@ -76,7 +76,7 @@ double wall_du(const Problem& p, bool top, double u, double nu);
 
 Observables observe(const Problem& p, const Solution& s);
 
-// Global fluctuation-energy balance (guide §8.5): int S dy - [K nu']_0^1, with S by the trapezoid
+// Global fluctuation-energy balance (§8.5): int S dy - [K nu']_0^1, with S by the trapezoid
 // rule and u^' by central differences; O(h^2) for the FV solution.
 double energy_balance_defect(const Problem& p, const Solution& s);
 

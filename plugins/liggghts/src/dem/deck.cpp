@@ -1,6 +1,6 @@
-// Writes the LIGGGHTS deck of one point (see deck.h). Conventions: architecture.md (x flow,
+// Writes the LIGGGHTS deck of one point (see deck.h). Conventions: docs/architecture.md (x flow,
 // y across the gap with the moving wall at y = 0, z across the width) and
-// ../shared/docs/liggghts-plugin.md (walls, stress sampling, gotchas).
+// docs/liggghts-notes.md (walls, stress sampling, traps).
 #include "deck.h"
 
 #include <fmt/format.h>

@@ -1,11 +1,11 @@
-// Fluctuation-energy conductivities of LSJC 1984 (guide §2.1; MFiX GT_PDE_LUN):
+// Fluctuation-energy conductivities of LSJC 1984 (docs/continuum-model.md §2.1; MFiX GT_PDE_LUN):
 //   q_y = -kappa dT/dy - kappa_phi dnu/dy,  kappa = rho_p sigma T^{1/2} f_k,
 //   kappa_phi = rho_p sigma T^{3/2} f_phi
 //   k*    = 75 sqrt(pi) / (48 eta (41 - 33 eta))
 //   f_k   = k*/g { [1 + 12/5 eta nu g][1 + 12/5 eta^2 (4 eta - 3) nu g] + 64/(25 pi) (41 - 33 eta)(eta nu g)^2 }
 //   f_phi = k*/g (12/5) eta (eta - 1)(2 eta - 1) [1 + 12/5 eta nu g] (nu g' + 2 g)     (<= 0 for e < 1)
 // The grad-nu ("Dufour-like") term f_phi is commented out in MFiX and its sign is uncertain
-// (guide §2.4); it changes nu_mean by < 1e-4 here. It is on by default behind the `dufour` key.
+// (§2.2); it changes nu_mean by < 1e-4 here. It is on by default behind the `dufour` key.
 #pragma once
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-// Collisional dissipation of LSJC 1984 (guide §2.1):
+// Collisional dissipation of LSJC 1984 (docs/continuum-model.md §2.1):
 //   gamma = rho_p T^{3/2} f_gamma(nu) / sigma,  f_gamma = (48/sqrt(pi)) eta (1 - eta) nu^2 g0
 //         = (12/sqrt(pi)) (1 - e_p^2) nu^2 g0
 #pragma once

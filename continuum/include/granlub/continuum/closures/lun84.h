@@ -1,7 +1,7 @@
 // The LSJC 1984 closure set at one solid fraction, and the combinations the Couette problem needs
-// after eliminating T with p_yy = P (guide §3):
+// after eliminating T with p_yy = P (docs/continuum-model.md §3):
 //   G = f_k f_p'/f_p - f_phi,   M = f_mu f_p^{-1/2},   K = G f_p^{-3/2},   C = f_gamma f_p^{-3/2}
-//   (M u')' = 0,   (K nu')' = Pi M u'^2 - Lambda^2 C        (dimensionless, guide §5)
+//   (M u')' = 0,   (K nu')' = Pi M u'^2 - Lambda^2 C        (dimensionless, §5)
 #pragma once
 #include <memory>
 
@@ -16,7 +16,7 @@ namespace granlub::continuum {
 struct Lun84Params {
     double restitution = 0.9;  // e_p
     double alpha = 1.0;        // viscosity factor c_a = (2 + alpha)/3; 1 = original LSJC
-    bool dufour = true;        // include the grad-nu heat-flux term f_phi (guide §2.4)
+    bool dufour = true;        // include the grad-nu heat-flux term f_phi (§2.2)
     double eta() const { return 0.5 * (1.0 + restitution); }
 };
 

@@ -1,6 +1,6 @@
 // Granular pressure of Lun, Savage, Jeffrey & Chepurniy 1984 (LSJC), dimensionless:
-//   p = rho_p T f_p(nu),  f_p = nu [1 + 4 eta nu g0]          (guide §2.1; MFiX GT_PDE_LUN)
-// with eta = (1 + e_p)/2. f_p' uses the analytic g0' (guide §2.6).
+//   p = rho_p T f_p(nu),  f_p = nu [1 + 4 eta nu g0]          (docs/continuum-model.md §2.1; MFiX GT_PDE_LUN)
+// with eta = (1 + e_p)/2. f_p' uses the analytic g0' (§2.4).
 #pragma once
 
 namespace granlub::continuum::closures {

@@ -1,4 +1,4 @@
-// Shear viscosity of LSJC 1984, dimensionless: mu = rho_p sigma T^{1/2} f_mu(nu)   (guide §2.1)
+// Shear viscosity of LSJC 1984, dimensionless: mu = rho_p sigma T^{1/2} f_mu(nu)   (docs/continuum-model.md §2.1)
 //   f_mu = c_a (5 sqrt(pi)/96) { [1 + 8/5 eta nu g][1 + 8/5 eta (3 eta - 2) nu g] / (eta (2 - eta) g)
 //                                 + 768/(25 pi) eta nu^2 g }
 // c_a = (2 + alpha)/3; alpha = 1 is the original LSJC theory, MFiX uses 1.6 [SRC: MFiX

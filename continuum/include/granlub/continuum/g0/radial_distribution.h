@@ -1,9 +1,9 @@
-// Radial distribution function at contact g0(nu), one unit per form (guide §2.5), chosen by the
+// Radial distribution function at contact g0(nu), one unit per form (docs/continuum-model.md §2.3), chosen by the
 // [continuum] g0 key through a registry table (src/g0/registry.cpp). Adding a form is one file in
 // src/g0/ plus one registry row.
 //
 // Every form supplies the analytic g0 and g0'. Both are evaluated in dual numbers, so d/dnu of
-// g0' (needed for the exact Jacobian of the conduction term) is exact too (guide §2.6).
+// g0' (needed for the exact Jacobian of the conduction term) is exact too (§2.4).
 #pragma once
 #include <memory>
 #include <string>
@@ -20,7 +20,7 @@ public:
     virtual D1 g0(D1 nu) const = 0;
     virtual D1 dg0(D1 nu) const = 0;  // analytic dg0/dnu
     // Upper bound of nu for the logit map: nu_max when g0 diverges there, else a safe cap
-    // (guide §6.1: 0.95 for Carnahan-Starling, with nu > nu_max flagged as unphysical).
+    // (§6.1: 0.95 for Carnahan-Starling, with nu > nu_max flagged as unphysical).
     virtual double cap() const { return numax_; }
     double numax() const { return numax_; }
     double g0(double nu) const { return g0(D1(nu)).v; }

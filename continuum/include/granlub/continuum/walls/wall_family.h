@@ -1,6 +1,6 @@
-// Wall boundary-condition families (guide §4). The structure of the GKL wall conditions
+// Wall boundary-condition families (docs/continuum-model.md §4). The structure of the GKL wall conditions
 // (S&T 2001 Eqs. 13-15) is fixed; a family supplies only the four dimensionless coefficient
-// functions b5..b8(nu) of guide §5. Families live in src/walls/, one file each, and are chosen by
+// functions b5..b8(nu) of §5. Families live in src/walls/, one file each, and are chosen by
 // the [continuum] wall_model key through the registry table in src/walls/registry.cpp.
 #pragma once
 #include <memory>
