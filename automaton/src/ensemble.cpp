@@ -8,6 +8,7 @@
 #include <memory>
 #include <thread>
 
+#include "granlub/automaton/invariants.h"
 #include "granlub/error.h"
 
 namespace granlub::automaton {
@@ -197,7 +198,7 @@ void advance(const Params& p, const RunSpec& sampler_run, std::vector<std::uniqu
                     s.after_step(t, e);
 #ifndef NDEBUG
                     if (t % 100 == 0) {
-                        const std::string bad = e.check_invariants();
+                        const std::string bad = check_invariants(e);
                         if (!bad.empty()) throw Error("automaton invariant broken at step " + std::to_string(t) + ": " + bad);
                     }
 #endif

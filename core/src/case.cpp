@@ -213,10 +213,10 @@ std::string id_number(double v, bool force_decimal) {
     return s;
 }
 
-}  // namespace
+// The steps of parse_case, in order.
 
-// ---------------------------------------------------------------------------------------------
-Case parse_case(std::string_view text, const std::string& source, const Schema& schema_in) {
+// The file's text as a TOML table: size, UTF-8 and the screen for what toml++ mishandles first.
+toml::table read_toml(std::string_view text, const std::string& source) {
     if (text.size() > kMaxCaseFileBytes)
         throw CaseError(fmt::format("{}: {} bytes; a case file may have at most {} bytes", source, text.size(),
                                     kMaxCaseFileBytes));
@@ -231,21 +231,15 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
         const LineColumn lc = line_column(text, bad->offset);
         throw CaseError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, lc.line, lc.column, bad->why));
     }
-    auto owned = std::make_shared<const Schema>(schema_in);
-    const Schema& schema = *owned;
-    toml::table root;
     try {
-        root = toml::parse(text, source);
+        return toml::parse(text, source);
     } catch (const toml::parse_error& e) {
         throw CaseError(fmt::format("{}: TOML syntax error: {}", where(source, e.source()), e.description()));
     }
+}
 
-    Case c;
-    c.schema = owned;
-    c.file = source;
-    c.dir = std::filesystem::path(source).parent_path();
-    c.file_hash = hash_hex(text);
-
+// Every top-level entry must be a known section, written as a table.
+void check_top_level(const toml::table& root, const std::string& source, const Schema& schema) {
     std::vector<std::string> known;
     for (const auto& s : schema.sections())
         if (s.name.find('.') == std::string::npos) known.push_back(s.name);
@@ -258,36 +252,43 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
             throw CaseError(fmt::format("{}: {} = {}: '{}' is a section and must be a table, e.g. [{}]",
                                         where(source, node.source()), name, node_text(node), name, name));
     }
+}
 
+// The table of section `spec` ("walls.bottom" is [walls] bottom), or null when the file has none.
+const toml::table* section_table(toml::table& root, const SectionSpec& spec, const std::string& source) {
+    const auto dot = spec.name.find('.');
+    if (dot == std::string::npos) return root[spec.name].as_table();
+    const auto parent = spec.name.substr(0, dot);
+    const auto child = spec.name.substr(dot + 1);
+    auto* p = root[parent].as_table();
+    if (!p) return nullptr;
+    auto* node = p->get(child);
+    if (!node) return nullptr;
+    const toml::table* t = node->as_table();
+    if (!t)
+        throw CaseError(fmt::format("{}: [{}] {} = {}: must be a table, e.g. [{}]", where(source, node->source()),
+                                    parent, child, node_text(*node), spec.name));
+    return t;
+}
+
+// Every declared section read into c.sections (defaults filled in). Returns the [operating] keys
+// that were given as lists: they are the swept ones and name the points.
+std::set<std::string> read_sections(toml::table& root, const std::string& source, const Schema& schema, Case& c) {
     std::set<std::string> swept_lists;
     for (const auto& spec : schema.sections()) {
-        const toml::table* t = nullptr;
-        toml::source_region header{};
-        const auto dot = spec.name.find('.');
-        if (dot == std::string::npos) {
-            t = root[spec.name].as_table();
-        } else {
-            const auto parent = spec.name.substr(0, dot);
-            const auto child = spec.name.substr(dot + 1);
-            if (auto* p = root[parent].as_table()) {
-                if (auto* node = p->get(child)) {
-                    t = node->as_table();
-                    if (!t)
-                        throw CaseError(fmt::format("{}: [{}] {} = {}: must be a table, e.g. [{}]",
-                                                    where(source, node->source()), parent, child, node_text(*node),
-                                                    spec.name));
-                }
-            }
-        }
-        if (t) header = t->source();
+        const toml::table* t = section_table(root, spec, source);
+        const toml::source_region header = t ? t->source() : toml::source_region{};
         Section sec(&spec, source);
         std::set<std::string> lists;
         read_section(source, spec, t, header, sec, lists);
         if (spec.name == "operating") swept_lists = lists;
         c.sections.emplace(spec.name, std::move(sec));
     }
+    return swept_lists;
+}
 
-    // Resolve the common sections into typed structs.
+// The common sections resolved into the typed structs of Case.
+void resolve_common(Case& c) {
     const Section& cs = c.sections.at("case");
     // The name reaches folder names, decks and data files: a safe character set, checked here. A
     // name taken from the directory is made safe instead (the user did not write it).
@@ -327,8 +328,11 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
     c.cell = {cell.real("gap"), cell.real("length"), cell.real("width"), cell.real("annulus_radius"),
               cell.real("max_solid_fraction")};
     c.gravity = c.sections.at("body_forces").real("gravity");
+}
 
-    // Cross-key checks.
+// Checks that involve more than one key (a single key's range is checked when it is read).
+void check_cross_keys(const Case& c, Control control) {
+    const Section& cell = c.sections.at("cell");
     const double d = c.grains.diameter;
     if (c.cell.gap < 2 * d)
         cell.fail("gap", fmt::format("the gap must hold at least two grains: gap >= 2 d = {} m", 2 * d));
@@ -340,7 +344,6 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
         cell.fail("annulus_radius", fmt::format("the annulus radius must exceed half the width ({} m)", c.cell.width / 2));
 
     const Section& op = c.sections.at("operating");
-    const Control control = op.string("control") == "fill" ? Control::Fill : Control::Load;
     if (control == Control::Fill && !op.has("solid_fraction"))
         op.fail("solid_fraction", "control = \"fill\" needs [operating] solid_fraction");
     if (control == Control::Load && !op.has("normal_stress"))
@@ -359,11 +362,12 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
                                                  "point; give the roughness in one place only",
                                                  clipped(value_text(op.values().at("roughness")))));
         }
+}
 
-    for (const auto& spec : schema.sections())
-        if (spec.validate) spec.validate(c.sections.at(spec.name));
-
-    // Expand the sweep: speed outermost, then solid_fraction, normal_stress, roughness.
+// The operating points: the Cartesian product of the [operating] lists, speed outermost, then
+// solid_fraction, normal_stress, roughness. Swept keys name the point (e.g. U2.0_R0.25).
+void expand_sweep(Case& c, Control control, const std::set<std::string>& swept_lists) {
+    const Section& op = c.sections.at("operating");
     const auto& speeds = op.list("speed");
     const std::vector<double> none{std::nan("")};
     const auto& nus = op.has("solid_fraction") ? op.list("solid_fraction") : none;
@@ -398,6 +402,31 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
                     if (swept_lists.count("roughness")) p.id += fmt::format("_R{}", id_number(R, false));
                     c.points.push_back(std::move(p));
                 }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+Case parse_case(std::string_view text, const std::string& source, const Schema& schema_in) {
+    toml::table root = read_toml(text, source);
+    auto owned = std::make_shared<const Schema>(schema_in);
+    const Schema& schema = *owned;
+
+    Case c;
+    c.schema = owned;
+    c.file = source;
+    c.dir = std::filesystem::path(source).parent_path();
+    c.file_hash = hash_hex(text);
+
+    check_top_level(root, source, schema);
+    const std::set<std::string> swept_lists = read_sections(root, source, schema, c);
+    resolve_common(c);
+    const Control control =
+        c.sections.at("operating").string("control") == "fill" ? Control::Fill : Control::Load;
+    check_cross_keys(c, control);
+    for (const auto& spec : schema.sections())
+        if (spec.validate) spec.validate(c.sections.at(spec.name));
+    expand_sweep(c, control, swept_lists);
     return c;
 }
 

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "granlub/automaton/engine.h"
+#include "granlub/automaton/invariants.h"
 #include "scripted_rng.h"
 
 using namespace granlub::automaton;
@@ -216,7 +217,31 @@ BOOST_AUTO_TEST_CASE(exhaustion_after_four_collisions) {
         BOOST_TEST(e.up(nb[d]) == u0[d]);
         BOOST_TEST(e.dir(nb[d]) == ((d + 4) & 7));
     }
-    BOOST_TEST(e.check_invariants() == "");
+    BOOST_TEST(check_invariants(e) == "");
+}
+
+// The direction rules as the step loop calls them (collision_rules.h): Table P and Tables W-T/W-B.
+BOOST_AUTO_TEST_CASE(direction_rule_tables) {
+    for (int d = 0; d < 8; ++d) {
+        const Candidates plus = billiard_deflection(d, 2, 1), minus = billiard_deflection(d, 2, 0);
+        BOOST_TEST(plus.first == unsigned((d + 2) & 7));   // +90 degrees first
+        BOOST_TEST(plus.second == unsigned((d + 6) & 7));
+        BOOST_TEST(minus.first == plus.second);            // the other side first
+        BOOST_TEST(minus.second == plus.first);
+        BOOST_TEST(billiard_deflection(d, 1, 1).first == unsigned((d + 1) & 7));  // pp_deflect = 45
+    }
+    int asked = 0;
+    auto never = [&] { ++asked; return false; };
+    auto always = [&] { ++asked; return true; };
+    const int in[3] = {N, NE, NW}, top_out[3] = {S, SE, SW};
+    for (int k = 0; k < 3; ++k) BOOST_TEST(wall_reflection(in[k], false, always) == unsigned(top_out[k]));
+    BOOST_TEST(asked == 0);  // the top wall never drags
+    const int up_in[3] = {S, SW, SE}, specular[3] = {N, NW, NE}, dragged[3] = {NE, N, NE};
+    for (int k = 0; k < 3; ++k) {
+        BOOST_TEST(wall_reflection(up_in[k], true, never) == unsigned(specular[k]));
+        BOOST_TEST(wall_reflection(up_in[k], true, always) == unsigned(dragged[k]));
+    }
+    BOOST_TEST(asked == 4);  // SE reflects to NE, where no notch can turn it: no draw
 }
 
 BOOST_AUTO_TEST_CASE(eq8_9_algebra) {

@@ -1,5 +1,5 @@
 # Fails if a tracked file points at documents a clone of this repository does not have: the
-# developers' shared notes outside the tree (the notes folder beside a checkout) or their file names. The
+# developers' notes kept next to the checkout (the pattern below) or their file names. The
 # project's own pages live in docs/. The brackets keep this file from matching itself.
 set(pattern "\\.\\./shar[e]d|shar[e]d/docs|/work/shar[e]d|ca-mod[e]l\\.md|continuum-th[e]ory|seeds-dig[e]st|liggghts-plug[i]n\\.md|dense-cont[a]cts|yad[e]\\.md")
 find_program(GIT git)

@@ -27,10 +27,13 @@ inline double wall_by_incidence(double u, double U_w, double R, double e_w, bool
 // JH06 Eqs. 8-9 (equal masses, restitution e_p), written as u1 + a (u2 - u1) with
 // a = (1 + e_p)/2 so that u1 + u2 is conserved to the last bit:
 //   u1f = ((1-e_p) u1 + (1+e_p) u2)/2,  u2f = ((1-e_p) u2 + (1+e_p) u1)/2.
-inline void eq8_9_collide(double& u1, double& u2, double e_p) {
-    const double delta = 0.5 * (1.0 + e_p) * (u2 - u1);
+inline double eq8_9_weight(double e_p) { return 0.5 * (1.0 + e_p); }
+// The collision with the weight a = eq8_9_weight(e_p) computed once (the engine holds it per step).
+inline void eq8_9_collide_weighted(double& u1, double& u2, double a) {
+    const double delta = a * (u2 - u1);
     u1 = clamp_unit(u1 + delta);
     u2 = clamp_unit(u2 - delta);
 }
+inline void eq8_9_collide(double& u1, double& u2, double e_p) { eq8_9_collide_weighted(u1, u2, eq8_9_weight(e_p)); }
 
 }  // namespace granlub::automaton
