@@ -20,9 +20,6 @@ double impulse_reference_speed(const Case& c, const OperatingPoint& p) {
     return std::max({p.speed, v_fall, v_load});
 }
 
-double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fraction) {
-    return step_fraction * c.grains.diameter / impulse_reference_speed(c, p);
-}
 
 
 Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
@@ -48,7 +45,8 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const double given = s.real("time_step");
     const double v_ref = impulse_reference_speed(c, p);
     if (st.model == Model::Impulse) {
-        st.time_step = given > 0 ? given : impulse_time_step(c, p, s.real("step_fraction"));
+        // a grain at the reference speed travels step_fraction diameters per step
+        st.time_step = given > 0 ? given : s.real("step_fraction") * c.grains.diameter / v_ref;
         const double frac = st.time_step * v_ref / c.grains.diameter;
         if (frac > kMaxStepFraction)
             s.fail(given > 0 ? "time_step" : "step_fraction",

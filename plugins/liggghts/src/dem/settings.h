@@ -70,9 +70,6 @@ Settings half_step(const Settings& s);
 // about 2.8 m/s is needed at every U for |d nu| <= 0.005 between dt and dt/2 (plugin README).
 double impulse_reference_speed(const Case& c, const OperatingPoint& p);
 
-// Time step of the impulse model: a grain moving at the reference speed travels
-// `step_fraction` diameters per step.
-double impulse_time_step(const Case& c, const OperatingPoint& p, double step_fraction);
 
 // Largest safe displacement per step for the impulse model, in diameters (contacts are found
 // only by overlap; more than this risks tunnelling and deep overlaps).
