@@ -1,4 +1,4 @@
-// Coarse-graining across the gap: slice volumes, MSER-5, profiles (see coarse_grain.h).
+// Coarse-graining across the gap: slice volumes and profiles (see coarse_grain.h).
 #include "granlub/coarse_grain.h"
 
 #include <algorithm>
@@ -18,39 +18,6 @@ double sphere_slice_volume(double yc, double r, double a, double b) {
     if (!(hi > lo)) return 0.0;
     // pi * integral_lo^hi (r^2 - t^2) dt
     return std::numbers::pi * (r * r * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3.0);
-}
-
-SteadyState detect_steady_state(std::span<const double> x, std::size_t batch) {
-    SteadyState s;
-    if (batch == 0) batch = 1;
-    const std::size_t m = x.size() / batch;
-    if (m < 4) return s;  // too short to say
-    std::vector<double> z(m, 0.0);
-    for (std::size_t j = 0; j < m; ++j) {
-        for (std::size_t i = 0; i < batch; ++i) z[j] += x[j * batch + i];
-        z[j] /= static_cast<double>(batch);
-    }
-    // suffix sums give the mean and variance of z[d..m) in O(1) per d
-    std::vector<double> s1(m + 1, 0.0), s2(m + 1, 0.0);
-    for (std::size_t j = m; j-- > 0;) {
-        s1[j] = s1[j + 1] + z[j];
-        s2[j] = s2[j + 1] + z[j] * z[j];
-    }
-    const std::size_t dmax = m - std::max<std::size_t>(2, m / 4);  // keep at least a quarter
-    double best = std::numeric_limits<double>::infinity();
-    std::size_t dbest = 0;
-    for (std::size_t d = 0; d <= dmax; ++d) {
-        const double k = static_cast<double>(m - d);
-        const double ss = std::max(0.0, s2[d] - s1[d] * s1[d] / k);  // sum of squared deviations
-        const double stat = ss / (k * k);
-        if (stat < best) {
-            best = stat;
-            dbest = d;
-        }
-    }
-    s.start = dbest * batch;
-    s.steady = dbest <= m / 2;
-    return s;
 }
 
 SliceCoarseGrainer::SliceCoarseGrainer(Stations s, double cross_area) : st_(s), area_(cross_area) {

@@ -9,30 +9,6 @@
 
 namespace granlub {
 
-SteadyWindow steady_window(const std::vector<std::span<const double>>& wall_series, std::span<const double> wall_step,
-                           std::int64_t sample_every, double time_step, const PlateSeries* plate,
-                           std::int64_t servo_every) {
-    SteadyWindow win;
-    for (const auto& v : wall_series) {  // MSER is scale-free: forces or stresses alike
-        const SteadyState ss = detect_steady_state(v);
-        win.wall_start = std::max(win.wall_start, ss.start);
-        win.steady = win.steady && ss.steady;
-    }
-    auto wall_begin = [&](std::size_t i) { return wall_step[i] - static_cast<double>(sample_every); };
-    if (plate) {
-        const SteadyState ss = detect_steady_state(plate->gap);
-        win.steady = win.steady && ss.steady;
-        const std::size_t last = plate->step.size() - 1;
-        const double begin = plate->step[std::min(ss.start, last)] - static_cast<double>(servo_every);
-        while (win.wall_start + 1 < wall_step.size() && wall_begin(win.wall_start) < begin - 0.5) ++win.wall_start;
-        while (win.plate_start + 1 < plate->step.size() &&
-               plate->step[win.plate_start] - static_cast<double>(servo_every) < wall_begin(win.wall_start) - 0.5)
-            ++win.plate_start;
-    }
-    win.t_start = win.wall_start < wall_step.size() ? wall_begin(win.wall_start) * time_step : 0.0;
-    return win;
-}
-
 BlockEstimate mean_gap(const PlateSeries& plate, const SteadyWindow& w, std::size_t blocks) {
     return block_average(std::span<const double>(plate.gap).subspan(w.plate_start), blocks);
 }

@@ -35,7 +35,11 @@ WallStresses wall_stresses(const WallForceSeries& f, const ParticleBox& box) {
 
 SteadyWindow wall_steady_window(const WallStresses& st, const WallForceSeries& f, std::int64_t sample_every,
                                 double time_step, const PlateSeries* plate, std::int64_t servo_every) {
-    return steady_window({st.normal_bottom, st.normal_top, st.shear_bottom, st.shear_top}, f.step, sample_every,
+    return steady_window({{"normal_stress_bottom", st.normal_bottom, kStressDrift},
+                          {"normal_stress_top", st.normal_top, kStressDrift},
+                          {"shear_stress_bottom", st.shear_bottom, kStressDrift},
+                          {"shear_stress_top", st.shear_top, kStressDrift}},
+                         f.step, sample_every,
                          time_step, plate, servo_every);
 }
 
@@ -85,6 +89,7 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
                                              o.outputs, load_line);
 
     const std::size_t rows = in.forces.rows();
+    o.run["steady_state"] = win.to_json();
     o.run.update(nlohmann::json{{"steady_state_detected", win.steady},
                                 {"steady_state_start_s", win.t_start},
                                 {"wall_samples", rows},

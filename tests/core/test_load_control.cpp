@@ -101,8 +101,8 @@ BOOST_AUTO_TEST_CASE(steady_window_waits_for_the_plate) {
         plate.step.push_back(100.0 * j);
         plate.gap.push_back(j <= 30 ? 5e-3 - 3e-5 * j : 4.1e-3 + 1e-6 * ((j * 31) % 5));
     }
-    const SteadyWindow alone = steady_window({stress}, steps, 50, 1e-5, nullptr, 100);
-    const SteadyWindow w = steady_window({stress}, steps, 50, 1e-5, &plate, 100);
+    const SteadyWindow alone = steady_window({{"stress", stress, kStressDrift}}, steps, 50, 1e-5, nullptr, 100);
+    const SteadyWindow w = steady_window({{"stress", stress, kStressDrift}}, steps, 50, 1e-5, &plate, 100);
     BOOST_TEST_MESSAGE("wall start alone " << alone.wall_start << ", with the plate " << w.wall_start
                                            << ", plate start " << w.plate_start);
     BOOST_TEST(alone.wall_start < 20u);

@@ -15,9 +15,7 @@
 // Standard errors come from block averaging (granlub/block_average.h; Flyvbjerg & Petersen 1989,
 // J. Chem. Phys. 91:461): the snapshots are cut into contiguous blocks, each block gives its own
 // profile, and the standard error is that of the block values.
-// The steady state is detected on a scalar time series (e.g. wall stress) with MSER-5
-// (White 1997, Simulation 69:323; White, Cobb & Spratt 2000): the truncation point d that
-// minimises the squared standard error of the remaining batch means.
+// The steady window the profiles are taken over comes from granlub/steady_state.h.
 #pragma once
 #include <cstddef>
 #include <span>
@@ -41,14 +39,6 @@ struct Stations {
 
 // how: volume of the sphere (centre yc, radius r) between the planes y = a and y = b (a <= b).
 double sphere_slice_volume(double yc, double r, double a, double b);
-
-// MSER-5 truncation point on a series of samples, in samples. `steady` is false when the best
-// truncation lies beyond half of the series (no steady state detected yet).
-struct SteadyState {
-    std::size_t start = 0;
-    bool steady = false;
-};
-SteadyState detect_steady_state(std::span<const double> series, std::size_t batch = 5);
 
 // what: accumulates per-snapshot slab sums; profiles and standard errors are formed at the end,
 // so the steady-state start can be chosen after the run.

@@ -12,31 +12,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "granlub/coarse_grain.h"
+#include "granlub/block_average.h"
 #include "granlub/results.h"
 #include "granlub/servo.h"
+#include "granlub/steady_state.h"
 
 namespace granlub {
 
 inline constexpr const char* kGapFile = "gap.csv";  // the plate history, granlub's format
-
-// The plate position (gap, m) at the end of each servo window (the initial position dropped).
-struct PlateSeries {
-    std::vector<double> step;
-    std::vector<double> gap;
-};
-
-// Where the steady state starts: MSER-5 on each wall-stress series and (load control) on the
-// plate position; the latest start wins. Indices into the wall-block and plate series.
-struct SteadyWindow {
-    std::size_t wall_start = 0;
-    std::size_t plate_start = 0;
-    double t_start = 0;  // s
-    bool steady = true;
-};
-SteadyWindow steady_window(const std::vector<std::span<const double>>& wall_series, std::span<const double> wall_step,
-                           std::int64_t sample_every, double time_step, const PlateSeries* plate,
-                           std::int64_t servo_every);
 
 // Mean gap (m) and its block standard error over the steady part of the plate history.
 BlockEstimate mean_gap(const PlateSeries& plate, const SteadyWindow& w, std::size_t blocks);

@@ -1,8 +1,8 @@
 // From a particle engine's wall forces and coarse-grained snapshots to a point's results, the same
 // for `granlub dem` (LIGGGHTS) and `granlub yade`: each engine only reads its own files into the
 // series below. Stresses = wall force / wall area from wall-force means over blocks of
-// sample_every steps; steady state = the latest MSER-5 start of the four wall-stress series (and,
-// under load, of the plate; granlub/load_control.h); standard errors by block averaging; the
+// sample_every steps; steady state from the four wall-stress series (and, under load, the plate)
+// as granlub/steady_state.h decides it; standard errors by block averaging; the
 // profile from the snapshots from the steady state on; slip from the slabs next to the walls.
 #pragma once
 #include <cstddef>

@@ -102,17 +102,3 @@ BOOST_AUTO_TEST_CASE(mean_and_stderr_of_block_values) {
     BOOST_TEST(mean_and_stderr({}).blocks == 0u);
 }
 
-BOOST_AUTO_TEST_CASE(mser_finds_the_end_of_a_transient) {
-    std::mt19937_64 g(3);
-    std::normal_distribution<double> nd(0.0, 0.1);
-    std::vector<double> x(1000);
-    for (std::size_t i = 0; i < x.size(); ++i) x[i] = 5.0 * std::exp(-static_cast<double>(i) / 40.0) + 1.0 + nd(g);
-    const auto s = detect_steady_state(x);
-    BOOST_TEST(s.steady);
-    BOOST_TEST(s.start > 100u);  // transient 5 e^{-t/40} > 0.1 until t ~ 160
-    BOOST_TEST(s.start < 400u);
-    // a ramp never settles
-    std::vector<double> ramp(1000);
-    for (std::size_t i = 0; i < ramp.size(); ++i) ramp[i] = static_cast<double>(i) + nd(g);
-    BOOST_TEST(!detect_steady_state(ramp).steady);
-}
