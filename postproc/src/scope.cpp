@@ -20,6 +20,20 @@ std::string run_text(const Run& r, const char* key) {
     return run.is_object() && run.contains(key) && run[key].is_string() ? run[key].get<std::string>() : "";
 }
 
+// How the run decided its steady window (run.steady_state of granlub/steady_state.h), or "".
+std::string steady_rule(const Run& r) {
+    const auto& run = r.summary->run;
+    if (!run.is_object() || !run.contains("steady_state") || !run["steady_state"].is_object()) return "";
+    const auto& s = run["steady_state"];
+    const auto allowed = s.value("allowed_relative_drift", nlohmann::json::object());
+    auto pct = [&](const char* k) {
+        return allowed.contains(k) && allowed[k].is_number() ? num(100.0 * allowed[k].get<double>(), 2) + " %" : std::string("?");
+    };
+    return fmt::format("it starts where MSER-5 ends the initial transient and moves on until the two halves of the "
+                       "window agree within {} combined standard errors or within {} (wall stresses) and {} (gap)",
+                       num(s.value("sigmas", 3.0), 2), pct("wall_stress"), pct("gap"));
+}
+
 // "0.1 s" or "0.0015–0.1 s" over the usable runs; counts (digits 0) as whole numbers.
 std::string range_text(const std::vector<double>& v, const char* unit, int digits = 3) {
     if (v.empty()) return "";
@@ -72,8 +86,10 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
     if (lattice_stresses(solver))
         s.stresses = "lattice analogues in Pa (wall momentum per lattice step × ρ_p ν_max U², ∝ U² by construction): "
                      "not measured stresses, not comparable with the others";
-    else if (particles)
+    else if (particles) {
         s.stresses = "time-averaged wall force / wall area (Pa) over the steady window";
+        if (std::string rule = steady_rule(first); !rule.empty()) s.stresses += "; " + rule;
+    }
     else if (!iterations.empty())
         s.stresses = "kinetic-theory wall stresses (Pa) of the steady solution";
     else

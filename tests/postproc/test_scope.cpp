@@ -47,7 +47,11 @@ BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
     for (const OperatingPoint& p : s.c.points) {
         test::patch_run(s, "continuum", p.id, {{"body_forces", "not modelled: p_yy uniform"}, {"iterations", 4}});
         test::patch_run(s, "automaton", p.id, {{"ignored", "gravity: no body force"}, {"steps", 10000}});
-        test::patch_run(s, "dem", p.id, {{"simulated_time_s", p.speed == 1.0 ? 0.25 : 0.5}, {"steps", 20000}});
+        test::patch_run(s, "dem", p.id,
+                        {{"simulated_time_s", p.speed == 1.0 ? 0.25 : 0.5},
+                         {"steps", 20000},
+                         {"steady_state",
+                          {{"allowed_relative_drift", {{"wall_stress", 0.035}, {"gap", 0.004}}}, {"sigmas", 3.0}}}});
     }
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
@@ -65,6 +69,10 @@ BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
     BOOST_TEST(dem.find("(measured P_bot − P_top: 100–800 Pa)") != std::string::npos, dem);
     BOOST_TEST(dem.find("0.25–0.5 s simulated") != std::string::npos, dem);
     BOOST_TEST(dem.find("(20000 steps)") != std::string::npos, dem);
+    // how the steady window was found, from the run's own record
+    BOOST_TEST(dem.find("within 3 combined standard errors or within 3.5 % (wall stresses) and 0.4 % (gap)") !=
+                   std::string::npos,
+               dem);
 
     // The automaton's stresses are marked in every key-number cell and named in the stress captions.
     const std::string key = md_row(md, kKey, "automaton", "U1.0");
