@@ -1,7 +1,7 @@
 // The [yade] settings of one run, resolved from the case, the point and the command line, and
 // checked before YADE starts. Run length, sampling and averaging follow `granlub dem`'s
 // definitions (wall forces summed every step and averaged over blocks of sample_every steps,
-// `snapshots` particle snapshots over the run, MSER-5 steady state, block standard errors).
+// `snapshots` particle snapshots over the run, granlub/steady_state.h's window, block standard errors).
 #pragma once
 #include <cstdint>
 #include <string>
