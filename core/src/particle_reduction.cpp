@@ -30,6 +30,10 @@ WallStresses wall_stresses(const WallForceSeries& f, const ParticleBox& box) {
         for (std::size_t i = 0; i < s.shear_side.size(); ++i)
             s.shear_side[i] = -0.5 * (f.fx_side1[i] + f.fx_side2[i]) / As;
     }
+    if (!f.fy_side1.empty()) {
+        s.side_support.resize(f.rows());
+        for (std::size_t i = 0; i < s.side_support.size(); ++i) s.side_support[i] = -(f.fy_side1[i] + f.fy_side2[i]) / A;
+    }
     return s;
 }
 
@@ -59,6 +63,7 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
     const double T_b = put("shear_stress_bottom", st.shear_bottom);
     const double T_t = put("shear_stress_top", st.shear_top);
     if (!st.shear_side.empty()) put("shear_stress_side", st.shear_side);
+    if (!st.side_support.empty()) put("side_wall_support", st.side_support);
 
     // snapshots from the steady state on (at least the last two)
     const auto& ts = in.cg.times();

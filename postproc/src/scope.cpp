@@ -70,14 +70,21 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
         s.body_forces = "ignores " + note;
     else if (particles && c.gravity > 0) {
         const double nu = first.summary->value("mean_solid_fraction");
-        std::vector<double> difference;  // the measured P_bot − P_top of each run
-        for (const Run* r : runs)
+        std::vector<double> difference, side;  // the measured P_bot − P_top of each run; side-wall support
+        for (const Run* r : runs) {
             if (auto b = r->scalar("normal_stress_bottom"), t = r->scalar("normal_stress_top"); b && t)
                 difference.push_back(*b - *t);
+            if (auto v = r->scalar("side_wall_support")) side.push_back(*v);
+        }
         s.body_forces = fmt::format("gravity g = {} m/s² acts on the grains: P_bot − P_top includes their weight, "
                                     "ρ ν̄ g H ≈ {} Pa",
                                     num(c.gravity, 3), num(c.grains.density * nu * c.gravity * c.cell.gap, 2));
-        if (!difference.empty()) s.body_forces += " (measured P_bot − P_top: " + range_text(difference, "Pa") + ")";
+        if (!difference.empty()) {
+            s.body_forces += " (measured P_bot − P_top: " + range_text(difference, "Pa");
+            // the vertical balance: P_bot − P_top = weight − what the side walls hold up
+            if (!side.empty()) s.body_forces += "; upward force of the side walls per floor area: " + range_text(side, "Pa");
+            s.body_forces += ")";
+        }
     } else if (particles)
         s.body_forces = "no gravity ([body_forces] gravity = 0)";
     else

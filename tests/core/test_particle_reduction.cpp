@@ -36,6 +36,7 @@ WallForceSeries forces() {
     w.fx_top = series(constant(0), constant(20));
     w.fz_bottom = w.fz_top = std::vector<double>(kRows, 0.0);
     w.fx_side1 = w.fx_side2 = std::vector<double>(kRows, -4.0);  // side area L H = 2 m^2
+    w.fy_side1 = std::vector<double>(kRows, -3.0), w.fy_side2 = std::vector<double>(kRows, -2.0);  // pushed down
     return w;
 }
 
@@ -100,6 +101,8 @@ BOOST_AUTO_TEST_CASE(reduction_of_a_known_run) {
     BOOST_TEST(o.at("normal_stress_top").value == 90.0);
     BOOST_TEST(o.at("shear_stress_top").value == 20.0);
     BOOST_TEST(o.at("shear_stress_side").value == 2.0);
+    // the side walls, pushed down by 3 + 2 N, hold the grains up by 5 N over the floor area L W = 1 m^2
+    BOOST_TEST(o.at("side_wall_support").value == 5.0);
     // 35 steady rows of 10 +- 1 alternating, 5 blocks of 7: block means 10 + 1/7, 10 - 1/7, ...
     // mean 10 + 1/35, standard error sqrt(6) / 35
     const double tol = 1e-12;

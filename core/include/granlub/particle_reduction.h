@@ -24,17 +24,21 @@ namespace granlub {
 
 // The force of the grains on each wall (N; Newton's third law of what the walls exert), one row
 // per block of sample_every steps, `step` at the end of each block. fx_side* are empty when the
-// box is periodic across z (no side walls).
+// box is periodic across z (no side walls); fy_side* also when the engine does not record them.
 struct WallForceSeries {
     std::vector<double> step, fx_bottom, fy_bottom, fz_bottom, fx_top, fy_top, fz_top, fx_side1, fx_side2;
+    std::vector<double> fy_side1 = {}, fy_side2 = {};
     std::size_t rows() const { return step.size(); }
 };
 
 // Wall stresses per block (Pa), positive for a sheared, compressed layer: the grains push the
 // bottom wall to -y and the top wall to +y, drag the bottom (and side) walls to -x and the top
 // wall to +x. Normal = f_y / (L W), shear = f_x / (L W), side = mean of both side walls / (L H).
+// side_support: the upward force of both side walls on the grains over the floor area, (L W): the
+// vertical balance of the layer is P_bot - P_top = weight / (L W) - side_support.
 struct WallStresses {
     std::vector<double> normal_bottom, normal_top, shear_bottom, shear_top, shear_side;  // side: may be empty
+    std::vector<double> side_support = {};                                               // may be empty
 };
 WallStresses wall_stresses(const WallForceSeries& f, const ParticleBox& box);
 

@@ -144,13 +144,14 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("fix integr all nve/sphere");
     line("");
     line("# wall forces (on the grains), averaged over blocks of sample_every steps, sampled every step");
-    line("# (impulse forces last one step). Columns: step, then fx fy fz of bottom, top[, side] walls.");
+    line("# (impulse forces last one step). Columns: step, then fx fy fz of bottom, top[, fx fx fy fy of the side walls].");
     line("compute fbot all reduce sum f_force_wbot[1] f_force_wbot[2] f_force_wbot[3]");
     line("compute ftop all reduce sum f_force_wtop[1] f_force_wtop[2] f_force_wtop[3]");
     std::string cols = "c_fbot[1] c_fbot[2] c_fbot[3] c_ftop[1] c_ftop[2] c_ftop[3]";
     if (!box.periodic_z) {
-        line("compute fsid all reduce sum f_force_wsid1[1] f_force_wsid2[1]");
-        cols += " c_fsid[1] c_fsid[2]";
+        // x: the side walls' drag; y: what they carry of the grains' weight (the vertical balance)
+        line("compute fsid all reduce sum f_force_wsid1[1] f_force_wsid2[1] f_force_wsid1[2] f_force_wsid2[2]");
+        cols += " c_fsid[1] c_fsid[2] c_fsid[3] c_fsid[4]";
     }
     line(fmt::format("fix walls all ave/time 1 {0} {0} {1} file {2}", s.sample_every, cols, kWallFile));
     line(fmt::format("# wall area A = L W = {} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A", A));

@@ -125,6 +125,7 @@ WallForceSeries wall_forces(const WallSeries& w) {
                       grains_on_wall(0), grains_on_wall(1), grains_on_wall(2),
                       grains_on_wall(3), grains_on_wall(4), grains_on_wall(5), {}, {}};
     if (w.columns.size() >= 8) f.fx_side1 = grains_on_wall(6), f.fx_side2 = grains_on_wall(7);
+    if (w.columns.size() >= 10) f.fy_side1 = grains_on_wall(8), f.fy_side2 = grains_on_wall(9);
     return f;
 }
 
