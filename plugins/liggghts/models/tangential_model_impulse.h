@@ -87,11 +87,15 @@ namespace ContactModels
       const double rj = sidata.is_wall ? 0.0 : sidata.radj;
 
       // velocities including the impulses of contacts resolved earlier in this step
-      // (sequential resolution, see model impulse); I = 2/5 m r^2
+      // (sequential resolution, see model impulse); I = 2/5 m r^2. A pair with a ghost grain
+      // (across a periodic or processor boundary) uses the start-of-step velocities alone, so
+      // both owners compute the same, equal and opposite impulse (momentum; see model impulse).
       const double dt = update->dt;
       const int i = sidata.i;
-      const double * const fi = atom->f[i];
-      const double * const ti = atom->torque[i];
+      const bool boundary = !sidata.is_wall && sidata.j >= atom->nlocal;
+      static const double none[3] = {0.0, 0.0, 0.0};  // a ghost's f and torque are not read
+      const double * const fi = boundary ? none : atom->f[i];
+      const double * const ti = boundary ? none : atom->torque[i];
       const double ci = dt / sidata.mi, cwi = 2.5 * dt / (sidata.mi * ri * ri);
       double vr1 = sidata.v_i[0] + ci * fi[0], vr2 = sidata.v_i[1] + ci * fi[1], vr3 = sidata.v_i[2] + ci * fi[2];
       double w1 = ri * (sidata.omega_i[0] + cwi * ti[0]);
@@ -102,8 +106,8 @@ namespace ContactModels
       vr3 -= sidata.v_j[2];
       if (!sidata.is_wall) {
         const int j = sidata.j;
-        const double * const fj = atom->f[j];
-        const double * const tj = atom->torque[j];
+        const double * const fj = boundary ? none : atom->f[j];
+        const double * const tj = boundary ? none : atom->torque[j];
         const double cj = dt / sidata.mj, cwj = 2.5 * dt / (sidata.mj * rj * rj);
         vr1 -= cj * fj[0];
         vr2 -= cj * fj[1];

@@ -1,0 +1,76 @@
+// The wall forces `granlub dem` records balance the grains' momentum in steady state: per floor
+// area, P_bot - P_top = weight - side_wall_support (vertical) and tau_top = tau_bot + the side
+// walls' drag (streamwise; side walls move with the floor). Before the impulse model resolved
+// contacts across a periodic boundary from the start-of-step state, the two owners of such a pair
+// gave it different impulses: a bed riding on its floor kept its velocity while the walls
+// recorded a net streamwise force of 4.4 Pa and 16 % more than its weight (measured 2026-11-23).
+#define BOOST_TEST_MODULE liggghts_momentum_balance
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "granlub/case.h"
+#include "granlub/dem/command.h"
+#include "granlub/results.h"
+#include "granlub/sweep.h"
+#include "tiny_cell.h"
+
+using namespace granlub;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Balance {
+    double vertical = 0;    // P_bot - P_top - (weight - side support), Pa
+    double streamwise = 0;  // tau_top - tau_bot - side drag, Pa
+    double vertical_se = 0, streamwise_se = 0;
+    double weight = 0;      // Pa
+};
+
+// The tiny cell (220 grains of 1 mm, 8 x 6 x 6 mm, side walls) at its inserted fill, 0.4 s.
+Balance run(const std::string& name, bool centripetal) {
+    std::string text = test::tiny_cell(name, "", "time = 0.4\n");
+    if (!centripetal) text = test::edit(text, "annulus_radius = 0.05", "annulus_radius = 0.0");
+    Schema schema = test::dem_schema();
+    const Case c = parse_case(text, name + ".toml", schema);
+    RunOptions o;
+    o.results_root = test::scratch("liggghts_momentum_balance", name);
+    BOOST_TEST_REQUIRE(dem::run(c, o) == 0);
+    const Summary s = read_summary(result_dir(o.results_root, "dem", c.points.front().id) / "summary.json");
+    auto v = [&](const char* k) { return s.outputs.at(k).value; };
+    auto e = [&](const char* k) { return s.outputs.at(k).stderr_.value_or(0.0); };
+    const double grains = s.run.at("atoms").get<double>();  // the grains LIGGGHTS ran
+    const double area = c.cell.length * c.cell.width;
+    Balance b;
+    b.weight = grains * std::numbers::pi / 6.0 * std::pow(c.grains.diameter, 3) * c.grains.density * c.gravity / area;
+    b.vertical = v("normal_stress_bottom") - v("normal_stress_top") - (b.weight - v("side_wall_support"));
+    b.vertical_se = std::hypot(e("normal_stress_bottom"), e("normal_stress_top"), e("side_wall_support"));
+    // side drag per floor area: both walls' force (2 x stress x L H) over L W
+    const double side = 2.0 * v("shear_stress_side") * c.cell.gap / c.cell.width;
+    b.streamwise = v("shear_stress_top") - v("shear_stress_bottom") - side;
+    b.streamwise_se = std::hypot(e("shear_stress_top"), e("shear_stress_bottom"),
+                                 2.0 * e("shear_stress_side") * c.cell.gap / c.cell.width);
+    BOOST_TEST_MESSAGE(name << ": weight " << b.weight << " Pa; vertical imbalance " << b.vertical << " +- "
+                            << b.vertical_se << " Pa, streamwise " << b.streamwise << " +- " << b.streamwise_se);
+    return b;
+}
+
+}  // namespace
+
+// Without the centripetal force the bed settles and rides with the floor and the side walls: no
+// shear, and the forces are steady enough for a tight check.
+BOOST_AUTO_TEST_CASE(a_bed_riding_on_its_floor_balances) {
+    const Balance b = run("riding", false);
+    BOOST_TEST(std::abs(b.vertical) < 0.01 * b.weight);  // was +16 %
+    BOOST_TEST(std::abs(b.streamwise) < 0.5);            // Pa; was -4.4
+}
+
+// Sheared, with the centripetal force pressing the grains onto a side wall.
+BOOST_AUTO_TEST_CASE(a_sheared_layer_on_its_side_wall_balances) {
+    const Balance b = run("sheared", true);
+    BOOST_TEST(std::abs(b.vertical) < 0.1 * b.weight);  // was +30 % (17 Pa)
+    BOOST_TEST(std::abs(b.vertical) < 3.0 * b.vertical_se + 0.01 * b.weight);
+    BOOST_TEST(std::abs(b.streamwise) < 3.0 * b.streamwise_se + 0.05 * b.weight);  // was -20 Pa
+}
