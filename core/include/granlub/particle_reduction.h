@@ -15,6 +15,7 @@
 
 #include "granlub/case.h"
 #include "granlub/coarse_grain.h"
+#include "granlub/cross_section.h"
 #include "granlub/load_control.h"
 #include "granlub/particles.h"
 #include "granlub/results.h"
@@ -59,10 +60,12 @@ struct ParticleReductionInputs {
     std::size_t blocks;
     std::size_t grains;
     double simulated_s;                // the run's simulated time (for the transient message)
+    const CrossSection* section = nullptr;  // the same snapshots over y x z, when recorded
 };
 
 struct ParticleReduction {
     Profile profile;
+    Profile section;     // y x z over the same snapshots (cross_section.h); empty when not recorded
     std::map<std::string, Scalar> outputs;
     nlohmann::json run;  // steady-state facts, status, and under load run.load_control
     std::string line;    // the one-line console report

@@ -39,7 +39,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     write_file_atomic(dir / kData, data_file(init.particles, data_box, c.grains.density,
                                              fmt::format("case {} point {} ({})", c.name, p.id, prov)));
     write_file_atomic(dir / kDeck, deck(c, p, s, init.particles.size(), prov));
-    for (const char* f : {kSnapshots, kContactsFile, kPlateFile}) fs::remove(dir / f);
+    for (const char* f : {kSnapshots, kContactsFile, kPlateFile, kSectionFile}) fs::remove(dir / f);
     if (s.vtk) fs::remove_all(dir / "post");  // the .pvd lists exactly this run's files
 
     OneRun r;
@@ -59,8 +59,10 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     const double gap = plate ? mean_gap(*plate, window, s.blocks).mean : c.cell.gap;
     SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
     CoordinationSeries z(s.box, window.t_start);
+    CrossSection xs = CrossSection::for_grains(c.grains.diameter, gap, s.box.width, s.box.length);
     const std::size_t snapshots = for_each_snapshot(dir / kSnapshots, [&](const ParticleSet& g, double step) {
         cg.add_snapshot(g, step * s.time_step);
+        xs.add_snapshot(g, step * s.time_step);
         z.add(g, step * s.time_step);
     });
     if (snapshots < 2)
@@ -80,7 +82,14 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
                               .servo = s,
                               .blocks = s.blocks,
                               .grains = init.particles.size(),
-                              .simulated_s = static_cast<double>(s.steps) * s.time_step});
+                              .simulated_s = static_cast<double>(s.steps) * s.time_step,
+                              .section = &xs});
+    write_file_atomic(dir / kSectionFile,
+                      profile_csv(r.out.section,
+                                  {fmt::format("case {} point {} ({})", c.name, p.id, prov),
+                                   "solid fraction and u/U over the cross-section: y across the gap (0 = moving floor), "
+                                   "z across the width (z/W = -1/2: the outer wall, where the centripetal force pushes), "
+                                   "averaged along the flow and over the snapshots of the steady window"}));
     r.out.run["flow_regime"] = flow_regime_record(c, p, s, r.out, cg, z, dir / kContactsFile);
     fs::remove(dir / kContactsFile);
     return r;
