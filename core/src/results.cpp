@@ -154,7 +154,7 @@ std::string profile_csv(const Profile& p, const std::vector<std::string>& commen
     return out;
 }
 
-Profile parse_profile_csv(std::string_view text, const std::string& source) {
+Profile parse_table_csv(std::string_view text, const std::string& source) {
     Profile p;
     std::istringstream in{std::string(text)};
     std::string line;
@@ -189,7 +189,12 @@ Profile parse_profile_csv(std::string_view text, const std::string& source) {
             p.columns[c].push_back(v);
         }
     }
-    if (!header) throw Error(fmt::format("{}: empty profile (no header row)", source));
+    if (!header) throw Error(fmt::format("{}: empty table (no header row)", source));
+    return p;
+}
+
+Profile parse_profile_csv(std::string_view text, const std::string& source) {
+    Profile p = parse_table_csv(text, source);
     for (const char* col : kProfileColumns)
         if (!p.has(col))
             throw Error(fmt::format("{}: missing required column '{}' (has: {})", source, col, fmt::join(p.names, ", ")));

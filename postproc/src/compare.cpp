@@ -15,6 +15,7 @@
 #include "metrics.h"
 #include "paraview.h"
 #include "report_builder.h"
+#include "section_map.h"
 #include "svg_plot.h"
 #include "text.h"
 
@@ -98,12 +99,14 @@ int compare(const Case& c, const RunOptions& o) {
         const auto metrics = compute_metrics(col);
         ReportFigures figs;
         for (std::size_t i = 0; i < col.points.size(); ++i)
-            if (!col.usable(col.points[i]->id).empty())
+            if (!col.usable(col.points[i]->id).empty()) {
                 figs.profiles[col.points[i]->id] = emit(profile_figures(col, i), plots);
+                for (auto& f : section_figures(col, i, plots)) figs.profiles[col.points[i]->id].push_back(std::move(f));
+            }
         figs.stress = emit(stress_figures(col), plots);
         figs.slip = emit(slip_figures(col), plots);
         figs.solid_fraction = emit({solid_fraction_figure(col, c.cell.max_solid_fraction)}, plots);
-        const auto vtm = write_paraview(col, c.cell.gap, staging / "paraview");
+        const auto vtm = write_paraview(col, c.cell.gap, c.cell.width, staging / "paraview");
         const Report rep = build_report(c, col, metrics, figs, vtm);
         write_file_atomic(staging / "metrics.csv", metrics_csv(metrics));
         write_file_atomic(staging / "report.md", render_markdown(rep));

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkCellData.h>
 #include <vtkFieldData.h>
+#include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
@@ -17,6 +19,7 @@
 
 #include "figures.h"
 #include "granlub/error.h"
+#include "section_map.h"
 
 namespace granlub::postproc {
 namespace {
@@ -63,21 +66,47 @@ vtkSmartPointer<vtkPolyData> profile_polydata(const Run& r, double gap) {
     return pd;
 }
 
+// The cross-section (section.csv) as an image of 1 x ny x nz cells over y in [0, gap] and
+// z in [-width/2, width/2], cell data solid_fraction and u_over_U.
+vtkSmartPointer<vtkImageData> section_image(const SectionMap& m, double gap, double width) {
+    auto im = vtkSmartPointer<vtkImageData>::New();
+    im->SetDimensions(2, static_cast<int>(m.ny) + 1, static_cast<int>(m.nz) + 1);
+    im->SetOrigin(0.0, 0.0, -0.5 * width);
+    im->SetSpacing(gap / static_cast<double>(m.ny), gap / static_cast<double>(m.ny), width / static_cast<double>(m.nz));
+    for (const auto& [name, v] : {std::pair<const char*, const std::vector<double>*>{"solid_fraction", &m.nu},
+                                  {"u_over_U", &m.u}}) {
+        vtkNew<vtkDoubleArray> a;
+        a->SetName(name);
+        a->SetNumberOfValues(static_cast<vtkIdType>(v->size()));
+        for (std::size_t c = 0; c < v->size(); ++c) {  // ours: z fastest; VTK's: x, then y, then z
+            const std::size_t k = c / m.nz, l = c % m.nz;
+            a->SetValue(static_cast<vtkIdType>(k + m.ny * l), (*v)[c]);
+        }
+        im->GetCellData()->AddArray(a);
+    }
+    return im;
+}
+
 }  // namespace
 
-std::vector<std::filesystem::path> write_paraview(const Collection& col, double gap, const std::filesystem::path& dir) {
+std::vector<std::filesystem::path> write_paraview(const Collection& col, double gap, double width,
+                                                  const std::filesystem::path& dir) {
     std::vector<std::filesystem::path> written;
     std::filesystem::create_directories(dir);
     for (const OperatingPoint* p : col.points) {
         const auto runs = col.usable(p->id);
         if (runs.empty()) continue;
         vtkNew<vtkMultiBlockDataSet> mb;
-        mb->SetNumberOfBlocks(static_cast<unsigned>(runs.size()));
-        for (std::size_t b = 0; b < runs.size(); ++b) {
-            const auto block = static_cast<unsigned>(b);
-            mb->SetBlock(block, profile_polydata(*runs[b], gap));
-            mb->GetMetaData(block)->Set(vtkCompositeDataSet::NAME(), runs[b]->solver.c_str());
+        unsigned block = 0;
+        for (const Run* r : runs) {
+            mb->SetBlock(block, profile_polydata(*r, gap));
+            mb->GetMetaData(block++)->Set(vtkCompositeDataSet::NAME(), r->solver.c_str());
         }
+        for (const Run* r : runs)  // the particle runs' cross-sections (y x z), where recorded
+            if (const auto m = read_section(*r); m && width > 0) {
+                mb->SetBlock(block, section_image(*m, gap, width));
+                mb->GetMetaData(block++)->Set(vtkCompositeDataSet::NAME(), (r->solver + " cross-section").c_str());
+            }
         const auto file = dir / (point_slug(*p) + ".vtm");
         vtkNew<vtkXMLMultiBlockDataWriter> w;
         w->SetFileName(file.string().c_str());

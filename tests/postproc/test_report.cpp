@@ -213,3 +213,58 @@ BOOST_AUTO_TEST_CASE(any_other_results_folder_is_a_solver) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// The cross-section maps (section.csv of a particle run): two heat maps per run that has one, in
+// the point's section, marked when the run is a transient; none for runs without the file.
+BOOST_AUTO_TEST_CASE(cross_section_maps_where_a_particle_run_has_one) {
+    auto s = test::make_case("report_section");
+    {  // a trough 10 mm wide (the synthetic case is periodic across z), for the ParaView image
+        std::string text = test::slurp(s.dir / "case.toml");
+        text.replace(text.find("width = 0.0"), 11, "width = 0.01");
+        std::ofstream(s.dir / "case.toml") << text;
+        s.c = load_case(s.dir, Schema::common());
+    }
+    for (const char* solver : {"continuum", "dem"}) test::write_solver(s, solver);
+    // 3 x 4 cells, grains packed toward the floor and the outer wall (z/W = -1/2)
+    Profile t;
+    std::vector<double> y, z, nu, u;
+    for (int k = 0; k < 3; ++k)
+        for (int m = 0; m < 4; ++m) {
+            y.push_back((k + 0.5) / 3.0), z.push_back((m + 0.5) / 4.0 - 0.5);
+            nu.push_back(0.6 - 0.1 * k - 0.05 * m), u.push_back(1.0 - 0.3 * k);
+        }
+    t.add("y_over_H", y).add("z_over_W", z).add("solid_fraction", nu).add("u_over_U", u);
+    const OperatingPoint& p0 = s.c.points[0];
+    const OperatingPoint& p1 = s.c.points[1];
+    for (const OperatingPoint* p : {&p0, &p1})
+        write_file_atomic(result_dir(s.o.results_root, "dem", p->id) / "section.csv", profile_csv(t, {"synthetic"}));
+    test::patch_run(s, "dem", p1.id, {{"status", "transient"}, {"status_reason", "no steady state (test)"}});
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const fs::path rep = s.o.results_root / "report";
+    const std::string html = test::slurp(rep / "index.html");
+    expect_well_formed(rep / "index.html");
+    const auto maps = files_with(rep / "plots", ".svg");
+    const auto n = std::count_if(maps.begin(), maps.end(),
+                                 [](const fs::path& f) { return f.stem().string().starts_with("section_dem_"); });
+    BOOST_TEST(n == 4);  // nu and u/U at the two points with a section.csv, none at the third
+    for (const auto& f : maps)
+        if (f.stem().string().starts_with("section_dem_")) {
+            expect_well_formed(f);
+            BOOST_TEST(fs::exists(f.parent_path() / (f.stem().string().substr(0, f.stem().string().rfind('_')) + ".csv")));
+        }
+    BOOST_TEST(html.find("dem " + p0.id + ": solid fraction ν") != std::string::npos);
+    BOOST_TEST(html.find("dem " + p0.id + ": streamwise velocity u/U") != std::string::npos);
+    BOOST_TEST(html.find("z/W across the width") != std::string::npos);
+    // the transient point's maps say so; the steady one's do not
+    BOOST_TEST(html.find("dem " + p1.id + ": solid fraction ν (transient)") != std::string::npos);
+    BOOST_TEST(count(html, "TRANSIENT — not a result") == 2u);
+    // ParaView: the point's multiblock file has the cross-section as an image block
+    const std::string vtm = test::slurp(rep / "paraview" / "u1-0.vtm");
+    BOOST_TEST(vtm.find("name=\"dem cross-section\"") != std::string::npos, vtm);
+    const auto vtis = files_with(rep / "paraview" / "u1-0", ".vti");
+    BOOST_TEST_REQUIRE(vtis.size() == 1u);
+    const std::string vti = test::slurp(vtis.front());
+    BOOST_TEST(vti.find("Name=\"solid_fraction\"") != std::string::npos);
+    BOOST_TEST(vti.find("WholeExtent=\"0 1 0 3 0 4\"") != std::string::npos, vti.substr(0, 400));
+    expect_well_formed(vtis.front());
+}

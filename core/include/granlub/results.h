@@ -85,7 +85,9 @@ std::filesystem::path result_dir(const std::filesystem::path& results_root, cons
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
 
 std::string profile_csv(const Profile& p, const std::vector<std::string>& comments = {});
-Profile parse_profile_csv(std::string_view text, const std::string& source);
+Profile parse_profile_csv(std::string_view text, const std::string& source);  // + required columns
+// The CSV tables granlub writes (profile.csv, section.csv): '#' comments, a header row, numbers.
+Profile parse_table_csv(std::string_view text, const std::string& source);
 Profile read_profile(const std::filesystem::path& path);
 
 nlohmann::json summary_json(const Summary& s);
