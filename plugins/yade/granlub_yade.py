@@ -480,12 +480,13 @@ def run_couette(p):
         state["h"] = h
 
     def snapshot():
-        # granlub coordinates; columns y, vx, vy, vz (what the slab coarse-graining needs)
+        # granlub coordinates; columns y, z, vx, vy, vz (the slab coarse-graining and the y x z
+        # cross-section)
         buf = []
         for i in gids:
             s = O.bodies[i].state
             v = s.vel
-            buf.extend((s.pos[1] - Y0, v[0], v[1], v[2]))
+            buf.extend((s.pos[1] - Y0, s.pos[2] - Z0, v[0], v[1], v[2]))
         fbin.write(struct.pack("<%dd" % len(buf), *buf))
         state["snapshots"] += 1
 

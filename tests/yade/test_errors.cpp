@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <sys/stat.h>
 
@@ -165,7 +166,7 @@ BOOST_AUTO_TEST_CASE(reduction_of_known_output) {
         std::ofstream b(dir / "samples.bin", std::ios::binary);
         const double y = 0.5 * c.cell.gap;
         for (std::size_t k = 0; k < snaps * n; ++k) {
-            const double row[4] = {y, 0.3 * p.speed, 0.0, 0.0};
+            const double row[5] = {y, 0.0, 0.3 * p.speed, 0.0, 0.0};  // y, z, vx, vy, vz
             b.write(reinterpret_cast<const char*>(row), sizeof row);
         }
         nlohmann::json d = {{"grains", n},     {"snapshots", snaps},          {"dt", s.dt},
@@ -191,6 +192,22 @@ BOOST_AUTO_TEST_CASE(reduction_of_known_output) {
     BOOST_TEST(u[u.size() / 2] == 0.3, boost::test_tools::tolerance(1e-12));
     BOOST_TEST(nu.front() == 0.0);
     BOOST_TEST(res.summary.run.at("grains").get<std::size_t>() == n);
+    // the cross-section holds the same volume, at the middle of the gap and the width
+    {
+        std::ifstream in(dir / "section.csv");
+        std::stringstream text;
+        text << in.rdbuf();
+        const Profile sec = parse_table_csv(text.str(), "section.csv");
+        const auto& snu = sec.column("solid_fraction");
+        const auto& sz = sec.column("z_over_W");
+        std::size_t ny = 0;
+        for (double z : sz) ny += z == sz.front();
+        const double cell = c.cell.gap / static_cast<double>(ny) * c.cell.width /
+                            static_cast<double>(sec.rows() / ny) * c.cell.length;
+        double total = 0;
+        for (std::size_t k = 0; k < sec.rows(); ++k) total += snu[k] * cell;
+        BOOST_TEST(total == vg, boost::test_tools::tolerance(1e-9));
+    }
     // and the result files can be written and read back
     write_result(dir / "result", res.profile, res.summary);
     BOOST_TEST(read_summary(dir / "result" / "summary.json").value("shear_stress_top") == 1.5 / A,

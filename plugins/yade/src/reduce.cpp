@@ -85,8 +85,9 @@ json read_json(const fs::path& file, const std::string& what) {
 
 // Streams samples.bin into the coarse-grainer, one snapshot at a time (no whole-run buffer).
 void coarse_grain_samples(const fs::path& file, std::size_t n, std::size_t snapshots, double snapshot_dt,
-                          const std::vector<double>& radius, SliceCoarseGrainer& cg) {
-    constexpr std::size_t kCols = 4;  // y, vx, vy, vz
+                          const std::vector<double>& radius, const ParticleBox& box, SliceCoarseGrainer& cg,
+                          CrossSection& xs) {
+    constexpr std::size_t kCols = 5;  // y, z, vx, vy, vz
     std::ifstream in(file, std::ios::binary);
     if (!in) throw SolverError(fmt::format("{}: missing (the YADE run wrote no snapshots)", file.string()));
     const auto bytes = fs::file_size(file);
@@ -102,9 +103,12 @@ void coarse_grain_samples(const fs::path& file, std::size_t n, std::size_t snaps
         if (!in) throw SolverError(fmt::format("{}: short read at snapshot {}", file.string(), s));
         for (std::size_t i = 0; i < n; ++i) {
             const double* r = &buf[i * kCols];  // little-endian doubles, as on every supported host
-            p.y[i] = r[0], p.vx[i] = r[1], p.vy[i] = r[2], p.vz[i] = r[3];
+            p.y[i] = r[0], p.z[i] = r[1], p.vx[i] = r[2], p.vy[i] = r[3], p.vz[i] = r[4];
+            if (box.periodic_z)  // YADE does not wrap positions into the periodic cell
+                p.z[i] -= box.width * std::floor((p.z[i] + 0.5 * box.width) / box.width);
         }
         cg.add_snapshot(p, static_cast<double>(s + 1) * snapshot_dt);
+        xs.add_snapshot(p, static_cast<double>(s + 1) * snapshot_dt);
     }
 }
 
@@ -144,7 +148,9 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     const auto blocks = static_cast<std::size_t>(s.blocks);
     const double gap = plate ? mean_gap(*plate, win, blocks).mean : box.gap;
     SliceCoarseGrainer cg(Stations{0.0, gap, static_cast<std::size_t>(s.stations)}, box.length * box.width);
-    coarse_grain_samples(dir / "samples.bin", n, snapshots, dt * static_cast<double>(s.snapshot_every), radius, cg);
+    CrossSection xs = CrossSection::for_grains(c.grains.diameter, gap, box.width, box.length);
+    coarse_grain_samples(dir / "samples.bin", n, snapshots, dt * static_cast<double>(s.snapshot_every), radius, box, cg,
+                         xs);
     if (cg.snapshots() < 2) throw SolverError(fmt::format("point {}: fewer than 2 particle snapshots", p.id));
     ParticleReduction red = reduce_particles({.c = c,
                                               .speed = p.speed,
@@ -157,7 +163,13 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
                                               .servo = s.servo,
                                               .blocks = blocks,
                                               .grains = n,
-                                              .simulated_s = ds.at("simulated_time").get<double>()});
+                                              .simulated_s = ds.at("simulated_time").get<double>(),
+                                              .section = &xs});
+    write_file_atomic(dir / kSectionFile,
+                      profile_csv(red.section, {fmt::format("case {} point {} (granlub yade)", c.name, p.id),
+                                                "solid fraction and u/U over the cross-section: y across the gap "
+                                                "(0 = moving floor), z across the width (z/W = -1/2: the outer wall), "
+                                                "averaged along the flow and over the snapshots of the steady window"}));
     Summary sum = std::move(base);
     for (auto& [name, v] : red.outputs) sum.outputs[name] = std::move(v);
     sum.run.update(red.run);
