@@ -1,23 +1,13 @@
 #include "full_schema.h"
 
-#include "solver_commands.h"
+#include "modules.h"
 
 namespace granlub::cli {
 
+// The common sections plus each compiled solver's own (one table: modules.cpp).
 Schema full_schema() {
     Schema s = Schema::common();
-#ifdef GRANLUB_HAVE_CONTINUUM
-    s.add(continuum::section());
-#endif
-#ifdef GRANLUB_HAVE_AUTOMATON
-    s.add(automaton::section());
-#endif
-#ifdef GRANLUB_HAVE_DEM
-    s.add(dem::section());
-#endif
-#ifdef GRANLUB_HAVE_YADE
-    s.add(yade::section());
-#endif
+    for (const SolverModule& m : solver_modules()) s.add(m.section());
     return s;
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/registry.h"
 #include "granlub/results.h"
 #include "solver_commands.h"
 
@@ -14,21 +15,27 @@
 
 namespace granlub::cli {
 
+// One row per solver module compiled in (GRANLUB_HAVE_<MODULE>), in `granlub run` order: adding a
+// solver is its module plus one row here (granlub/registry.h looks the rows up).
 const std::vector<SolverModule>& solver_modules() {
     static const std::vector<SolverModule> modules = [] {
         std::vector<SolverModule> m;
 #ifdef GRANLUB_HAVE_CONTINUUM
-        m.push_back({"continuum", "granular kinetic lubrication (GKL) continuum solver", continuum::run, continuum::check});
+        m.push_back({"continuum", "granular kinetic lubrication (GKL) continuum solver", continuum::run, continuum::check,
+                     continuum::section});
 #endif
 #ifdef GRANLUB_HAVE_AUTOMATON
-        m.push_back({"automaton", "lattice cellular automaton (Jasti & Higgs 2006)", automaton::run, automaton::check});
+        m.push_back({"automaton", "lattice cellular automaton (Jasti & Higgs 2006)", automaton::run, automaton::check,
+                     automaton::section});
 #endif
 #ifdef GRANLUB_HAVE_DEM
-        m.push_back({"dem", "particle simulation in LIGGGHTS with granlub's contact models", dem::run, dem::check});
+        m.push_back({"dem", "particle simulation in LIGGGHTS with granlub's contact models", dem::run, dem::check,
+                     dem::section});
 #endif
 #ifdef GRANLUB_HAVE_YADE
-        m.push_back({"yade", "particle simulation in YADE (cross-check)", yade::run, yade::check});
+        m.push_back({"yade", "particle simulation in YADE (cross-check)", yade::run, yade::check, yade::section});
 #endif
+        registry_checked(m, "solver");
         return m;
     }();
     return modules;

@@ -1,8 +1,6 @@
 // The g0 registry: one row per form. Adding a form = one file in this folder + one row here.
-#include <algorithm>
-
 #include "granlub/continuum/g0/radial_distribution.h"
-#include "granlub/error.h"
+#include "granlub/registry.h"
 
 namespace granlub::continuum {
 
@@ -21,24 +19,15 @@ const std::vector<G0Entry>& g0_registry() {
         {"torquato", "Carnahan-Starling below 0.49, then (nu_max - 0.49)/(nu_max - nu), Torquato 1995",
          make_g0_torquato},
     };
+    static const bool checked = (registry_checked(table, "g0"), true);  // once, where it is built
+    (void)checked;
     return table;
 }
 
-std::vector<std::string> g0_names() {
-    std::vector<std::string> n;
-    for (const auto& e : g0_registry()) n.emplace_back(e.name);
-    return n;
-}
+std::vector<std::string> g0_names() { return registry_names(g0_registry()); }
 
 std::unique_ptr<RadialDistribution> make_g0(const std::string& name, double numax) {
-    const auto& t = g0_registry();
-    auto it = std::find_if(t.begin(), t.end(), [&](const G0Entry& e) { return name == e.name; });
-    if (it == t.end()) {
-        std::string allowed;
-        for (const auto& e : t) allowed += std::string(allowed.empty() ? "" : ", ") + e.name;
-        throw Error("unknown g0 \"" + name + "\" (allowed: " + allowed + ")");
-    }
-    return it->make(numax);
+    return registry_find(g0_registry(), name, "g0").make(numax);
 }
 
 }  // namespace granlub::continuum

@@ -1,8 +1,6 @@
 // The wall-family registry: one row per family. Adding one = one file here + one row below.
-#include <algorithm>
-
 #include "granlub/continuum/walls/wall_family.h"
-#include "granlub/error.h"
+#include "granlub/registry.h"
 
 namespace granlub::continuum {
 
@@ -14,24 +12,15 @@ const std::vector<WallEntry>& wall_registry() {
         {"k", "kinetic, P-based, Jenkins-Richman-structured (default)", make_wall_kinetic},
         {"jj", "Johnson & Jackson 1987 in GKL form", make_wall_johnson_jackson},
     };
+    static const bool checked = (registry_checked(table, "wall_model"), true);  // once, where it is built
+    (void)checked;
     return table;
 }
 
-std::vector<std::string> wall_names() {
-    std::vector<std::string> n;
-    for (const auto& e : wall_registry()) n.emplace_back(e.name);
-    return n;
-}
+std::vector<std::string> wall_names() { return registry_names(wall_registry()); }
 
 std::shared_ptr<const WallFamily> make_wall_family(const std::string& name) {
-    const auto& t = wall_registry();
-    auto it = std::find_if(t.begin(), t.end(), [&](const WallEntry& e) { return name == e.name; });
-    if (it == t.end()) {
-        std::string allowed;
-        for (const auto& e : t) allowed += std::string(allowed.empty() ? "" : ", ") + e.name;
-        throw Error("unknown wall_model \"" + name + "\" (allowed: " + allowed + ")");
-    }
-    return it->make();
+    return registry_find(wall_registry(), name, "wall_model").make();
 }
 
 }  // namespace granlub::continuum
