@@ -1,4 +1,5 @@
 #include "granlub/automaton/vtk.h"
+#include "granlub/pvd.h"
 
 #include <cmath>
 
@@ -49,13 +50,9 @@ std::string lattice_vti(const Lattice& e, double diameter) {
 }
 
 std::string snapshot_pvd(const std::vector<std::pair<double, std::string>>& files) {
-    std::string out =
-        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-        "  <Collection>\n";
-    for (const auto& [t, f] : files)
-        out += fmt::format("    <DataSet timestep=\"{:.9g}\" part=\"0\" file=\"{}\"/>\n", t, f);
-    out += "  </Collection>\n</VTKFile>\n";
-    return out;
+    std::vector<PvdEntry> entries;
+    for (const auto& [t, f] : files) entries.push_back({t, 0, f});
+    return pvd_collection(entries);  // core's one .pvd writer
 }
 
 }  // namespace granlub::automaton

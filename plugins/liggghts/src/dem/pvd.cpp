@@ -1,5 +1,4 @@
-// ParaView collection for the VTK dumps (pvd.h). Format: VTK's XML "Collection" file
-// (https://www.paraview.org/Wiki/ParaView/Data_formats#PVD_File_Format).
+// ParaView collection for the VTK dumps (pvd.h), through core's one .pvd writer (granlub/pvd.h).
 #include "pvd.h"
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 
 #include "deck.h"
 #include "granlub/error.h"
+#include "granlub/pvd.h"
 #include "granlub/results.h"
 
 namespace granlub::dem {
@@ -39,17 +39,13 @@ std::vector<VtkFrame> vtk_frames(const fs::path& post_dir) {
 }
 
 std::string pvd_text(const std::vector<VtkFrame>& frames, double dt) {
-    std::string s = "<?xml version=\"1.0\"?>\n"
-                    "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                    "  <Collection>\n";
+    std::vector<PvdEntry> entries;
     for (const auto& f : frames) {
         const double t = static_cast<double>(f.step) * dt;
-        s += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t, f.particles);
-        if (!f.box.empty())
-            s += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"1\" file=\"{}\"/>\n", t, f.box);
+        entries.push_back({t, 0, f.particles});
+        if (!f.box.empty()) entries.push_back({t, 1, f.box});
     }
-    s += "  </Collection>\n</VTKFile>\n";
-    return s;
+    return pvd_collection(entries);
 }
 
 void write_pvd(const fs::path& dir, double dt) {
