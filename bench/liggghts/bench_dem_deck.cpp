@@ -38,10 +38,18 @@ std::string sawyer_deck() {
     const fs::path root = fs::path(GRANLUB_BENCH_DIR) / "sawyer2001";
     fs::remove_all(root);
     fs::create_directories(root);
-    fs::copy_file(fs::path(GRANLUB_SAWYER_CASE) / "case.toml", root / "case.toml");
-    // 2033 steps of 7.87 us (granlub dem wants >= 20 wall-stress samples of 100 steps); snapshots every 254
-    // steps, as in the default run
-    std::ofstream(root / "case.toml", std::ios::app) << "\n[dem]\ntime = 0.016\nsnapshots = 8\n";
+    // a short run (granlub dem wants >= 20 wall-stress samples of 100 steps), snapshots as in the default
+    // run: the case's own [dem] section gets these keys instead of its time (TOML allows a section once)
+    std::ifstream src(fs::path(GRANLUB_SAWYER_CASE) / "case.toml");
+    std::stringstream text;
+    text << src.rdbuf();
+    std::string toml = std::regex_replace(text.str(), std::regex(R"((^|\n)(time|snapshots)\s*=[^\n]*)"), "$1");
+    const std::string keys = "time = 0.016\nsnapshots = 8\n";
+    if (toml.find("\n[dem]\n") != std::string::npos)
+        toml.replace(toml.find("\n[dem]\n"), 7, "\n[dem]\n" + keys);
+    else
+        toml += "\n[dem]\n" + keys;
+    std::ofstream(root / "case.toml") << toml;
     const std::string cmd = std::string(GRANLUB_CLI_PATH) + " dem '" + root.string() +
                             "' --point U2.0 --threads 1 > '" + (root / "granlub.out").string() + "' 2>&1";
     if (std::system(cmd.c_str()) != 0) return "";
