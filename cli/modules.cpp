@@ -21,19 +21,16 @@ const std::vector<SolverModule>& solver_modules() {
     static const std::vector<SolverModule> modules = [] {
         std::vector<SolverModule> m;
 #ifdef GRANLUB_HAVE_CONTINUUM
-        m.push_back({"continuum", "granular kinetic lubrication (GKL) continuum solver", continuum::run, continuum::check,
-                     continuum::section});
+        m.push_back({"continuum", "granular kinetic lubrication (GKL) continuum solver", continuum::run, continuum::check});
 #endif
 #ifdef GRANLUB_HAVE_AUTOMATON
-        m.push_back({"automaton", "lattice cellular automaton (Jasti & Higgs 2006)", automaton::run, automaton::check,
-                     automaton::section});
+        m.push_back({"automaton", "lattice cellular automaton (Jasti & Higgs 2006)", automaton::run, automaton::check});
 #endif
 #ifdef GRANLUB_HAVE_DEM
-        m.push_back({"dem", "particle simulation in LIGGGHTS with granlub's contact models", dem::run, dem::check,
-                     dem::section});
+        m.push_back({"dem", "particle simulation in LIGGGHTS with granlub's contact models", dem::run, dem::check});
 #endif
 #ifdef GRANLUB_HAVE_YADE
-        m.push_back({"yade", "particle simulation in YADE (cross-check)", yade::run, yade::check, yade::section});
+        m.push_back({"yade", "particle simulation in YADE (cross-check)", yade::run, yade::check});
 #endif
         registry_checked(m, "solver");
         return m;

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "granlub/case.h"
-#include "granlub/schema.h"
 #include "granlub/sweep.h"
 
 namespace granlub::cli {
@@ -15,7 +14,6 @@ struct SolverModule {
     std::string description;
     std::function<int(const Case&, const RunOptions&)> run;
     std::function<void(const Case&, const RunOptions&)> check;  // what run would reject, without running
-    std::function<SectionSpec()> section;                      // its [name] case section
 };
 
 const std::vector<SolverModule>& solver_modules();
