@@ -58,7 +58,8 @@ DriftCheck drift_check(const std::string& name, std::span<const double> w, doubl
     constexpr double inf = std::numeric_limits<double>::infinity();
     c.relative = mean != 0 ? c.change / std::abs(mean) : (c.change == 0 ? 0.0 : inf);
     c.z = se > 0 ? c.change / se : (c.change == 0 ? 0.0 : inf);
-    c.pass = std::abs(c.relative) <= allowed || std::abs(c.z) <= kDriftSigmas;
+    c.resolvable = kDriftSigmas * se <= kDriftResolution * std::abs(mean);
+    c.pass = std::abs(c.relative) <= allowed || (c.resolvable && std::abs(c.z) <= kDriftSigmas);
     return c;
 }
 
@@ -67,12 +68,14 @@ nlohmann::json SteadyWindow::to_json() const {
                                    "beyond the allowance or 3 combined standard errors"},
                         {"allowed_relative_drift", {{"wall_stress", kStressDrift}, {"gap", kGapDrift}}},
                         {"sigmas", kDriftSigmas},
+                        {"resolution", kDriftResolution},
                         {"checks", nlohmann::json::array()}};
     for (const auto& c : checks) {
         auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
         j["checks"].push_back({{"series", c.name},
                                {"relative_change", num(c.relative)},
                                {"z", num(c.z)},
+                               {"resolvable", c.resolvable},
                                {"pass", c.pass}});
     }
     return j;

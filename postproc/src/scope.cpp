@@ -29,9 +29,14 @@ std::string steady_rule(const Run& r) {
     auto pct = [&](const char* k) {
         return allowed.contains(k) && allowed[k].is_number() ? num(100.0 * allowed[k].get<double>(), 2) + " %" : std::string("?");
     };
-    return fmt::format("it starts where MSER-5 ends the initial transient and moves on until the two halves of the "
-                       "window agree within {} combined standard errors or within {} (wall stresses) and {} (gap)",
-                       num(s.value("sigmas", 3.0), 2), pct("wall_stress"), pct("gap"));
+    std::string rule = fmt::format("it starts where MSER-5 ends the initial transient and moves on until the two halves "
+                                   "of the window agree within {} combined standard errors or within {} (wall "
+                                   "stresses) and {} (gap)",
+                                   num(s.value("sigmas", 3.0), 2), pct("wall_stress"), pct("gap"));
+    if (s.contains("resolution") && s["resolution"].is_number())
+        rule += fmt::format("; a window too noisy to see a {} drift is not called steady",
+                            num(100.0 * s["resolution"].get<double>(), 2) + " %");
+    return rule;
 }
 
 // "0.1 s" or "0.0015–0.1 s" over the usable runs; counts (digits 0) as whole numbers.
