@@ -14,6 +14,7 @@
 #include "granlub/error.h"
 #include "granlub/text.h"
 #include "granlub/results.h"
+#include "granlub/table.h"
 
 namespace granlub {
 
@@ -241,54 +242,33 @@ void write_particles_csv(const std::filesystem::path& path, const ParticleSet& p
     write_file_atomic(path, out);
 }
 
-namespace {
-std::vector<std::string> read_lines(const std::filesystem::path& path) {
+std::vector<std::string> read_particles_comments(const std::filesystem::path& path) {
     std::ifstream in(path);
     if (!in) throw Error(fmt::format("{}: cannot open the particles file", path.string()));
-    std::vector<std::string> lines;
-    std::string line;
-    while (std::getline(in, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        lines.push_back(line);
-    }
-    return lines;
-}
-}  // namespace
-
-std::vector<std::string> read_particles_comments(const std::filesystem::path& path) {
     std::vector<std::string> out;
-    for (const auto& l : read_lines(path)) {
-        if (l.empty() || l[0] != '#') break;
+    for (std::string l; std::getline(in, l) && !l.empty() && l[0] == '#';) {
+        if (l.back() == '\r') l.pop_back();
         out.push_back(l.size() >= 2 && l[1] == ' ' ? l.substr(2) : l.substr(1));
     }
     return out;
 }
 
 ParticleSet read_particles_csv(const std::filesystem::path& path) {
-    const auto lines = read_lines(path);
-    std::size_t k = 0;
-    while (k < lines.size() && !lines[k].empty() && lines[k][0] == '#') ++k;
-    if (k >= lines.size() || lines[k] != "x,y,z,vx,vy,vz,radius")
-        throw Error(fmt::format("{}:{}: expected the header \"x,y,z,vx,vy,vz,radius\"", path.string(), k + 1));
+    TableFormat f;
+    f.expected_header = "x,y,z,vx,vy,vz,radius";
+    f.finite = true;
+    Table t = read_table(path, f);
+    for (std::size_t r = 0; r < t.rows(); ++r)
+        if (!(t.columns[6][r] > 0))
+            throw Error(fmt::format("{}:{}: radius {:g} must be positive", path.string(), t.line[r], t.columns[6][r]));
     ParticleSet p;
-    p.reserve(lines.size() - k);
-    for (++k; k < lines.size(); ++k) {
-        if (lines[k].empty()) continue;
-        double v[7];
-        const char* s = lines[k].c_str();
-        for (int c = 0; c < 7; ++c) {
-            char* end = nullptr;
-            v[c] = std::strtod(s, &end);
-            const bool sep_ok = (c < 6) ? (*end == ',') : (*end == '\0');
-            if (end == s || !sep_ok || !std::isfinite(v[c]))
-                throw Error(fmt::format("{}:{}: expected 7 finite numbers separated by commas, got \"{}\"",
-                                        path.string(), k + 1, lines[k]));
-            s = end + 1;
-        }
-        if (!(v[6] > 0))
-            throw Error(fmt::format("{}:{}: radius {:g} must be positive", path.string(), k + 1, v[6]));
-        p.push_back(v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
-    }
+    p.x = std::move(t.columns[0]);
+    p.y = std::move(t.columns[1]);
+    p.z = std::move(t.columns[2]);
+    p.vx = std::move(t.columns[3]);
+    p.vy = std::move(t.columns[4]);
+    p.vz = std::move(t.columns[5]);
+    p.radius = std::move(t.columns[6]);
     return p;
 }
 

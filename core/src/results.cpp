@@ -37,27 +37,6 @@ std::string utc_now() {
 }
 
 // ---------------------------------------------------------------------------------------------
-Profile& Profile::add(std::string name, std::vector<double> values) {
-    if (!columns.empty() && values.size() != rows())
-        throw Error(fmt::format("internal: profile column '{}' has {} rows, others have {}", name, values.size(), rows()));
-    if (has(name)) throw Error(fmt::format("internal: profile column '{}' added twice", name));
-    names.push_back(std::move(name));
-    columns.push_back(std::move(values));
-    return *this;
-}
-
-bool Profile::has(std::string_view name) const {
-    for (const auto& n : names)
-        if (n == name) return true;
-    return false;
-}
-
-const std::vector<double>& Profile::column(std::string_view name) const {
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == name) return columns[i];
-    throw Error(fmt::format("profile has no column '{}' (columns: {})", name, fmt::join(names, ", ")));
-}
-
 Summary& Summary::set(const std::string& name, double v, const std::string& unit, std::optional<double> se) {
     outputs[name] = Scalar{v, se, unit};
     return *this;
@@ -154,52 +133,18 @@ std::string profile_csv(const Profile& p, const std::vector<std::string>& commen
     return out;
 }
 
-Profile parse_table_csv(std::string_view text, const std::string& source) {
-    Profile p;
-    std::istringstream in{std::string(text)};
-    std::string line;
-    int lineno = 0;
-    bool header = false;
-    while (std::getline(in, line)) {
-        ++lineno;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line.empty() || line[0] == '#') continue;
-        std::vector<std::string> cells;
-        std::size_t start = 0;
-        while (true) {
-            auto comma = line.find(',', start);
-            cells.push_back(line.substr(start, comma - start));
-            if (comma == std::string::npos) break;
-            start = comma + 1;
-        }
-        if (!header) {
-            for (auto& c : cells) p.names.push_back(c);
-            p.columns.assign(cells.size(), {});
-            header = true;
-            continue;
-        }
-        if (cells.size() != p.names.size())
-            throw Error(fmt::format("{}:{}: {} values, the header has {} columns", source, lineno, cells.size(),
-                                    p.names.size()));
-        for (std::size_t c = 0; c < cells.size(); ++c) {
-            char* end = nullptr;
-            double v = std::strtod(cells[c].c_str(), &end);
-            if (cells[c].empty() || end == cells[c].c_str() || *end != '\0')
-                throw Error(fmt::format("{}:{}: column '{}': '{}' is not a number", source, lineno, p.names[c], cells[c]));
-            p.columns[c].push_back(v);
-        }
-    }
-    if (!header) throw Error(fmt::format("{}: empty table (no header row)", source));
-    return p;
-}
-
-Profile parse_profile_csv(std::string_view text, const std::string& source) {
-    Profile p = parse_table_csv(text, source);
+namespace {
+Profile checked_profile(Profile p, const std::string& source) {
     for (const char* col : kProfileColumns)
         if (!p.has(col))
             throw Error(fmt::format("{}: missing required column '{}' (has: {})", source, col, fmt::join(p.names, ", ")));
     if (p.rows() < 2) throw Error(fmt::format("{}: a profile needs at least 2 rows, has {}", source, p.rows()));
     return p;
+}
+}  // namespace
+
+Profile parse_profile_csv(std::string_view text, const std::string& source) {
+    return checked_profile(parse_table(text, source), source);
 }
 
 namespace {
@@ -212,7 +157,7 @@ std::string slurp(const std::filesystem::path& path) {
 }
 }  // namespace
 
-Profile read_profile(const std::filesystem::path& path) { return parse_profile_csv(slurp(path), path.string()); }
+Profile read_profile(const std::filesystem::path& path) { return checked_profile(read_table(path), path.string()); }
 
 nlohmann::json summary_json(const Summary& s) {
     nlohmann::json out = nlohmann::json::object();

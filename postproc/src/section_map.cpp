@@ -44,7 +44,7 @@ std::string slurp(const std::filesystem::path& p) {
 std::optional<SectionMap> read_section(const Run& r) {
     const auto file = r.dir / kSectionFile;
     if (!std::filesystem::exists(file)) return std::nullopt;
-    const Profile t = parse_table_csv(slurp(file), file.string());
+    const Profile t = parse_table(slurp(file), file.string());
     SectionMap m;
     m.y = t.column("y_over_H"), m.z = t.column("z_over_W"), m.nu = t.column("solid_fraction"), m.u = t.column("u_over_U");
     m.ny = std::set<double>(m.y.begin(), m.y.end()).size();

@@ -221,7 +221,7 @@ BOOST_AUTO_TEST_CASE(output_readers_parse_rows_and_name_bad_lines) {
     BOOST_REQUIRE(w.columns.size() == 2u);
     BOOST_TEST(w.columns[1] == (std::vector<double>{2, 4}));
     BOOST_TEST(error_of([&] { dem::read_wall_series(write("w2.txt", "100 1 2\n200 3\n")); })
-                   .find("w2.txt:2: expected 2 columns") != std::string::npos);
+                   .find("w2.txt:2: 2 values, expected 3 as on line 1") != std::string::npos);
     // LIGGGHTS prints a blown-up run's forces as nan / -nan / inf.
     BOOST_TEST(error_of([&] { dem::read_wall_series(write("w3.txt", "100 1 2\n200 -nan 4\n")); })
                    .find("w3.txt:2: non-finite") != std::string::npos);
@@ -234,7 +234,7 @@ BOOST_AUTO_TEST_CASE(output_readers_parse_rows_and_name_bad_lines) {
     BOOST_TEST(p.step == (std::vector<double>{100, 200}));
     BOOST_TEST(p.gap == (std::vector<double>{4.9e-3, 4.8e-3}));
     BOOST_TEST(error_of([&] { dem::read_plate_series(write("p2.txt", "100 4.9e-3\n200\n")); })
-                   .find("p2.txt:2: expected: step gap") != std::string::npos);
+                   .find("p2.txt:2: 1 values, expected 2: step gap") != std::string::npos);
     BOOST_TEST(error_of([&] { dem::read_plate_series(dir / "missing.txt"); }).find("wrote no plate-position file") !=
                std::string::npos);
 }

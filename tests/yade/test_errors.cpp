@@ -197,7 +197,7 @@ BOOST_AUTO_TEST_CASE(reduction_of_known_output) {
         std::ifstream in(dir / "section.csv");
         std::stringstream text;
         text << in.rdbuf();
-        const Profile sec = parse_table_csv(text.str(), "section.csv");
+        const Profile sec = parse_table(text.str(), "section.csv");
         const auto& snu = sec.column("solid_fraction");
         const auto& sz = sec.column("z_over_W");
         std::size_t ny = 0;

@@ -22,20 +22,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "granlub/table.h"
+
 namespace granlub {
 
 struct Case;
 struct OperatingPoint;
 
-struct Profile {
-    std::vector<std::string> names;
-    std::vector<std::vector<double>> columns;
-
-    Profile& add(std::string name, std::vector<double> values);  // throws on length mismatch
-    bool has(std::string_view name) const;
-    const std::vector<double>& column(std::string_view name) const;  // throws naming the columns
-    std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
-};
+// A profile is a table (table.h) with the columns kProfileColumns at least.
+using Profile = Table;
 
 struct Scalar {
     double value = 0;
@@ -86,8 +81,6 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view bytes
 
 std::string profile_csv(const Profile& p, const std::vector<std::string>& comments = {});
 Profile parse_profile_csv(std::string_view text, const std::string& source);  // + required columns
-// The CSV tables granlub writes (profile.csv, section.csv): '#' comments, a header row, numbers.
-Profile parse_table_csv(std::string_view text, const std::string& source);
 Profile read_profile(const std::filesystem::path& path);
 
 nlohmann::json summary_json(const Summary& s);

@@ -13,6 +13,7 @@
 #include "granlub/error.h"
 #include "granlub/flow_regime.h"
 #include "granlub/load_control.h"
+#include "granlub/table.h"
 
 namespace granlub::yade {
 
@@ -21,50 +22,26 @@ using nlohmann::json;
 
 namespace {
 
-// The numeric columns of a driver CSV file with the given header ('#' comment lines skipped).
-std::vector<std::vector<double>> read_csv_table(const fs::path& file, const std::string& expected,
-                                                const std::string& what) {
-    std::ifstream in(file);
-    if (!in) throw SolverError(fmt::format("{}: missing (the YADE run wrote no {})", file.string(), what));
-    const auto kCols = static_cast<std::size_t>(std::count(expected.begin(), expected.end(), ',') + 1);
-    std::vector<std::vector<double>> cols(kCols);
-    std::string line;
-    bool header = false;
-    for (int n = 1; std::getline(in, line); ++n) {
-        if (line.empty() || line[0] == '#') continue;
-        if (!header) {
-            if (line != expected)
-                throw SolverError(fmt::format("{}:{}: header '{}', expected '{}'", file.string(), n, line, expected));
-            header = true;
-            continue;
-        }
-        std::istringstream ss(line);
-        std::string cell;
-        std::size_t k = 0;
-        while (std::getline(ss, cell, ',')) {
-            char* end = nullptr;
-            const double v = std::strtod(cell.c_str(), &end);
-            if (k >= kCols || end == cell.c_str() || *end != '\0' || !std::isfinite(v))
-                throw SolverError(fmt::format("{}:{}: malformed row '{}'", file.string(), n, line));
-            cols[k++].push_back(v);
-        }
-        if (k != kCols) throw SolverError(fmt::format("{}:{}: {} values, expected {}", file.string(), n, k, kCols));
-    }
-    if (!header) throw SolverError(fmt::format("{}: no header row", file.string()));
-    return cols;
+// A driver CSV file with exactly this header, every value finite (the driver never writes nan).
+std::vector<std::vector<double>> read_driver_csv(const fs::path& file, const std::string& header,
+                                                 const std::string& what) {
+    TableFormat f;
+    f.expected_header = header;
+    f.finite = true;
+    return read_solver_output(file, f, fmt::format("missing (the YADE run wrote no {})", what)).columns;
 }
 
 }  // namespace
 
 WallForceSeries read_wall_forces(const fs::path& file) {
-    auto t = read_csv_table(file, "step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2",
+    auto t = read_driver_csv(file, "step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2",
                             "wall forces");
     return WallForceSeries{std::move(t[0]), std::move(t[1]), std::move(t[2]), std::move(t[3]), std::move(t[4]),
                       std::move(t[5]), std::move(t[6]), std::move(t[7]), std::move(t[8])};
 }
 
 PlateSeries read_plate(const fs::path& file) {
-    auto t = read_csv_table(file, "step,gap", "plate positions");
+    auto t = read_driver_csv(file, "step,gap", "plate positions");
     if (t[0].size() < 2) throw SolverError(fmt::format("{}: fewer than 2 plate positions", file.string()));
     return PlateSeries{std::move(t[0]), std::move(t[1])};
 }

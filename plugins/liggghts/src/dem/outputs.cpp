@@ -3,14 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "deck.h"
 #include "granlub/error.h"
+#include "granlub/table.h"
 
 namespace granlub::dem {
 
@@ -18,50 +17,29 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Calls row(values, line number) for each data line of a LIGGGHTS text output (fix ave/time
-// style: blank lines and # comments skipped); `what` names the file in the "not written" error.
-// Numbers are read with strtod, which also takes the "nan" and "inf" LIGGGHTS prints when a run
-// blows up (an istream stops there, silently shortening the row).
-template <class Row>
-void for_each_data_line(const fs::path& file, const char* what, Row row) {
-    std::ifstream in(file);
-    if (!in) throw SolverError(fmt::format("{}: LIGGGHTS wrote no {} file", file.string(), what));
-    std::string l, token;
-    std::vector<double> values;
-    std::size_t lineno = 0;
-    while (std::getline(in, l)) {
-        ++lineno;
-        if (l.empty() || l[0] == '#') continue;
-        std::istringstream ss(l);
-        values.clear();
-        while (ss >> token) {
-            char* end = nullptr;
-            values.push_back(std::strtod(token.c_str(), &end));
-            if (end != token.c_str() + token.size())
-                throw SolverError(fmt::format("{}:{}: '{}' is not a number", file.string(), lineno, token));
-        }
-        if (!values.empty()) row(values, lineno);
-    }
+// LIGGGHTS' `fix ave/time` / `fix print` text: whitespace-separated numbers, '#' comments. strtod
+// (in the table reader) also takes the "nan" and "inf" LIGGGHTS prints when a run blows up, which
+// an istream would silently stop at.
+TableFormat liggghts_text(std::vector<std::string> names = {}) {
+    TableFormat f;
+    f.separator = TableFormat::Separator::whitespace;
+    f.header = false;
+    f.names = std::move(names);
+    f.finite = true;
+    f.nonfinite_hint = "the run blew up; reduce the time step";
+    return f;
 }
 
 }  // namespace
 
 WallSeries read_wall_series(const fs::path& file) {
+    Table t = read_solver_output(file, liggghts_text(), "LIGGGHTS wrote no wall-force file");
+    if (t.rows() == 0) throw SolverError(fmt::format("{}: no wall-force samples", file.string()));
+    if (t.columns.size() < 2)
+        throw SolverError(fmt::format("{}:{}: expected the step and at least one wall force", file.string(), t.line[0]));
     WallSeries w;
-    for_each_data_line(file, "wall-force", [&](const std::vector<double>& v, std::size_t lineno) {
-        const std::size_t n = v.size() - 1;  // columns after the step
-        if (w.columns.empty()) w.columns.resize(n);
-        if (n != w.columns.size() || n == 0)
-            throw SolverError(fmt::format("{}:{}: expected {} columns after the step", file.string(), lineno,
-                                          std::max<std::size_t>(w.columns.size(), 1)));
-        for (std::size_t k = 1; k <= n; ++k)
-            if (!std::isfinite(v[k]))
-                throw SolverError(fmt::format("{}:{}: non-finite wall force (the run blew up; reduce the time step)",
-                                              file.string(), lineno));
-        w.step.push_back(v[0]);
-        for (std::size_t k = 0; k < n; ++k) w.columns[k].push_back(v[k + 1]);
-    });
-    if (w.step.empty()) throw SolverError(fmt::format("{}: no wall-force samples", file.string()));
+    w.step = std::move(t.columns[0]);
+    w.columns.assign(std::make_move_iterator(t.columns.begin() + 1), std::make_move_iterator(t.columns.end()));
     return w;
 }
 
@@ -102,15 +80,14 @@ std::size_t for_each_snapshot(const fs::path& file, const std::function<void(con
 }
 
 PlateSeries read_plate_series(const fs::path& file) {
+    const Table t = read_solver_output(file, liggghts_text({"step", "gap"}), "LIGGGHTS wrote no plate-position file");
     PlateSeries p;
-    for_each_data_line(file, "plate-position", [&](const std::vector<double>& v, std::size_t lineno) {
-        if (v.size() != 2 || !std::isfinite(v[1]))
-            throw SolverError(fmt::format("{}:{}: expected: step gap", file.string(), lineno));
-        const double step = v[0], gap = v[1];
-        if (step <= 0 || (!p.step.empty() && step <= p.step.back())) return;  // initial position, repeats
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+        const double step = t.columns[0][r], gap = t.columns[1][r];
+        if (step <= 0 || (!p.step.empty() && step <= p.step.back())) continue;  // initial position, repeats
         p.step.push_back(step);
         p.gap.push_back(gap);
-    });
+    }
     if (p.step.size() < 2) throw SolverError(fmt::format("{}: fewer than 2 plate positions", file.string()));
     return p;
 }
