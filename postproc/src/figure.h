@@ -1,5 +1,6 @@
-// A plot described once and rendered twice: as inline SVG (svg_plot.h, what the report shows)
-// and as gnuplot data + script (gnuplot.h, so a user can restyle and re-render the figure).
+// A plot described once. One renderer draws what the report shows: svg_plot.h. The gnuplot
+// export (gnuplot.h) hands the same data, limits and labels to a user who wants their own
+// figure; it is a starting point, not a second drawing of the report's figure.
 #pragma once
 #include <optional>
 #include <string>

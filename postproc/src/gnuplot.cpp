@@ -40,6 +40,8 @@ std::string gnuplot_data(const Figure& f) {
 std::string gnuplot_script(const Figure& f) {
     std::string out = fmt::format(
         "# {} -- written by granlub compare; edit freely, then run:  gnuplot {}.gp\n"
+        "# A starting point for your own figure: the report's data, axis limits and labels. The\n"
+        "# report's figure itself is drawn by granlub's SVG renderer, not by this script.\n"
         "# For a paper figure, e.g.:  set terminal pdfcairo size 9cm,6.5cm font 'Helvetica,8'\n"
         "set terminal svg size 540,380 font 'DejaVu Sans,13' background '#ffffff'\n"
         "set output {}\n"

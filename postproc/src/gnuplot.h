@@ -1,6 +1,7 @@
 // Plot sources for the user: each Figure as <name>.dat (one gnuplot `index` block per series)
-// plus <name>.gp, a plain gnuplot script that re-renders it (to <name>.gnuplot.svg by default).
-// The report never runs gnuplot; these are for restyling.
+// plus <name>.gp, a plain gnuplot script that plots that data with the report's axis limits and
+// labels (to <name>.gnuplot.svg by default). The report never runs gnuplot, and the script does
+// not promise to reproduce the report's figure: the report's one renderer is svg_plot.h.
 #pragma once
 #include <filesystem>
 

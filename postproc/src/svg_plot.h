@@ -12,7 +12,7 @@ std::string render_svg(const Figure& f);
 
 // Axis limits and legend corner as render_svg chooses them (0 top right, 1 top left, 2 bottom
 // right, 3 bottom left: the first corner free of data points; kLegendBelow when none is, the
-// legend then below the frame), so the gnuplot script draws the same frame.
+// legend then below the frame); the gnuplot export takes its axis limits and key corner from here.
 inline constexpr int kLegendBelow = 4;
 struct Layout {
     double xlo, xhi, ylo, yhi;
