@@ -18,6 +18,7 @@
 #include <toml++/toml.h>
 
 #include "common_sections.h"
+#include "granlub/particle_section.h"
 #include "granlub/error.h"
 #include "granlub/text.h"
 #include "toml_screen.h"
@@ -46,6 +47,7 @@ std::string hash_hex(std::string_view bytes) {
 Schema Schema::common() {
     Schema s;
     for (auto& sec : common_sections()) s.sections_.push_back(std::move(sec));
+    s.sections_.push_back(particles_section());  // not common: only solvers that `use` it hash it
     return s;
 }
 
@@ -493,10 +495,21 @@ std::vector<const OperatingPoint*> Case::select(std::string_view id) const {
     return out;
 }
 
+namespace {
+// The sections a solver's results depend on: the common ones, its own, and the ones it uses.
+bool feeds(const Case& c, const std::string& section, std::string_view solver_section) {
+    if (common_sections_contains(section) || section == solver_section) return true;
+    const auto it = c.sections.find(std::string(solver_section));
+    if (it == c.sections.end()) return false;
+    const auto& uses = it->second.spec().uses;
+    return std::find(uses.begin(), uses.end(), section) != uses.end();
+}
+}  // namespace
+
 std::map<std::string, std::string> Case::inputs(std::string_view solver_section) const {
     std::map<std::string, std::string> out;
     for (const auto& [sname, s] : sections) {
-        if (!common_sections_contains(sname) && sname != solver_section) continue;
+        if (!feeds(*this, sname, solver_section)) continue;
         for (const auto& k : s.spec().keys)
             if (s.has(k.name)) out[fmt::format("[{}] {}", sname, k.name)] = value_text(s.values().at(k.name));
     }
@@ -508,7 +521,7 @@ std::string Case::inputs_hash(std::string_view solver_section) const {
     // "[section]\n" then "key=value\n" in declaration order, sections in name order.
     std::ostringstream os;
     for (const auto& [sname, s] : sections) {
-        if (!common_sections_contains(sname) && sname != solver_section) continue;
+        if (!feeds(*this, sname, solver_section)) continue;
         os << '[' << sname << "]\n";
         for (const auto& k : s.spec().keys)
             if (s.has(k.name)) os << k.name << '=' << value_text(s.values().at(k.name)) << '\n';

@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE(short_shear_cell_writes_complete_finite_results) {
 BOOST_AUTO_TEST_CASE(wall_stresses_carry_the_weight_of_the_grains) {
     // periodic across z (no side walls): in the mean, bottom minus top normal force = weight
     const std::string text = edit(edit(kCase, "width = 6.0e-3", "width = 0.0"), "time = 0.02", "time = 0.06");
-    const Run r = run(edit(text, "\\[dem\\]", "[dem]\nperiodic_depth = 6.0e-3"), "weight");
+    const Run r = run(edit(text, "\\[dem\\]", "[particles]\nperiodic_depth = 6.0e-3\n[dem]"), "weight");
     BOOST_TEST_REQUIRE(r.code == 0);
     const Summary s = read_summary(r.dir / "summary.json");
     const double n = static_cast<double>(s.run.at("atoms").get<long>());

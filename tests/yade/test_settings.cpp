@@ -179,3 +179,21 @@ BOOST_AUTO_TEST_CASE(parameter_file_carries_the_case) {
     BOOST_TEST(k.at("task").get<std::string>() == "collision");
     BOOST_TEST(k.at("impact_speed").get<double>() == 1.5);
 }
+
+// Both engines start from [particles] (declared once in core), not from each other's sections.
+BOOST_AUTO_TEST_CASE(initial_grains_come_from_the_shared_particles_section) {
+    const Case c = tiny_case("[yade]", "[particles]\nseed = 5\nvelocity_noise = 0.2\n\n[yade]");
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    BOOST_TEST(s.insertion.seed == 5u);
+    BOOST_TEST(s.insertion.velocity_noise == 0.2);
+    RunOptions o;
+    o.seed = 9;
+    BOOST_TEST(resolve_settings(c, c.points.at(0), o).insertion.seed == 9u);
+    // the keys are no longer the engines' own
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "seed = 5\n"); }), "seed"));
+    // a change in [particles] makes the particle results stale, not those of other solvers
+    const Case d = tiny_case();
+    BOOST_TEST(c.inputs_hash("yade") != d.inputs_hash("yade"));
+    BOOST_TEST(c.inputs_hash("continuum") == d.inputs_hash("continuum"));
+    BOOST_TEST(c.inputs("yade").at("[particles] seed") == "5");
+}

@@ -68,6 +68,9 @@ struct SectionSpec {
     std::string doc;
     std::vector<KeySpec> keys;
     std::vector<std::string> subtables;  // allowed nested tables, e.g. walls.top / walls.bottom
+    // Shared sections a solver's results also depend on (e.g. [particles] for dem and yade):
+    // part of its inputs hash, so a change there makes its results stale.
+    std::vector<std::string> uses;
     // Cross-key checks of this section; call Section::fail(key, why) to reject.
     std::function<void(const Section&)> validate;
 

@@ -1,6 +1,7 @@
 // The [yade] case section: one line per key (type, default, range, unit, doc).
 #include "granlub/yade/command.h"
 
+#include "granlub/particle_section.h"
 #include "granlub/servo.h"
 
 namespace granlub::yade {
@@ -18,20 +19,17 @@ SectionSpec section() {
     s.boolean("calibrate_restitution", true,
               "viscel: search e_n so that a binary collision in YADE gives the case's restitution");
     s.real("dt", 0.0, Range::non_negative(), "s",
-           "time step; 0 = contact_time/20 (viscel) or 0.15 Rayleigh times (hertz, as granlub dem)");
+           "time step; 0 = contact_time/20 (viscel) or 0.15 Rayleigh times (hertz, as granlub dem; at most 0.3)");
     s.real("time", 1.5e-3, Range::positive(), "s",
            "simulated time of a quick run (3000 steps, ~45 s of YADE per sawyer2001 point with viscel)");
     s.real("time_full", 0.2, Range::positive(), "s", "simulated time with --full");
-    s.integer("sample_every", 100, Range::closed(1, 1e8),
-              "wall-force block length in steps (forces are summed every step), as granlub dem");
-    s.integer("snapshots", 50, Range::closed(2, 1e5), "particle snapshots over the run for coarse-graining");
     s.integer("body_force_every", 50, Range::closed(1, 1e8),
               "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");
-    s.integer("stations", 20, Range::closed(2, 1e5), "coarse-graining slabs across the gap");
-    s.integer("blocks", 10, Range::closed(2, 1e4), "blocks for the standard errors (block averaging)");
     s.real("timeout", 0.0, Range::non_negative(), "s",
            "wall-clock limit of one YADE run; 0 = 600 s + 100 us per grain-step (a guard against hangs, generous for shared machines)");
-    add_servo_keys(s);  // control = load: fill_for_load, servo_every, servo_gain, servo_max_gap (as [dem])
+    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particle_section.h)
+    add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/servo.h)
+    s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with dem
     return s;
 }
 

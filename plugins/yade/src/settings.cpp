@@ -7,14 +7,11 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/particle_section.h"
 
 namespace granlub::yade {
 
 std::string to_string(Model m) { return m == Model::ViscEl ? "viscel" : "hertz"; }
-
-
-// The Hertz time step of `granlub dem` (its hertz_step_fraction default), so both engines step alike.
-inline constexpr double kHertzStepFraction = 0.15;
 
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const Section& s = c.section("yade");
@@ -30,15 +27,10 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     r.blocks = s.integer("blocks");
     r.timeout = s.real("timeout");
 
-    // Same initial grains as `granlub dem`: its insertion keys when the case has them.
-    r.insertion.wall_speed = p.speed;
-    if (c.sections.count("dem")) {
-        const Section& dem = c.section("dem");
-        if (dem.has("seed")) r.insertion.seed = static_cast<std::uint64_t>(dem.integer("seed"));
-        if (dem.has("velocity_noise")) r.insertion.velocity_noise = dem.real("velocity_noise");
-        if (dem.has("periodic_depth")) r.periodic_depth = dem.real("periodic_depth");
-    }
-    if (o.seed) r.insertion.seed = *o.seed;
+    // The initial grains of `granlub dem` too: [particles] is one section for both engines.
+    const ParticleStart start = particle_start(c, p, o.seed);
+    r.insertion = start.insertion;
+    r.periodic_depth = start.periodic_depth;
 
     const double tr = c.grains.rayleigh_time();
     r.dt = s.real("dt");
@@ -47,10 +39,10 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
         s.fail("dt", fmt::format("too large for contact_time = {:g} s: a contact needs at least 10 steps "
                                  "(allowed: dt <= {:g} s, or 0 for contact_time/20)",
                                  r.contact_time, r.contact_time / 10.0));
-    if (r.model == Model::Hertz && r.dt > 0.5 * tr)
+    if (r.model == Model::Hertz && r.dt > kHertzMaxStepFraction * tr)
         s.fail("dt", fmt::format("too large for Hertz contacts of these grains (Rayleigh time {:g} s) "
                                  "(allowed: dt <= {:g} s, or 0 for {} Rayleigh times)",
-                                 tr, 0.5 * tr, kHertzStepFraction));
+                                 tr, kHertzMaxStepFraction * tr, kHertzStepFraction));
 
     const std::string time_key = o.full ? "time_full" : "time";
     const double time = s.real(time_key);

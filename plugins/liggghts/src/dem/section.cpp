@@ -1,6 +1,7 @@
 // The [dem] case section: one line per key (type, default, range, unit, doc). Apart from the
 // engine pipeline so that it compiles with core alone (the case-parser fuzzer builds it).
 #include "granlub/dem/command.h"
+#include "granlub/particle_section.h"
 #include "granlub/servo.h"
 #include "settings.h"
 
@@ -27,20 +28,12 @@ SectionSpec section() {
     s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
            "impulse model: diameters travelled per step at the larger of U, sqrt(2 g H) and, under load "
            "control, sqrt(12 P / (pi rho)) (the load's push on one grain over one diameter)");
-    s.real("hertz_step_fraction", 0.15, Range::open_closed(0, 0.3), "",
+    s.real("hertz_step_fraction", kHertzStepFraction, Range::open_closed(0, kHertzMaxStepFraction), "",
            "hertz model: time step as a fraction of the Rayleigh time");
-    s.integer("sample_every", 100, Range::closed(1, 1e8),
-              "wall-force block length in steps (forces are summed every step)");
-    s.integer("snapshots", 50, Range::closed(4, 1e5), "particle snapshots over the run for coarse-graining");
-    s.integer("stations", 20, Range::closed(2, 1e5), "coarse-graining slabs across the gap");
-    s.integer("blocks", 10, Range::closed(2, 1e4), "blocks for the standard errors");
     s.real("skin", 0.25, Range::positive(), "", "neighbour-list skin in grain diameters");
-    s.integer("seed", 1, Range::at_least(0), "seed of the initial configuration (--seed overrides)");
-    s.real("velocity_noise", 0.1, Range::non_negative(), "",
-           "initial velocity noise per component, standard deviation / U, on the linear Couette profile");
-    s.real("periodic_depth", 0.0, Range::non_negative(), "m",
-           "depth across z when [cell] width = 0 (periodic); 0 = 10 grain diameters");
-    add_servo_keys(s);  // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/servo.h)
+    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particle_section.h)
+    add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/servo.h)
+    s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with yade
     return s;
 }
 

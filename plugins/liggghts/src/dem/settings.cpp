@@ -9,6 +9,7 @@
 
 #include "granlub/error.h"
 #include "granlub/flow_regime.h"
+#include "granlub/particle_section.h"
 
 namespace granlub::dem {
 
@@ -29,11 +30,12 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.beta0 = s.real("beta0");
     st.separate = s.boolean("separate_overlaps");
     st.bounce_speed = s.real("bounce_speed");
-    st.box = particle_box(c, s.real("periodic_depth"));
+    const ParticleStart start = particle_start(c, p, o.seed);
+    st.box = particle_box(c, start.periodic_depth);
     st.np = std::max(1, o.np);
     st.vtk = o.vtk;
-    st.seed = o.seed ? *o.seed : static_cast<std::uint64_t>(s.integer("seed"));
-    st.velocity_noise = s.real("velocity_noise");
+    st.seed = start.insertion.seed;
+    st.velocity_noise = start.insertion.velocity_noise;
     st.time = o.full ? s.real("time_full") : s.real("time");
 
     if (c.cell.annulus_radius > 0 && c.cell.annulus_radius <= 0.5 * st.box.width)
@@ -56,11 +58,11 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     } else {
         const double tr = c.grains.rayleigh_time();
         st.time_step = given > 0 ? given : s.real("hertz_step_fraction") * tr;
-        if (st.time_step > 0.3 * tr)
+        if (st.time_step > kHertzMaxStepFraction * tr)
             s.fail(given > 0 ? "time_step" : "hertz_step_fraction",
-                   fmt::format("time step {:g} s is {:.2f} Rayleigh times ({:g} s) of the Hertz contacts; at most 0.3 "
+                   fmt::format("time step {:g} s is {:.2f} Rayleigh times ({:g} s) of the Hertz contacts; at most {:g} "
                                "is stable",
-                               st.time_step, st.time_step / tr, tr));
+                               st.time_step, st.time_step / tr, tr, kHertzMaxStepFraction));
     }
     const double steps = std::ceil(st.time / st.time_step - 1e-9);
     if (!(steps <= kMaxSteps))
