@@ -68,7 +68,7 @@ void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
     sub->add_flag("--vtk", a.opt.vtk, "also write ParaView (VTK) files where the solver supports it (default: off)");
     if (stochastic) {
         sub->add_option("--seed", a.seed,
-                        "random seed, a whole number (default: each solver's [SOLVER] seed key of the case)")
+                        "random seed, a whole number (default: the case's seed key: [particles] seed for dem and yade, [automaton] seed)")
             ->type_name("N")
             ->check(integer_in(0, std::numeric_limits<std::int64_t>::max(), "a seed", "0 to 2^63 - 1"));
         sub->add_option("--threads", a.opt.threads, "worker threads, a count (default: 0 = all cores)")
