@@ -30,9 +30,13 @@ struct Balance {
 };
 
 // The tiny cell (220 grains of 1 mm, 8 x 6 x 6 mm, side walls) at its inserted fill, 0.4 s.
-Balance run(const std::string& name, bool centripetal) {
+std::string tiny(const std::string& name, bool centripetal) {
     std::string text = test::tiny_cell(name, "", "time = 0.4\n");
     if (!centripetal) text = test::edit(text, "annulus_radius = 0.05", "annulus_radius = 0.0");
+    return text;
+}
+
+Balance run(const std::string& name, const std::string& text) {
     Schema schema = test::dem_schema();
     const Case c = parse_case(text, name + ".toml", schema);
     RunOptions o;
@@ -62,15 +66,31 @@ Balance run(const std::string& name, bool centripetal) {
 // Without the centripetal force the bed settles and rides with the floor and the side walls: no
 // shear, and the forces are steady enough for a tight check.
 BOOST_AUTO_TEST_CASE(a_bed_riding_on_its_floor_balances) {
-    const Balance b = run("riding", false);
+    const Balance b = run("riding", tiny("riding", false));
     BOOST_TEST(std::abs(b.vertical) < 0.01 * b.weight);  // was +16 %
     BOOST_TEST(std::abs(b.streamwise) < 0.5);            // Pa; was -4.4
 }
 
 // Sheared, with the centripetal force pressing the grains onto a side wall.
 BOOST_AUTO_TEST_CASE(a_sheared_layer_on_its_side_wall_balances) {
-    const Balance b = run("sheared", true);
+    const Balance b = run("sheared", tiny("sheared", true));
     BOOST_TEST(std::abs(b.vertical) < 0.1 * b.weight);  // was +30 % (17 Pa)
     BOOST_TEST(std::abs(b.vertical) < 3.0 * b.vertical_se + 0.01 * b.weight);
     BOOST_TEST(std::abs(b.streamwise) < 3.0 * b.streamwise_se + 0.05 * b.weight);  // was -20 Pa
+}
+
+// Hertz contacts (1 GPa) under load control: the deck moves the plate in jumps, and with the
+// servo's rigid-grain gain (0.05 d per unit error, ~300 contact overlaps at this load) each jump
+// hammered the loaded contacts, and the walls recorded 116 Pa (twice the weight) more upward
+// force than the grains' weight (measured 2026-11-24; on sawyer2001's cell it also dilated the
+// bed, nu 0.55 instead of 0.58). The gain is now capped at one contact overlap per unit error.
+BOOST_AUTO_TEST_CASE(hertz_grains_under_a_servo_plate_balance) {
+    std::string text = test::tiny_cell("hertz_load", "control = \"load\"\nnormal_stress = 1000.0\n",
+                                       "model = \"hertz\"\ntime = 0.3\n");
+    text = test::edit(text, "gap = 6.0e-3", "gap = 4.4e-3");  // the inserted grains' gap under the load
+    text = test::edit(text, "solid_fraction = 0.4", "solid_fraction = 0.545");
+    text = test::edit(text, "friction = 0.5\n\\[walls\\]", "friction = 0.5\nyoungs_modulus = 1e9\n[walls]");
+    const Balance b = run("hertz_load", text);
+    // (the block errors of the spiky plate force, ~170 Pa, are no yardstick here; the run is deterministic)
+    BOOST_TEST(std::abs(b.vertical) < 0.1 * b.weight);  // was +2.0 weights
 }

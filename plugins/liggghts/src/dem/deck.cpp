@@ -184,7 +184,10 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress,
                      A));
     line(fmt::format("# every {} steps: hplate += {} * err, err = clamp((P_top - P)/P, -1, {}),", s.servo_every,
-                     s.servo_gain * d_g, s.servo_max_error));
+                     s.plate_gain * d_g, s.servo_max_error));
+    if (s.plate_gain < s.servo_gain)
+        line(fmt::format("# (soft contacts: the gain is capped so that a unit error moves the plate by one grain-plate "
+                         "overlap at the load, {} m: a jump must not hammer the loaded contacts)", s.plate_overlap));
     line(fmt::format("# hplate kept in [{}, {}] m; plate position per update in {}", s.gap_min, s.gap_max, kPlateFile));
     line(fmt::format("fix servoF all ave/time 1 {0} {0} c_ftop[2]", s.servo_every));
     line(fmt::format("fix plate all ave/time {0} 1 {0} v_hplate file {1}", s.servo_every, kPlateFile));
@@ -192,7 +195,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(fmt::format("variable err equal (v_ptop-{0})/{0}", s.target_stress));
     line(fmt::format("variable errc equal v_err*(v_err>=-1)*(v_err<={0})+{0}*(v_err>{0})-(v_err<-1)",
                      s.servo_max_error));
-    line(fmt::format("variable htry equal v_hplate+{}*v_errc", s.servo_gain * d_g));
+    line(fmt::format("variable htry equal v_hplate+{}*v_errc", s.plate_gain * d_g));
     line(fmt::format("variable hnew equal v_htry*(v_htry>={0})*(v_htry<={1})+{0}*(v_htry<{0})+{1}*(v_htry>{1})",
                      s.gap_min, s.gap_max));
     line(fmt::format("variable update loop {}", updates));

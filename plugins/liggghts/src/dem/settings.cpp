@@ -23,6 +23,16 @@ double impulse_reference_speed(const Case& c, const OperatingPoint& p) {
 
 
 
+// Hertz normal overlap of a grain on a plane of the same material under the force P d^2 (one
+// grain's share of the load): F = (4/3) E* R^(1/2) delta^(3/2) (Hertz 1882; Johnson 1985, Contact
+// Mechanics, eq. 4.23) with 1/E* = 2 (1 - nu^2) / E and R = d/2, as LIGGGHTS' hertz model combines
+// the two materials. The load's share per grain is our estimate of the plate's contact force.
+double hertz_plate_overlap(const Grains& g, double load) {
+    const double e_star = g.youngs_modulus / (2.0 * (1.0 - g.poisson_ratio * g.poisson_ratio));
+    const double force = load * g.diameter * g.diameter;
+    return std::pow(3.0 * force / (4.0 * e_star * std::sqrt(0.5 * g.diameter)), 2.0 / 3.0);
+}
+
 Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const Section& s = c.section("dem");
     Settings st;
@@ -72,6 +82,11 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.steps = static_cast<std::int64_t>(steps);
     st.sample_every = s.integer("sample_every");
     static_cast<ServoSettings&>(st) = resolve_servo(c, p, s, st.sample_every, st.time_step, st.steps);
+    st.plate_gain = st.servo_gain;
+    if (st.load && st.model == Model::Hertz) {
+        st.plate_overlap = hertz_plate_overlap(c.grains, st.target_stress);
+        st.plate_gain = std::min(st.servo_gain, st.plate_overlap / c.grains.diameter);
+    }
     if (st.steps < 20 * st.sample_every)
         s.fail(o.full ? "time_full" : "time",
                fmt::format("{:g} s is {} steps of {:g} s: fewer than 20 wall-stress samples of {} steps "
@@ -123,6 +138,7 @@ nlohmann::json Settings::to_json() const {
                             {"refine_dt", refine_dt},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
+    if (load) j.update(nlohmann::json{{"servo_gain_used", plate_gain}, {"plate_overlap_m", plate_overlap}});
     return j;
 }
 

@@ -46,6 +46,14 @@ struct Settings : ServoSettings {
     }
     int np = 1;
     ParticleBox box;              // the cell (box.gap = the case's gap H)
+    // Load control with soft (Hertz) contacts: the deck moves the plate in jumps, one per servo
+    // window, and a jump into loaded contacts compresses each of them by the jump at once: jumps
+    // of servo_gain d (0.05 d, ~100 Hertz overlaps at 1 GPa) hammered the bed, dilated it and
+    // injected momentum the walls did not record (plugin README, "Load control with Hertz
+    // contacts"). So the gain is at most plate_overlap / d: a unit error moves the plate by one
+    // contact overlap at the target load. Impulse contacts have no overlap scale: no cap.
+    double plate_overlap = 0;     // m, Hertz grain-plate overlap under the load's share of one grain
+    double plate_gain = 0;        // the servo gain the deck uses, diameters per unit relative error
 
     double box_top() const { return load ? gap_max : box.gap; }
 
