@@ -117,3 +117,26 @@ BOOST_AUTO_TEST_CASE(bad_servo_settings_give_clear_errors) {
         BOOST_TEST(std::string(e.what()).find("normal_stress") != std::string::npos);
     }
 }
+
+// Hertz contacts: the plate's gain is capped at one grain-plate overlap at the load per unit
+// error (a jump must not hammer the loaded contacts, settings.h); impulse contacts keep theirs.
+BOOST_AUTO_TEST_CASE(hertz_plate_moves_at_most_one_contact_overlap_per_unit_error) {
+    const Case impulse = parse_case(kCase, "tiny_load.toml", schema());
+    const dem::Settings si = dem::resolve(impulse, impulse.points.front(), RunOptions{});
+    BOOST_TEST(si.plate_gain == si.servo_gain);
+    BOOST_TEST(si.plate_overlap == 0.0);
+    const std::string hertz_text = edit(edit(kCase, "\\[dem\\]", "[dem]\nmodel = \"hertz\""),
+                                        "friction = 0.5\n\\[walls\\]", "friction = 0.5\nyoungs_modulus = 1e9\n[walls]");
+    const Case hertz = parse_case(hertz_text, "tiny_load.toml", schema());
+    const dem::Settings sh = dem::resolve(hertz, hertz.points.front(), RunOptions{});
+    // F = P d^2 = 30e-6 N on a sphere of R = 0.5 mm against a plane, E* = E / (2 (1 - 0.23^2)):
+    // delta = (3 F / (4 E* sqrt(R)))^(2/3) = 1.53e-8 m (Johnson 1985, eq. 4.23)
+    const double e_star = 1e9 / (2.0 * (1.0 - 0.23 * 0.23));
+    const double delta = std::pow(3.0 * 30e-6 / (4.0 * e_star * std::sqrt(0.5e-3)), 2.0 / 3.0);
+    BOOST_TEST(sh.plate_overlap == delta, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(delta > 1.5e-8);
+    BOOST_TEST(delta < 1.6e-8);
+    BOOST_TEST(sh.plate_gain == delta / 1e-3, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(sh.plate_gain < sh.servo_gain);
+    BOOST_TEST(sh.to_json().at("servo_gain_used").get<double>() == sh.plate_gain);
+}
