@@ -13,7 +13,8 @@ void add_servo_keys(SectionSpec& s) {
     s.integer("servo_every", 0, Range::closed(0, 1e8),
               "control = load: steps between top-plate updates (force averaged over them); 0 = sample_every");
     s.real("servo_gain", 0.05, Range::open_closed(0, 0.1), "",
-           "control = load: plate move per update in grain diameters per unit relative stress error");
+           "control = load: plate move per update in grain diameters per unit relative stress error "
+           "(granlub dem with hertz: at most one grain-plate contact overlap at the load)");
     s.real("servo_max_gap", 1.5, Range::open_closed(1, 4), "",
            "control = load: highest plate position (the box top) as a multiple of [cell] gap");
 }
