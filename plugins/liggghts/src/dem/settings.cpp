@@ -27,11 +27,13 @@ double impulse_reference_speed(const Case& c, const OperatingPoint& p) {
 // grain's share of the load): F = (4/3) E* R^(1/2) delta^(3/2) (Hertz 1882; Johnson 1985, Contact
 // Mechanics, eq. 4.23) with 1/E* = 2 (1 - nu^2) / E and R = d/2, as LIGGGHTS' hertz model combines
 // the two materials. The load's share per grain is our estimate of the plate's contact force.
+namespace {
 double hertz_plate_overlap(const Grains& g, double load) {
     const double e_star = g.youngs_modulus / (2.0 * (1.0 - g.poisson_ratio * g.poisson_ratio));
     const double force = load * g.diameter * g.diameter;
     return std::pow(3.0 * force / (4.0 * e_star * std::sqrt(0.5 * g.diameter)), 2.0 / 3.0);
 }
+}  // namespace
 
 Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const Section& s = c.section("dem");
