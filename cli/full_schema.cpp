@@ -8,18 +8,9 @@ namespace granlub::cli {
 // builds this schema from the solvers' section files alone (tests/core/fuzz).
 Schema full_schema() {
     Schema s = Schema::common();
-#ifdef GRANLUB_HAVE_CONTINUUM
-    s.add(continuum::section());
-#endif
-#ifdef GRANLUB_HAVE_AUTOMATON
-    s.add(automaton::section());
-#endif
-#ifdef GRANLUB_HAVE_DEM
-    s.add(dem::section());
-#endif
-#ifdef GRANLUB_HAVE_YADE
-    s.add(yade::section());
-#endif
+#define GRANLUB_SOLVER(name, doc) s.add(name::section());
+#include "solvers.h"
+#undef GRANLUB_SOLVER
     return s;
 }
 

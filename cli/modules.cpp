@@ -15,23 +15,14 @@
 
 namespace granlub::cli {
 
-// One row per solver module compiled in (GRANLUB_HAVE_<MODULE>), in `granlub run` order: adding a
-// solver is its module plus one row here (granlub/registry.h looks the rows up).
+// The solver table from the one list of solver modules (solvers.h); granlub/registry.h looks the
+// rows up.
 const std::vector<SolverModule>& solver_modules() {
     static const std::vector<SolverModule> modules = [] {
         std::vector<SolverModule> m;
-#ifdef GRANLUB_HAVE_CONTINUUM
-        m.push_back({"continuum", "granular kinetic lubrication (GKL) continuum solver", continuum::run, continuum::check});
-#endif
-#ifdef GRANLUB_HAVE_AUTOMATON
-        m.push_back({"automaton", "lattice cellular automaton (Jasti & Higgs 2006)", automaton::run, automaton::check});
-#endif
-#ifdef GRANLUB_HAVE_DEM
-        m.push_back({"dem", "particle simulation in LIGGGHTS with granlub's contact models", dem::run, dem::check});
-#endif
-#ifdef GRANLUB_HAVE_YADE
-        m.push_back({"yade", "particle simulation in YADE (cross-check)", yade::run, yade::check});
-#endif
+#define GRANLUB_SOLVER(name, doc) m.push_back({#name, doc, name::run, name::check});
+#include "solvers.h"
+#undef GRANLUB_SOLVER
         registry_checked(m, "solver");
         return m;
     }();

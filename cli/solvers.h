@@ -1,0 +1,19 @@
+// Every solver module compiled in (GRANLUB_HAVE_<MODULE>), one row each, in `granlub run` order:
+//   GRANLUB_SOLVER(name, "one-line description")
+// `name` is the module's namespace, command, case section and result folder; the module provides
+// granlub/<name>/command.h with section(), run() and check(). Adding a solver is its module plus
+// one row here (and its #include in solver_commands.h). The includer defines GRANLUB_SOLVER:
+// modules.cpp makes the command table, full_schema.cpp the case schema (sections only, so the
+// case-parser fuzzer can build it without the solvers).
+#ifdef GRANLUB_HAVE_CONTINUUM
+GRANLUB_SOLVER(continuum, "granular kinetic lubrication (GKL) continuum solver")
+#endif
+#ifdef GRANLUB_HAVE_AUTOMATON
+GRANLUB_SOLVER(automaton, "lattice cellular automaton (Jasti & Higgs 2006)")
+#endif
+#ifdef GRANLUB_HAVE_DEM
+GRANLUB_SOLVER(dem, "particle simulation in LIGGGHTS with granlub's contact models")
+#endif
+#ifdef GRANLUB_HAVE_YADE
+GRANLUB_SOLVER(yade, "particle simulation in YADE (cross-check)")
+#endif
