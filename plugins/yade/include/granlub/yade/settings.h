@@ -30,8 +30,8 @@ struct Settings {
     std::int64_t stations = 20;
     std::int64_t blocks = 10;
     double timeout = 0;                    // s; 0 = from the run size
-    // The initial configuration, shared with `granlub dem`: [dem] seed, velocity_noise and
-    // periodic_depth when the case has a [dem] section, else the core defaults; --seed overrides.
+    // The initial configuration, shared with `granlub dem`: [particles] seed, velocity_noise and
+    // periodic_depth (granlub/particle_section.h); --seed overrides.
     InsertionOptions insertion;
     double periodic_depth = 0;
     // control = "load": the top wall is a plate the driver moves every servo_every steps, the
