@@ -1,8 +1,6 @@
 // failure.json: why a point has no result (failure_record.h).
 #include "granlub/failure_record.h"
 
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -23,12 +21,8 @@ std::optional<FailureRecord> read_failure(const std::filesystem::path& dir) {
     const auto path = dir / kFailureFile;
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return std::nullopt;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(fmt::format("{}: cannot be read", path.string()));
-    std::stringstream ss;
-    ss << in.rdbuf();
     try {
-        const auto j = nlohmann::json::parse(ss.str());
+        const auto j = nlohmann::json::parse(read_file(path));
         if (!j.is_object() || j.value("format", "") != "granlub-failure-1")
             throw Error(fmt::format("{}: not a granlub failure record (format is not granlub-failure-1)", path.string()));
         return FailureRecord{j.at("solver").get<std::string>(), j.at("point").get<std::string>(),

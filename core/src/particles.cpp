@@ -6,7 +6,6 @@
 #include <fstream>
 #include <numbers>
 #include <random>
-#include <sstream>
 
 #include <fmt/format.h>
 

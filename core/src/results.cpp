@@ -147,15 +147,13 @@ Profile parse_profile_csv(std::string_view text, const std::string& source) {
     return checked_profile(parse_table(text, source), source);
 }
 
-namespace {
-std::string slurp(const std::filesystem::path& path) {
+std::string read_file(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(fmt::format("{}: cannot be read", path.string()));
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
 }
-}  // namespace
 
 Profile read_profile(const std::filesystem::path& path) { return checked_profile(read_table(path), path.string()); }
 
@@ -214,7 +212,7 @@ Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
 Summary read_summary(const std::filesystem::path& path) {
     nlohmann::json j;
     try {
-        j = nlohmann::json::parse(slurp(path));
+        j = nlohmann::json::parse(read_file(path));
     } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e999
         throw Error(fmt::format("{}: not valid JSON: {}", path.string(), e.what()));
     }

@@ -1,14 +1,15 @@
 // The one reader of granlub's numeric text tables (table.h).
 #include "granlub/table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/results.h"
 
 namespace granlub {
 
@@ -62,10 +63,14 @@ Table parse_table(std::string_view text, const std::string& source, const TableF
     if (!f.header && !f.names.empty()) set_names(t, f.names);
     bool named = !t.names.empty();
     std::size_t first_row_line = 0;
-    std::istringstream in{std::string(text)};
     std::string line;
     std::vector<std::string> cells;
-    for (std::size_t lineno = 1; std::getline(in, line); ++lineno) {
+    std::size_t lineno = 0;
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t eol = std::min(text.find('\n', start), text.size());
+        line.assign(text.substr(start, eol - start));
+        start = eol + 1;
+        ++lineno;
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.empty() || line[0] == '#') continue;
         split(line, f.separator, cells);
@@ -111,11 +116,7 @@ Table parse_table(std::string_view text, const std::string& source, const TableF
 }
 
 Table read_table(const std::filesystem::path& file, const TableFormat& format) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw Error(fmt::format("{}: cannot be read", file.string()));
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return parse_table(ss.str(), file.string(), format);
+    return parse_table(read_file(file), file.string(), format);
 }
 
 Table read_solver_output(const std::filesystem::path& file, const TableFormat& format, std::string_view missing) {

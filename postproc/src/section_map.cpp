@@ -4,9 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -32,19 +30,12 @@ std::string colour(double t) {
     return fmt::format("#{:02x}{:02x}{:02x}", c(0), c(1), c(2));
 }
 
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 }  // namespace
 
 std::optional<SectionMap> read_section(const Run& r) {
     const auto file = r.dir / kSectionFile;
     if (!std::filesystem::exists(file)) return std::nullopt;
-    const Profile t = parse_table(slurp(file), file.string());
+    const Profile t = read_table(file);
     SectionMap m;
     m.y = t.column("y_over_H"), m.z = t.column("z_over_W"), m.nu = t.column("solid_fraction"), m.u = t.column("u_over_U");
     m.ny = std::set<double>(m.y.begin(), m.y.end()).size();

@@ -78,6 +78,8 @@ std::filesystem::path result_dir(const std::filesystem::path& results_root, cons
 
 // Atomic writes: temp file in the same directory, flushed, then renamed over the target.
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
+// The whole file's bytes; Error "<file>: cannot be read" when it cannot be opened.
+std::string read_file(const std::filesystem::path& path);
 
 std::string profile_csv(const Profile& p, const std::vector<std::string>& comments = {});
 Profile parse_profile_csv(std::string_view text, const std::string& source);  // + required columns

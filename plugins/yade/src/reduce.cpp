@@ -1,10 +1,8 @@
 #include "granlub/yade/reduce.h"
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <optional>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -1,9 +1,8 @@
 // Reading LIGGGHTS' wall-force, plate and snapshot files (outputs.h).
 #include "outputs.h"
 
-#include <algorithm>
-#include <cmath>
 #include <fstream>
+#include <iterator>
 
 #include <fmt/format.h>
 
