@@ -5,9 +5,11 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "granlub/case.h"
 #include "granlub/error.h"
@@ -17,12 +19,17 @@
 
 namespace granlub {
 
+namespace {
+constexpr const char* kHeader = "x,y,z,vx,vy,vz,radius";
+constexpr const char* kSpinHeader = "x,y,z,vx,vy,vz,radius,wx,wy,wz";
+}  // namespace
+
 void ParticleSet::reserve(std::size_t n) {
     for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &radius}) v->reserve(n);
 }
 
 void ParticleSet::clear() {
-    for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &radius}) v->clear();
+    for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &radius, &wx, &wy, &wz}) v->clear();
 }
 
 void ParticleSet::push_back(double x_, double y_, double z_, double vx_, double vy_, double vz_, double r) {
@@ -233,10 +240,15 @@ void write_particles_csv(const std::filesystem::path& path, const ParticleSet& p
     std::string out;
     out.reserve(p.size() * 140 + 256);
     for (const auto& c : comments) out += "# " + one_line(c) + "\n";  // a path may hold a line break
-    out += "x,y,z,vx,vy,vz,radius\n";
-    for (std::size_t i = 0; i < p.size(); ++i)
-        out += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", p.x[i], p.y[i], p.z[i],
+    const bool spin = p.has_spin();
+    if (spin && (p.wx.size() != p.size() || p.wy.size() != p.size() || p.wz.size() != p.size()))
+        throw Error(fmt::format("internal: {}: {} grains but {} spins", path.string(), p.size(), p.wx.size()));
+    out += std::string(spin ? kSpinHeader : kHeader) + "\n";
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        out += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", p.x[i], p.y[i], p.z[i],
                            p.vx[i], p.vy[i], p.vz[i], p.radius[i]);
+        out += spin ? fmt::format(",{:.17g},{:.17g},{:.17g}\n", p.wx[i], p.wy[i], p.wz[i]) : std::string("\n");
+    }
     std::filesystem::create_directories(path.parent_path());
     write_file_atomic(path, out);
 }
@@ -254,9 +266,12 @@ std::vector<std::string> read_particles_comments(const std::filesystem::path& pa
 
 ParticleSet read_particles_csv(const std::filesystem::path& path) {
     TableFormat f;
-    f.expected_header = "x,y,z,vx,vy,vz,radius";
     f.finite = true;
     Table t = read_table(path, f);
+    const std::string header = fmt::format("{}", fmt::join(t.names, ","));
+    const bool spin = header == kSpinHeader;
+    if (!spin && header != kHeader)
+        throw Error(fmt::format("{}: header '{}', expected '{}' or '{}'", path.string(), header, kHeader, kSpinHeader));
     for (std::size_t r = 0; r < t.rows(); ++r)
         if (!(t.columns[6][r] > 0))
             throw Error(fmt::format("{}:{}: radius {:g} must be positive", path.string(), t.line[r], t.columns[6][r]));
@@ -268,7 +283,46 @@ ParticleSet read_particles_csv(const std::filesystem::path& path) {
     p.vy = std::move(t.columns[4]);
     p.vz = std::move(t.columns[5]);
     p.radius = std::move(t.columns[6]);
+    if (spin) {
+        p.wx = std::move(t.columns[7]);
+        p.wy = std::move(t.columns[8]);
+        p.wz = std::move(t.columns[9]);
+    }
     return p;
+}
+
+std::filesystem::path final_state_path(const std::filesystem::path& root, const std::string& solver,
+                                       const std::string& point) {
+    return root / solver / point / "final_state.csv";
+}
+
+void write_particle_state(const std::filesystem::path& path, const ParticleState& s, std::vector<std::string> comments) {
+    comments.push_back(fmt::format("gap: {:.17g}", s.gap));
+    comments.push_back(fmt::format("time: {:.17g}", s.time));
+    write_particles_csv(path, s.particles, comments);
+}
+
+ParticleState read_particle_state(const std::filesystem::path& path) {
+    ParticleState s;
+    s.particles = read_particles_csv(path);
+    bool have_gap = false;
+    for (const auto& c : read_particles_comments(path)) {
+        auto value = [&](const char* key) -> std::optional<double> {
+            if (c.rfind(key, 0) != 0) return std::nullopt;
+            const std::string v = c.substr(std::string(key).size());
+            char* end = nullptr;
+            const double x = std::strtod(v.c_str(), &end);
+            if (end == v.c_str() || *end != '\0' || !std::isfinite(x))
+                throw Error(fmt::format("{}: comment '{}': not a number after '{}'", path.string(), c, key));
+            return x;
+        };
+        if (auto g = value("gap: ")) s.gap = *g, have_gap = true;
+        if (auto t = value("time: ")) s.time = *t;
+    }
+    if (!have_gap || !(s.gap > 0))
+        throw Error(fmt::format("{}: no positive 'gap: <m>' comment (the top wall's position of the state)",
+                                path.string()));
+    return s;
 }
 
 namespace {

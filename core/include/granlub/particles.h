@@ -10,6 +10,8 @@
 // Initial-configuration file: <results_root>/initial/<point>/particles.csv
 //   '#' comment lines (provenance: granlub version, case, point, seed, box, N, fill, `key`),
 //   then the header "x,y,z,vx,vy,vz,radius" and one row per grain, SI units, 17 significant digits.
+//   A state that carries spins (a run's final state, particle_state.h) has the header
+//   "x,y,z,vx,vy,vz,radius,wx,wy,wz" (angular velocity, rad/s); the reader takes either.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -27,8 +29,10 @@ struct ParticleSet {
     std::vector<double> x, y, z;     // centre, m
     std::vector<double> vx, vy, vz;  // velocity, m/s
     std::vector<double> radius;      // m
+    std::vector<double> wx, wy, wz;  // angular velocity, rad/s; empty (all zero) unless has_spin()
 
     std::size_t size() const { return x.size(); }
+    bool has_spin() const { return !wx.empty(); }
     void reserve(std::size_t n);
     void clear();
     void push_back(double x_, double y_, double z_, double vx_, double vy_, double vz_, double r);
@@ -91,6 +95,22 @@ void write_particles_csv(const std::filesystem::path& path, const ParticleSet& p
 ParticleSet read_particles_csv(const std::filesystem::path& path);
 // The comment lines of a particles file, without the leading "# ".
 std::vector<std::string> read_particles_comments(const std::filesystem::path& path);
+
+// A run's final state: the grains (with spins) and the top wall's position (the plate under load
+// control), in <results_root>/<solver>/<point>/final_state.csv: the particles format above with
+// the comments "gap: <m>" and "time: <s>". granlub dem writes it; granlub yade can start from it
+// (a warm start, plugins/yade/README.md).
+struct ParticleState {
+    ParticleSet particles;
+    double gap = 0;   // m, top wall position
+    double time = 0;  // s, simulated time at which the state was taken
+};
+std::filesystem::path final_state_path(const std::filesystem::path& results_root, const std::string& solver,
+                                       const std::string& point);
+void write_particle_state(const std::filesystem::path& path, const ParticleState& s,
+                          std::vector<std::string> comments = {});  // atomic
+// Throws Error naming the file for a malformed file or a missing or non-positive gap.
+ParticleState read_particle_state(const std::filesystem::path& path);
 
 struct InitialParticles {
     ParticleSet particles;

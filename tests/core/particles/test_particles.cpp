@@ -112,6 +112,46 @@ BOOST_AUTO_TEST_CASE(particles_file_round_trips_exactly) {
     std::filesystem::remove_all(dir);
 }
 
+// A run's final state (another run's warm start): spins and the top wall's position survive the
+// file to the last bit; a file without a gap is rejected.
+BOOST_AUTO_TEST_CASE(particle_state_keeps_spins_and_gap) {
+    ParticleState st;
+    st.particles.push_back(0.1, 0.2, 0.3, 1.0 / 3.0, -2.0, 0.5, 0.4e-3);
+    st.particles.push_back(0.4, 0.5, -0.3, 0.0, 1e-9, 7.0, 0.4e-3);
+    st.particles.wx = {12.5, -1.0 / 7.0};
+    st.particles.wy = {0.0, 3e5};
+    st.particles.wz = {-233.07131826781301, 1.0};
+    st.gap = 0.0040467433352456;
+    st.time = 0.30028;
+    const auto dir = std::filesystem::path(GRANLUB_BINARY_DIR) / "tests" / "core_particles_state";
+    const auto file = final_state_path(dir, "dem", "U2.0");
+    BOOST_TEST(file.filename() == "final_state.csv");
+    write_particle_state(file, st, {"made by a test"});
+    const ParticleState q = read_particle_state(file);
+    BOOST_TEST(q.particles.has_spin());
+    BOOST_TEST(q.particles.x == st.particles.x);
+    BOOST_TEST(q.particles.vx == st.particles.vx);
+    BOOST_TEST(q.particles.wx == st.particles.wx);
+    BOOST_TEST(q.particles.wy == st.particles.wy);
+    BOOST_TEST(q.particles.wz == st.particles.wz);
+    BOOST_TEST(q.gap == st.gap);
+    BOOST_TEST(q.time == st.time);
+    // a plain initial file has no spins and no gap: read as particles, refused as a state
+    const auto plain = dir / "plain.csv";
+    ParticleSet p = st.particles;
+    p.wx.clear(), p.wy.clear(), p.wz.clear();
+    write_particles_csv(plain, p, {"no state"});
+    BOOST_TEST(!read_particles_csv(plain).has_spin());
+    try {
+        read_particle_state(plain);
+        BOOST_FAIL("expected an Error");
+    } catch (const Error& e) {
+        BOOST_TEST(std::string(e.what()).find("gap") != std::string::npos);
+        BOOST_TEST(std::string(e.what()).find("plain.csv") != std::string::npos);
+    }
+    std::filesystem::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_CASE(malformed_particles_file_names_file_and_line) {
     const auto dir = std::filesystem::path(GRANLUB_BINARY_DIR) / "tests" / "core_particles_bad";
     std::filesystem::create_directories(dir);
