@@ -14,6 +14,7 @@
 #include "granlub/case.h"
 #include "granlub/dem/command.h"
 #include "granlub/error.h"
+#include "granlub/particles.h"
 #include "granlub/results.h"
 #include "granlub/sweep.h"
 #include "settings.h"
@@ -76,6 +77,27 @@ BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap) {
     ss << deck.rdbuf();
     BOOST_TEST(ss.str().find("label servo") != std::string::npos);
     BOOST_TEST(ss.str().find("yplane ${hplate}") != std::string::npos);
+}
+
+// The final state (another run's warm start): every grain with its spin, the plate where the
+// servo left it (inside its limits, within a few per cent of the mean gap), and the deck's raw
+// dump files converted and gone.
+BOOST_AUTO_TEST_CASE(final_state_holds_every_grain_and_the_plate) {
+    const test::LoadRun& r = run_load(30.0);
+    BOOST_TEST_REQUIRE(r.code == 0);
+    const ParticleState st = read_particle_state(r.dir / "final_state.csv");
+    BOOST_TEST(static_cast<double>(st.particles.size()) == r.summary.run.at("atoms").get<double>());
+    BOOST_TEST(st.particles.has_spin());
+    double spin = 0;
+    for (std::size_t i = 0; i < st.particles.size(); ++i) spin = std::max(spin, std::abs(st.particles.wz[i]));
+    BOOST_TEST(spin > 0.0);  // sheared grains roll: the spins are the run's, not zeros
+    const double mean_gap = r.summary.value("gap");
+    BOOST_TEST(std::abs(st.gap - mean_gap) < 0.05 * mean_gap, st.gap << " vs mean " << mean_gap);
+    BOOST_TEST(st.time >= r.summary.run.at("simulated_time_s").get<double>());
+    for (std::size_t i = 0; i < st.particles.size(); ++i)
+        BOOST_TEST_REQUIRE(st.particles.y[i] + st.particles.radius[i] <= st.gap * (1 + 1e-9));
+    BOOST_TEST(!fs::exists(r.dir / "final.txt"));
+    BOOST_TEST(!fs::exists(r.dir / "final_plate.txt"));
 }
 
 BOOST_AUTO_TEST_CASE(higher_load_gives_a_smaller_gap_and_denser_packing) {

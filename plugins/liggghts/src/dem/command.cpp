@@ -25,6 +25,23 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The deck's final dump (and plate position) as a particle state file (core particles.h).
+void write_final_state(const Case& c, const OperatingPoint& p, const Settings& s, const fs::path& dir,
+                       const std::string& prov) {
+    ParticleState st;
+    double step = 0;
+    const std::size_t n = for_each_snapshot(
+        dir / kFinalDump, [&](const ParticleSet& g, double k) { st.particles = g, step = k; }, true);
+    if (n != 1) throw SolverError(fmt::format("{}: {} snapshots, expected the final one", (dir / kFinalDump).string(), n));
+    st.gap = s.load ? read_final_plate(dir / kFinalPlateFile) : s.box.gap;
+    st.time = step * s.time_step;
+    write_particle_state(dir / kFinalState, st,
+                         {fmt::format("final state of granlub dem, case {} point {} ({})", c.name, p.id, prov),
+                          "grains after the run (and the contact-persistence steps), with spins; gap = top wall"});
+    fs::remove(dir / kFinalDump);
+    fs::remove(dir / kFinalPlateFile);
+}
+
 // One engine run of the point in `dir` with settings s: data file, deck, LIGGGHTS, outputs and
 // the flow-regime evidence.
 struct OneRun {
@@ -39,7 +56,9 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     write_file_atomic(dir / kData, data_file(init.particles, data_box, c.grains.density,
                                              fmt::format("case {} point {} ({})", c.name, p.id, prov)));
     write_file_atomic(dir / kDeck, deck(c, p, s, init.particles.size(), prov));
-    for (const char* f : {kSnapshots, kContactsFile, kPlateFile, kSectionFile}) fs::remove(dir / f);
+    for (const char* f : {kSnapshots, kContactsFile, kPlateFile, kSectionFile, kFinalDump, kFinalPlateFile})
+        fs::remove(dir / f);
+    fs::remove(dir / kFinalState);
     if (s.vtk) fs::remove_all(dir / "post");  // the .pvd lists exactly this run's files
 
     OneRun r;
@@ -92,6 +111,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
                                    "averaged along the flow and over the snapshots of the steady window"}));
     r.out.run["flow_regime"] = flow_regime_record(c, p, s, r.out, cg, z, dir / kContactsFile);
     fs::remove(dir / kContactsFile);
+    write_final_state(c, p, s, dir, prov);
     return r;
 }
 

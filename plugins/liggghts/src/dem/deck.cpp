@@ -20,7 +20,8 @@ std::string data_file(const ParticleSet& p, const ParticleBox& box, double densi
                            p.y[i], p.z[i]);
     out += "\nVelocities\n\n";
     for (std::size_t i = 0; i < p.size(); ++i)
-        out += fmt::format("{} {} {} {} 0 0 0\n", i + 1, p.vx[i], p.vy[i], p.vz[i]);
+        out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, p.vx[i], p.vy[i], p.vz[i], p.has_spin() ? p.wx[i] : 0.0,
+                           p.has_spin() ? p.wy[i] : 0.0, p.has_spin() ? p.wz[i] : 0.0);
     return out;
 }
 
@@ -50,6 +51,22 @@ void persistence_block(const Settings& s, Line& line) {
     line(fmt::format("dump contacts all custom {} {} {}", s.persistence_every, kContactsFile, kSnapshotColumns));
     line("dump_modify contacts sort id");
     line(fmt::format("run             {}", s.persistence_run_steps()));
+}
+
+// The final state at full precision (a warm start for another run, e.g. granlub yade's): positions,
+// velocities and spins, and the plate position under load control.
+template <class Line>
+void final_state_block(const Settings& s, Line& line) {
+    line("");
+    line(fmt::format("# the final state (17 digits; the starting state of a warm start) in {}", kFinalDump));
+    line("undump contacts");
+    line(fmt::format("dump final all custom 1 {} {}", kFinalDump, kFinalColumns));
+    std::string format = "%d";
+    for (int k = 0; k < 10; ++k) format += " %.17g";
+    line(fmt::format("dump_modify final sort id format \"{}\"", format));
+    line("run             0");
+    line("undump final");
+    if (s.load) line(fmt::format("print \"${{hplate}}\" file {}", kFinalPlateFile));
 }
 
 }  // namespace
@@ -171,6 +188,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     if (!s.load) {
         line(fmt::format("run             {}", s.steps));
         persistence_block(s, line);
+        final_state_block(s, line);
         return d;
     }
     // Load control (README "Load control"): a plate servo in the deck. Every servo_every steps the
@@ -207,6 +225,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("next update");
     line("jump SELF servo");
     persistence_block(s, line);  // after the last servo window (`next` skips the jump)
+    final_state_block(s, line);
     return d;
 }
 

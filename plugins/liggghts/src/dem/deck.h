@@ -20,11 +20,18 @@ inline constexpr const char* kRefineDir = "dt_half";  // [dem] refine_dt: the re
 inline constexpr const char* kLog = "log.liggghts";
 inline constexpr const char* kPlateFile = "plate.txt";      // control = load: plate position per servo update
 inline constexpr const char* kPvdFile = "post/particles.pvd";  // --vtk: ParaView collection
+// The final state, 17 digits: LIGGGHTS' dump (kFinalColumns) and the plate position under load,
+// turned into kFinalState (core particles.h format with spins), another run's starting state.
+inline constexpr const char* kFinalDump = "final.txt";
+inline constexpr const char* kFinalColumns = "id x y z vx vy vz radius omegax omegay omegaz";
+inline constexpr const char* kFinalPlateFile = "final_plate.txt";
+inline constexpr const char* kFinalState = "final_state.csv";  // final_state_path() of core particles.h
 
 // Atom types: grains, bottom wall, top wall, side walls (restitution and friction per pair).
 enum AtomType { kGrain = 1, kBottom = 2, kTop = 3, kSide = 4 };
 
-// LIGGGHTS data file (atom_style granular: id type diameter density x y z; Velocities).
+// LIGGGHTS data file (atom_style granular: id type diameter density x y z; Velocities with the
+// spins when p has them).
 std::string data_file(const ParticleSet& p, const ParticleBox& box, double density, const std::string& title);
 
 // The deck: geometry, materials, contact model, walls, body forces, sampling, run.

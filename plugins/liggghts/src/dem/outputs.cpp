@@ -42,7 +42,9 @@ WallSeries read_wall_series(const fs::path& file) {
     return w;
 }
 
-std::size_t for_each_snapshot(const fs::path& file, const std::function<void(const ParticleSet&, double)>& snapshot) {
+std::size_t for_each_snapshot(const fs::path& file, const std::function<void(const ParticleSet&, double)>& snapshot,
+                              bool spins) {
+    const std::string columns = spins ? kFinalColumns : kSnapshotColumns;
     std::ifstream in(file);
     if (!in) throw SolverError(fmt::format("{}: LIGGGHTS wrote no particle snapshots", file.string()));
     std::string l;
@@ -62,8 +64,8 @@ std::size_t for_each_snapshot(const fs::path& file, const std::function<void(con
         std::getline(in, l);
         for (int k = 0; k < 4; ++k) std::getline(in, l);  // box bounds
         std::getline(in, l);                               // ITEM: ATOMS <columns>
-        if (l != std::string("ITEM: ATOMS ") + kSnapshotColumns && l != std::string("ITEM: ATOMS ") + kSnapshotColumns + " ")
-            throw bad(fmt::format("unexpected columns: '{}' (expected: {})", l, kSnapshotColumns));
+        if (l != "ITEM: ATOMS " + columns && l != "ITEM: ATOMS " + columns + " ")
+            throw bad(fmt::format("unexpected columns: '{}' (expected: {})", l, columns));
         p.clear();
         p.reserve(n);
         for (std::size_t i = 0; i < n; ++i) {
@@ -71,6 +73,11 @@ std::size_t for_each_snapshot(const fs::path& file, const std::function<void(con
             if (!(in >> id >> x >> y >> z >> vx >> vy >> vz >> r)) throw bad("truncated");
             if (id != static_cast<double>(i + 1)) throw bad(fmt::format("atom {} has id {} (sorted ids expected)", i + 1, id));
             p.push_back(x, y, z, vx, vy, vz, r);
+            if (spins) {
+                double wx, wy, wz;
+                if (!(in >> wx >> wy >> wz)) throw bad("truncated");
+                p.wx.push_back(wx), p.wy.push_back(wy), p.wz.push_back(wz);
+            }
         }
         snapshot(p, step);
         ++count;
@@ -89,6 +96,13 @@ PlateSeries read_plate_series(const fs::path& file) {
     }
     if (p.step.size() < 2) throw SolverError(fmt::format("{}: fewer than 2 plate positions", file.string()));
     return p;
+}
+
+double read_final_plate(const fs::path& file) {
+    const Table t = read_solver_output(file, liggghts_text({"gap"}), "LIGGGHTS wrote no final plate position");
+    if (t.rows() != 1 || !(t.columns[0][0] > 0))
+        throw SolverError(fmt::format("{}: expected one positive plate position", file.string()));
+    return t.columns[0][0];
 }
 
 WallForceSeries wall_forces(const WallSeries& w) {

@@ -22,13 +22,18 @@ struct WallSeries {
 WallSeries read_wall_series(const std::filesystem::path& file);
 
 // Calls snapshot(grains, step) for every snapshot of a LIGGGHTS `dump custom ... <kSnapshotColumns>`
-// file (sorted by id: index i is grain id i + 1). Returns the number of snapshots read.
+// file, or `<kFinalColumns>` with `spins` (sorted by id: index i is grain id i + 1). Returns the
+// number of snapshots read.
 std::size_t for_each_snapshot(const std::filesystem::path& file,
-                              const std::function<void(const ParticleSet&, double step)>& snapshot);
+                              const std::function<void(const ParticleSet&, double step)>& snapshot,
+                              bool spins = false);
 
 // control = load: the plate position (gap, m) at the end of each servo window, from LIGGGHTS' fix
 // ave/time file (the initial position at step 0 is dropped).
 PlateSeries read_plate_series(const std::filesystem::path& file);
+
+// control = load: the plate position the deck printed after the run (kFinalPlateFile), m.
+double read_final_plate(const std::filesystem::path& file);
 
 // The common series (granlub/particle_reduction.h): LIGGGHTS records the force of each wall on the
 // grains, the reduction takes the force of the grains on the walls, so every column changes sign.
