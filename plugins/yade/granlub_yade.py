@@ -110,6 +110,10 @@ def load_params(path):
         if sv is not None:
             for k in ("target_stress", "step", "max_error", "gap_min", "gap_max"):
                 need(sv, k, "servo", positive=True)
+            if sv.get("plate", "window") not in ("window", "weight"):
+                raise ParamError("servo.plate = %r (allowed: window, weight)" % sv.get("plate"))
+            if sv.get("plate") == "weight":
+                need(sv, "plate_mass_ratio", "servo", positive=True)
             every = need(sv, "every", "servo", int, positive=True)
             if every % r["sample_every"] or steps % every:
                 raise ParamError("servo.every = %d must be a multiple of run.sample_every = %d and divide "
@@ -328,8 +332,13 @@ def run_collision(p):
 # The Couette cell.
 
 
+GRAIN_COLUMNS = ["x", "y", "z", "vx", "vy", "vz", "radius"]
+SPIN_COLUMNS = GRAIN_COLUMNS + ["wx", "wy", "wz"]
+
+
 def read_initial(path):
-    """x,y,z,vx,vy,vz,radius rows after '#' comments (core/include/granlub/particles.h)."""
+    """x,y,z,vx,vy,vz,radius[,wx,wy,wz] rows after '#' comments (core/include/granlub/particles.h);
+    rows of 10 values (spins zero when the file has none)."""
     rows = []
     header = None
     with open(path) as f:
@@ -339,16 +348,17 @@ def read_initial(path):
                 continue
             if header is None:
                 header = line.split(",")
-                if header != ["x", "y", "z", "vx", "vy", "vz", "radius"]:
-                    raise ParamError("%s:%d: header %r, expected x,y,z,vx,vy,vz,radius" % (path, n, line))
+                if header not in (GRAIN_COLUMNS, SPIN_COLUMNS):
+                    raise ParamError("%s:%d: header %r, expected %s or %s"
+                                     % (path, n, line, ",".join(GRAIN_COLUMNS), ",".join(SPIN_COLUMNS)))
                 continue
             try:
                 v = [float(t) for t in line.split(",")]
             except ValueError:
                 raise ParamError("%s:%d: not a row of numbers" % (path, n))
-            if len(v) != 7:
-                raise ParamError("%s:%d: %d values, expected 7" % (path, n, len(v)))
-            rows.append(v)
+            if len(v) != len(header):
+                raise ParamError("%s:%d: %d values, expected %d" % (path, n, len(v), len(header)))
+            rows.append(v + [0.0] * (10 - len(v)))
     if not rows:
         raise ParamError("%s: no grains" % path)
     return rows
@@ -406,13 +416,16 @@ def run_couette(p):
         O.bodies[w].state.vel = Vector3(U, 0, 0)  # kinematic: NewtonIntegrator moves it
 
     first = len(O.bodies)
-    for (x, y, z, vx, vy, vz, r) in grains:
-        if not (r > 0 and r <= y <= H - r):
+    for (x, y, z, vx, vy, vz, r, wx, wy, wz) in grains:
+        # a warm start's grains may touch a wall: overlaps up to 1 % of the radius pass
+        tol = 0.01 * r
+        if not (r > 0 and r - tol <= y <= H - r + tol):
             raise ParamError("initial grain at y = %g (radius %g) is not between the walls" % (y, r))
-        if not periodic_z and not (-0.5 * W + r <= z <= 0.5 * W - r):
+        if not periodic_z and not (-0.5 * W + r - tol <= z <= 0.5 * W - r + tol):
             raise ParamError("initial grain at z = %g (radius %g) is not between the side walls" % (z, r))
         b = utils.sphere((x % L, y + Y0, z + Z0), r, material=ids["grain"], color=(0, 0, 1))
         b.state.vel = Vector3(vx, vy, vz)
+        b.state.angVel = Vector3(wx, wy, wz)
         O.bodies.append(b)
     n = len(grains)
     gids = range(first, first + n)
@@ -441,7 +454,7 @@ def run_couette(p):
         # every step (contacts last a few steps) and its mean written every sample_every steps;
         # a snapshot of the grains every snapshot_every steps.
         fb = O.forces.f(bottom)
-        ft = O.forces.f(top)
+        ft = O.forces.f(top) - Vector3(0, f_load, 0)  # the grains' force alone
         f = state["f"]
         f[0] += fb[0]; f[1] += fb[1]; f[2] += fb[2]
         f[3] += ft[0]; f[4] += ft[1]; f[5] += ft[2]
@@ -462,7 +475,38 @@ def run_couette(p):
         if k % snap_every == 0:
             snapshot()
 
+    weight = bool(servo) and servo.get("plate", "window") == "weight"
+    f_load = 0.0  # the permanent force on a weight plate (N, along y); O.forces.f() includes it
+    if weight:
+        # A loaded plate, as the experiment's weighted upper disc: a body of mass M free along y
+        # only, pressed by P A in all (its weight M g under the cell's gravity, the rest a constant
+        # force); no controller. At steady state its mean acceleration is zero, so the mean force
+        # of the grains on it is P A. M = plate_mass_ratio x the grains' mass is a numerical choice
+        # (the disc's mass is not reported); a plate as heavy as the grains follows the bed's
+        # dilation within a millisecond, a dead weight (M = P A / g) oscillates for tens of ms.
+        M = servo["plate_mass_ratio"] * sum(masses)
+        pb = O.bodies[top]
+        pb.dynamic = True
+        pb.state.blockedDOFs = "xzXYZ"
+        pb.state.mass = M
+        pb.state.inertia = Vector3(1.0, 1.0, 1.0)  # rotations are blocked; YADE needs a value
+        pb.state.vel = Vector3(0, 0, 0)
+        f_load = -(servo["target_stress"] * A - M * g)
+        O.forces.setPermF(top, Vector3(0, f_load, 0))
+
     def plate_update(k):
+        if weight:
+            # the plate's position at the window's end; kept in [gap_min, gap_max] (stopped there)
+            state["f_servo"] = 0.0
+            b = O.bodies[top].state
+            h = b.pos[1] - Y0 - t
+            if not servo["gap_min"] <= h <= servo["gap_max"]:
+                h = min(max(h, servo["gap_min"]), servo["gap_max"])
+                b.pos = Vector3(b.pos[0], Y0 + h + t, b.pos[2])
+                b.vel = Vector3(0, 0, 0)
+            fplate.write("%d,%.17g\n" % (k, h))
+            state["h"] = h
+            return
         # The servo of `granlub dem` (core/include/granlub/servo.h): P_top is the top-wall stress
         # averaged over the window (the force summed every step), the commanded position moves by
         # step * clamp((P_top - P)/P, -1, max_error) and stays in [gap_min, gap_max]. The plate

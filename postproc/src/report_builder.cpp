@@ -261,7 +261,7 @@ Table key_numbers(const Case& c, const Collection& col) {
 
 Table scope_table(const Case& c, const Collection& col) {
     Table t;
-    t.header = {"solver", "body forces", "wall stresses", "run length"};
+    t.header = {"solver", "body forces", "wall stresses", "run length and start"};
     for (const auto& s : col.solvers) {
         if (!col.any_usable(s)) continue;
         const SolverScope sc = solver_scope(c, col, s);

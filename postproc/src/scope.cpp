@@ -111,6 +111,9 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
         s.run_length = range_text(simulated, "s") + " simulated";
         if (!steady_from.empty()) s.run_length += ", averaged from " + range_text(steady_from, "s");
         if (!steps.empty()) s.run_length += " (" + range_text(steps, "steps", 0) + ")";
+        // how the particle solver got there, as its summary says (e.g. a warm start, a loaded plate)
+        if (const std::string start = run_text(first, "start"); !start.empty()) s.run_length += "; start: " + start;
+        if (const std::string plate = run_text(first, "plate"); !plate.empty()) s.run_length += "; load: " + plate;
     } else if (!iterations.empty())
         s.run_length = "steady solution, " + range_text(iterations, "iterations", 0);
     else if (!steps.empty()) {

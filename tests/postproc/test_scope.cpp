@@ -50,6 +50,8 @@ BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
         test::patch_run(s, "dem", p.id,
                         {{"simulated_time_s", p.speed == 1.0 ? 0.25 : 0.5},
                          {"steps", 20000},
+                         {"start", "warm, from a state"},
+                         {"plate", "a loaded plate"},
                          {"steady_state",
                           {{"allowed_relative_drift", {{"wall_stress", 0.035}, {"gap", 0.004}}}, {"sigmas", 3.0}}}});
     }
@@ -70,6 +72,9 @@ BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
     BOOST_TEST(dem.find("side walls") == std::string::npos, dem);  // not recorded: not mentioned
     BOOST_TEST(dem.find("0.25–0.5 s simulated") != std::string::npos, dem);
     BOOST_TEST(dem.find("(20000 steps)") != std::string::npos, dem);
+    // how the run got there, as its summary says
+    BOOST_TEST(dem.find("start: warm, from a state; load: a loaded plate") != std::string::npos, dem);
+    BOOST_TEST(md_row(md, kScope, "continuum").find("start:") == std::string::npos);
     // how the steady window was found, from the run's own record
     BOOST_TEST(dem.find("within 3 combined standard errors or within 3.5 % (wall stresses) and 0.4 % (gap)") !=
                    std::string::npos,

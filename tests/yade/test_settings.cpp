@@ -112,6 +112,29 @@ BOOST_AUTO_TEST_CASE(load_control_settings) {
                     .contains("servo"));
 }
 
+// servo_plate = "weight": the driver gets the plate kind and its mass ratio; start = "warm" is
+// a setting (the state itself is checked when the point runs).
+BOOST_AUTO_TEST_CASE(weight_plate_and_warm_start_settings) {
+    const Case c = tiny_case(kFill, kLoad, "servo_plate = \"weight\"\nplate_mass = 2.5\nstart = \"warm\"\n");
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    BOOST_TEST(s.weight_plate);
+    BOOST_TEST(s.warm_start);
+    BOOST_TEST(s.plate_mass == 2.5);
+    const ParticleBox box{c.cell.length, c.cell.gap, c.cell.width, false};
+    const auto j = couette_params(c, c.points.at(0), s, box, "/tmp/particles.csv");
+    BOOST_TEST(j.at("servo").at("plate").get<std::string>() == "weight");
+    BOOST_TEST(j.at("servo").at("plate_mass_ratio").get<double>() == 2.5);
+    const Case d = tiny_case(kFill, kLoad);
+    const Settings sd = resolve_settings(d, d.points.at(0), RunOptions{});
+    BOOST_TEST(!sd.weight_plate);
+    BOOST_TEST(!sd.warm_start);
+    BOOST_TEST(couette_params(d, d.points.at(0), sd, box, "/tmp/p.csv").at("servo").at("plate").get<std::string>() ==
+               "window");
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "servo_plate = \"spring\"\n"); }), "servo_plate"));
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "plate_mass = 0\n"); }), "plate_mass"));
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "start = \"hot\"\n"); }), "start"));
+}
+
 BOOST_AUTO_TEST_CASE(load_control_runs_whole_servo_windows_and_snapshot_intervals) {
     // 1.52e-3 s: 61 blocks of 50 steps = 3050 steps, rounded up to 31 windows of 100
     const Case c = tiny_case_edits({{kFill, kLoad}, {"time = 1.5e-3", "time = 1.52e-3"}}, "servo_every = 100\n");

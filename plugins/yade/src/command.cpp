@@ -2,6 +2,8 @@
 // (checked), the shared coarse-graining, the result files (through run_sweep).
 #include "granlub/yade/command.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -34,8 +36,46 @@ nlohmann::json settings_json(const Settings& s) {
                             {"blocks", s.blocks},
                             {"seed", s.insertion.seed},
                             {"velocity_noise", s.insertion.velocity_noise},
-                            {"periodic_depth", s.periodic_depth}});
+                            {"periodic_depth", s.periodic_depth},
+                            {"start", s.warm_start ? "warm" : "cold"},
+                            {"servo_plate", s.weight_plate ? "weight" : "window"},
+                            {"plate_mass", s.plate_mass}});
     return j;
+}
+
+// [yade] start = "warm": granlub dem's final state of the point, checked against the case (grains,
+// box, plate limits) and copied into the point folder, so the folder reruns by hand.
+InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingPoint& p, const Settings& s,
+                            const fs::path& dir, nlohmann::json& record) {
+    const fs::path from = final_state_path(results_root(c, o), "dem", p.id);
+    if (!fs::exists(from))
+        throw SolverError(fmt::format("point {}: [yade] start = \"warm\" starts from granlub dem's final state {}, "
+                                      "which does not exist: run `granlub dem` on this case first, or set "
+                                      "[yade] start = \"cold\"",
+                                      p.id, from.string()));
+    InitialParticles init;
+    init.box = particle_box(c, s.periodic_depth);
+    const std::size_t n = grains_for_fill(init.box, c.grains.diameter, p.solid_fraction);
+    ParticleState st = read_particle_state(from);
+    const bool grains_match = st.particles.size() == n &&
+        std::all_of(st.particles.radius.begin(), st.particles.radius.end(),
+                    [&](double r) { return std::abs(r - 0.5 * c.grains.diameter) <= 1e-9 * c.grains.diameter; });
+    if (!grains_match)
+        throw SolverError(fmt::format("point {}: the warm-start state {} holds {} grains, the case {} of diameter {:g} m: "
+                                      "it is from another case; rerun `granlub dem`",
+                                      p.id, from.string(), st.particles.size(), n, c.grains.diameter));
+    if (s.servo.load ? !(s.servo.gap_min < st.gap && st.gap <= s.servo.gap_max)
+                     : std::abs(st.gap - init.box.gap) > 1e-9 * init.box.gap)
+        throw SolverError(fmt::format("point {}: the warm-start state {} has its top wall at {:g} m, outside what this "
+                                      "case allows; rerun `granlub dem`",
+                                      p.id, from.string(), st.gap));
+    init.box.gap = st.gap;
+    init.file = dir / "warm_start.csv";
+    fs::create_directories(dir);
+    fs::copy_file(from, init.file, fs::copy_options::overwrite_existing);
+    record = {{"from", from.string()}, {"time_s", st.time}, {"gap_m", st.gap}, {"grains", st.particles.size()}};
+    init.particles = std::move(st.particles);
+    return init;
 }
 
 PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint& p0, const fs::path& dir) {
@@ -43,8 +83,11 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
     const Settings s = resolve_settings(c, p0, o);
     OperatingPoint p = p0;
     p.solid_fraction = s.servo.insert_fill;  // under load: the point's, or fill_for_load
+    nlohmann::json warm;
+    fs::remove(dir / "warm_start.csv");
     const InitialParticles init =
-        initial_particles(c, p, results_root(c, o), s.insertion, s.periodic_depth, s.servo.insert_fill_key);
+        s.warm_start ? warm_start(c, o, p, s, dir, warm)
+                     : initial_particles(c, p, results_root(c, o), s.insertion, s.periodic_depth, s.servo.insert_fill_key);
     const DriverPaths paths = locate_driver();
 
     const auto steps = static_cast<double>(s.steps);
@@ -65,7 +108,16 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
     base.provenance.settings = settings_json(s);
     base.provenance.settings["initial_file"] = init.file.string();
     base.provenance.settings["initial_file_reused"] = init.reused;
+    if (s.warm_start) base.provenance.settings["warm_start"] = warm;
     PointResult r = reduce_point(c, p, s, init.box, init.particles.radius, dir, std::move(base));
+    // how the result was obtained, in words the report shows
+    r.summary.run["start"] =
+        s.warm_start ? fmt::format("warm, from granlub dem's final state of the point (t = {:g} s)",
+                                   warm.at("time_s").get<double>())
+                     : std::string("cold, from the shared initial grains ([particles])");
+    if (s.servo.load)
+        r.summary.run["plate"] = s.weight_plate ? fmt::format("a loaded plate of {:g} x the grains' mass", s.plate_mass)
+                                                : std::string("the window servo of granlub dem");
     fs::remove(dir / "samples.bin");  // raw snapshots: large, and reproducible from params.json
     fs::remove(dir / "progress");
     return r;

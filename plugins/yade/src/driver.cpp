@@ -86,7 +86,9 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
                       {"step", v.servo_gain * c.grains.diameter},
                       {"max_error", v.servo_max_error},
                       {"gap_min", v.gap_min},
-                      {"gap_max", v.gap_max}};
+                      {"gap_max", v.gap_max},
+                      {"plate", s.weight_plate ? "weight" : "window"},
+                      {"plate_mass_ratio", s.plate_mass}};
     }
     return j;
 }

@@ -27,6 +27,16 @@ SectionSpec section() {
               "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");
     s.real("timeout", 0.0, Range::non_negative(), "s",
            "wall-clock limit of one YADE run; 0 = 600 s + 100 us per grain-step (a guard against hangs, generous for shared machines)");
+    s.choice("start", "cold", {"cold", "warm"},
+             "initial grains: cold = the shared initial file ([particles]); warm = granlub dem's final "
+             "state of the same point (results/dem/<point>/final_state.csv: positions, velocities, spins, "
+             "plate), so the run starts in the DEM's steady state");
+    s.choice("servo_plate", "window", {"window", "weight"},
+             "control = load: window = granlub dem's servo (the plate moved every servo_every steps by "
+             "servo_gain); weight = a loaded plate free along y (mass: plate_mass), pressed by P A");
+    s.real("plate_mass", 1.0, Range::positive(), "",
+           "servo_plate = \"weight\": the plate's mass as a multiple of the grains' (a numerical choice: a light "
+           "plate follows the bed within a millisecond, a dead weight P A / g oscillates for tens of ms)");
     add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particle_section.h)
     add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/servo.h)
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with dem

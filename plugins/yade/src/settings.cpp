@@ -26,6 +26,9 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     r.stations = s.integer("stations");
     r.blocks = s.integer("blocks");
     r.timeout = s.real("timeout");
+    r.warm_start = s.string("start") == "warm";
+    r.weight_plate = s.string("servo_plate") == "weight";
+    r.plate_mass = s.real("plate_mass");
 
     // The initial grains of `granlub dem` too: [particles] is one section for both engines.
     const ParticleStart start = particle_start(c, p, o.seed);
@@ -58,6 +61,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
                                      static_cast<double>(2 * r.blocks * r.sample_every) * r.dt));
     r.steps = rows * r.sample_every;
     r.servo = resolve_servo(c, p, s, r.sample_every, r.dt, r.steps);
+
     // snapshots at whole wall-force blocks (under load: whole servo windows)
     const std::int64_t unit = r.servo.load ? r.servo.servo_every : r.sample_every;
     const std::int64_t snapshots = s.integer("snapshots");

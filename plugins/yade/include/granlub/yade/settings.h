@@ -34,9 +34,14 @@ struct Settings {
     // periodic_depth (granlub/particle_section.h); --seed overrides.
     InsertionOptions insertion;
     double periodic_depth = 0;
+    // [yade] start = "warm": start from granlub dem's final state of the point (final_state_path())
+    bool warm_start = false;
     // control = "load": the top wall is a plate the driver moves every servo_every steps, the
-    // servo of `granlub dem` (granlub/servo.h) with the same keys in [yade]
+    // servo of `granlub dem` (granlub/servo.h) with the same keys in [yade]; or, with
+    // servo_plate = "weight", a plate of plate_mass x the grains' mass pressed by P A
     ServoSettings servo;
+    bool weight_plate = false;
+    double plate_mass = 1.0;
 };
 
 
