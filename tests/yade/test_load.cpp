@@ -23,20 +23,23 @@ namespace {
 // The tiny cell (291 grains, H = 4 mm, U = 2 m/s) under load. Softer viscel contacts (t_c = 50 us,
 // dt = 2.5 us) let 16000 steps cover 0.04 s, ~7 s of YADE per point: the plate first rises (the
 // shear dilates the layer), then settles within ~0.02 s.
-Case load_case(double stress) {
+// `time` and `extra` [yade] lines vary the plate (servo_plate, below).
+Case load_case(double stress, const std::string& time = "0.04", const std::string& extra = "") {
     return tiny_case_edits({{"control = \"fill\"", "control = \"load\"\nnormal_stress = " + std::to_string(stress)},
-                            {"time = 1.5e-3", "time = 0.04"},
+                            {"time = 1.5e-3", "time = " + time},
                             {"snapshots = 30", "snapshots = 20"}},
-                           "contact_time = 5e-5\nservo_every = 100\nstations = 6\n");
+                           "contact_time = 5e-5\nservo_every = 100\nstations = 6\n" + extra);
+}
+
+// The point's exit code and result folder for case c, under results/<tag>-<P>.
+std::pair<int, fs::path> run_case(const Case& c, const std::string& tag, double P) {
+    RunOptions o;
+    o.results_root = scratch(tag + "-" + std::to_string(static_cast<int>(P)));
+    return std::pair(run(c, o), result_dir(o.results_root, "yade", c.points.front().id));
 }
 
 const checks::LoadRun& run_load(double stress) {
-    return checks::cached_load_run(stress, [](double P) {
-        const Case c = load_case(P);
-        RunOptions o;
-        o.results_root = scratch("load-" + std::to_string(static_cast<int>(P)));
-        return std::pair(run(c, o), result_dir(o.results_root, "yade", c.points.front().id));
-    });
+    return checks::cached_load_run(stress, [](double P) { return run_case(load_case(P), "load", P); });
 }
 
 }  // namespace
@@ -78,14 +81,7 @@ BOOST_AUTO_TEST_CASE(higher_load_gives_a_smaller_gap_and_denser_packing,
 namespace {
 const checks::LoadRun& run_weight(double stress) {
     return checks::cached_load_run(stress, [](double P) {
-        const Case c = tiny_case_edits(
-            {{"control = \"fill\"", "control = \"load\"\nnormal_stress = " + std::to_string(P)},
-             {"time = 1.5e-3", "time = 0.08"},
-             {"snapshots = 30", "snapshots = 20"}},
-            "contact_time = 5e-5\nservo_every = 100\nstations = 6\nservo_plate = \"weight\"\n");
-        RunOptions o;
-        o.results_root = scratch("weight-" + std::to_string(static_cast<int>(P)));
-        return std::pair(run(c, o), result_dir(o.results_root, "yade", c.points.front().id));
+        return run_case(load_case(P, "0.08", "servo_plate = \"weight\"\n"), "weight", P);
     });
 }
 }  // namespace
