@@ -11,6 +11,8 @@
 #include <sys/stat.h>
 
 #include "granlub/error.h"
+#include "granlub/failure_record.h"
+#include "granlub/particles.h"
 #include "granlub/results.h"
 #include "granlub/yade/driver.h"
 #include "granlub/yade/reduce.h"
@@ -128,6 +130,32 @@ BOOST_AUTO_TEST_CASE(bad_inputs_are_rejected_before_yade_starts) {
         BOOST_TEST(!fs::exists(marker));
         BOOST_TEST(!fs::exists(root / "yade" / "U2.0" / "params.json"));
     }
+}
+
+// start = "warm" without granlub dem's final state, or with one from another case: the point fails
+// before YADE starts, saying what to run.
+BOOST_AUTO_TEST_CASE(warm_start_needs_the_dem_state_of_this_case) {
+    const auto dir = scratch("warm-start");
+    const fs::path marker = dir / "yade-started";
+    ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "touch '" + marker.string() + "'; exit 0").string());
+    const auto root = dir / "results";
+    const Case c = tiny_case("", "", "start = \"warm\"\n");
+    BOOST_TEST(run(c, options(root)) == 1);
+    BOOST_TEST(!fs::exists(marker));
+    auto failure = read_failure(root / "yade" / "U2.0");
+    BOOST_TEST_REQUIRE(failure.has_value());
+    BOOST_TEST(has(failure->message, "run `granlub dem`"), failure->message);
+    BOOST_TEST(has(failure->message, "final_state.csv"), failure->message);
+    // a state of 3 grains is not this case's
+    ParticleState st;
+    for (int i = 0; i < 3; ++i) st.particles.push_back(0.001 * i, 0.001, 0.0, 0, 0, 0, 0.5 * c.grains.diameter);
+    st.gap = c.cell.gap;
+    write_particle_state(final_state_path(root, "dem", "U2.0"), st);
+    BOOST_TEST(run(c, options(root)) == 1);
+    BOOST_TEST(!fs::exists(marker));
+    failure = read_failure(root / "yade" / "U2.0");
+    BOOST_TEST_REQUIRE(failure.has_value());
+    BOOST_TEST(has(failure->message, "holds 3 grains"), failure->message);
 }
 
 BOOST_AUTO_TEST_CASE(malformed_wall_forces_name_the_line) {
