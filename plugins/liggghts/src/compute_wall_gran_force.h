@@ -1,0 +1,31 @@
+// compute ID group wall/gran/force wallID1 [wallID2 ...]: the total force of each listed
+// `fix wall/gran ... store_force yes` on the grains of the group, this step, in one pass.
+// Doc: plugins/liggghts/doc/compute_wall_gran_force.txt.
+#ifndef GRANLUB_COMPUTE_WALL_GRAN_FORCE_H
+#define GRANLUB_COMPUTE_WALL_GRAN_FORCE_H
+
+#include <string>
+#include <vector>
+
+#include "compute.h"
+
+namespace LAMMPS_NS {
+
+class ComputeWallGranForce : public Compute {
+public:
+    ComputeWallGranForce(class LAMMPS* lmp, int& iarg, int narg, char** arg);
+    ~ComputeWallGranForce();
+    void init();
+    void compute_vector();
+
+private:
+    class FixWallGran* find_wall(const std::string& id);
+
+    std::vector<std::string> walls_;         // the wall fixes' IDs, in output order
+    std::vector<class FixWallGran*> fixes_;  // found again by every init (a wall may be re-made)
+    std::vector<double> local_;              // this rank's sums, 3 per wall
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
