@@ -12,7 +12,12 @@ Grains: layers one diameter apart, each a triangular lattice (spacing 1.02 d), i
 a random subset of the sites for the asked solid fraction (the lattice caps it near 0.4); moving with the floor's rotation scaled by
 (1 - y/H) (Couette), seeded.
 
-    python3 make_ring.py [--d 0.787e-3] [--R 10] [--W 4] [--H 4] [--fill 0.4] [--U 2.0] [--N 256] [--seed 1]
+Load: the top is held at a normal stress P (in.ring's servo; P = 5.5 kPa as cases/sawyer2001); the
+plate moves between h_min, the height of the grains at closest packing (0.7405), and 1.4 H (the
+cylinders reach 1.5 H).
+
+    python3 make_ring.py [--d 0.787e-3] [--R 10] [--W 4] [--H 4] [--fill 0.4] [--U 2.0] [--P 5500]
+                         [--N 256] [--seed 1]
 (R, W, H in grain diameters)."""
 import argparse
 import math
@@ -58,13 +63,14 @@ def main():
     ap.add_argument("--H", type=float, default=4.0, help="gap, floor to top (d)")
     ap.add_argument("--fill", type=float, default=0.4, help="solid fraction of the trough")
     ap.add_argument("--U", type=float, default=2.0, help="floor speed at the mean radius (m/s)")
+    ap.add_argument("--P", type=float, default=5500.0, help="normal stress on the top (Pa)")
     ap.add_argument("--N", type=int, default=256, help="facets per circle")
     ap.add_argument("--seed", type=int, default=1)
     a = ap.parse_args()
     d = a.d
     R, W, H = a.R * d, a.W * d, a.H * d
-    if not (a.W < 2 * a.R and a.W >= 1.5 and a.H >= 1.5 and 0 < a.fill < 0.74 and a.N >= 16):
-        ap.error("need W < 2R, W and H >= 1.5 d, 0 < fill < 0.74, N >= 16")
+    if not (a.W < 2 * a.R and a.W >= 1.5 and a.H >= 1.5 and 0 < a.fill < 0.74 and a.N >= 16 and a.P > 0):
+        ap.error("need W < 2R, W and H >= 1.5 d, 0 < fill < 0.74, N >= 16, P > 0")
     rin, rout, ybox = R - W / 2, R + W / 2, 1.5 * H
     write_annulus("floor.stl", rin, rout, 0.0, a.N)
     write_annulus("top.stl", rin, rout, H, a.N)
@@ -102,9 +108,14 @@ def main():
         for i, (x, y, z) in enumerate(grains):
             w = omega * (1 - y / H)  # (0, w, 0) x (x, y, z) = (w z, 0, -w x)
             f.write("%d %.9e 0 %.9e 0 0 0\n" % (i + 1, w * z, -w * x))
+    area = 2 * math.pi * R * W  # of the annular top, pi (r_out^2 - r_in^2)
+    hmin = len(grains) * math.pi / 6 * d ** 3 / (0.7405 * area)
     with open("ring.vars", "w") as f:
         f.write("# make_ring.py\nvariable Omega equal %.12g\nvariable R equal %.12g\nvariable H equal %.12g\n"
-                "variable grains equal %d\n" % (omega, R, H, len(grains)))
+                "variable grains equal %d\nvariable d equal %.12g\n" % (omega, R, H, len(grains), d))
+        f.write("# load control: target stress (Pa), top area (m^2), plate limits (m)\nvariable P equal %.12g\n"
+                "variable A equal %.12g\nvariable hmin equal %.12g\nvariable hmax equal %.12g\n"
+                % (a.P, area, hmin, 1.4 * H))
     if len(grains) < want:
         print("note: the lattice holds %d grains, fewer than the %d asked" % (len(grains), want))
     print("%d grains (%d asked, %d lattice sites), Omega %.6g rad/s" % (len(grains), want, len(sites), omega))
