@@ -4,7 +4,7 @@
 # meshes stay put, so no neighbour-list rebuilds for the walls and the geometry is exact up to the
 # facets. The curvature replaces the slice's centripetal body force. Make the meshes and grains first:
 #   python3 make_ring.py            (defaults: 10 d radius, 4 d wide, 4 d gap, ~770 grains, 5.5 kPa)
-#   granlub-liggghts -in in.ring    (~20 s)
+#   granlub-liggghts -in in.ring    (~20 s; -var windows N for N servo windows of 100 steps, default 200)
 # Output: torques.txt, each wall's force along the axis and torque about it, averaged over
 # 2000-step windows from every step (an impulse force lasts one step: sampling every Nth step
 # would miss most of them); radial.txt, the grains' mean radius and how many lie beyond R, per
@@ -66,7 +66,8 @@ variable errc equal v_err*(v_err>=-1)*(v_err<=3)+3*(v_err>3)-(v_err<-1)
 variable htry equal v_hplate+0.05*${d}*v_errc
 variable hnew equal v_htry*(v_htry>=${hmin})*(v_htry<=${hmax})+${hmin}*(v_htry<${hmin})+${hmax}*(v_htry>${hmax})
 fix plate all ave/time 100 1 100 v_hplate v_ptop file plate.txt
-variable update loop 200
+variable windows index 200
+variable update loop ${windows}
 label servo
 run 100 post no
 variable vtop equal (${hnew}-${hplate})/(100*dt)
