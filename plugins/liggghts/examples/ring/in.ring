@@ -5,6 +5,7 @@
 # facets. The curvature replaces the slice's centripetal body force. Make the meshes and grains first:
 #   python3 make_ring.py            (defaults: 10 d radius, 4 d wide, 4 d gap, ~770 grains, 5.5 kPa)
 #   granlub-liggghts -in in.ring    (~20 s; -var windows N for N servo windows of 100 steps, default 200)
+#   python3 ring_stats.py           (wall stresses, gap, balances, profiles; --from T: steady from T s)
 # Output: torques.txt, each wall's force along the axis and torque about it, averaged over
 # 2000-step windows from every step (an impulse force lasts one step: sampling every Nth step
 # would miss most of them); radial.txt, the grains' mean radius and how many lie beyond R, per
@@ -59,6 +60,9 @@ thermo_modify norm no lost error
 # is P. Not the slice's jumps: re-making the top mesh at its new place each window left 14 % of
 # the grains' weight out of the walls' recorded forces; a moving mesh keeps the books
 # (README, "The whole ring"). plate.txt: step, plate position (m), P_w (Pa).
+# -var dump_every N: the grains every N steps in prof.<step>.txt (ring_stats.py's radial and gap profiles)
+variable dump_every index 0
+if "${dump_every} > 0" then "dump prof all custom ${dump_every} prof.*.txt id x y z vx vy vz"
 fix servoF all ave/time 1 100 100 f_top[2]
 variable ptop equal f_servoF/${A}
 variable err equal (v_ptop-${P})/${P}

@@ -112,7 +112,8 @@ def main():
     hmin = len(grains) * math.pi / 6 * d ** 3 / (0.7405 * area)
     with open("ring.vars", "w") as f:
         f.write("# make_ring.py\nvariable Omega equal %.12g\nvariable R equal %.12g\nvariable H equal %.12g\n"
-                "variable grains equal %d\nvariable d equal %.12g\n" % (omega, R, H, len(grains), d))
+                "variable grains equal %d\nvariable d equal %.12g\nvariable W equal %.12g\nvariable U equal %.12g\n"
+                "variable density equal 2550\n" % (omega, R, H, len(grains), d, W, a.U))
         f.write("# load control: target stress (Pa), top area (m^2), plate limits (m)\nvariable P equal %.12g\n"
                 "variable A equal %.12g\nvariable hmin equal %.12g\nvariable hmax equal %.12g\n"
                 % (a.P, area, hmin, 1.4 * H))
