@@ -150,6 +150,19 @@ std::pair<double, double> radial(const Ring& r) {
 BOOST_AUTO_TEST_CASE(ring_under_the_case_load_one_rank) {
     const Ring r = run_ring(1, 5500.0);
     check_common(r);
+    // the example's reduction runs on it and finds the same top stress
+    const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_ring_np1";
+    const std::string stats = "cd '" + dir.string() + "' && python3 '" + (kExample / "ring_stats.py").string() +
+                              "' --from 0.05 > stats.out 2>&1";
+    BOOST_TEST_REQUIRE(std::system(stats.c_str()) == 0, "ring_stats.py failed: " << dir / "stats.out");
+    std::ifstream out(dir / "stats.out");
+    std::string line;
+    double p_top = 0;
+    while (std::getline(out, line))
+        if (line.rfind("  P_top ", 0) == 0) p_top = std::stod(line.substr(8));
+    double p_windows = 0;  // the same windows 6-10 from torques.txt
+    for (size_t w = 5; w < 10; ++w) p_windows += r.windows[w][7] / kArea / 5;
+    BOOST_TEST(p_top == p_windows, boost::test_tools::tolerance(1e-4));
     const auto [shift, beyond] = radial(r);
     BOOST_TEST_MESSAGE("5.5 kPa: mean radius " << shift << " d beyond R; " << beyond << " of " << kGrains
                                                << " grains beyond R");
