@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "granlub/block_average.h"
 #include "run_driver.h"
 
 namespace fs = std::filesystem;
@@ -68,18 +69,8 @@ Ring run_ring(int ranks, double load) {
             numbers(dir / "final.txt", 8)};
 }
 
-double mean(const std::vector<double>& v) {
-    double s = 0;
-    for (double x : v) s += x;
-    return s / static_cast<double>(v.size());
-}
-
-double stderr_of_mean(const std::vector<double>& v) {
-    const double m = mean(v);
-    double s = 0;
-    for (double x : v) s += (x - m) * (x - m);
-    return std::sqrt(s / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
-}
+double mean(const std::vector<double>& v) { return granlub::mean_and_stderr(v).mean; }
+double stderr_of_mean(const std::vector<double>& v) { return granlub::mean_and_stderr(v).stderr_; }
 
 // What every run must do, whatever its load.
 void check_common(const Ring& r) {

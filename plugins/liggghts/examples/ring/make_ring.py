@@ -23,6 +23,8 @@ import argparse
 import math
 import random
 
+DENSITY = 2550.0  # kg/m^3, glass beads as cases/sawyer2001
+
 
 def facet(f, a, b, c):
     f.write("facet normal 0 0 0\n outer loop\n")
@@ -72,10 +74,6 @@ def main():
     if not (a.W < 2 * a.R and a.W >= 1.5 and a.H >= 1.5 and 0 < a.fill < 0.74 and a.N >= 16 and a.P > 0):
         ap.error("need W < 2R, W and H >= 1.5 d, 0 < fill < 0.74, N >= 16, P > 0")
     rin, rout, ybox = R - W / 2, R + W / 2, 1.5 * H
-    write_annulus("floor.stl", rin, rout, 0.0, a.N)
-    write_annulus("top.stl", rin, rout, H, a.N)
-    write_cylinder("inner.stl", rin, ybox, a.N)
-    write_cylinder("outer.stl", rout, ybox, a.N)
 
     # layers one diameter apart (touching, no overlap) from the floor to the top; in each, a
     # triangular lattice of spacing 1.02 d: together they cap the fill near 0.4
@@ -95,6 +93,12 @@ def main():
     random.seed(a.seed)
     random.shuffle(sites)
     grains = sites[:want]
+    area = 2 * math.pi * R * W  # of the annular top, pi (r_out^2 - r_in^2)
+    hmin = len(grains) * math.pi / 6 * d ** 3 / (0.7405 * area)
+    write_annulus("floor.stl", rin, rout, 0.0, a.N)
+    write_annulus("top.stl", rin, rout, H, a.N)
+    write_cylinder("inner.stl", rin, ybox, a.N)
+    write_cylinder("outer.stl", rout, ybox, a.N)
     omega = a.U / R
     box = rout + 2 * d
     with open("grains.data", "w") as f:
@@ -103,17 +107,14 @@ def main():
         f.write("%.9e %.9e xlo xhi\n%.9e %.9e ylo yhi\n%.9e %.9e zlo zhi\n\nAtoms\n\n" %
                 (-box, box, -d, ybox + d, -box, box))
         for i, (x, y, z) in enumerate(grains):
-            f.write("%d 1 %.9e 2550 %.9e %.9e %.9e\n" % (i + 1, d, x, y, z))
+            f.write("%d 1 %.9e %g %.9e %.9e %.9e\n" % (i + 1, d, DENSITY, x, y, z))
         f.write("\nVelocities\n\n")
         for i, (x, y, z) in enumerate(grains):
             w = omega * (1 - y / H)  # (0, w, 0) x (x, y, z) = (w z, 0, -w x)
             f.write("%d %.9e 0 %.9e 0 0 0\n" % (i + 1, w * z, -w * x))
-    area = 2 * math.pi * R * W  # of the annular top, pi (r_out^2 - r_in^2)
-    hmin = len(grains) * math.pi / 6 * d ** 3 / (0.7405 * area)
     with open("ring.vars", "w") as f:
         f.write("# make_ring.py\nvariable Omega equal %.12g\nvariable R equal %.12g\nvariable H equal %.12g\n"
-                "variable grains equal %d\nvariable d equal %.12g\nvariable W equal %.12g\nvariable U equal %.12g\n"
-                "variable density equal 2550\n" % (omega, R, H, len(grains), d, W, a.U))
+                "variable grains equal %d\nvariable d equal %.12g\nvariable W equal %.12g\n" % (omega, R, H, len(grains), d, W))
         f.write("# load control: target stress (Pa), top area (m^2), plate limits (m)\nvariable P equal %.12g\n"
                 "variable A equal %.12g\nvariable hmin equal %.12g\nvariable hmax equal %.12g\n"
                 % (a.P, area, hmin, 1.4 * H))
