@@ -35,6 +35,7 @@ int check_solvers(const Case& c, const RunOptions& o) {
     std::fflush(stdout);  // the errors and warnings on stderr follow the lines they belong to
     for (const auto& m : solver_modules()) {
         std::vector<std::string> cannot;  // points this solver cannot run: a warning, not bad input
+        std::size_t no_answer = 0;        // of which the model has no answer for (error.h, NoAnswer)
         try {
             for (const OperatingPoint* p : c.select(o.point)) {
                 RunOptions one = o;
@@ -46,7 +47,10 @@ int check_solvers(const Case& c, const RunOptions& o) {
                 } catch (const Error& e) {
                     const std::string why = e.what();
                     const std::string id = fmt::format("point {}: ", p->id);
-                    cannot.push_back(why.starts_with(id) ? why : id + why);
+                    const bool none = dynamic_cast<const NoAnswer*>(&e) != nullptr;
+                    no_answer += none;
+                    cannot.push_back(fmt::format("{} {}", none ? "has no answer for" : "will fail on",
+                                                 why.starts_with(id) ? why : id + why));
                 }
             }
         } catch (const CaseError& e) {
@@ -61,10 +65,10 @@ int check_solvers(const Case& c, const RunOptions& o) {
             std::fflush(stdout);
             continue;
         }
-        fmt::print("#   {:<10} cannot run {} of {} point(s) (see the warnings)\n", m.name, cannot.size(),
-                   c.select(o.point).size());
+        fmt::print("#   {:<10} cannot run {} of {} point(s){} (see the warnings)\n", m.name, cannot.size(),
+                   c.select(o.point).size(), no_answer ? fmt::format(", {} with no answer in its model", no_answer) : "");
         std::fflush(stdout);
-        for (const auto& w : cannot) fmt::print(stderr, "warning: {} will fail on {}\n", m.name, w);
+        for (const auto& w : cannot) fmt::print(stderr, "warning: {} {}\n", m.name, w);
     }
     std::fflush(stdout);
     return rc;

@@ -52,7 +52,7 @@ Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
         m.fill_source = "[automaton] fill";
     } else {
         if (p.control == Control::Load)
-            throw SolverError(fmt::format(
+            throw NoAnswer(fmt::format(
                 "point {}: the cellular automaton holds a fixed number of grains and cannot follow "
                 "control = \"load\"; set [automaton] fill (fraction of cells occupied) or use control = \"fill\"",
                 p.id));

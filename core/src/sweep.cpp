@@ -86,6 +86,13 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
             say(stdout, fmt::format("{} {:<14} {}  ({:.2f} s)\n", solver, p->id, r.line, secs));
         } catch (const CaseError&) {
             throw;  // bad input fails the command (exit 2), not one point
+        } catch (const NoAnswer& e) {  // not a failure: the model cannot answer this point's question
+            say(stdout, fmt::format("{} {:<14} no answer: {}\n", solver, p->id, e.what()));
+            try {
+                write_failure(dir, solver, p->id, e.what(), true);  // the report says why
+            } catch (const std::exception& w) {
+                say(stderr, fmt::format("{} {:<14} (could not record why: {})\n", solver, p->id, w.what()));
+            }
         } catch (const std::exception& e) {  // Error, bad_alloc, filesystem errors: the sweep goes on
             ++failed;
             const std::string why = dynamic_cast<const std::bad_alloc*>(&e)

@@ -86,7 +86,7 @@ Run load_run(const Case& c, const std::filesystem::path& root, const std::string
 
 std::string Run::state_name() const {
     if (usable()) return regime.status == RegimeStatus::Unknown ? "status unknown" : to_string(regime.status);
-    if (failure) return "failed";
+    if (failure) return failure->no_answer ? "no answer" : "failed";
     switch (status.state) {
         case ResultState::Missing: return "missing";
         case ResultState::Stale: return "stale";
@@ -124,7 +124,7 @@ std::string Run::state_class() const {
             default: return "transient";
         }
     }
-    if (failure) return "failed";
+    if (failure) return failure->no_answer ? "noanswer" : "failed";
     return status.state == ResultState::Stale ? "stale" : status.state == ResultState::Corrupt ? "corrupt" : "missing";
 }
 

@@ -36,10 +36,11 @@ struct Run {
     // A usable result that is a steady state: the only kind fitted, compared with z or bold.
     bool steady() const { return usable() && regime.steady(); }
     // What the report calls the run: "steady", "transient", "dt-unconverged", "status unknown"
-    // (usable), "failed" (no usable result, failure.json present), "missing", "stale", "corrupt".
+    // (usable), "failed" (no usable result, failure.json present), "no answer" (the same, of kind "no
+    // answer": the model cannot answer the point), "missing", "stale", "corrupt".
     std::string state_name() const;
     std::string state_reason() const;  // why; empty for a plain steady result
-    std::string state_class() const;   // report cell class: ok, transient, unknown, failed, missing, ...
+    std::string state_class() const;   // report cell class: ok, transient, unknown, failed, noanswer, missing, ...
     // Normalised profile columns: y/H ascending, u/U, nu/nu_max (nu_max from this run's
     // summary), T/U^2, and their standard errors (empty when the solver gives none).
     const std::vector<double>& y() const { return profile->column("y_over_H"); }

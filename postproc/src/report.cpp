@@ -85,7 +85,7 @@ td.ok { background: #e3f4ea; } td.missing { background: #f3f3f3; color: #777; }
 td.stale { background: #fff3d6; } td.corrupt { background: #fbe0dc; }
 td.significant { font-weight: bold; background: #fff3d6; }
 td.transient, td.unknown { color: #888; font-style: italic; background: #f3f3f3; }
-td.failed { background: #fbe0dc; }
+td.failed { background: #fbe0dc; } td.noanswer { background: #eef0f7; color: #555; }
 td.code { font-family: monospace; font-size: .85em; max-width: 40em; word-break: break-all; }
 .figs { display: flex; flex-wrap: wrap; gap: 1em; }
 figure { margin: 0; max-width: 540px; }

@@ -9,7 +9,7 @@ namespace granlub::postproc {
 
 struct Cell {
     std::string text;
-    std::string cls;  // "", "ok", "missing", "stale", "corrupt", "failed", "transient", "unknown", "significant", "code"
+    std::string cls;  // "", "ok", "missing", "stale", "corrupt", "failed", "noanswer", "transient", "unknown", "significant", "code"
 };
 
 struct Table {

@@ -288,7 +288,8 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     rep.text("steady: a steady-state result, compared. transient: the run ended before a steady state was "
              "detected; dt-unconverged: halving the time step changed the answer; status unknown: the summary does "
              "not say (written before granlub recorded it). These three are shown greyed and hollow, never fitted, "
-             "compared or bold. failed: the solver failed on the point (its message below); missing: no result; "
+             "compared or bold. failed: the solver failed on the point (its message below); no answer: the solver's model "
+             "cannot answer the point's question (why below), not a failure; missing: no result; "
              "stale: computed for other inputs (rerun the solver); corrupt: cannot be read or fails the checks.");
     Table problems;
     problems.header = {"solver", "point", "state", "why"};

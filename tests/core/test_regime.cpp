@@ -76,6 +76,9 @@ BOOST_AUTO_TEST_CASE(failure_record_round_trip) {
     BOOST_TEST(f->message == "LIGGGHTS exited with status 1: see log.liggghts");
     BOOST_TEST(f->utc_time.size() == 20u);  // 2026-01-01T00:00:00Z
     BOOST_TEST(!f->version.empty());
+    BOOST_TEST(!f->no_answer);
+    write_failure(dir, "yade", "U2.0", "point U2.0: granlub yade runs the slice only", true);
+    BOOST_TEST(read_failure(dir)->no_answer);
     remove_failure(dir);
     BOOST_TEST(!read_failure(dir).has_value());
     std::ofstream(dir / kFailureFile) << "{\"format\": \"granlub-failure-1\"}";

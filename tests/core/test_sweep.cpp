@@ -1,11 +1,13 @@
 // The sweep driver every solver uses: skip complete points, recompute stale or forced ones,
-// report failures per point without writing anything for them.
+// report failures per point without writing anything for them, and points a model has no answer
+// for as such.
 #include <filesystem>
 
 #include <boost/test/unit_test.hpp>
 
 #include "case_text.h"
 #include "granlub/error.h"
+#include "granlub/failure_record.h"
 #include "granlub/sweep.h"
 
 using namespace granlub;
@@ -84,6 +86,22 @@ BOOST_AUTO_TEST_CASE(skip_force_stale_and_failures) {
     };
     BOOST_TEST(run_sweep(c, "toy", o, flaky) == 1);
     BOOST_TEST(!fs::exists(root / "toy" / "U1.0" / "summary.json"));
+    BOOST_TEST(fs::exists(root / "toy" / "U2.0" / "summary.json"));
+    BOOST_TEST_REQUIRE(read_failure(root / "toy" / "U1.0").has_value());
+    BOOST_TEST(!read_failure(root / "toy" / "U1.0")->no_answer);
+
+    // A point the model has no answer for: not a failure (returns 0), recorded as "no answer".
+    fs::remove_all(root);
+    auto partial = [&](const OperatingPoint& p, const fs::path&) -> PointResult {
+        if (p.id == "U1.0") throw NoAnswer("point U1.0: the toy holds a fixed number of grains");
+        return toy_result(c, p);
+    };
+    BOOST_TEST(run_sweep(c, "toy", o, partial) == 0);
+    BOOST_TEST(!fs::exists(root / "toy" / "U1.0" / "summary.json"));
+    const auto why = read_failure(root / "toy" / "U1.0");
+    BOOST_TEST_REQUIRE(why.has_value());
+    BOOST_TEST(why->no_answer);
+    BOOST_TEST(why->message == "point U1.0: the toy holds a fixed number of grains");
     BOOST_TEST(fs::exists(root / "toy" / "U2.0" / "summary.json"));
     fs::remove_all(root);
 }

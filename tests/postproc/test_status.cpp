@@ -153,6 +153,15 @@ BOOST_AUTO_TEST_CASE(failed_unknown_and_dt_unconverged_points_say_why) {
     BOOST_TEST(!fs::exists(failed / kFailureFile));
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     BOOST_TEST(test::slurp(s.o.results_root / "report" / "index.html").find(msg) == std::string::npos);
+    // A point the model has no answer for is said so, not shown as a failure.
+    const std::string none = "point U4.0: granlub yade runs the slice only";
+    fs::remove(result_dir(s.o.results_root, "dem", pts[2].id) / "summary.json");
+    write_failure(result_dir(s.o.results_root, "dem", pts[2].id), "dem", pts[2].id, none, true);
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string with_none = test::slurp(s.o.results_root / "report" / "index.html");
+    BOOST_TEST(count(with_none, "<td class=\"noanswer\">no answer</td>") == 2u);  // status grid and reasons
+    BOOST_TEST(with_none.find(none) != std::string::npos);
+    BOOST_TEST(count(with_none, "<td class=\"failed\">") == 0u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

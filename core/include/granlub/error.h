@@ -24,4 +24,12 @@ public:
     using Error::Error;
 };
 
+// A question the solver's model has no answer for (the automaton under a load: it holds a fixed
+// number of grains; YADE on the whole ring: it runs the slice only). Not a failure: the sweep
+// says so, records it (failure_record.h, kind "no answer") and does not count it as failed.
+class NoAnswer : public SolverError {
+public:
+    using SolverError::SolverError;
+};
+
 }  // namespace granlub
