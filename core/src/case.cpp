@@ -18,6 +18,7 @@
 #include <toml++/toml.h>
 
 #include "common_sections.h"
+#include "granlub/annulus.h"
 #include "granlub/particle_section.h"
 #include "granlub/error.h"
 #include "granlub/text.h"
@@ -327,9 +328,27 @@ void resolve_common(Case& c) {
     c.top = wall("top");
 
     const Section& cell = c.sections.at("cell");
-    c.cell = {cell.real("gap"), cell.real("length"), cell.real("width"), cell.real("annulus_radius"),
+    c.cell = {cell.string("geometry") == "annulus" ? Geometry::Annulus : Geometry::Slice,
+              cell.real("gap"), cell.real("length"), cell.real("width"), cell.real("annulus_radius"),
               cell.real("max_solid_fraction")};
     c.gravity = c.sections.at("body_forces").real("gravity");
+}
+
+// geometry = "annulus": a trough with side walls around an inner cylinder that grains can roll
+// along (granlub/annulus.h).
+void check_ring(const Case& c) {
+    const Section& cell = c.sections.at("cell");
+    const double d = c.grains.diameter, R = c.cell.annulus_radius, W = c.cell.width;
+    if (!cell.has("annulus_radius") || R == 0)
+        cell.fail("geometry", "geometry = \"annulus\" needs [cell] annulus_radius > 0, the ring's mean radius");
+    if (W == 0)
+        cell.fail("width", "geometry = \"annulus\" needs a trough: width > 0 (the ring has side walls; a periodic "
+                           "width exists only in a slice)");
+    if (R - W / 2 < kMinRingInnerRadiusDiameters * d)
+        cell.fail("annulus_radius",
+                  fmt::format("the ring's inner wall, annulus_radius - width/2 = {:g} m, is {:.3g} grain diameters "
+                              "from the axis; at least {:g} d = {:g} m are needed (a ring too small for its grains)",
+                              R - W / 2, (R - W / 2) / d, kMinRingInnerRadiusDiameters, kMinRingInnerRadiusDiameters * d));
 }
 
 // Checks that involve more than one key (a single key's range is checked when it is read).
@@ -344,6 +363,7 @@ void check_cross_keys(const Case& c, Control control) {
         cell.fail("width", fmt::format("the width must be 0 (periodic) or at least 2 d = {} m", 2 * d));
     if (c.cell.annulus_radius != 0 && c.cell.annulus_radius <= c.cell.width / 2)
         cell.fail("annulus_radius", fmt::format("the annulus radius must exceed half the width ({} m)", c.cell.width / 2));
+    if (c.cell.ring()) check_ring(c);
 
     const Section& op = c.sections.at("operating");
     if (control == Control::Fill && !op.has("solid_fraction"))

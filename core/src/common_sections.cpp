@@ -39,11 +39,16 @@ std::vector<SectionSpec> common_sections() {
     }
 
     SectionSpec cell("cell", "the shear cell");
+    cell.choice("geometry", "slice", {"slice", "annulus"},
+                "slice: a periodic stretch of the trough of length `length`, curvature as a centripetal body force; "
+                "annulus: granlub dem runs the whole ring of mean radius annulus_radius (the other solvers: the slice)");
     cell.real_required("gap", Range::positive(), "m", "gap H between the walls");
-    cell.real_required("length", Range::positive(), "m", "periodic length along the flow");
+    cell.real_required("length", Range::positive(), "m",
+                       "periodic length along the flow (the slice; with geometry = annulus, the solvers that run a slice)");
     cell.real("width", 0.0, Range::non_negative(), "m", "trough width between side walls; 0 = periodic");
     cell.real("annulus_radius", 0.0, Range::non_negative(), "m",
-              "mean radius of the annulus for the centripetal body force; 0 = none");
+              "mean radius of the annulus: the slice's centripetal body force (0 = none), the ring's radius with "
+              "geometry = annulus");
     cell.real("max_solid_fraction", 0.65, Range::open_closed(0, 0.74048), "",
               "maximum solid fraction nu_max of the continuum closures");
     s.push_back(cell);

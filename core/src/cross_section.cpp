@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "granlub/block_average.h"
 #include "granlub/coarse_grain.h"
 #include "granlub/error.h"
 
@@ -75,6 +76,36 @@ Profile CrossSection::table(double U, std::size_t first) const {
     Profile t;
     t.add("y_over_H", std::move(y)).add("z_over_W", std::move(z)).add("solid_fraction", std::move(nu));
     t.add("u_over_U", std::move(u));
+    return t;
+}
+
+Profile CrossSection::width_profile(double U, std::size_t first, std::size_t blocks) const {
+    const std::size_t cells = ny_ * nz_, n = snapshots();
+    first = std::min(first, n);
+    const double band_volume = gap_ * width_ / static_cast<double>(nz_) * length_;
+    std::vector<double> z(nz_), nu(nz_, 0.0), nu_se(nz_, 0.0), u(nz_, 0.0), u_se(nz_, 0.0);
+    std::vector<double> nu_s, u_s;  // per snapshot, reused
+    for (std::size_t m = 0; m < nz_; ++m) {
+        z[m] = (static_cast<double>(m) + 0.5) / static_cast<double>(nz_) - 0.5;
+        nu_s.clear(), u_s.clear();
+        double V_all = 0, P_all = 0;
+        for (std::size_t s = first; s < n; ++s) {
+            double V = 0, P = 0;
+            for (std::size_t k = 0; k < ny_; ++k) V += volume_[s * cells + k * nz_ + m], P += momentum_[s * cells + k * nz_ + m];
+            nu_s.push_back(V / band_volume);
+            if (V > 0) u_s.push_back(P / V / U);
+            V_all += V, P_all += P;
+        }
+        double sum = 0;
+        for (double v : nu_s) sum += v;
+        if (!nu_s.empty()) nu[m] = sum / static_cast<double>(nu_s.size());
+        nu_se[m] = block_average(nu_s, blocks).stderr_;
+        if (V_all > 0) u[m] = P_all / V_all / U;
+        u_se[m] = block_average(u_s, blocks).stderr_;
+    }
+    Profile t;
+    t.add("z_over_W", std::move(z)).add("solid_fraction", std::move(nu)).add("solid_fraction_stderr", std::move(nu_se));
+    t.add("u_over_U", std::move(u)).add("u_over_U_stderr", std::move(u_se));
     return t;
 }
 

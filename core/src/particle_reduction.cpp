@@ -27,8 +27,13 @@ WallStresses wall_stresses(const WallForceSeries& f, const ParticleBox& box) {
     if (!f.fx_side1.empty()) {
         const double As = box.length * box.gap;
         s.shear_side.resize(f.rows());
-        for (std::size_t i = 0; i < s.shear_side.size(); ++i)
+        s.shear_outer.resize(f.rows());
+        s.shear_inner.resize(f.rows());
+        for (std::size_t i = 0; i < s.shear_side.size(); ++i) {
             s.shear_side[i] = -0.5 * (f.fx_side1[i] + f.fx_side2[i]) / As;
+            s.shear_outer[i] = -f.fx_side1[i] / As;
+            s.shear_inner[i] = -f.fx_side2[i] / As;
+        }
     }
     if (!f.fy_side1.empty()) {
         s.side_support.resize(f.rows());
@@ -63,6 +68,8 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
     const double T_b = put("shear_stress_bottom", st.shear_bottom);
     const double T_t = put("shear_stress_top", st.shear_top);
     if (!st.shear_side.empty()) put("shear_stress_side", st.shear_side);
+    if (!st.shear_outer.empty()) put("shear_stress_outer", st.shear_outer);
+    if (!st.shear_inner.empty()) put("shear_stress_inner", st.shear_inner);
     if (!st.side_support.empty()) put("side_wall_support", st.side_support);
 
     // snapshots from the steady state on (at least the last two)
@@ -83,7 +90,7 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
     std::string load_line;
     if (in.plate)  // gap, mean_solid_fraction over the mean gap, run.load_control
         o.run["load_control"] = load_summary({.servo = in.servo,
-                                              .initial_gap = in.box.gap,
+                                              .initial_gap = in.plate_start > 0 ? in.plate_start : in.box.gap,
                                               .wall_step = in.forces.step,
                                               .top_stress = st.normal_top,
                                               .plate = *in.plate,

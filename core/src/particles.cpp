@@ -11,11 +11,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "granlub/annulus.h"
 #include "granlub/case.h"
 #include "granlub/error.h"
 #include "granlub/text.h"
 #include "granlub/results.h"
 #include "granlub/table.h"
+#include "rng.h"
 
 namespace granlub {
 
@@ -66,24 +68,6 @@ std::size_t grains_for_fill(const ParticleBox& box, double diameter, double nu) 
 }
 
 namespace {
-
-// Uniform doubles and normals from std::mt19937_64, whose output sequence the standard fixes;
-// the std:: distributions are implementation-defined, so they are not used (determinism).
-class Rng {
-public:
-    explicit Rng(std::uint64_t seed) : g_(seed) {}
-    double uniform() { return static_cast<double>(g_() >> 11) * 0x1.0p-53; }  // [0, 1)
-    std::uint64_t below(std::uint64_t n) { return static_cast<std::uint64_t>(uniform() * static_cast<double>(n)); }
-    double normal() {  // Box-Muller, one value per call
-        double u1 = uniform();
-        while (u1 <= 0.0) u1 = uniform();
-        const double u2 = uniform();
-        return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-    }
-
-private:
-    std::mt19937_64 g_;
-};
 
 // FCC sites: hexagonal x-z layers (rows along x, spacing a; rows sqrt(3)/2 a apart) stacked
 // ABC along y, sqrt(2/3) a apart. Each axis is then stretched to fill the box exactly, which
@@ -326,12 +310,29 @@ ParticleState read_particle_state(const std::filesystem::path& path) {
 }
 
 namespace {
+// The box the grain count comes from: the slice's, or the ring's in the slice frame (same volume).
+ParticleBox count_box(const Case& c, double periodic_depth) {
+    return c.cell.ring() ? ring_slice_box(c) : particle_box(c, periodic_depth);
+}
+
+double ring_height(const Case& c, const InsertionOptions& opt) { return opt.height > 0 ? opt.height : c.cell.gap; }
+
 // The grain count of a point, checked: the one place both initial_particles() and
 // check_initial_particles() take it from.
-std::size_t point_grains(const Case& c, const OperatingPoint& pt, const ParticleBox& box, const std::string& fill_key) {
+std::size_t point_grains(const Case& c, const OperatingPoint& pt, const ParticleBox& box, const std::string& fill_key,
+                         const InsertionOptions& opt) {
     try {
         const std::size_t n = grains_for_fill(box, c.grains.diameter, pt.solid_fraction);
-        check_fits(box, c.grains.diameter, n);
+        if (!c.cell.ring()) {
+            check_fits(box, c.grains.diameter, n);
+        } else if (const std::size_t most = ring_capacity(annulus(c), ring_height(c, opt), c.grains.diameter,
+                                                          opt.wall_sag);
+                   most < n) {
+            const double vg = std::numbers::pi * std::pow(c.grains.diameter, 3) / 6.0;
+            throw CaseError(fmt::format("{} grains do not fit in the ring below {:g} m (where they are inserted); at "
+                                        "most {}, a solid fraction of {:.4f} over the gap",
+                                        n, ring_height(c, opt), most, static_cast<double>(most) * vg / box.volume()));
+        }
         return n;
     } catch (const CaseError& e) {
         throw CaseError(fmt::format("{}: point {}: {} = {:g}: {}", c.file.string(), pt.id, fill_key,
@@ -341,22 +342,25 @@ std::size_t point_grains(const Case& c, const OperatingPoint& pt, const Particle
 }  // namespace
 
 void check_initial_particles(const Case& c, const OperatingPoint& pt, double periodic_depth,
-                             const std::string& fill_key) {
-    point_grains(c, pt, particle_box(c, periodic_depth), fill_key);
+                             const std::string& fill_key, const InsertionOptions& opt) {
+    point_grains(c, pt, count_box(c, periodic_depth), fill_key, opt);
 }
 
 InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, const std::filesystem::path& root,
                                    const InsertionOptions& opt_in, double periodic_depth, const std::string& fill_key) {
     InitialParticles out;
-    out.box = particle_box(c, periodic_depth);
+    out.box = count_box(c, periodic_depth);
     out.file = initial_particles_path(root, pt.id);
     InsertionOptions opt = opt_in;
     opt.wall_speed = pt.speed;
     const double d = c.grains.diameter;
-    const std::size_t n = point_grains(c, pt, out.box, fill_key);
-    const std::string key = fmt::format("key: box={:.17g},{:.17g},{:.17g},{} d={:.17g} n={} U={:.17g} noise={:.17g} seed={}",
-                                        out.box.length, out.box.gap, out.box.width, out.box.periodic_z ? "pz" : "wz",
-                                        d, n, opt.wall_speed, opt.velocity_noise, opt.seed);
+    const std::size_t n = point_grains(c, pt, out.box, fill_key, opt);
+    std::string key = fmt::format("key: box={:.17g},{:.17g},{:.17g},{} d={:.17g} n={} U={:.17g} noise={:.17g} seed={}",
+                                  out.box.length, out.box.gap, out.box.width, out.box.periodic_z ? "pz" : "wz", d, n,
+                                  opt.wall_speed, opt.velocity_noise, opt.seed);
+    if (c.cell.ring())
+        key += fmt::format(" ring R={:.17g} h={:.17g} sag={:.17g}", c.cell.annulus_radius, ring_height(c, opt),
+                           opt.wall_sag);
     if (std::filesystem::exists(out.file)) {
         const auto comments = read_particles_comments(out.file);
         if (std::find(comments.begin(), comments.end(), key) != comments.end()) {
@@ -367,14 +371,18 @@ InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, cons
             }
         }
     }
-    out.particles = insert_grains(out.box, d, n, opt);
-    write_particles_csv(out.file, out.particles,
-                        {fmt::format("granlub {} initial configuration (FCC sites, random subset and jitter)", version()),
-                         fmt::format("case: {} ({}, hash {})", c.name, c.file.string(), c.file_hash),
-                         fmt::format("point: {}", pt.id),
-                         fmt::format("grains: {} of diameter {:g} m, solid fraction {:.6f}", n, d,
-                                     solid_fraction(out.particles, out.box)),
-                         key});
+    out.particles = c.cell.ring() ? insert_ring_grains(annulus(c), ring_height(c, opt), d, n, opt, opt.wall_sag)
+                                  : insert_grains(out.box, d, n, opt);
+    write_particles_csv(
+        out.file, out.particles,
+        {c.cell.ring() ? fmt::format("granlub {} initial configuration of the whole ring (ring frame, y the axis: "
+                                     "lattice of circles, random subset and jitter)",
+                                     version())
+                       : fmt::format("granlub {} initial configuration (FCC sites, random subset and jitter)", version()),
+         fmt::format("case: {} ({}, hash {})", c.name, c.file.string(), c.file_hash), fmt::format("point: {}", pt.id),
+         fmt::format("grains: {} of diameter {:g} m, solid fraction {:.6f} over the gap", n, d,
+                     static_cast<double>(n) * std::numbers::pi * d * d * d / 6.0 / out.box.volume()),
+         key});
     return out;
 }
 

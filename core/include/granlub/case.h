@@ -35,11 +35,17 @@ struct Wall {
     double roughness = 0;    // R in [0, 1]
 };
 
+// slice: a periodic stretch of the trough (the curvature, if any, as a centripetal body force);
+// annulus: the whole ring trough, run by granlub dem (granlub/annulus.h).
+enum class Geometry { Slice, Annulus };
+
 struct Cell {
+    Geometry geometry = Geometry::Slice;
     double gap = 0;                 // H, m
     double length = 0;              // periodic length along the flow, m
     double width = 0;               // trough width, m; 0 = periodic
-    double annulus_radius = 0;      // mean radius for the centripetal force, m; 0 = none
+    double annulus_radius = 0;      // mean radius: the slice's centripetal force (0 = none), the ring's R
+    bool ring() const { return geometry == Geometry::Annulus; }
     double max_solid_fraction = 0;  // nu_max of the continuum closures
 };
 

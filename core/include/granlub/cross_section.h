@@ -20,6 +20,7 @@
 namespace granlub {
 
 inline constexpr const char* kSectionFile = "section.csv";  // in the point's result folder
+inline constexpr const char* kWidthProfileFile = "width_profile.csv";  // CrossSection::width_profile
 
 class CrossSection {
 public:
@@ -36,6 +37,13 @@ public:
     // (0 where no grain ever was), over snapshots [first, snapshots()); one row per cell, z fastest.
     // In granlub dem the centripetal force points to -z: z/W = -1/2 is the outer wall.
     Profile table(double U, std::size_t first) const;
+
+    // The profile across the width: the cells of each z band summed over the gap, per snapshot,
+    // then averaged over snapshots [first, snapshots()): columns z_over_W, solid_fraction,
+    // u_over_U (0 where no grain ever was) and their standard errors from `blocks` blocks of
+    // snapshots (block_average.h; the mean u is the volume-weighted one, its error that of the
+    // snapshots' own u). Over the whole gap: the radial profile of the annulus.
+    Profile width_profile(double U, std::size_t first, std::size_t blocks) const;
 
 private:
     std::size_t ny_, nz_;

@@ -25,7 +25,8 @@ namespace granlub {
 
 // The force of the grains on each wall (N; Newton's third law of what the walls exert), one row
 // per block of sample_every steps, `step` at the end of each block. fx_side* are empty when the
-// box is periodic across z (no side walls); fy_side* also when the engine does not record them.
+// box is periodic across z (no side walls); fy_side* also when the engine does not record them;
+// fz_* (unused by the reduction) when the engine does not record them (the ring, annulus.h).
 struct WallForceSeries {
     std::vector<double> step, fx_bottom, fy_bottom, fz_bottom, fx_top, fy_top, fz_top, fx_side1, fx_side2;
     std::vector<double> fy_side1 = {}, fy_side2 = {};
@@ -37,9 +38,11 @@ struct WallForceSeries {
 // wall to +x. Normal = f_y / (L W), shear = f_x / (L W), side = mean of both side walls / (L H).
 // side_support: the upward force of both side walls on the grains over the floor area, (L W): the
 // vertical balance of the layer is P_bot - P_top = weight / (L W) - side_support.
+// shear_outer, shear_inner: each side wall alone, side 1 (z = -W/2) the outer wall of the annulus.
 struct WallStresses {
     std::vector<double> normal_bottom, normal_top, shear_bottom, shear_top, shear_side;  // side: may be empty
     std::vector<double> side_support = {};                                               // may be empty
+    std::vector<double> shear_outer = {}, shear_inner = {};                              // may be empty
 };
 WallStresses wall_stresses(const WallForceSeries& f, const ParticleBox& box);
 
@@ -61,6 +64,7 @@ struct ParticleReductionInputs {
     std::size_t grains;
     double simulated_s;                // the run's simulated time (for the transient message)
     const CrossSection* section = nullptr;  // the same snapshots over y x z, when recorded
+    double plate_start = 0;            // m, where the plate started (0: box.gap)
 };
 
 struct ParticleReduction {
@@ -71,7 +75,8 @@ struct ParticleReduction {
     std::string line;    // the one-line console report
 };
 
-// outputs: normal_stress_{bottom,top}, shear_stress_{bottom,top}[, shear_stress_side] (Pa, mean
+// outputs: normal_stress_{bottom,top}, shear_stress_{bottom,top}[, shear_stress_{side,outer,inner},
+// side_wall_support] (Pa, mean
 // and block standard error over the steady window), slip_{bottom,top} (m/s), mean_solid_fraction,
 // max_solid_fraction (the case's nu_max); under load also gap (load_summary).
 ParticleReduction reduce_particles(const ParticleReductionInputs& in);

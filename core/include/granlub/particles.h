@@ -69,6 +69,11 @@ struct InsertionOptions {
     std::uint64_t seed = 1;
     double wall_speed = 0;       // U: initial mean velocity is the linear Couette profile U (1 - y/H)
     double velocity_noise = 0.1; // Gaussian noise per component, standard deviation as a fraction of U
+    // [cell] geometry = "annulus" (granlub/annulus.h): the grains are inserted in the ring below
+    // `height` (0: the gap H; the plate's start under load control), `wall_sag` (m) clear of the
+    // side walls in addition (a meshed wall's facets inside its circle)
+    double height = 0;
+    double wall_sag = 0;
 };
 
 // Deterministic, overlap-free placement of n equal grains (diameter d) in the box:
@@ -119,7 +124,8 @@ struct InitialParticles {
     bool reused = false;  // true: an existing file with the same key was read
 };
 
-// The initial configuration of a case point: reads <results_root>/initial/<point>/particles.csv
+// The initial configuration of a case point ([cell] geometry = "annulus": ring-frame grains from
+// insert_ring_grains, as many as the slice frame's box holds at the fill): reads <results_root>/initial/<point>/particles.csv
 // when it exists and was made from the same inputs (its "key" comment matches: box, d, N,
 // U, noise, seed); otherwise inserts the grains to the point's solid_fraction and writes the file.
 // The first particle solver to run a point creates it, the other reuses it.
@@ -130,6 +136,7 @@ InitialParticles initial_particles(const Case& c, const OperatingPoint& p, const
 // What initial_particles() would reject (too many grains, more than fit without overlaps), found
 // without inserting any: the particle solvers' part of `granlub check`. Throws CaseError.
 void check_initial_particles(const Case& c, const OperatingPoint& p, double periodic_depth = 0,
-                             const std::string& fill_key = "[operating] solid_fraction");
+                             const std::string& fill_key = "[operating] solid_fraction",
+                             const InsertionOptions& opt = {});
 
 }  // namespace granlub

@@ -10,6 +10,7 @@
 #include "deck.h"
 #include "diagnostics.h"
 #include "engine.h"
+#include "granlub/annulus.h"
 #include "granlub/coarse_grain.h"
 #include "granlub/error.h"
 #include "granlub/particles.h"
@@ -17,6 +18,8 @@
 #include "granlub/results.h"
 #include "outputs.h"
 #include "pvd.h"
+#include "ring_deck.h"
+#include "ring_meshes.h"
 #include "settings.h"
 
 namespace granlub::dem {
@@ -24,6 +27,15 @@ namespace granlub::dem {
 namespace fs = std::filesystem;
 
 namespace {
+
+// How solve() inserts the grains (the ring: below the plate's start, clear of the facets).
+InsertionOptions insertion(const Settings& s) {
+    InsertionOptions ins;
+    ins.seed = s.seed;
+    ins.velocity_noise = s.velocity_noise;
+    if (s.ring) ins.height = s.plate_start, ins.wall_sag = s.wall_sag;
+    return ins;
+}
 
 // The deck's final dump (and plate position) as a particle state file (core particles.h).
 void write_final_state(const Case& c, const OperatingPoint& p, const Settings& s, const fs::path& dir,
@@ -42,6 +54,27 @@ void write_final_state(const Case& c, const OperatingPoint& p, const Settings& s
     fs::remove(dir / kFinalPlateFile);
 }
 
+// The profile across the width over the steady snapshots (cross_section.h); the ring's also with
+// the radius each slice-frame z stands for (granlub/annulus.h).
+std::string width_profile_csv(const CrossSection& xs, const DemOutputs& out, double U, const Settings& s,
+                              const std::string& what) {
+    const std::size_t first =
+        out.run.at("snapshots").get<std::size_t>() - out.run.at("snapshots_used").get<std::size_t>();
+    Profile t = xs.width_profile(U, first, s.blocks);
+    std::string frame = "z across the width, z/W = -1/2 the outer wall (where the centripetal force pushes)";
+    if (s.ring) {
+        const auto& z = t.column("z_over_W");
+        std::vector<double> r(z.size());
+        const double R = s.annulus.R, W = s.annulus.W;
+        for (std::size_t i = 0; i < z.size(); ++i) r[i] = (std::sqrt(R * R + 0.25 * W * W - 2.0 * R * z[i] * W) - R) / W;
+        t.add("r_minus_R_over_W", std::move(r));
+        frame = "the whole ring in the slice frame: z/W = -1/2 the outer cylinder, equal-area bands, "
+                "r_minus_R_over_W the radius of each band's centre";
+    }
+    return profile_csv(t, {what, "solid fraction and u/U across the width, over the gap (the mean plate gap under "
+                                 "load) and the snapshots of the steady window; " + frame});
+}
+
 // One engine run of the point in `dir` with settings s: data file, deck, LIGGGHTS, outputs and
 // the flow-regime evidence.
 struct OneRun {
@@ -51,12 +84,16 @@ struct OneRun {
 
 OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
                 const fs::path& dir, const std::string& prov) {
-    ParticleBox data_box = s.box;
-    data_box.gap = s.box_top();  // load control: room above H for the plate to rise
-    write_file_atomic(dir / kData, data_file(init.particles, data_box, c.grains.density,
+    const double d_g = c.grains.diameter;
+    // load control: room above H for the plate to rise
+    const DataBounds bounds = s.ring ? ring_bounds(s, d_g) : slice_bounds(s.box, s.box_top());
+    write_file_atomic(dir / kData, data_file(init.particles, bounds, c.grains.density,
                                              fmt::format("case {} point {} ({})", c.name, p.id, prov)));
-    write_file_atomic(dir / kDeck, deck(c, p, s, init.particles.size(), prov));
-    for (const char* f : {kSnapshots, kContactsFile, kPlateFile, kSectionFile, kFinalDump, kFinalPlateFile})
+    if (s.ring) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facets);
+    write_file_atomic(dir / kDeck, s.ring ? ring_deck(c, p, s, init.particles.size(), prov)
+                                          : deck(c, p, s, init.particles.size(), prov));
+    for (const char* f :
+         {kSnapshots, kContactsFile, kPlateFile, kSectionFile, kWidthProfileFile, kFinalDump, kFinalPlateFile})
         fs::remove(dir / f);
     fs::remove(dir / kFinalState);
     if (s.vtk) fs::remove_all(dir / "post");  // the .pvd lists exactly this run's files
@@ -64,7 +101,10 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     OneRun r;
     r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
 
-    const WallForceSeries walls = wall_forces(read_wall_series(dir / kWallFile));
+    const WallSeries recorded = read_wall_series(dir / kWallFile);
+    std::optional<RingWallLoads> ring_loads;
+    if (s.ring) ring_loads = ring_wall_loads(recorded, dir / kWallFile);
+    const WallForceSeries walls = s.ring ? ring_wall_forces(*ring_loads, s.annulus) : wall_forces(recorded);
     const WallStresses stresses = wall_stresses(walls, s.box);
     std::optional<PlateSeries> plate;
     if (s.load) {
@@ -77,12 +117,16 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     // profile slabs span the gap: the case's H, or the mean plate position under load control
     const double gap = plate ? mean_gap(*plate, window, s.blocks).mean : c.cell.gap;
     SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
-    CoordinationSeries z(s.box, window.t_start);
-    CrossSection xs = CrossSection::for_grains(c.grains.diameter, gap, s.box.width, s.box.length);
+    CoordinationSeries z(s.contact_box, window.t_start);
+    CrossSection xs = CrossSection::for_grains(d_g, gap, s.box.width, s.box.length);
+    ParticleSet mapped;  // the ring's grains in the slice frame (granlub/annulus.h)
     const std::size_t snapshots = for_each_snapshot(dir / kSnapshots, [&](const ParticleSet& g, double step) {
-        cg.add_snapshot(g, step * s.time_step);
-        xs.add_snapshot(g, step * s.time_step);
-        z.add(g, step * s.time_step);
+        const double t = step * s.time_step;
+        if (s.ring) to_slice(g, s.annulus, mapped);
+        const ParticleSet& sg = s.ring ? mapped : g;
+        cg.add_snapshot(sg, t);
+        xs.add_snapshot(sg, t);
+        z.add(g, t);  // contacts in the engine's own frame
     });
     if (snapshots < 2)
         throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", (dir / kSnapshots).string()));
@@ -102,13 +146,21 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
                               .blocks = s.blocks,
                               .grains = init.particles.size(),
                               .simulated_s = static_cast<double>(s.steps) * s.time_step,
-                              .section = &xs});
+                              .section = &xs,
+                              .plate_start = s.plate_start});
     write_file_atomic(dir / kSectionFile,
                       profile_csv(r.out.section,
                                   {fmt::format("case {} point {} ({})", c.name, p.id, prov),
                                    "solid fraction and u/U over the cross-section: y across the gap (0 = moving floor), "
                                    "z across the width (z/W = -1/2: the outer wall, where the centripetal force pushes), "
                                    "averaged along the flow and over the snapshots of the steady window"}));
+    write_file_atomic(dir / kWidthProfileFile, width_profile_csv(xs, r.out, p.speed, s,
+                                                                 fmt::format("case {} point {} ({})", c.name, p.id, prov)));
+    if (s.ring) {  // the torques about the axis: nothing else turns the grains
+        const BlockEstimate e = ring_torque_balance(*ring_loads, window.wall_start, s.blocks);
+        r.out.outputs["torque_balance"] = Scalar{e.mean, e.stderr_, ""};
+        r.out.run["geometry"] = "annulus";
+    }
     r.out.run["flow_regime"] = flow_regime_record(c, p, s, r.out, cg, z, dir / kContactsFile);
     fs::remove(dir / kContactsFile);
     write_final_state(c, p, s, dir, prov);
@@ -149,9 +201,7 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     const Settings s = resolve(c, p, o);
     p.solid_fraction = s.insert_fill;
 
-    InsertionOptions ins;
-    ins.seed = s.seed;
-    ins.velocity_noise = s.velocity_noise;
+    const InsertionOptions ins = insertion(s);
     const InitialParticles init = initial_particles(c, p, results_root(c, o), ins, s.box.width, s.insert_fill_key);
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
@@ -205,7 +255,7 @@ void check(const Case& c, const RunOptions& o) {
         OperatingPoint p = p0;
         const Settings s = resolve(c, p, v);
         p.solid_fraction = s.insert_fill;  // as solve() inserts it
-        check_initial_particles(c, p, s.box.width, s.insert_fill_key);  // the depth solve() passes
+        check_initial_particles(c, p, s.box.width, s.insert_fill_key, insertion(s));  // as solve() inserts
     });
 }
 

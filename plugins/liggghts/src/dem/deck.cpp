@@ -11,10 +11,14 @@
 
 namespace granlub::dem {
 
-std::string data_file(const ParticleSet& p, const ParticleBox& box, double density, const std::string& title) {
+DataBounds slice_bounds(const ParticleBox& box, double top) {
+    return {0, box.length, 0, top, -0.5 * box.width, 0.5 * box.width};
+}
+
+std::string data_file(const ParticleSet& p, const DataBounds& b, double density, const std::string& title) {
     std::string out = fmt::format("LIGGGHTS data file: {}\n\n{} atoms\n4 atom types\n\n", one_line(title), p.size());
-    out += fmt::format("0 {} xlo xhi\n0 {} ylo yhi\n{} {} zlo zhi\n\nAtoms\n\n", box.length,
-                       box.gap, -0.5 * box.width, 0.5 * box.width);
+    out += fmt::format("{} {} xlo xhi\n{} {} ylo yhi\n{} {} zlo zhi\n\nAtoms\n\n", b.xlo, b.xhi, b.ylo, b.yhi, b.zlo,
+                       b.zhi);
     for (std::size_t i = 0; i < p.size(); ++i)
         out += fmt::format("{} 1 {} {} {} {} {}\n", i + 1, 2.0 * p.radius[i], density, p.x[i],
                            p.y[i], p.z[i]);
@@ -26,7 +30,6 @@ std::string data_file(const ParticleSet& p, const ParticleBox& box, double densi
 }
 
 namespace {
-
 // 4 x 4 per-type-pair matrix: grain-grain, grain-bottom/top/side walls; wall-wall pairs never meet.
 std::string pair_matrix(double pp, double bottom, double top, double side) {
     const double m[4][4] = {{pp, bottom, top, side}, {bottom, pp, pp, pp}, {top, pp, pp, pp}, {side, pp, pp, pp}};
@@ -35,11 +38,11 @@ std::string pair_matrix(double pp, double bottom, double top, double side) {
         for (double v : row) s += fmt::format(" {}", v);
     return s;
 }
+}  // namespace
 
 // Contact persistence (granlub's regime diagnostics, flow_regime.h): after the run, with the
 // result outputs closed, a few snapshots a small shear strain apart. Costs persistence_run_steps().
-template <class Line>
-void persistence_block(const Settings& s, Line& line) {
+void persistence_block(const Settings& s, const DeckLine& line) {
     line("");
     line(fmt::format("# contact persistence: {} snapshots {} steps apart (shear strain {:g} at U/H) in {}, after the "
                      "run; the result outputs are closed first",
@@ -55,8 +58,7 @@ void persistence_block(const Settings& s, Line& line) {
 
 // The final state at full precision (a warm start for another run, e.g. granlub yade's): positions,
 // velocities and spins, and the plate position under load control.
-template <class Line>
-void final_state_block(const Settings& s, Line& line) {
+void final_state_block(const Settings& s, const DeckLine& line) {
     line("");
     line(fmt::format("# the final state (17 digits; the starting state of a warm start) in {}", kFinalDump));
     line("undump contacts");
@@ -69,7 +71,41 @@ void final_state_block(const Settings& s, Line& line) {
     if (s.load) line(fmt::format("print \"${{hplate}}\" file {}", kFinalPlateFile));
 }
 
-}  // namespace
+ModelText model_text(const Settings& s) {
+    if (s.model != Model::Impulse) return {"model hertz tangential history", ""};
+    return {"model impulse tangential impulse",
+            fmt::format(" beta0 {} separate {}{}", s.beta0, s.separate ? "on" : "off",
+                        s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "")};
+}
+
+DeckLine deck_lines(std::string& d) {
+    // LIGGGHTS runs every line as a command (`shell` included): a line break inside a line, from
+    // whatever text reached it, must never start one. Case text is checked at parse time; this
+    // is the guard at the last step.
+    return [&d](const std::string& l) {
+        if (control_character_offset(l))
+            throw Error(fmt::format("internal: deck line holds a control character: {}", one_line(l)));
+        d += l + "\n";
+    };
+}
+
+void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, const DeckLine& line) {
+    const ModelText m = model_text(s);
+    line("# materials; types: 1 grains, 2 bottom wall, 3 top wall, 4 side walls");
+    const auto& g = c.grains;
+    line(fmt::format("fix m1 all property/global youngsModulus peratomtype {0} {0} {0} {0}",
+                     g.youngs_modulus));
+    line(fmt::format("fix m2 all property/global poissonsRatio peratomtype {0} {0} {0} {0}",
+                     g.poisson_ratio));
+    line(fmt::format("fix m3 all property/global coefficientRestitution peratomtypepair 4{}",
+                     pair_matrix(g.restitution, p.bottom.restitution, p.top.restitution, p.bottom.restitution)));
+    line(fmt::format("fix m4 all property/global coefficientFriction peratomtypepair 4{}",
+                     pair_matrix(g.friction, p.bottom.friction, p.top.friction, p.bottom.friction)));
+    line("");
+    line(fmt::format("pair_style      gran {}{}", m.model, m.settings));
+    line("pair_coeff      * *");
+    line(fmt::format("timestep        {}", s.time_step));
+}
 
 std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
                  const std::string& provenance) {
@@ -77,20 +113,11 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     const auto& box = s.box;
     const double U = p.speed;
     const double A = box.length * box.width;
-    const std::string model = impulse ? fmt::format("model impulse tangential impulse") : "model hertz tangential history";
-    const std::string settings =
-        impulse ? fmt::format(" beta0 {} separate {}{}", s.beta0, s.separate ? "on" : "off",
-                             s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "")
-                : "";
+    const ModelText mt = model_text(s);
+    const std::string& model = mt.model;
+    const std::string& settings = mt.settings;
     std::string d;
-    // LIGGGHTS runs every line as a command (`shell` included): a line break inside a line, from
-    // whatever text reached it, must never start one. Case text is checked at parse time; this
-    // is the guard at the last step.
-    auto line = [&d](const std::string& l) {
-        if (control_character_offset(l))
-            throw Error(fmt::format("internal: deck line holds a control character: {}", one_line(l)));
-        d += l + "\n";
-    };
+    const DeckLine line = deck_lines(d);
 
     line(fmt::format("# granlub dem: case {}, point {} ({})", c.name, p.id, provenance));
     line(fmt::format("# Shear cell: x along the flow (periodic, L = {:g} m), y across the gap (H = {:g} m):", box.length,
@@ -117,20 +144,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(fmt::format("neighbor        {} bin", s.skin));
     line("neigh_modify    delay 0");
     line("");
-    line("# materials; types: 1 grains, 2 bottom wall, 3 top wall, 4 side walls");
-    const auto& g = c.grains;
-    line(fmt::format("fix m1 all property/global youngsModulus peratomtype {0} {0} {0} {0}",
-                     g.youngs_modulus));
-    line(fmt::format("fix m2 all property/global poissonsRatio peratomtype {0} {0} {0} {0}",
-                     g.poisson_ratio));
-    line(fmt::format("fix m3 all property/global coefficientRestitution peratomtypepair 4{}",
-                     pair_matrix(g.restitution, p.bottom.restitution, p.top.restitution, p.bottom.restitution)));
-    line(fmt::format("fix m4 all property/global coefficientFriction peratomtypepair 4{}",
-                     pair_matrix(g.friction, p.bottom.friction, p.top.friction, p.bottom.friction)));
-    line("");
-    line(fmt::format("pair_style      gran {}{}", model, settings));
-    line("pair_coeff      * *");
-    line(fmt::format("timestep        {}", s.time_step));
+    contact_block(c, p, s, line);
     line("");
     line("# walls: primitive planes; `shear x U` moves the bottom and side walls along the flow;");
     line("# store_force gives the force of each wall on each grain (f_force_<id>), summed every step");

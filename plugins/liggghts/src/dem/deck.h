@@ -1,6 +1,7 @@
 // The LIGGGHTS deck and data file of one operating point: readable, commented, rerunnable by
 // hand with `granlub-liggghts -in in.granlub` in the point's folder.
 #pragma once
+#include <functional>
 #include <string>
 
 #include "granlub/case.h"
@@ -30,12 +31,38 @@ inline constexpr const char* kFinalState = "final_state.csv";  // final_state_pa
 // Atom types: grains, bottom wall, top wall, side walls (restitution and friction per pair).
 enum AtomType { kGrain = 1, kBottom = 2, kTop = 3, kSide = 4 };
 
+// The ring's meshes (geometry = annulus, ring_deck.h), ASCII STL beside the deck.
+inline constexpr const char* kRingMeshes[] = {"floor.stl", "top.stl", "outer.stl", "inner.stl"};
+
+// The simulation box of a data file.
+struct DataBounds {
+    double xlo, xhi, ylo, yhi, zlo, zhi;
+};
+// The slice's: [0, L) x [0, top] x [-W/2, W/2].
+DataBounds slice_bounds(const ParticleBox& box, double top);
+
 // LIGGGHTS data file (atom_style granular: id type diameter density x y z; Velocities with the
 // spins when p has them).
-std::string data_file(const ParticleSet& p, const ParticleBox& box, double density, const std::string& title);
+std::string data_file(const ParticleSet& p, const DataBounds& b, double density, const std::string& title);
 
-// The deck: geometry, materials, contact model, walls, body forces, sampling, run.
+// The slice's deck: geometry, materials, contact model, walls, body forces, sampling, run.
 std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
                  const std::string& provenance);
+
+// Pieces both decks (the slice's and the ring's, ring_deck.h) share.
+using DeckLine = std::function<void(const std::string&)>;
+// A line writer appending to d that refuses a line holding a control character.
+DeckLine deck_lines(std::string& d);
+struct ModelText {
+    std::string model;     // "model impulse tangential impulse" / "model hertz tangential history"
+    std::string settings;  // the impulse model's options, with a leading space
+};
+ModelText model_text(const Settings& s);
+// materials per atom type, pair style, time step
+void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, const DeckLine& line);
+// after the run: contact-persistence snapshots (result outputs closed: fixes `walls`, `plate`, dump `cg`)
+void persistence_block(const Settings& s, const DeckLine& line);
+// the final state at 17 digits (and the plate position under load)
+void final_state_block(const Settings& s, const DeckLine& line);
 
 }  // namespace granlub::dem

@@ -39,7 +39,7 @@ nlohmann::json flow_regime_record(const Case& c, const OperatingPoint& pt, const
     std::vector<ContactList> pairs;
     std::vector<double> steps;
     for_each_snapshot(contacts_file, [&](const ParticleSet& p, double step) {
-        pairs.push_back(touching_pairs(p, s.box));
+        pairs.push_back(touching_pairs(p, s.contact_box));
         steps.push_back(step);
     });
     double persisting = 0;

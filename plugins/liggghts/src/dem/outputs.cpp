@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "deck.h"
+#include "ring_deck.h"
 #include "granlub/error.h"
 #include "granlub/table.h"
 
@@ -117,6 +118,15 @@ WallForceSeries wall_forces(const WallSeries& w) {
     if (w.columns.size() >= 8) f.fx_side1 = grains_on_wall(6), f.fx_side2 = grains_on_wall(7);
     if (w.columns.size() >= 10) f.fy_side1 = grains_on_wall(8), f.fy_side2 = grains_on_wall(9);
     return f;
+}
+
+RingWallLoads ring_wall_loads(const WallSeries& w, const fs::path& file) {
+    if (w.columns.size() != kRingWallColumns)
+        throw SolverError(fmt::format("{}: {} columns after the step, expected the ring's {} (force along the axis "
+                                      "and torque about it of floor, top, outer and inner wall)",
+                                      file.string(), w.columns.size(), kRingWallColumns));
+    return {w.step,         w.columns[0], w.columns[1], w.columns[2], w.columns[3],
+            w.columns[4],   w.columns[5], w.columns[6], w.columns[7]};
 }
 
 }  // namespace granlub::dem

@@ -5,6 +5,7 @@
 #include <functional>
 #include <vector>
 
+#include "granlub/annulus.h"
 #include "granlub/case.h"
 #include "granlub/coarse_grain.h"
 #include "granlub/load_control.h"
@@ -38,6 +39,10 @@ double read_final_plate(const std::filesystem::path& file);
 // The common series (granlub/particle_reduction.h): LIGGGHTS records the force of each wall on the
 // grains, the reduction takes the force of the grains on the walls, so every column changes sign.
 WallForceSeries wall_forces(const WallSeries& walls);
+
+// The ring's wall file (ring_deck.h, kRingWallColumns after the step): the loads of the grains on
+// the meshes, as recorded (no sign change: a mesh records the force on itself).
+RingWallLoads ring_wall_loads(const WallSeries& walls, const std::filesystem::path& file);
 
 // The point's results: the shared particle reduction (granlub/particle_reduction.h).
 using DemOutputs = ParticleReduction;

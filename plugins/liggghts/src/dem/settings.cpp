@@ -18,7 +18,9 @@ double impulse_reference_speed(const Case& c, const OperatingPoint& p) {
     const double v_load = p.control == Control::Load
                               ? std::sqrt(12.0 * p.normal_stress / (std::numbers::pi * c.grains.density))
                               : 0.0;
-    return std::max({p.speed, v_fall, v_load});
+    // the ring's outer wall moves faster than U (at the mean radius) by r_o / R
+    const double v_wall = c.cell.ring() ? p.speed * (1.0 + 0.5 * c.cell.width / c.cell.annulus_radius) : p.speed;
+    return std::max({v_wall, v_fall, v_load});
 }
 
 
@@ -43,7 +45,9 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.separate = s.boolean("separate_overlaps");
     st.bounce_speed = s.real("bounce_speed");
     const ParticleStart start = particle_start(c, p, o.seed);
-    st.box = particle_box(c, start.periodic_depth);
+    st.ring = c.cell.ring();
+    st.box = st.ring ? ring_slice_box(c) : particle_box(c, start.periodic_depth);
+    st.contact_box = st.box;
     st.np = std::max(1, o.np);
     st.vtk = o.vtk;
     st.seed = start.insertion.seed;
@@ -100,6 +104,17 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.blocks = static_cast<std::size_t>(s.integer("blocks"));
     st.skin = s.real("skin") * c.grains.diameter;
     st.refine_dt = s.boolean("refine_dt");
+    st.plate_start = c.cell.gap;
+    if (st.ring) {
+        st.annulus = annulus(c);
+        const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
+        st.ring_facets = static_cast<std::size_t>(std::max(64.0, std::ceil(2.0 * std::numbers::pi * ro / chord)));
+        st.wall_sag = ro * (1.0 - std::cos(std::numbers::pi / static_cast<double>(st.ring_facets)));
+        // under load the grains fill the ring up to the box top, where the plate starts: the
+        // ring's insertion lattice holds fewer grains per volume than the slice's (annulus.h)
+        if (st.load) st.plate_start = st.gap_max;
+        st.contact_box = ring_contact_box(st.annulus, st.box_top(), c.grains.diameter);
+    }
     // a shear strain of kPersistenceStrain at U/H, at most a hundredth of the run
     const double shear_rate = p.speed / c.cell.gap;
     const double every = shear_rate > 0 ? std::round(kPersistenceStrain / (shear_rate * st.time_step)) : 1.0;
@@ -138,9 +153,15 @@ nlohmann::json Settings::to_json() const {
                             {"box_m", {box.length, box.gap, box.width}},
                             {"periodic_z", box.periodic_z},
                             {"refine_dt", refine_dt},
+                            {"geometry", ring ? "annulus" : "slice"},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
     if (load) j.update(nlohmann::json{{"servo_gain_used", plate_gain}, {"plate_overlap_m", plate_overlap}});
+    if (ring)
+        j.update(nlohmann::json{{"annulus_radius_m", annulus.R},
+                                {"ring_facets_per_circle", ring_facets},
+                                {"ring_wall_sag_m", wall_sag},
+                                {"plate_start_m", plate_start}});
     return j;
 }
 

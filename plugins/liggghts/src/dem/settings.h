@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "granlub/annulus.h"
 #include "granlub/case.h"
 #include "granlub/particles.h"
 #include "granlub/servo.h"
@@ -52,6 +53,14 @@ struct Settings : ServoSettings {
     // injected momentum the walls did not record (plugin README, "Load control with Hertz
     // contacts"). So the gain is at most plate_overlap / d: a unit error moves the plate by one
     // contact overlap at the target load. Impulse contacts have no overlap scale: no cap.
+    // [cell] geometry = "annulus": the whole ring (ring_deck.h). box is then its slice-frame box
+    // (granlub/annulus.h): 2 pi R x H x W, the frame the results are written in.
+    bool ring = false;
+    Annulus annulus;
+    std::size_t ring_facets = 0;  // facets per circle of the ring's meshes
+    double wall_sag = 0;          // m: how far the outer wall's facets lie inside its circle at most
+    double plate_start = 0;       // m: the top's starting height (H; the ring under load: gap_max)
+    ParticleBox contact_box;      // what core's contact search (contacts.h) is given for the grains
     double plate_overlap = 0;     // m, Hertz grain-plate overlap under the load's share of one grain
     double plate_gain = 0;        // the servo gain the deck uses, diameters per unit relative error
 

@@ -1,0 +1,140 @@
+// The whole ring's deck (ring_deck.h). Checked by hand first in plugins/liggghts/examples/ring,
+// whose README section ("The whole ring") has the measurements behind each choice.
+#include "ring_deck.h"
+
+#include <fmt/format.h>
+
+namespace granlub::dem {
+
+DataBounds ring_bounds(const Settings& s, double d) {
+    const double half = s.annulus.outer() + 2.0 * d;
+    return {-half, half, -d, ring_wall_height(s, d) + 2.0 * d, -half, half};
+}
+
+double ring_wall_height(const Settings& s, double d) { return s.box_top() + d; }
+
+std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+                      const std::string& provenance) {
+    const Annulus& an = s.annulus;
+    const double U = p.speed, omega = U / an.R, A = an.area(), d_g = c.grains.diameter;
+    const ModelText m = model_text(s);
+    std::string d;
+    const DeckLine line = deck_lines(d);
+
+    line(fmt::format("# granlub dem: case {}, point {} ({})", c.name, p.id, provenance));
+    line(fmt::format("# The whole ring: y is the axis; a trough of mean radius R = {:g} m between the cylinders r = {:g} "
+                     "and {:g} m,",
+                     an.R, an.inner(), an.outer()));
+    line(fmt::format("# floor at y = 0; the floor and both cylinders turn at Omega = U/R = {:g} rad/s (U = {:g} m/s at "
+                     "R); the annular top {}.",
+                     omega, U,
+                     s.load ? fmt::format("is a plate servo-controlled to {:g} Pa (starts at y = {:g} m)", s.target_stress,
+                                          s.plate_start)
+                            : fmt::format("is still at y = H = {:g} m", s.box.gap)));
+    line(fmt::format("# {} grains of d = {:g} m; contact model: {}. No centripetal body force: the curvature makes it.",
+                     grains, d_g,
+                     s.model == Model::Impulse ? "Sawyer & Tichy 2001 impulse operator (granlub plugin)"
+                                               : "Hertz-Mindlin (LIGGGHTS built-in), soft-sphere reference"));
+    line(fmt::format("# Meshes ({} facets per circle): {}, {}, {}, {}. Rerun by hand in this folder: "
+                     "granlub-liggghts -in in.granlub",
+                     s.ring_facets, kRingMeshes[0], kRingMeshes[1], kRingMeshes[2], kRingMeshes[3]));
+    line("");
+    line("atom_style      granular");
+    line("atom_modify     map array");
+    line("boundary        f f f");
+    line("newton          off");
+    line("communicate     single vel yes");
+    line("units           si");
+    line("hard_particles  yes     # glass: Young's modulus above LIGGGHTS' 1 GPa sanity limit");
+    line("processors      * 1 *   # split across the ring's plane, never along its axis");
+    line(fmt::format("read_data       {}", kData));
+    line(fmt::format("neighbor        {} bin", s.skin));
+    line("neigh_modify    delay 0");
+    line("");
+    contact_block(c, p, s, line);
+    line("");
+    line("# walls: meshes; the floor (type 2) and the side walls (type 4) turn about the axis; the top is type 3");
+    const std::string turn = fmt::format("surface_ang_vel origin 0 0 0 axis 0 1 0 omega {}", omega);
+    line(fmt::format("fix floor all mesh/surface/stress file {} type 2 {}", kRingMeshes[0], turn));
+    line(fmt::format("fix top all mesh/surface/stress file {} type 3", kRingMeshes[1]));
+    line(fmt::format("fix outer all mesh/surface/stress file {} type 4 {}", kRingMeshes[2], turn));
+    line(fmt::format("fix inner all mesh/surface/stress file {} type 4 {}", kRingMeshes[3], turn));
+    line(fmt::format("fix wgran all wall/gran {} mesh n_meshes 4 meshes floor top outer inner{}", m.model, m.settings));
+    if (s.load) {
+        line(fmt::format("# the top moves along the axis at v_vtop, set by the servo loop at the end (box top {} m)",
+                         s.gap_max));
+        line(fmt::format("variable hplate equal {}", s.plate_start));
+        line("variable zero equal 0");
+        line("variable vtop equal 0");
+        line("fix lift all move/mesh mesh top linear/variable v_zero v_vtop v_zero");
+    }
+    line("");
+    line("# body forces: gravity along -y (the axis)");
+    if (c.gravity > 0) line(fmt::format("fix grav all gravity {} vector 0 -1 0", c.gravity));
+    line("fix integr all nve/sphere");
+    line("");
+    line("# wall loads (of the grains on each mesh), averaged over blocks of sample_every steps, sampled every step");
+    line("# (impulse forces last one step). Columns: step, then for floor, top, outer, inner: force along y (N) and");
+    line("# torque about y (N m)");
+    line(fmt::format("fix walls all ave/time 1 {0} {0} f_floor[2] f_floor[5] f_top[2] f_top[5] f_outer[2] f_outer[5] "
+                     "f_inner[2] f_inner[5] file {1}",
+                     s.sample_every, kWallFile));
+    line(fmt::format("# floor area A = pi (r_o^2 - r_i^2) = {} m^2: normal stress on the top = f_y(top)/A; shear stress "
+                     "= torque / {} m^3",
+                     A, an.polar_moment()));
+    line("");
+    line("# particle snapshots for coarse-graining (granlub maps them onto the slice's frame, granlub/annulus.h)");
+    line(fmt::format("dump cg all custom {} {} {}", s.snapshot_every, kSnapshots, kSnapshotColumns));
+    line("dump_modify cg sort id");
+    if (s.vtk) {
+        line(fmt::format("# ParaView: one VTK XML file per snapshot; granlub writes the collection {}", kPvdFile));
+        line(fmt::format("dump vtk all custom/vtk {} post/particles_*.vtp id type x y z vx vy vz omegax omegay omegaz "
+                         "radius",
+                         s.snapshot_every));
+    }
+    line("thermo_style    custom step atoms ke cpu");
+    line(fmt::format("thermo          {}", std::max<std::int64_t>(1, s.steps / 20)));
+    line("thermo_modify   norm no lost error");
+    if (!s.load) {
+        line(fmt::format("run             {}", s.steps));
+        persistence_block(s, line);
+        final_state_block(s, line);
+        return d;
+    }
+    // The slice's servo rule (deck.cpp) with the plate moved, not re-made: re-making the top mesh
+    // at each window left 14 % of the grains' weight out of the walls' recorded forces (plugin
+    // README, "The whole ring"); a mesh moving at a steady speed keeps the books.
+    const std::int64_t updates = s.steps / s.servo_every;
+    line("");
+    line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress, A));
+    line(fmt::format("# every {} steps: the next position hplate + {} * err, err = clamp((P_top - P)/P, -1, {}),",
+                     s.servo_every, s.plate_gain * d_g, s.servo_max_error));
+    line(fmt::format("# kept in [{}, {}] m and reached at a steady speed over the next {} steps; positions in {}",
+                     s.gap_min, s.gap_max, s.servo_every, kPlateFile));
+    line(fmt::format("fix servoF all ave/time 1 {0} {0} f_top[2]", s.servo_every));
+    line(fmt::format("fix plate all ave/time {0} 1 {0} v_hplate file {1}", s.servo_every, kPlateFile));
+    line(fmt::format("variable ptop equal f_servoF/{}", A));
+    line(fmt::format("variable err equal (v_ptop-{0})/{0}", s.target_stress));
+    line(fmt::format("variable errc equal v_err*(v_err>=-1)*(v_err<={0})+{0}*(v_err>{0})-(v_err<-1)",
+                     s.servo_max_error));
+    line(fmt::format("variable htry equal v_hplate+{}*v_errc", s.plate_gain * d_g));
+    line(fmt::format("variable hnew equal v_htry*(v_htry>={0})*(v_htry<={1})+{0}*(v_htry<{0})+{1}*(v_htry>{1})",
+                     s.gap_min, s.gap_max));
+    line(fmt::format("variable update loop {}", updates));
+    line("label servo");
+    line(fmt::format("run             {} post no", s.servo_every));
+    line("next update");
+    line("jump SELF move  # skipped after the last window");
+    line("jump SELF done");
+    line("label move");
+    line(fmt::format("variable vtop equal (${{hnew}}-${{hplate}})/({}*dt)", s.servo_every));
+    line("variable hplate equal ${hnew}");
+    line("jump SELF servo");
+    line("label done");
+    line("variable vtop equal 0  # the plate stays where the last window took it");
+    persistence_block(s, line);
+    final_state_block(s, line);
+    return d;
+}
+
+}  // namespace granlub::dem
