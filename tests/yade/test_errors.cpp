@@ -132,6 +132,22 @@ BOOST_AUTO_TEST_CASE(bad_inputs_are_rejected_before_yade_starts) {
     }
 }
 
+// The whole ring is granlub dem's: YADE answers "no answer" (not a failure) before it starts.
+BOOST_AUTO_TEST_CASE(the_whole_ring_has_no_answer_here) {
+    const auto dir = scratch("ring");
+    const fs::path marker = dir / "yade-started";
+    ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "touch '" + marker.string() + "'; exit 0").string());
+    const Case c = tiny_case_edits({{"annulus_radius = 0.0762", "annulus_radius = 0.0762\ngeometry = \"annulus\""}}, "");
+    BOOST_CHECK_EXCEPTION(check(c, options(dir / "results")), NoAnswer, [](const NoAnswer& e) {
+        return has(e.what(), "granlub yade runs the slice only") && has(e.what(), "geometry = \"annulus\"");
+    });
+    BOOST_TEST(run(c, options(dir / "results")) == 0);
+    BOOST_TEST(!fs::exists(marker));
+    const auto why = read_failure(dir / "results" / "yade" / "U2.0");
+    BOOST_TEST_REQUIRE(why.has_value());
+    BOOST_TEST(why->no_answer);
+}
+
 // start = "warm" without granlub dem's final state, or with one from another case: the point fails
 // before YADE starts, saying what to run.
 BOOST_AUTO_TEST_CASE(warm_start_needs_the_dem_state_of_this_case) {

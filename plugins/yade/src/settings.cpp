@@ -14,6 +14,10 @@ namespace granlub::yade {
 std::string to_string(Model m) { return m == Model::ViscEl ? "viscel" : "hertz"; }
 
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
+    if (c.cell.ring())
+        throw NoAnswer(fmt::format("point {}: granlub yade runs the slice only; [cell] geometry = \"annulus\" (the "
+                                   "whole ring) is granlub dem's",
+                                   p.id));
     const Section& s = c.section("yade");
     Settings r;
     r.model = s.string("model") == "hertz" ? Model::Hertz : Model::ViscEl;
