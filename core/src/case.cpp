@@ -364,6 +364,8 @@ void check_cross_keys(const Case& c, Control control) {
     if (c.cell.annulus_radius != 0 && c.cell.annulus_radius <= c.cell.width / 2)
         cell.fail("annulus_radius", fmt::format("the annulus radius must exceed half the width ({} m)", c.cell.width / 2));
     if (c.cell.ring()) check_ring(c);
+    if (const Section& rep = c.sections.at("report"); !rep.string("slice_case").empty() && !c.cell.ring())
+        rep.fail("slice_case", "sets the whole ring beside its slice: this case needs [cell] geometry = \"annulus\"");
 
     const Section& op = c.sections.at("operating");
     if (control == Control::Fill && !op.has("solid_fraction"))
@@ -518,6 +520,7 @@ std::vector<const OperatingPoint*> Case::select(std::string_view id) const {
 namespace {
 // The sections a solver's results depend on: the common ones, its own, and the ones it uses.
 bool feeds(const Case& c, const std::string& section, std::string_view solver_section) {
+    if (const auto s = c.sections.find(section); s != c.sections.end() && !s->second.spec().solver_input) return false;
     if (common_sections_contains(section) || section == solver_section) return true;
     const auto it = c.sections.find(std::string(solver_section));
     if (it == c.sections.end()) return false;

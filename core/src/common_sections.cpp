@@ -67,6 +67,14 @@ std::vector<SectionSpec> common_sections() {
     SectionSpec bf("body_forces", "body forces");
     bf.real("gravity", 9.81, Range::non_negative(), "m/s^2", "gravity along -y (toward the moving wall); 0 = none");
     s.push_back(bf);
+
+    SectionSpec rep("report", "what `granlub compare` shows besides this case's own results (no solver reads it)");
+    rep.solver_input = false;
+    rep.string("slice_case", "",
+               "with [cell] geometry = \"annulus\": a case directory (relative to this case's) whose granlub dem "
+               "results at the same point ids the report sets beside this ring's, the slice against the whole ring; "
+               "\"\" = none");
+    s.push_back(rep);
     return s;
 }
 

@@ -15,6 +15,7 @@
 #include "metrics.h"
 #include "paraview.h"
 #include "report_builder.h"
+#include "ring_slice.h"
 #include "section_map.h"
 #include "svg_plot.h"
 #include "text.h"
@@ -106,8 +107,10 @@ int compare(const Case& c, const RunOptions& o) {
         figs.stress = emit(stress_figures(col), plots);
         figs.slip = emit(slip_figures(col), plots);
         figs.solid_fraction = emit({solid_fraction_figure(col, c.cell.max_solid_fraction)}, plots);
+        const RingSliceSection ring = ring_slice_section(c, col);
+        figs.ring_slice = emit(ring.figures, plots);
         const auto vtm = write_paraview(col, c.cell.gap, c.cell.width, staging / "paraview");
-        const Report rep = build_report(c, col, metrics, figs, vtm);
+        const Report rep = build_report(c, col, metrics, figs, vtm, &ring);
         write_file_atomic(staging / "metrics.csv", metrics_csv(metrics));
         write_file_atomic(staging / "report.md", render_markdown(rep));
         write_file_atomic(staging / "index.html", render_html(rep));  // last: the completion marker

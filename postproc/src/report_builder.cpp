@@ -7,17 +7,12 @@
 #include <fmt/format.h>
 
 #include "granlub/results.h"
+#include "ring_slice.h"
 #include "scope.h"
 #include "text.h"
 
 namespace granlub::postproc {
 namespace {
-
-std::string value_pm(const std::optional<double>& v, const std::optional<double>& se, int digits = 4) {
-    if (!v) return "";
-    if (se && *se > 0) return fmt::format("{} ± {}", num(*v, digits), num(*se, 2));
-    return num(*v, digits);
-}
 
 std::optional<double> scaled(const std::optional<double>& v, double factor) {
     return v ? std::optional(*v * factor) : std::nullopt;
@@ -272,7 +267,8 @@ Table scope_table(const Case& c, const Collection& col) {
 }
 
 Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
-                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files) {
+                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
+                    const RingSliceSection* ring) {
     Report rep;
     rep.title = fmt::format("Cross-code comparison: {}", c.title.empty() ? c.name : c.title);
     std::vector<std::string> with_results, without;
@@ -361,6 +357,21 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     rep.figures(figs.slip);
     rep.heading("Mean solid fraction");
     rep.figures(figs.solid_fraction);
+
+    if (ring && !ring->slice_case.empty()) {
+        rep.heading("The whole ring against its slice");
+        rep.text(fmt::format(
+            "granlub dem ran this case as the whole ring ([cell] geometry = \"annulus\": turning floor and side "
+            "walls, the curvature instead of a body force); [report] slice_case = \"{}\" ran the same points as a "
+            "periodic slice with the centripetal body force standing in for the curvature. Both are written in the "
+            "slice's frame (the ring by an equal-area map: z/W = −1/2 is the outer wall), so they compare quantity by "
+            "quantity. A difference is significant when it exceeds twice the combined standard error (|z| > 2, "
+            "shown bold). The side walls' shear stresses are the ring's torques on the cylinders over their areas and radii.",
+            ring->slice_case));
+        for (const auto& n : ring->notes) rep.text(n);
+        if (!ring->table.rows.empty()) rep.table(ring->table);
+        rep.figures(figs.ring_slice);
+    }
 
     rep.heading("Differences between solvers");
     if (std::count_if(col.points.begin(), col.points.end(), [&](const OperatingPoint* p) { return col.usable(p->id).size() >= 2; }) == 0)

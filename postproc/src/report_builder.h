@@ -15,10 +15,14 @@ namespace granlub::postproc {
 struct ReportFigures {
     std::map<std::string, std::vector<FigureRef>> profiles;  // by point id
     std::vector<FigureRef> stress, slip, solid_fraction;
+    std::vector<FigureRef> ring_slice;  // ring_slice.h
 };
 
+struct RingSliceSection;
+
 Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
-                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files);
+                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
+                    const RingSliceSection* ring = nullptr);
 
 // Key numbers per solver and point (nu_bar/nu_max, wall stresses, slip/U, wall clock; under load
 // control also the gap and P_top / target); used by the report and by summary_table().

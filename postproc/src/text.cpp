@@ -40,4 +40,10 @@ std::string csv_field(std::string_view s) {
     return out + "\"";
 }
 
+std::string value_pm(const std::optional<double>& v, const std::optional<double>& se, int digits) {
+    if (!v) return "";
+    if (se && *se > 0) return fmt::format("{} ± {}", num(*v, digits), num(*se, 2));
+    return num(*v, digits);
+}
+
 }  // namespace granlub::postproc

@@ -10,5 +10,7 @@ std::string xml_escape(std::string_view s);       // & < > " '
 std::string num(double v, int digits = 4);         // compact: "%.{digits}g"
 std::string num(const std::optional<double>& v, int digits = 4);  // "" when absent
 std::string csv_field(std::string_view s);         // quoted when it holds , " or a newline
+// "v ± se" (se to 2 digits; just v without a positive se; "" without v)
+std::string value_pm(const std::optional<double>& v, const std::optional<double>& se, int digits = 4);
 
 }  // namespace granlub::postproc

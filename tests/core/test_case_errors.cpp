@@ -58,6 +58,8 @@ BOOST_AUTO_TEST_CASE(bad_inputs_are_rejected_with_clear_messages) {
         {"width neither 0 nor >= 2 d", with("width = 0.0", "width = 1.0e-3"), {"[cell] width = 0.001", "0 (periodic)"}},
         {"annulus inside the trough", with("width = 0.0", "width = 0.01\nannulus_radius = 0.004"),
          {"[cell] annulus_radius = 0.004", "half the width"}},
+        {"slice_case without a ring", kValidCase + "\n[report]\nslice_case = \"../slice\"\n",
+         {"[report] slice_case = \"../slice\"", "needs [cell] geometry = \"annulus\""}},
         {"unknown geometry", with("width = 0.0", "width = 0.0\ngeometry = \"torus\""),
          {"[cell] geometry = \"torus\"", "one of \"slice\", \"annulus\""}},
         {"ring without a radius", with("width = 0.0", "width = 0.01\ngeometry = \"annulus\""),

@@ -71,6 +71,9 @@ struct SectionSpec {
     // Shared sections a solver's results also depend on (e.g. [particles] for dem and yade):
     // part of its inputs hash, so a change there makes its results stale.
     std::vector<std::string> uses;
+    // False for a section no solver reads (e.g. [report]): in no solver's inputs hash, so a change
+    // there leaves every result current.
+    bool solver_input = true;
     // Cross-key checks of this section; call Section::fail(key, why) to reject.
     std::function<void(const Section&)> validate;
 
