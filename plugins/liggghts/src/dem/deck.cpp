@@ -42,6 +42,34 @@ std::string pair_matrix(double pp, double bottom, double top, double side) {
 
 // Contact persistence (granlub's regime diagnostics, flow_regime.h): after the run, with the
 // result outputs closed, a few snapshots a small shear strain apart. Costs persistence_run_steps().
+void output_block(const Settings& s, const DeckLine& line) {
+    line(fmt::format("dump cg all custom {} {} {}", s.snapshot_every, kSnapshots, kSnapshotColumns));
+    line("dump_modify cg sort id");
+    if (s.vtk) {
+        line(fmt::format("# ParaView: one VTK XML file per snapshot; granlub writes the collection {}", kPvdFile));
+        line(fmt::format("dump vtk all custom/vtk {} post/particles_*.vtp id type x y z vx vy vz omegax omegay omegaz "
+                         "radius",
+                         s.snapshot_every));
+    }
+    line("thermo_style    custom step atoms ke cpu");
+    line(fmt::format("thermo          {}", std::max<std::int64_t>(1, s.steps / 20)));
+    line("thermo_modify   norm no lost error");
+}
+
+void servo_rule_block(const Settings& s, const DeckLine& line, const std::string& force, const std::string& sign,
+                      double A, double d) {
+    line(fmt::format("fix servoF all ave/time 1 {0} {0} {1}", s.servo_every, force));
+    line(fmt::format("fix plate all ave/time {0} 1 {0} v_hplate file {1}", s.servo_every, kPlateFile));
+    line(fmt::format("variable ptop equal {}f_servoF/{}", sign, A));
+    line(fmt::format("variable err equal (v_ptop-{0})/{0}", s.target_stress));
+    line(fmt::format("variable errc equal v_err*(v_err>=-1)*(v_err<={0})+{0}*(v_err>{0})-(v_err<-1)",
+                     s.servo_max_error));
+    line(fmt::format("variable htry equal v_hplate+{}*v_errc", s.plate_gain * d));
+    line(fmt::format("variable hnew equal v_htry*(v_htry>={0})*(v_htry<={1})+{0}*(v_htry<{0})+{1}*(v_htry>{1})",
+                     s.gap_min, s.gap_max));
+    line(fmt::format("variable update loop {}", s.steps / s.servo_every));
+}
+
 void persistence_block(const Settings& s, const DeckLine& line) {
     line("");
     line(fmt::format("# contact persistence: {} snapshots {} steps apart (shear strain {:g} at U/H) in {}, after the "
@@ -187,17 +215,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(fmt::format("# wall area A = L W = {} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A", A));
     line("");
     line("# particle snapshots for coarse-graining across the gap");
-    line(fmt::format("dump cg all custom {} {} {}", s.snapshot_every, kSnapshots, kSnapshotColumns));
-    line("dump_modify cg sort id");
-    if (s.vtk) {
-        line(fmt::format("# ParaView: one VTK XML file per snapshot; granlub writes the collection {}", kPvdFile));
-        line(fmt::format("dump vtk all custom/vtk {} post/particles_*.vtp id type x y z vx vy vz omegax omegay omegaz "
-                         "radius",
-                         s.snapshot_every));
-    }
-    line("thermo_style    custom step atoms ke cpu");
-    line(fmt::format("thermo          {}", std::max<std::int64_t>(1, s.steps / 20)));
-    line("thermo_modify   norm no lost error");
+    output_block(s, line);
     if (!s.load) {
         line(fmt::format("run             {}", s.steps));
         persistence_block(s, line);
@@ -210,7 +228,6 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     // clamped to [gap_min, gap_max]. An integral controller: at steady state the plate's mean
     // drift is zero, so the window-averaged P_top equals P (while the clamps are inactive).
     const double d_g = c.grains.diameter;
-    const std::int64_t updates = s.steps / s.servo_every;
     line("");
     line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress,
                      A));
@@ -220,16 +237,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
         line(fmt::format("# (soft contacts: the gain is capped so that a unit error moves the plate by one grain-plate "
                          "overlap at the load, {} m: a jump must not hammer the loaded contacts)", s.plate_overlap));
     line(fmt::format("# hplate kept in [{}, {}] m; plate position per update in {}", s.gap_min, s.gap_max, kPlateFile));
-    line(fmt::format("fix servoF all ave/time 1 {0} {0} c_fwall[5]", s.servo_every));
-    line(fmt::format("fix plate all ave/time {0} 1 {0} v_hplate file {1}", s.servo_every, kPlateFile));
-    line(fmt::format("variable ptop equal -f_servoF/{}", A));
-    line(fmt::format("variable err equal (v_ptop-{0})/{0}", s.target_stress));
-    line(fmt::format("variable errc equal v_err*(v_err>=-1)*(v_err<={0})+{0}*(v_err>{0})-(v_err<-1)",
-                     s.servo_max_error));
-    line(fmt::format("variable htry equal v_hplate+{}*v_errc", s.plate_gain * d_g));
-    line(fmt::format("variable hnew equal v_htry*(v_htry>={0})*(v_htry<={1})+{0}*(v_htry<{0})+{1}*(v_htry>{1})",
-                     s.gap_min, s.gap_max));
-    line(fmt::format("variable update loop {}", updates));
+    servo_rule_block(s, line, "c_fwall[5]", "-", A, d_g);
     line("label servo");
     line(fmt::format("run             {} post no", s.servo_every));
     line("variable hplate equal ${hnew}");

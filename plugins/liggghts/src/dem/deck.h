@@ -62,6 +62,13 @@ ModelText model_text(const Settings& s);
 void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, const DeckLine& line);
 // after the run: contact-persistence snapshots (result outputs closed: fixes `walls`, `plate`, dump `cg`)
 void persistence_block(const Settings& s, const DeckLine& line);
+// The particle snapshots (and VTK dumps) and the thermo output both decks write before their runs.
+void output_block(const Settings& s, const DeckLine& line);
+// The servo's rule, both decks': the top's window force `force` (a fix output, `sign` "-" when it
+// is the wall's force on the grains) over A gives P_top, the clamped relative error moves the
+// plate to hnew = hplate + gain d err within [gap_min, gap_max]; `update` counts the windows.
+void servo_rule_block(const Settings& s, const DeckLine& line, const std::string& force, const std::string& sign,
+                      double A, double d);
 // the final state at 17 digits (and the plate position under load)
 void final_state_block(const Settings& s, const DeckLine& line);
 

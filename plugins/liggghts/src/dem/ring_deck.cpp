@@ -84,17 +84,7 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
                      A, an.polar_moment()));
     line("");
     line("# particle snapshots for coarse-graining (granlub maps them onto the slice's frame, granlub/annulus.h)");
-    line(fmt::format("dump cg all custom {} {} {}", s.snapshot_every, kSnapshots, kSnapshotColumns));
-    line("dump_modify cg sort id");
-    if (s.vtk) {
-        line(fmt::format("# ParaView: one VTK XML file per snapshot; granlub writes the collection {}", kPvdFile));
-        line(fmt::format("dump vtk all custom/vtk {} post/particles_*.vtp id type x y z vx vy vz omegax omegay omegaz "
-                         "radius",
-                         s.snapshot_every));
-    }
-    line("thermo_style    custom step atoms ke cpu");
-    line(fmt::format("thermo          {}", std::max<std::int64_t>(1, s.steps / 20)));
-    line("thermo_modify   norm no lost error");
+    output_block(s, line);
     if (!s.load) {
         line(fmt::format("run             {}", s.steps));
         persistence_block(s, line);
@@ -104,23 +94,13 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
     // The slice's servo rule (deck.cpp) with the plate moved, not re-made: re-making the top mesh
     // at each window left 14 % of the grains' weight out of the walls' recorded forces (plugin
     // README, "The whole ring"); a mesh moving at a steady speed keeps the books.
-    const std::int64_t updates = s.steps / s.servo_every;
     line("");
     line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress, A));
     line(fmt::format("# every {} steps: the next position hplate + {} * err, err = clamp((P_top - P)/P, -1, {}),",
                      s.servo_every, s.plate_gain * d_g, s.servo_max_error));
     line(fmt::format("# kept in [{}, {}] m and reached at a steady speed over the next {} steps; positions in {}",
                      s.gap_min, s.gap_max, s.servo_every, kPlateFile));
-    line(fmt::format("fix servoF all ave/time 1 {0} {0} f_top[2]", s.servo_every));
-    line(fmt::format("fix plate all ave/time {0} 1 {0} v_hplate file {1}", s.servo_every, kPlateFile));
-    line(fmt::format("variable ptop equal f_servoF/{}", A));
-    line(fmt::format("variable err equal (v_ptop-{0})/{0}", s.target_stress));
-    line(fmt::format("variable errc equal v_err*(v_err>=-1)*(v_err<={0})+{0}*(v_err>{0})-(v_err<-1)",
-                     s.servo_max_error));
-    line(fmt::format("variable htry equal v_hplate+{}*v_errc", s.plate_gain * d_g));
-    line(fmt::format("variable hnew equal v_htry*(v_htry>={0})*(v_htry<={1})+{0}*(v_htry<{0})+{1}*(v_htry>{1})",
-                     s.gap_min, s.gap_max));
-    line(fmt::format("variable update loop {}", updates));
+    servo_rule_block(s, line, "f_top[2]", "", A, d_g);
     line("label servo");
     line(fmt::format("run             {} post no", s.servo_every));
     line("next update");
