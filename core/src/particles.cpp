@@ -17,7 +17,7 @@
 #include "granlub/text.h"
 #include "granlub/results.h"
 #include "granlub/table.h"
-#include "rng.h"
+#include "lattice_insertion.h"
 
 namespace granlub {
 
@@ -147,22 +147,10 @@ ParticleSet insert_grains(const ParticleBox& box, double d, std::size_t n, const
                                     "be positive",
                                     d, box.length, box.gap, box.width));
     check_fits(box, d, n);
-    // Largest spacing with enough sites: count(a) does not increase with a, so bisect.
-    double lo = d, hi = 2.0 * d;
-    while (make_lattice(box, d, hi).count() >= n && hi < 1e3 * d) hi *= 2.0;
-    for (int it = 0; it < 100; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (make_lattice(box, d, mid).count() >= n ? lo : hi) = mid;
-    }
-    const Lattice l = make_lattice(box, d, lo);
-
+    const Lattice l =
+        make_lattice(box, d, largest_spacing(d, n, [&](double a) { return make_lattice(box, d, a).count(); }));
     Rng rng(opt.seed);
-    // First n entries of a Fisher-Yates shuffle of the sites, then sorted for a tidy file.
-    std::vector<std::size_t> sites(l.count());
-    for (std::size_t s = 0; s < sites.size(); ++s) sites[s] = s;
-    for (std::size_t s = 0; s < n; ++s) std::swap(sites[s], sites[s + rng.below(sites.size() - s)]);
-    sites.resize(n);
-    std::sort(sites.begin(), sites.end());
+    const std::vector<std::size_t> sites = random_sites(rng, l.count(), n);
 
     ParticleSet p;
     p.reserve(n);
@@ -170,16 +158,11 @@ ParticleSet insert_grains(const ParticleBox& box, double d, std::size_t n, const
     for (std::size_t s : sites) {
         double x, y, z;
         site(l, s, x, y, z);
-        // uniform displacement in the ball of radius `jitter` (rejection sampling)
         double dx, dy, dz;
-        do {
-            dx = 2.0 * rng.uniform() - 1.0;
-            dy = 2.0 * rng.uniform() - 1.0;
-            dz = 2.0 * rng.uniform() - 1.0;
-        } while (dx * dx + dy * dy + dz * dz > 1.0);
-        x = wrap(x + dx * l.jitter, box.length);
-        y += dy * l.jitter;
-        z += dz * l.jitter;
+        ball_jitter(rng, l.jitter, dx, dy, dz);
+        x = wrap(x + dx, box.length);
+        y += dy;
+        z += dz;
         if (box.periodic_z) z = wrap(z + 0.5 * box.width, box.width) - 0.5 * box.width;
         const double u = opt.wall_speed * (1.0 - y / box.gap);
         const double vx = u + sigma * rng.normal();

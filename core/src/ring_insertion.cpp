@@ -8,7 +8,7 @@
 
 #include "granlub/annulus.h"
 #include "granlub/error.h"
-#include "rng.h"
+#include "lattice_insertion.h"
 
 namespace granlub {
 
@@ -87,20 +87,10 @@ ParticleSet insert_ring_grains(const Annulus& an, double h, double d, std::size_
                                     n, static_cast<double>(n) * vg / (an.area() * h), h, most,
                                     static_cast<double>(most) * vg / (an.area() * h)));
     }
-    double lo = d, hi = 2.0 * d;  // largest spacing with enough sites (the count falls with a)
-    while (make_ring_lattice(an, h, d, hi, sag).count() >= n && hi < 1e3 * d) hi *= 2.0;
-    for (int it = 0; it < 100; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (make_ring_lattice(an, h, d, mid, sag).count() >= n ? lo : hi) = mid;
-    }
-    const RingLattice l = make_ring_lattice(an, h, d, lo, sag);
-
+    const RingLattice l = make_ring_lattice(
+        an, h, d, largest_spacing(d, n, [&](double a) { return make_ring_lattice(an, h, d, a, sag).count(); }), sag);
     Rng rng(opt.seed);
-    std::vector<std::size_t> sites(l.count());
-    for (std::size_t s = 0; s < sites.size(); ++s) sites[s] = s;
-    for (std::size_t s = 0; s < n; ++s) std::swap(sites[s], sites[s + rng.below(sites.size() - s)]);
-    sites.resize(n);
-    std::sort(sites.begin(), sites.end());
+    const std::vector<std::size_t> sites = random_sites(rng, l.count(), n);
 
     ParticleSet p;
     p.reserve(n);
@@ -109,12 +99,8 @@ ParticleSet insert_ring_grains(const Annulus& an, double h, double d, std::size_
         double x, y, z;
         ring_site(l, s, x, y, z);
         double dx, dy, dz;
-        do {
-            dx = 2.0 * rng.uniform() - 1.0;
-            dy = 2.0 * rng.uniform() - 1.0;
-            dz = 2.0 * rng.uniform() - 1.0;
-        } while (dx * dx + dy * dy + dz * dz > 1.0);
-        x += dx * l.jitter, y += dy * l.jitter, z += dz * l.jitter;
+        ball_jitter(rng, l.jitter, dx, dy, dz);
+        x += dx, y += dy, z += dz;
         // (0, w, 0) x (x, y, z) = (w z, 0, -w x): turning with the floor, slower toward the top
         const double w = omega * (1.0 - y / h);
         p.push_back(x, y, z, w * z + sigma * rng.normal(), sigma * rng.normal(), -w * x + sigma * rng.normal(), 0.5 * d);
