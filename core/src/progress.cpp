@@ -12,22 +12,30 @@ namespace granlub {
 
 bool Progress::enabled() {
     const char* env = std::getenv("GRANLUB_PROGRESS");
-    if (env && std::strcmp(env, "0") == 0) return false;
-    return ::isatty(STDERR_FILENO) == 1;
+    return !(env && std::strcmp(env, "0") == 0);
 }
 
+namespace {
+constexpr auto kRedraw = std::chrono::milliseconds(200);  // a terminal line
+constexpr auto kLogLine = std::chrono::seconds(60);       // a log's line
+}  // namespace
+
 Progress::Progress(std::string label, std::uint64_t total)
-    : label_(std::move(label)), total_(total), on_(enabled()), start_(std::chrono::steady_clock::now()),
-      last_(start_ - std::chrono::seconds(1)) {}
+    : label_(std::move(label)),
+      total_(total),
+      on_(enabled()),
+      terminal_(::isatty(STDERR_FILENO) == 1),
+      start_(std::chrono::steady_clock::now()),
+      last_(terminal_ ? start_ - std::chrono::seconds(1) : start_) {}
 
 Progress::~Progress() {
-    if (on_) fmt::print(stderr, "\r\033[K");
+    if (on_ && terminal_) fmt::print(stderr, "\r\033[K");
 }
 
 void Progress::update(std::uint64_t done, const std::string& status) {
     if (!on_) return;
     const auto now = std::chrono::steady_clock::now();
-    if (now - last_ < std::chrono::milliseconds(200) && done < total_) return;
+    if (terminal_ ? now - last_ < kRedraw && done < total_ : now - last_ < kLogLine) return;
     last_ = now;
     const double el = std::chrono::duration<double>(now - start_).count();
     const double frac = total_ ? static_cast<double>(done) / static_cast<double>(total_) : 0.0;
@@ -37,7 +45,8 @@ void Progress::update(std::uint64_t done, const std::string& status) {
         eta = rem >= 60 ? fmt::format("{}m{:02d}s", static_cast<int>(rem) / 60, static_cast<int>(rem) % 60)
                         : fmt::format("{:.0f}s", rem);
     }
-    fmt::print(stderr, "\r\033[K{} {:5.1f}% ({}/{})  ETA {}  {}", label_, 100.0 * frac, done, total_, eta, status);
+    fmt::print(stderr, "{}{} {:5.1f}% ({}/{})  ETA {}  {}{}", terminal_ ? "\r\033[K" : "", label_, 100.0 * frac, done,
+               total_, eta, status, terminal_ ? "" : "\n");
     std::fflush(stderr);
 }
 
