@@ -366,7 +366,10 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
             "periodic slice with the centripetal body force standing in for the curvature. Both are written in the "
             "slice's frame (the ring by an equal-area map: z/W = −1/2 is the outer wall), so they compare quantity by "
             "quantity. A difference is significant when it exceeds twice the combined standard error (|z| > 2, "
-            "shown bold). The side walls' shear stresses are the ring's torques on the cylinders over their areas and radii.",
+            "shown bold). The standard errors are each run's own (block averages over one seed's steady window); runs "
+            "with other seeds can scatter by more than that (they do in a dense, layered bed), so a bold z says that "
+            "these two runs differ, and whether the geometries do needs more seeds (--seed). The side walls' shear "
+            "stresses are the ring's torques on the cylinders over their areas and radii.",
             ring->slice_case));
         for (const auto& n : ring->notes) rep.text(n);
         if (!ring->table.rows.empty()) rep.table(ring->table);
