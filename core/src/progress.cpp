@@ -16,15 +16,15 @@ bool Progress::enabled() {
 }
 
 namespace {
-constexpr auto kRedraw = std::chrono::milliseconds(200);  // a terminal line
-constexpr auto kLogLine = std::chrono::seconds(60);       // a log's line
+constexpr auto kRedraw = std::chrono::milliseconds(200);  // a terminal's line
 }  // namespace
 
-Progress::Progress(std::string label, std::uint64_t total)
+Progress::Progress(std::string label, std::uint64_t total, std::chrono::milliseconds log_every)
     : label_(std::move(label)),
       total_(total),
       on_(enabled()),
       terminal_(::isatty(STDERR_FILENO) == 1),
+      log_every_(log_every),
       start_(std::chrono::steady_clock::now()),
       last_(terminal_ ? start_ - std::chrono::seconds(1) : start_) {}
 
@@ -35,7 +35,7 @@ Progress::~Progress() {
 void Progress::update(std::uint64_t done, const std::string& status) {
     if (!on_) return;
     const auto now = std::chrono::steady_clock::now();
-    if (terminal_ ? now - last_ < kRedraw && done < total_ : now - last_ < kLogLine) return;
+    if (terminal_ ? now - last_ < kRedraw && done < total_ : now - last_ < log_every_) return;
     last_ = now;
     const double el = std::chrono::duration<double>(now - start_).count();
     const double frac = total_ ? static_cast<double>(done) / static_cast<double>(total_) : 0.0;

@@ -10,9 +10,10 @@ namespace granlub {
 
 class Progress {
 public:
-    Progress(std::string label, std::uint64_t total);
-    ~Progress();  // clears the line
-    // Cheap to call often: redraws at most ~5 times per second.
+    // log_every: the interval of a log's lines (tests shorten it)
+    Progress(std::string label, std::uint64_t total, std::chrono::milliseconds log_every = std::chrono::minutes(1));
+    ~Progress();  // clears a terminal's line
+    // Cheap to call often: redraws a terminal's line at most ~5 times per second.
     void update(std::uint64_t done, const std::string& status = "");
     static bool enabled();  // GRANLUB_PROGRESS != 0 (a terminal or a log)
 
@@ -20,7 +21,8 @@ private:
     std::string label_;
     std::uint64_t total_;
     bool on_;
-    bool terminal_;  // redraw one line; otherwise append a line once a minute
+    bool terminal_;  // redraw one line; otherwise append a line every log_every_
+    std::chrono::milliseconds log_every_;
     std::chrono::steady_clock::time_point start_, last_;
 };
 
