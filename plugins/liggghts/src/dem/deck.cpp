@@ -117,6 +117,20 @@ DeckLine deck_lines(std::string& d) {
     };
 }
 
+void engine_block(const Settings& s, const DeckLine& line, const std::string& boundary, const std::string& processors) {
+    line("atom_style      granular");
+    line("atom_modify     map array");
+    line("boundary        " + boundary);
+    line("newton          off");
+    line("communicate     single vel yes");
+    line("units           si");
+    line("hard_particles  yes     # glass: Young's modulus above LIGGGHTS' 1 GPa sanity limit");
+    line("processors      " + processors);
+    line(fmt::format("read_data       {}", kData));
+    line(fmt::format("neighbor        {} bin", s.skin));
+    line("neigh_modify    delay 0");
+}
+
 void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, const DeckLine& line) {
     const ModelText m = model_text(s);
     line("# materials; types: 1 grains, 2 bottom wall, 3 top wall, 4 side walls");
@@ -160,17 +174,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
                                             : "Hertz-Mindlin (LIGGGHTS built-in), soft-sphere reference"));
     line("# Rerun by hand in this folder: granlub-liggghts -in in.granlub");
     line("");
-    line("atom_style      granular");
-    line("atom_modify     map array");
-    line(fmt::format("boundary        p f {}", box.periodic_z ? "p" : "f"));
-    line("newton          off");
-    line("communicate     single vel yes");
-    line("units           si");
-    line("hard_particles  yes     # glass: Young's modulus above LIGGGHTS' 1 GPa sanity limit");
-    line("processors      * 1 1   # split along the flow only");
-    line(fmt::format("read_data       {}", kData));
-    line(fmt::format("neighbor        {} bin", s.skin));
-    line("neigh_modify    delay 0");
+    engine_block(s, line, box.periodic_z ? "p f p" : "p f f", "* 1 1   # split along the flow only");
     line("");
     contact_block(c, p, s, line);
     line("");

@@ -58,6 +58,9 @@ struct ModelText {
     std::string settings;  // the impulse model's options, with a leading space
 };
 ModelText model_text(const Settings& s);
+// atom style, boundaries (`boundary`, e.g. "p f f"), units, the rank grid (`processors` with its
+// comment), the grains' data file and the neighbour lists
+void engine_block(const Settings& s, const DeckLine& line, const std::string& boundary, const std::string& processors);
 // materials per atom type, pair style, time step
 void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, const DeckLine& line);
 // after the run: contact-persistence snapshots (result outputs closed: fixes `walls`, `plate`, dump `cg`)

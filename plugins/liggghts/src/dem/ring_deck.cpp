@@ -39,17 +39,7 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
                      "granlub-liggghts -in in.granlub",
                      s.ring_facets, kRingMeshes[0], kRingMeshes[1], kRingMeshes[2], kRingMeshes[3]));
     line("");
-    line("atom_style      granular");
-    line("atom_modify     map array");
-    line("boundary        f f f");
-    line("newton          off");
-    line("communicate     single vel yes");
-    line("units           si");
-    line("hard_particles  yes     # glass: Young's modulus above LIGGGHTS' 1 GPa sanity limit");
-    line("processors      * 1 *   # split across the ring's plane, never along its axis");
-    line(fmt::format("read_data       {}", kData));
-    line(fmt::format("neighbor        {} bin", s.skin));
-    line("neigh_modify    delay 0");
+    engine_block(s, line, "f f f", "* 1 *   # split across the ring's plane, never along its axis");
     line("");
     contact_block(c, p, s, line);
     line("");
