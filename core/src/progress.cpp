@@ -32,6 +32,10 @@ Progress::~Progress() {
     if (on_ && terminal_) fmt::print(stderr, "\r\033[K");
 }
 
+bool Progress::due() const {
+    return on_ && std::chrono::steady_clock::now() - last_ >= (terminal_ ? kRedraw : log_every_);
+}
+
 void Progress::update(std::uint64_t done, const std::string& status) {
     if (!on_) return;
     const auto now = std::chrono::steady_clock::now();

@@ -50,6 +50,7 @@ BOOST_AUTO_TEST_CASE(writes_plain_lines_at_the_interval) {
     ::unsetenv("GRANLUB_PROGRESS");
     const std::string out = stderr_of([] {
         Progress p("dem U2.0", 10, 0ms);
+        BOOST_TEST(p.due());
         p.update(3, "LIGGGHTS");
         p.update(10, "LIGGGHTS");
     });
@@ -65,6 +66,7 @@ BOOST_AUTO_TEST_CASE(a_short_run_leaves_no_line) {
     ::unsetenv("GRANLUB_PROGRESS");
     const std::string out = stderr_of([] {
         Progress p("yade U2.0", 100);  // the default interval, a minute
+        BOOST_TEST(!p.due());
         for (std::uint64_t i = 0; i <= 100; ++i) p.update(i);
     });
     BOOST_TEST(out.empty());
@@ -74,6 +76,7 @@ BOOST_AUTO_TEST_CASE(granlub_progress_0_silences_it) {
     ::setenv("GRANLUB_PROGRESS", "0", 1);
     const std::string out = stderr_of([] {
         Progress p("automaton U2.0", 10, 0ms);
+        BOOST_TEST(!p.due());
         p.update(5);
     });
     ::unsetenv("GRANLUB_PROGRESS");

@@ -15,6 +15,8 @@ public:
     ~Progress();  // clears a terminal's line
     // Cheap to call often: redraws a terminal's line at most ~5 times per second.
     void update(std::uint64_t done, const std::string& status = "");
+    // Whether an update now would print: lets a caller skip the work of counting progress.
+    bool due() const;
     static bool enabled();  // GRANLUB_PROGRESS != 0 (a terminal or a log)
 
 private:

@@ -97,6 +97,7 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
     Progress progress(fmt::format("yade {}", p.id), static_cast<std::uint64_t>(steps));
     const fs::path progress_file = dir / "progress";
     auto poll = [&] {
+        if (!progress.due()) return;  // the driver's file is read only when a line will be written
         std::ifstream in(progress_file);
         std::uint64_t done = 0, total = 0;
         if (in >> done >> total) progress.update(done, fmt::format("{} grains", init.particles.size()));

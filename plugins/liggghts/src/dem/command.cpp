@@ -241,9 +241,10 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     if (s.refine_dt) {
         r.summary.run["dt_refinement"] = dt_record;
         const std::string why = dt_unconverged_reason(dt_record);
-        if (!why.empty() && read_regime(r.summary.run).status == RegimeStatus::DtUnconverged)
+        const RegimeStatus status = read_regime(r.summary.run).status;
+        if (!why.empty() && status == RegimeStatus::DtUnconverged)
             set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
-        if (read_regime(r.summary.run).status == RegimeStatus::Transient)
+        if (status == RegimeStatus::Transient)
             r.line += " dt/2: no verdict (the run is not steady)";  // its stresses are not an answer to compare
         else
             r.line += why.empty() ? " dt/2: converged" : " dt/2: NOT CONVERGED (" + why + ")";

@@ -101,9 +101,8 @@ EngineRun run_engine(const fs::path& dir, const std::string& deck, int np, std::
     ProcessResult pr;
     {
         Progress progress(label, static_cast<std::uint64_t>(std::max<std::int64_t>(1, total_steps)));
-        const bool show = Progress::enabled();
         auto poll = [&] {
-            if (!show) return;
+            if (!progress.due()) return;  // the output file is read only when a line will be written
             const auto done = static_cast<std::int64_t>(count_lines(dir / progress_file)) * steps_per_line;
             progress.update(static_cast<std::uint64_t>(std::min(done, total_steps)), "LIGGGHTS");
         };
