@@ -7,6 +7,8 @@
 //   sawyer2001 / in.shear, ns per grain-step        (target <= 2.0)
 //   in.shear at granlub's step (0.02 d/U, 20x in.shear's): how much of that ratio the step explains
 //   sawyer2001 speed-up, 2 ranks vs 1 (loop time)   (target >= 1.8)
+// and, from LIGGGHTS' own statistics of each 1-rank run, where the loop goes: listed pairs per
+// grain, neighbour builds per 1000 steps, the pair loop per listed pair, one build per grain.
 // The deck is made by running `granlub dem` once on a copy of the case with a short run (same
 // time step as the default run); the warm-up is its servo loop cut to kWarmup steps, then one timed
 // run (sawyer_deck says why). Each configuration runs kRepeats times in interleaved rounds and the
@@ -48,16 +50,25 @@ double median(std::vector<double> v) {
 // Median over the repeats of one configuration (loop and CPU separately), and the spread of the loop time.
 struct Summary {
     double loop_ns = 0, cpu_ns = 0, loop_min = 0, loop_max = 0, loop_s = 0;
+    // where the loop time goes, from LIGGGHTS' own statistics (medians)
+    double neighbours = 0, builds_per_1000 = 0, pair_ns_per_pair = 0, neigh_ns_per_build = 0, pair_ns = 0, neigh_ns = 0;
 };
 Summary summarize(const std::vector<Measured>& runs) {
-    std::vector<double> loop, cpu, secs;
+    std::vector<double> loop, cpu, secs, nb, builds, pair_pp, neigh_pb, pair, neigh;
     for (const auto& m : runs) {
         loop.push_back(m.ns_per_grain_step());
         cpu.push_back(m.cpu_ns_per_grain_step());
         secs.push_back(m.loop_s);
+        nb.push_back(m.neighbours);
+        builds.push_back(1000.0 * m.builds / m.steps);
+        pair_pp.push_back(m.pair_ns_per_listed_pair());
+        neigh_pb.push_back(m.neigh_ns_per_grain_build());
+        pair.push_back(1e9 * m.pair_s / (m.atoms * m.steps));
+        neigh.push_back(1e9 * m.neigh_s / (m.atoms * m.steps));
     }
-    return {median(loop), median(cpu), *std::min_element(loop.begin(), loop.end()),
-            *std::max_element(loop.begin(), loop.end()), median(secs)};
+    return {median(loop),     median(cpu),      *std::min_element(loop.begin(), loop.end()),
+            *std::max_element(loop.begin(), loop.end()), median(secs), median(nb),
+            median(builds),   median(pair_pp),  median(neigh_pb), median(pair), median(neigh)};
 }
 
 // Writes <build>/bench/liggghts/sawyer2001/results/dem/U2.0/in.bench; returns its folder ("" on failure).
@@ -169,6 +180,16 @@ int main(int argc, char** argv) {
     for (const auto& [k, v] : r)
         std::printf("  %-10s %4.0f ns per grain-step (loop; runs %.0f-%.0f), %4.0f (CPU)\n", k.c_str(), v.loop_ns,
                     v.loop_min, v.loop_max, v.cpu_ns);
+    // One rank only: on two, LIGGGHTS' times are per rank while the neighbour count is global.
+    std::printf("  where the loop goes (1 rank, medians; LIGGGHTS' Pair and Neigh times, listed pairs of its half list):\n"
+                "  %-10s %8s %8s %14s %14s %12s %12s\n", "", "pairs/gr", "builds", "Pair ns/pair", "Neigh ns/gr",
+                "Pair ns/gs", "Neigh ns/gs");
+    for (const auto& [k, v] : r)
+        if (k.find("np2") == std::string::npos)
+            std::printf("  %-10s %8.2f %8.0f %14.1f %14.0f %12.0f %12.0f\n", k.c_str(), v.neighbours,
+                        v.builds_per_1000, v.pair_ns_per_pair, v.neigh_ns_per_build, v.pair_ns, v.neigh_ns);
+    std::printf("  (pairs/gr: listed pairs per grain; builds: neighbour-list builds per 1000 steps; Pair ns/pair: pair\n"
+                "  loop per listed pair and step; Neigh ns/gr: one build per grain; ns/gs: per grain-step)\n");
     if (has("sawyer") && has("shear"))
         std::printf("  sawyer2001 / in.shear: %.2f (loop), %.2f (CPU)   target <= 2.0\n",
                     r["sawyer"].loop_ns / r["shear"].loop_ns, r["sawyer"].cpu_ns / r["shear"].cpu_ns);

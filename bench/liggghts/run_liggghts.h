@@ -19,7 +19,15 @@ struct Measured {
     double steps = 0;       // timed steps
     double all_steps = 0;   // warm-up + timed
     double dt = 0;
+    // LIGGGHTS' own statistics of the timed run (its last "Loop time" block)
+    double pair_s = 0;        // "Pair time"
+    double neigh_s = 0;       // "Neigh time"
+    double neighbours = 0;    // "Ave neighs/atom": listed pairs per grain (a half list)
+    double builds = 0;        // "Neighbor list builds"
     double ns_per_grain_step() const { return 1e9 * loop_s / (atoms * steps); }
+    // the pair loop per listed pair and step; the neighbour build per grain and build
+    double pair_ns_per_listed_pair() const { return 1e9 * pair_s / (neighbours * atoms * steps); }
+    double neigh_ns_per_grain_build() const { return builds > 0 ? 1e9 * neigh_s / (atoms * builds) : 0; }
     double cpu_ns_per_grain_step() const { return 1e9 * cpu_s / (atoms * all_steps); }
 };
 
@@ -48,10 +56,23 @@ inline Measured run_liggghts(const std::string& dir, const std::string& deck, co
     Measured m;
     m.cpu_s = children_cpu() - cpu0;
     static const std::regex loop(R"(Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms)");
+    size_t last = std::string::npos;
     for (auto it = std::sregex_iterator(out.begin(), out.end(), loop); it != std::sregex_iterator(); ++it) {
         m.loop_s = std::stod((*it)[1].str());
         m.atoms = std::stod((*it)[3].str());
+        last = static_cast<size_t>(it->position(0));
     }
+    if (last == std::string::npos) return m;
+    // the statistics after the last loop time; a field LIGGGHTS did not print stays 0
+    const std::string tail = out.substr(last);
+    auto field = [&tail](const char* re) {
+        std::smatch hit;
+        return std::regex_search(tail, hit, std::regex(re)) ? std::stod(hit[1].str()) : 0.0;
+    };
+    m.pair_s = field(R"(Pair\s+time \(%\) = ([0-9.eE+-]+))");
+    m.neigh_s = field(R"(Neigh\s+time \(%\) = ([0-9.eE+-]+))");
+    m.neighbours = field(R"(Ave neighs/atom = ([0-9.eE+-]+))");
+    m.builds = field(R"(Neighbor list builds = (\d+))");
     return m;
 }
 
