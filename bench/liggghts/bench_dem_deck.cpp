@@ -50,25 +50,32 @@ double median(std::vector<double> v) {
 // Median over the repeats of one configuration (loop and CPU separately), and the spread of the loop time.
 struct Summary {
     double loop_ns = 0, cpu_ns = 0, loop_min = 0, loop_max = 0, loop_s = 0;
+    int ranks = 1;
     // where the loop time goes, from LIGGGHTS' own statistics (medians)
     double neighbours = 0, builds_per_1000 = 0, pair_ns_per_pair = 0, neigh_ns_per_build = 0, pair_ns = 0, neigh_ns = 0;
 };
 Summary summarize(const std::vector<Measured>& runs) {
-    std::vector<double> loop, cpu, secs, nb, builds, pair_pp, neigh_pb, pair, neigh;
-    for (const auto& m : runs) {
-        loop.push_back(m.ns_per_grain_step());
-        cpu.push_back(m.cpu_ns_per_grain_step());
-        secs.push_back(m.loop_s);
-        nb.push_back(m.neighbours);
-        builds.push_back(1000.0 * m.builds / m.steps);
-        pair_pp.push_back(m.pair_ns_per_listed_pair());
-        neigh_pb.push_back(m.neigh_ns_per_grain_build());
-        pair.push_back(1e9 * m.pair_s / (m.atoms * m.steps));
-        neigh.push_back(1e9 * m.neigh_s / (m.atoms * m.steps));
-    }
-    return {median(loop),     median(cpu),      *std::min_element(loop.begin(), loop.end()),
-            *std::max_element(loop.begin(), loop.end()), median(secs), median(nb),
-            median(builds),   median(pair_pp),  median(neigh_pb), median(pair), median(neigh)};
+    auto med = [&runs](auto of) {
+        std::vector<double> v;
+        for (const auto& m : runs) v.push_back(of(m));
+        return median(v);
+    };
+    std::vector<double> loop;
+    for (const auto& m : runs) loop.push_back(m.ns_per_grain_step());
+    Summary r;
+    r.loop_ns = median(loop);
+    r.loop_min = *std::min_element(loop.begin(), loop.end());
+    r.loop_max = *std::max_element(loop.begin(), loop.end());
+    r.cpu_ns = med([](const Measured& m) { return m.cpu_ns_per_grain_step(); });
+    r.loop_s = med([](const Measured& m) { return m.loop_s; });
+    r.ranks = runs.front().ranks;
+    r.neighbours = med([](const Measured& m) { return m.neighbours; });
+    r.builds_per_1000 = med([](const Measured& m) { return m.builds_per_1000_steps(); });
+    r.pair_ns_per_pair = med([](const Measured& m) { return m.pair_ns_per_listed_pair(); });
+    r.neigh_ns_per_build = med([](const Measured& m) { return m.neigh_ns_per_grain_build(); });
+    r.pair_ns = med([](const Measured& m) { return m.pair_ns_per_grain_step(); });
+    r.neigh_ns = med([](const Measured& m) { return m.neigh_ns_per_grain_step(); });
+    return r;
 }
 
 // Writes <build>/bench/liggghts/sawyer2001/results/dem/U2.0/in.bench; returns its folder ("" on failure).
@@ -180,12 +187,12 @@ int main(int argc, char** argv) {
     for (const auto& [k, v] : r)
         std::printf("  %-10s %4.0f ns per grain-step (loop; runs %.0f-%.0f), %4.0f (CPU)\n", k.c_str(), v.loop_ns,
                     v.loop_min, v.loop_max, v.cpu_ns);
-    // One rank only: on two, LIGGGHTS' times are per rank while the neighbour count is global.
+    // One rank only: on several, LIGGGHTS' times are per rank while its counts are global.
     std::printf("  where the loop goes (1 rank, medians; LIGGGHTS' Pair and Neigh times, listed pairs of its half list):\n"
                 "  %-10s %8s %8s %14s %14s %12s %12s\n", "", "pairs/gr", "builds", "Pair ns/pair", "Neigh ns/gr",
                 "Pair ns/gs", "Neigh ns/gs");
     for (const auto& [k, v] : r)
-        if (k.find("np2") == std::string::npos)
+        if (v.ranks == 1)
             std::printf("  %-10s %8.2f %8.0f %14.1f %14.0f %12.0f %12.0f\n", k.c_str(), v.neighbours,
                         v.builds_per_1000, v.pair_ns_per_pair, v.neigh_ns_per_build, v.pair_ns, v.neigh_ns);
     std::printf("  (pairs/gr: listed pairs per grain; builds: neighbour-list builds per 1000 steps; Pair ns/pair: pair\n"

@@ -19,15 +19,20 @@ struct Measured {
     double steps = 0;       // timed steps
     double all_steps = 0;   // warm-up + timed
     double dt = 0;
+    int ranks = 1;
     // LIGGGHTS' own statistics of the timed run (its last "Loop time" block)
     double pair_s = 0;        // "Pair time"
     double neigh_s = 0;       // "Neigh time"
     double neighbours = 0;    // "Ave neighs/atom": listed pairs per grain (a half list)
     double builds = 0;        // "Neighbor list builds"
     double ns_per_grain_step() const { return 1e9 * loop_s / (atoms * steps); }
-    // the pair loop per listed pair and step; the neighbour build per grain and build
-    double pair_ns_per_listed_pair() const { return 1e9 * pair_s / (neighbours * atoms * steps); }
+    // Pair and Neigh per grain-step; the pair loop per listed pair and step; the neighbour build
+    // per grain and build (on several ranks LIGGGHTS' times are per rank, its counts global)
+    double pair_ns_per_grain_step() const { return 1e9 * pair_s / (atoms * steps); }
+    double neigh_ns_per_grain_step() const { return 1e9 * neigh_s / (atoms * steps); }
+    double pair_ns_per_listed_pair() const { return pair_ns_per_grain_step() / neighbours; }
     double neigh_ns_per_grain_build() const { return builds > 0 ? 1e9 * neigh_s / (atoms * builds) : 0; }
+    double builds_per_1000_steps() const { return 1000.0 * builds / steps; }
     double cpu_ns_per_grain_step() const { return 1e9 * cpu_s / (atoms * all_steps); }
 };
 
@@ -54,6 +59,7 @@ inline Measured run_liggghts(const std::string& dir, const std::string& deck, co
     while (p && std::fgets(buf.data(), buf.size(), p)) out += buf.data();
     if (p) ::pclose(p);
     Measured m;
+    m.ranks = np;
     m.cpu_s = children_cpu() - cpu0;
     static const std::regex loop(R"(Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms)");
     size_t last = std::string::npos;

@@ -32,14 +32,19 @@ Progress::~Progress() {
     if (on_ && terminal_) fmt::print(stderr, "\r\033[K");
 }
 
+std::chrono::milliseconds Progress::interval() const {
+    return terminal_ ? kRedraw : log_every_;
+}
+
 bool Progress::due() const {
-    return on_ && std::chrono::steady_clock::now() - last_ >= (terminal_ ? kRedraw : log_every_);
+    return on_ && std::chrono::steady_clock::now() - last_ >= interval();
 }
 
 void Progress::update(std::uint64_t done, const std::string& status) {
     if (!on_) return;
     const auto now = std::chrono::steady_clock::now();
-    if (terminal_ ? now - last_ < kRedraw && done < total_ : now - last_ < log_every_) return;
+    // a terminal's line also shows the end; a log's lines keep their interval
+    if (now - last_ < interval() && !(terminal_ && done >= total_)) return;
     last_ = now;
     const double el = std::chrono::duration<double>(now - start_).count();
     const double frac = total_ ? static_cast<double>(done) / static_cast<double>(total_) : 0.0;

@@ -20,6 +20,7 @@ public:
     static bool enabled();  // GRANLUB_PROGRESS != 0 (a terminal or a log)
 
 private:
+    std::chrono::milliseconds interval() const;  // between a terminal's redraws or a log's lines
     std::string label_;
     std::uint64_t total_;
     bool on_;
