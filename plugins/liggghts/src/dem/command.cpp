@@ -8,11 +8,10 @@
 #include <fmt/format.h>
 
 #include "deck.h"
-#include "diagnostics.h"
 #include "engine.h"
 #include "granlub/annulus.h"
-#include "granlub/coarse_grain.h"
 #include "granlub/error.h"
+#include "granlub/particle_pipeline.h"
 #include "granlub/particles.h"
 #include "granlub/regime.h"
 #include "granlub/results.h"
@@ -54,27 +53,6 @@ void write_final_state(const Case& c, const OperatingPoint& p, const Settings& s
     fs::remove(dir / kFinalPlateFile);
 }
 
-// The profile across the width over the steady snapshots (cross_section.h); the ring's also with
-// the radius each slice-frame z stands for (granlub/annulus.h).
-std::string width_profile_csv(const CrossSection& xs, const DemOutputs& out, double U, const Settings& s,
-                              const std::string& what) {
-    const std::size_t first =
-        out.run.at("snapshots").get<std::size_t>() - out.run.at("snapshots_used").get<std::size_t>();
-    Profile t = xs.width_profile(U, first, s.blocks);
-    std::string frame = "z across the width, z/W = -1/2 the outer wall (where the centripetal force pushes)";
-    if (s.ring) {
-        const auto& z = t.column("z_over_W");
-        std::vector<double> r(z.size());
-        const double R = s.annulus.R, W = s.annulus.W;
-        for (std::size_t i = 0; i < z.size(); ++i) r[i] = (std::sqrt(R * R + 0.25 * W * W - 2.0 * R * z[i] * W) - R) / W;
-        t.add("r_minus_R_over_W", std::move(r));
-        frame = "the whole ring in the slice frame: z/W = -1/2 the outer cylinder, equal-area bands, "
-                "r_minus_R_over_W the radius of each band's centre";
-    }
-    return profile_csv(t, {what, "solid fraction and u/U across the width, over the gap (the mean plate gap under "
-                                 "load) and the snapshots of the steady window; " + frame});
-}
-
 // One engine run of the point in `dir` with settings s: data file, deck, LIGGGHTS, outputs and
 // the flow-regime evidence.
 struct OneRun {
@@ -101,68 +79,42 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     OneRun r;
     r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
 
+    // LIGGGHTS' files into the shared series; the rest is the one particle pipeline
+    ParticleRecord rec;
     const WallSeries recorded = read_wall_series(dir / kWallFile);
-    std::optional<RingWallLoads> ring_loads;
-    if (s.ring) ring_loads = ring_wall_loads(recorded, dir / kWallFile);
-    const WallForceSeries walls = s.ring ? ring_wall_forces(*ring_loads, s.annulus) : wall_forces(recorded);
-    const WallStresses stresses = wall_stresses(walls, s.box);
-    std::optional<PlateSeries> plate;
-    if (s.load) {
-        plate = read_plate_series(dir / kPlateFile);
-        const std::string what = fmt::format("case {} point {} ({})", c.name, p.id, prov);
-        write_file_atomic(dir / kGapFile, gap_csv(s, s.time_step, walls.step, stresses.normal_top, *plate, what));
-    }
-    const SteadyWindow window = wall_steady_window(stresses, walls, s.sample_every, s.time_step,
-                                                   plate ? &*plate : nullptr, s.servo_every);
-    // profile slabs span the gap: the case's H, or the mean plate position under load control
-    const double gap = plate ? mean_gap(*plate, window, s.blocks).mean : c.cell.gap;
-    SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
-    CoordinationSeries z(s.contact_box, window.t_start);
-    CrossSection xs = CrossSection::for_grains(d_g, gap, s.box.width, s.box.length);
-    ParticleSet mapped;  // the ring's grains in the slice frame (granlub/annulus.h)
-    const std::size_t snapshots = for_each_snapshot(dir / kSnapshots, [&](const ParticleSet& g, double step) {
-        const double t = step * s.time_step;
-        if (s.ring) to_slice(g, s.annulus, mapped);
-        const ParticleSet& sg = s.ring ? mapped : g;
-        cg.add_snapshot(sg, t);
-        xs.add_snapshot(sg, t);
-        z.add(g, t);  // contacts in the engine's own frame
-    });
-    if (snapshots < 2)
-        throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", (dir / kSnapshots).string()));
-    fs::remove(dir / kSnapshots);  // large; the deck regenerates it
-
+    if (s.ring)
+        rec.ring = ring_wall_loads(recorded, dir / kWallFile);
+    else
+        rec.forces = wall_forces(recorded);
+    if (s.load) rec.plate = read_plate_series(dir / kPlateFile);
+    auto dump = [&](const char* file) {
+        return SnapshotReader{(dir / file).string(), [&, file](const SnapshotVisitor& each) {
+                                  return for_each_snapshot(dir / file, [&](const ParticleSet& g, double step) {
+                                      each(g, step * s.time_step);
+                                  });
+                              }};
+    };
+    rec.snapshots = dump(kSnapshots);
+    rec.persistence = dump(kContactsFile);
+    ParticlePipeline pl{.c = c,
+                        .p = p,
+                        .box = s.box,
+                        .servo = s,
+                        .time_step = s.time_step,
+                        .sample_every = s.sample_every,
+                        .stations = s.stations,
+                        .blocks = s.blocks,
+                        .grains = init.particles.size(),
+                        .simulated_s = static_cast<double>(s.steps) * s.time_step,
+                        .plate_start = s.plate_start,
+                        .annulus = s.ring ? &s.annulus : nullptr,
+                        .contact_box = s.contact_box,
+                        .persistence_every = s.persistence_every,
+                        .what = fmt::format("case {} point {} ({})", c.name, p.id, prov)};
+    r.out = run_particle_pipeline(pl, rec, dir);
+    r.out.run["flow_regime"]["persistence_extra_steps"] = s.persistence_run_steps();
+    for (const char* f : {kSnapshots, kContactsFile}) fs::remove(dir / f);  // large; the deck regenerates them
     if (s.vtk) write_pvd(dir, s.time_step);
-
-    r.out = reduce_particles({.c = c,
-                              .speed = p.speed,
-                              .box = s.box,
-                              .forces = walls,
-                              .stresses = stresses,
-                              .cg = cg,
-                              .window = window,
-                              .plate = plate ? &*plate : nullptr,
-                              .servo = s,
-                              .blocks = s.blocks,
-                              .grains = init.particles.size(),
-                              .simulated_s = static_cast<double>(s.steps) * s.time_step,
-                              .section = &xs,
-                              .plate_start = s.plate_start});
-    write_file_atomic(dir / kSectionFile,
-                      profile_csv(r.out.section,
-                                  {fmt::format("case {} point {} ({})", c.name, p.id, prov),
-                                   "solid fraction and u/U over the cross-section: y across the gap (0 = moving floor), "
-                                   "z across the width (z/W = -1/2: the outer wall, where the centripetal force pushes), "
-                                   "averaged along the flow and over the snapshots of the steady window"}));
-    write_file_atomic(dir / kWidthProfileFile, width_profile_csv(xs, r.out, p.speed, s,
-                                                                 fmt::format("case {} point {} ({})", c.name, p.id, prov)));
-    if (s.ring) {  // the torques about the axis: nothing else turns the grains
-        const BlockEstimate e = ring_torque_balance(*ring_loads, window.wall_start, s.blocks);
-        r.out.outputs["torque_balance"] = Scalar{e.mean, e.stderr_, ""};
-        r.out.run["geometry"] = "annulus";
-    }
-    r.out.run["flow_regime"] = flow_regime_record(c, p, s, r.out, cg, z, dir / kContactsFile);
-    fs::remove(dir / kContactsFile);
     write_final_state(c, p, s, dir, prov);
     return r;
 }
