@@ -49,8 +49,7 @@ nlohmann::json load_summary(const LoadSummaryInputs& in, std::map<std::string, S
     const ServoSettings& s = in.servo;
     const PlateSeries& plate = in.plate;
     const BlockEstimate g = mean_gap(plate, in.window, in.blocks);
-    const double vg = std::numbers::pi / 6.0 * std::pow(in.grain_diameter, 3);
-    const double nu = static_cast<double>(in.grains) * vg / (in.area * g.mean);
+    const double nu = in.solids_volume / (in.area * g.mean);
     outputs["gap"] = Scalar{g.mean, g.stderr_, "m"};
     outputs["mean_solid_fraction"] = Scalar{nu, nu * g.stderr_ / g.mean, ""};
     const Scalar& top = outputs.at("normal_stress_top");

@@ -12,6 +12,7 @@
 #include "granlub/cross_section.h"
 #include "granlub/error.h"
 #include "granlub/flow_regime.h"
+#include "granlub/packing_order.h"
 
 namespace granlub {
 
@@ -114,6 +115,30 @@ nlohmann::json flow_regime_record(const ParticlePipeline& in, const ParticleReco
     return j;
 }
 
+// run.order and the outputs "layering" and "q6" (packing_order.h): layering from the profile,
+// q6 over the steady snapshots when their positions are recorded.
+nlohmann::json order_record(const ParticlePipeline& in, ParticleReduction& out, double gap,
+                            const std::optional<OrderSeries>& order) {
+    nlohmann::json j = {{"neighbour_cutoff", kOrderNeighbourCutoff}, {"min_neighbours", kOrderMinNeighbours}};
+    const std::optional<double> layering = layering_amplitude(out.profile, gap, in.c.grains.diameter);
+    j["layering"] = layering ? nlohmann::json(*layering) : nlohmann::json();
+    if (layering) out.outputs["layering"] = Scalar{*layering, std::nullopt, ""};
+    if (!order || order->q6().empty()) {
+        j["q6"] = j["Q6"] = nullptr;
+        j["q6_not_measured"] = order ? "no steady snapshot" : "the snapshots hold no positions along the flow";
+        return j;
+    }
+    const BlockEstimate q6 = block_average(order->q6(), in.blocks), Q6 = block_average(order->Q6(), in.blocks);
+    out.outputs["q6"] = Scalar{q6.mean, q6.stderr_, ""};
+    j.update(nlohmann::json{{"q6", q6.mean},
+                            {"q6_stderr", q6.stderr_},
+                            {"Q6", Q6.mean},
+                            {"Q6_stderr", Q6.stderr_},
+                            {"mean_neighbours", order->mean_neighbours()},
+                            {"snapshots", order->q6().size()}});
+    return j;
+}
+
 }  // namespace
 
 ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const ParticleRecord& rec, const fs::path& dir) {
@@ -131,14 +156,17 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
     SliceCoarseGrainer cg({0.0, gap, in.stations}, in.box.length * in.box.width);
     CrossSection xs = CrossSection::for_grains(in.c.grains.diameter, gap, in.box.width, in.box.length);
     std::optional<ContactSeries> contacts;
-    if (in.contact_box) contacts.emplace(*in.contact_box, window.t_start);
+    std::optional<OrderSeries> order;
+    if (in.contact_box) contacts.emplace(*in.contact_box, window.t_start), order.emplace(*in.contact_box, window.t_start);
     ParticleSet mapped;  // the ring's grains in the slice frame (annulus.h)
+    double solids = 0;   // the grains' volume, from their radii as the engine ran them
     rec.snapshots.read([&](const ParticleSet& g, double t) {
+        if (cg.snapshots() == 0) solids = solids_volume(g);
         if (in.annulus) to_slice(g, *in.annulus, mapped);
         const ParticleSet& sg = in.annulus ? mapped : g;
         cg.add_snapshot(sg, t);
         xs.add_snapshot(sg, t);
-        if (contacts) contacts->add(g, t);  // contacts in the engine's own frame
+        if (contacts) contacts->add(g, t), order->add(g, t);  // in the engine's own frame
     });
     if (cg.snapshots() < 2) throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", rec.snapshots.name));
 
@@ -153,6 +181,7 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
                                               .servo = in.servo,
                                               .blocks = in.blocks,
                                               .grains = in.grains,
+                                              .solids_volume = solids,
                                               .simulated_s = in.simulated_s,
                                               .section = &xs,
                                               .plate_start = in.plate_start});
@@ -169,6 +198,14 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
         out.run["geometry"] = "annulus";
     }
     out.run["flow_regime"] = flow_regime_record(in, rec, out, gap, contacts);
+    out.run["order"] = order_record(in, out, gap, order);
+    // what the walls were, and where the slip is taken: at the wall's plane (through the bumps'
+    // centres on a rough wall), from the slab of stations next to it
+    const std::optional<BumpLayer> none;
+    out.run["walls"] = {{"bottom", walls_json(in.bumps_bottom ? *in.bumps_bottom : none)},
+                        {"top", walls_json(in.bumps_top ? *in.bumps_top : none)},
+                        {"slip_measured", "wall speed minus the mean velocity of the station next to the wall's "
+                                          "plane (through the bumps' centres on a rough wall)"}};
     return out;
 }
 

@@ -97,7 +97,7 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
                                               .window = win,
                                               .blocks = in.blocks,
                                               .grains = in.grains,
-                                              .grain_diameter = in.c.grains.diameter,
+                                              .solids_volume = in.solids_volume,
                                               .area = in.box.length * in.box.width},
                                              o.outputs, load_line);
 

@@ -22,6 +22,7 @@ void add_servo_keys(SectionSpec& s) {
 ServoSettings resolve_servo(const Case& c, const OperatingPoint& p, const Section& s, std::int64_t sample_every,
                             double time_step, std::int64_t& steps) {
     ServoSettings v;
+    v.plate_start = c.cell.gap;
     if (p.control != Control::Load) {
         v.insert_fill = p.solid_fraction;
         v.insert_fill_key = "[operating] solid_fraction";
@@ -52,6 +53,7 @@ ServoSettings resolve_servo(const Case& c, const OperatingPoint& p, const Sectio
                                                            s.is_default("fill_for_load") ? " (default)" : "");
     // the plate cannot go below the closest packing of the inserted grains
     v.gap_min = v.insert_fill * c.cell.gap / kClosestPacking;
+    if (c.cell.ring() || !c.grains.sizes().equal()) v.plate_start = v.gap_max;
     return v;
 }
 
@@ -63,6 +65,7 @@ nlohmann::json ServoSettings::to_json() const {
             {"servo_max_error", servo_max_error},
             {"gap_min_m", gap_min},
             {"gap_max_m", gap_max},
+            {"plate_start_m", plate_start},
             {"insert_fill", insert_fill}};
 }
 

@@ -49,6 +49,21 @@ std::optional<double> Run::scalar(const std::string& name) const {
     return it == summary->outputs.end() ? std::nullopt : std::optional(it->second.value);
 }
 
+std::string Run::wall_surface(bool bottom) const {
+    if (!usable()) return "";
+    const auto& run = summary->run;
+    const char* side = bottom ? "bottom" : "top";
+    if (!run.is_object() || !run.contains("walls") || !run["walls"].contains(side)) return "";
+    return run["walls"][side].value("surface", std::string());
+}
+
+std::optional<double> Run::wall_roughness(bool bottom) const {
+    const std::string surface = wall_surface(bottom);
+    if (surface == "plane") return std::nullopt;
+    if (surface == "bumps") return summary->run["walls"][bottom ? "bottom" : "top"].value("roughness_built", 0.0);
+    return bottom ? point->bottom.roughness : point->top.roughness;
+}
+
 std::optional<double> Run::scalar_stderr(const std::string& name) const {
     if (!usable()) return std::nullopt;
     auto se = [&](const std::string& n) -> std::optional<double> {

@@ -50,6 +50,12 @@ struct Run {
     // A summary output; "nu_bar_over_numax" and "slip_bottom_over_U"/"slip_top_over_U" derived.
     std::optional<double> scalar(const std::string& name) const;
     std::optional<double> scalar_stderr(const std::string& name) const;
+    // The roughness of the wall this run's solver had (core wall_bumps.h): the R its bumps built
+    // (run.walls.<side>), nothing for a particle solver's plane (a frictional plane has no R), else
+    // the point's R (the continuum's and the automaton's walls are R itself).
+    std::optional<double> wall_roughness(bool bottom) const;
+    // run.walls.<side>.surface of a particle solver ("plane", "bumps"); "" for the others.
+    std::string wall_surface(bool bottom) const;
 };
 
 struct Collection {

@@ -24,6 +24,7 @@
 #include "granlub/particle_reduction.h"
 #include "granlub/particles.h"
 #include "granlub/servo.h"
+#include "granlub/wall_bumps.h"
 
 namespace granlub {
 
@@ -62,12 +63,15 @@ struct ParticlePipeline {
     // snapshots do not hold the positions a search needs
     std::optional<ParticleBox> contact_box = {};
     std::int64_t persistence_every = 0;  // steps between the persistence snapshots
+    const std::optional<BumpLayer>* bumps_bottom = nullptr;  // rough walls (wall_bumps.h), for run.walls
+    const std::optional<BumpLayer>* bumps_top = nullptr;
     std::string what;                    // the first comment of every table: case, point, provenance
 };
 
 // Runs the pipeline on the files in `dir`, writes gap.csv (under load), section.csv and
 // width_profile.csv there, and returns the point's profile, outputs and run facts (with
-// run.flow_regime, and for the ring run.geometry and the torque balance). Throws SolverError.
+// run.flow_regime, run.order, run.walls, and for the ring run.geometry and the torque balance).
+// Throws SolverError.
 ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const ParticleRecord& rec,
                                         const std::filesystem::path& dir);
 

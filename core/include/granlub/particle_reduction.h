@@ -62,6 +62,7 @@ struct ParticleReductionInputs {
     const ServoSettings& servo;
     std::size_t blocks;
     std::size_t grains;
+    double solids_volume;              // m^3, the grains' volume (particles.h, solids_volume)
     double simulated_s;                // the run's simulated time (for the transient message)
     const CrossSection* section = nullptr;  // the same snapshots over y x z, when recorded
     double plate_start = 0;            // m, where the plate started (0: box.gap)

@@ -59,7 +59,7 @@ json read_json(const fs::path& file, const std::string& what) {
 // Streams samples.bin, one snapshot at a time (no whole-run buffer), to `each` with its time.
 std::size_t read_samples(const fs::path& file, std::size_t n, std::size_t snapshots, double snapshot_dt,
                          const std::vector<double>& radius, const ParticleBox& box, const SnapshotVisitor& each) {
-    constexpr std::size_t kCols = 5;  // y, z, vx, vy, vz
+    constexpr std::size_t kCols = 6;  // x, y, z, vx, vy, vz
     std::ifstream in(file, std::ios::binary);
     if (!in) throw SolverError(fmt::format("{}: missing (the YADE run wrote no snapshots)", file.string()));
     const auto bytes = fs::file_size(file);
@@ -68,14 +68,14 @@ std::size_t read_samples(const fs::path& file, std::size_t n, std::size_t snapsh
                                       bytes, snapshots, n, kCols));
     std::vector<double> buf(n * kCols);
     ParticleSet p;
-    p.x.assign(n, 0.0), p.y.resize(n), p.z.assign(n, 0.0), p.vx.resize(n), p.vy.resize(n), p.vz.resize(n);
+    p.x.resize(n), p.y.resize(n), p.z.resize(n), p.vx.resize(n), p.vy.resize(n), p.vz.resize(n);
     p.radius = radius;
     for (std::size_t s = 0; s < snapshots; ++s) {
         in.read(reinterpret_cast<char*>(buf.data()), static_cast<std::streamsize>(buf.size() * sizeof(double)));
         if (!in) throw SolverError(fmt::format("{}: short read at snapshot {}", file.string(), s));
         for (std::size_t i = 0; i < n; ++i) {
             const double* r = &buf[i * kCols];  // little-endian doubles, as on every supported host
-            p.y[i] = r[0], p.z[i] = r[1], p.vx[i] = r[2], p.vy[i] = r[3], p.vz[i] = r[4];
+            p.x[i] = r[0], p.y[i] = r[1], p.z[i] = r[2], p.vx[i] = r[3], p.vy[i] = r[4], p.vz[i] = r[5];
             if (box.periodic_z)  // YADE does not wrap positions into the periodic cell
                 p.z[i] -= box.width * std::floor((p.z[i] + 0.5 * box.width) / box.width);
         }
@@ -126,6 +126,9 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
                               .blocks = static_cast<std::size_t>(s.blocks),
                               .grains = n,
                               .simulated_s = ds.at("simulated_time").get<double>(),
+                              .contact_box = box,  // coordination and order; no persistence snapshots
+                              .bumps_bottom = &s.bumps_bottom,
+                              .bumps_top = &s.bumps_top,
                               .what = fmt::format("case {} point {} (granlub yade)", c.name, p.id)};
     ParticleReduction red = run_particle_pipeline(pl, rec, dir);
     Summary sum = std::move(base);

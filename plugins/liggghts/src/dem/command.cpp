@@ -27,12 +27,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// How solve() inserts the grains (the ring: below the plate's start, clear of the facets).
-InsertionOptions insertion(const Settings& s) {
+// How solve() inserts the grains: below the plate's start (servo.h); the ring's clear of the facets.
+InsertionOptions insertion(const Case& c, const Settings& s) {
     InsertionOptions ins;
     ins.seed = s.seed;
     ins.velocity_noise = s.velocity_noise;
-    if (s.ring) ins.height = s.plate_start, ins.wall_sag = s.wall_sag;
+    if (s.ring || s.plate_start != c.cell.gap) ins.height = s.plate_start;
+    if (s.ring) ins.wall_sag = s.wall_sag;
     return ins;
 }
 
@@ -64,9 +65,12 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
                 const fs::path& dir, const std::string& prov) {
     const double d_g = c.grains.diameter;
     // load control: room above H for the plate to rise
-    const DataBounds bounds = s.ring ? ring_bounds(s, d_g) : slice_bounds(s.box, s.box_top());
+    const DataBounds bounds = s.ring ? ring_bounds(s, d_g) : bump_bounds(slice_bounds(s.box, s.box_top()), s);
+    std::vector<BumpAtoms> bumps;
+    if (s.bumps_bottom) bumps.push_back({*s.bumps_bottom, kBottom, 0.0, p.speed});
+    if (s.bumps_top) bumps.push_back({*s.bumps_top, kTop, s.plate_start, 0.0});
     write_file_atomic(dir / kData, data_file(init.particles, bounds, c.grains.density,
-                                             fmt::format("case {} point {} ({})", c.name, p.id, prov)));
+                                             fmt::format("case {} point {} ({})", c.name, p.id, prov), bumps));
     if (s.ring) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facets);
     write_file_atomic(dir / kDeck, s.ring ? ring_deck(c, p, s, init.particles.size(), prov)
                                           : deck(c, p, s, init.particles.size(), prov));
@@ -110,6 +114,8 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
                         .annulus = s.ring ? &s.annulus : nullptr,
                         .contact_box = s.contact_box,
                         .persistence_every = s.persistence_every,
+                        .bumps_bottom = &s.bumps_bottom,
+                        .bumps_top = &s.bumps_top,
                         .what = fmt::format("case {} point {} ({})", c.name, p.id, prov)};
     r.out = run_particle_pipeline(pl, rec, dir);
     r.out.run["flow_regime"]["persistence_extra_steps"] = s.persistence_run_steps();
@@ -153,7 +159,7 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     const Settings s = resolve(c, p, o);
     p.solid_fraction = s.insert_fill;
 
-    const InsertionOptions ins = insertion(s);
+    const InsertionOptions ins = insertion(c, s);
     const InitialParticles init = initial_particles(c, p, results_root(c, o), ins, s.box.width, s.insert_fill_key);
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
@@ -211,7 +217,7 @@ void check(const Case& c, const RunOptions& o) {
         OperatingPoint p = p0;
         const Settings s = resolve(c, p, v);
         p.solid_fraction = s.insert_fill;  // as solve() inserts it
-        check_initial_particles(c, p, s.box.width, s.insert_fill_key, insertion(s));  // as solve() inserts
+        check_initial_particles(c, p, s.box.width, s.insert_fill_key, insertion(c, s));  // as solve() inserts
     });
 }
 

@@ -26,7 +26,7 @@ SectionSpec section() {
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");
     s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
-           "impulse model: diameters travelled per step at the larger of U, sqrt(2 g H) and, under load "
+           "impulse model: diameters of the smallest grain travelled per step at the larger of U, sqrt(2 g H) and, under load "
            "control, sqrt(12 P / (pi rho)) (the load's push on one grain over one diameter)");
     s.real("hertz_step_fraction", kHertzStepFraction, Range::open_closed(0, kHertzMaxStepFraction), "",
            "hertz model: time step as a fraction of the Rayleigh time");

@@ -2,6 +2,7 @@
 // time step derived from the case and checked.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "granlub/case.h"
 #include "granlub/particles.h"
 #include "granlub/servo.h"
+#include "granlub/wall_bumps.h"
 #include "granlub/sweep.h"
 
 namespace granlub::dem {
@@ -59,12 +61,17 @@ struct Settings : ServoSettings {
     Annulus annulus;
     std::size_t ring_facets = 0;  // facets per circle of the ring's meshes
     double wall_sag = 0;          // m: how far the outer wall's facets lie inside its circle at most
-    double plate_start = 0;       // m: the top's starting height (H; the ring under load: gap_max)
     ParticleBox contact_box;      // what core's contact search (contacts.h) is given for the grains
     double plate_overlap = 0;     // m, Hertz grain-plate overlap under the load's share of one grain
     double plate_gain = 0;        // the servo gain the deck uses, diameters per unit relative error
 
     double box_top() const { return load ? gap_max : box.gap; }
+    // rough walls ([walls] surface = "bumps", core wall_bumps.h): atoms of the wall's type that the
+    // deck does not integrate; the floor's move with it, the top's with the plate
+    std::optional<BumpLayer> bumps_bottom, bumps_top;
+    bool bumps() const { return bumps_bottom || bumps_top; }
+    // the group of the integrated grains: "all" without bumps (the deck as it always was)
+    std::string grains_group() const { return bumps() ? "grains" : "all"; }
 
     nlohmann::json to_json() const;
 };
