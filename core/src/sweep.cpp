@@ -77,6 +77,7 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
             // its new deck and logs, so the next run recomputes instead of skipping.
             std::filesystem::create_directories(dir);
             std::filesystem::remove(dir / "summary.json");
+            remove_point_tables(dir);  // only this run's tables may stand beside its summary
             PointResult r = solve(*p, dir);
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             if (!r.summary.run.contains("wall_clock_s")) r.summary.run["wall_clock_s"] = secs;

@@ -10,6 +10,7 @@
 
 #include "granlub/error.h"
 #include "granlub/progress.h"
+#include "granlub/run_id.h"
 #include "granlub/yade/driver.h"
 #include "granlub/yade/reduce.h"
 #include "granlub/yade/settings.h"
@@ -73,7 +74,8 @@ InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingP
     init.file = dir / "warm_start.csv";
     fs::create_directories(dir);
     fs::copy_file(from, init.file, fs::copy_options::overwrite_existing);
-    record = {{"from", from.string()}, {"time_s", st.time}, {"gap_m", st.gap}, {"grains", st.particles.size()}};
+    record = {{"from", from.string()}, {"time_s", st.time}, {"gap_m", st.gap}, {"grains", st.particles.size()},
+              {"dem_run_id", read_table_run_id(from).value_or("")}};  // which dem run it started from
     init.particles = std::move(st.particles);
     return init;
 }
