@@ -140,6 +140,9 @@ void check(const Case& c, const RunOptions& o) {
 int run(const Case& c, const RunOptions& o) {
     // each point is one single-threaded YADE process (-j1): as many side by side as cores allow
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
+    // a warm start reads dem's final states: dem's results stay locked (shared) while yade runs, so
+    // that no dem run replaces them half-way through the sweep (granlub/run_lock.h)
+    const bool warm = c.section("yade").string("start") == "warm";
     return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {
             return solve_point(c, o, p, dir);
@@ -150,7 +153,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    }, at_once);
+    }, at_once, warm ? std::vector<std::string>{"dem"} : std::vector<std::string>{});
 }
 
 }  // namespace granlub::yade
