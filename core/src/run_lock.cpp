@@ -114,13 +114,68 @@ ResultsLock::ResultsLock(std::vector<LockRequest> locks, bool wait) {
     }
 }
 
+namespace {
+
+// The lock file's descriptor, O_CLOEXEC: an engine exec'd while the lock is held must not keep it
+// alive after granlub. `can_record`: open for writing (another user's file is opened read-only,
+// which flock accepts, and its holder line is left as it is).
+int open_lock_file(const LockRequest& r, bool& can_record) {
+    const auto file = lock_file(r.results_root, r.name);
+    std::error_code ec;
+    std::filesystem::create_directories(file.parent_path(), ec);
+    int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    can_record = fd >= 0;
+    if (fd < 0 && errno == EACCES) fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        const int e = errno;
+        throw Error(fmt::format("{}: cannot open the lock file: {} (granlub locks {} while a run uses them)",
+                                file.string(), std::strerror(e), guarded(r)));
+    }
+    return fd;
+}
+
+// Locks fd in mode `op`: at once when free; else waits, saying for whom, or (no `wait`) throws
+// ResultsInUse. False when the file system cannot lock (warned once): the run goes on unlocked.
+bool lock_or_wait(int fd, int op, const LockRequest& r, bool wait) {
+    const auto file = lock_file(r.results_root, r.name).string();
+    if (flock_retrying(fd, op | LOCK_NB) == 0) return true;
+    const int e = errno;
+    if (unsupported(e)) {
+        static std::atomic<bool> warned{false};
+        if (!warned.exchange(true))
+            fmt::print(stderr,
+                       "granlub: warning: {}: this file system cannot lock files ({}); running without a lock: do "
+                       "not start another run on these results until this one ends\n",
+                       file, std::strerror(e));
+        return false;
+    }
+    if (e != EWOULDBLOCK) throw Error(fmt::format("{}: cannot lock: {}", file, std::strerror(e)));
+    const std::string holder = read_holder(fd);
+    const std::string who = holder.empty() ? "another run (it has not yet said which)" : holder;
+    if (!wait)
+        throw ResultsInUse(fmt::format("{} are in use by {} ({}); not waiting (--no-wait; without it granlub waits "
+                                       "for that run to end)",
+                                       guarded(r), who, file));
+    fmt::print(stderr, "granlub: waiting for {}: in use by {} ({}; --no-wait fails instead)\n", guarded(r), who, file);
+    std::fflush(stderr);
+    const auto t0 = std::chrono::steady_clock::now();
+    if (flock_retrying(fd, op) != 0) {
+        const int e2 = errno;
+        throw Error(fmt::format("{}: cannot lock: {}", file, std::strerror(e2)));
+    }
+    fmt::print(stderr, "granlub: {} free after {:.0f} s, going on\n", guarded(r),
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return true;
+}
+
+}  // namespace
+
 void ResultsLock::take(std::vector<LockRequest> locks, bool wait) {
     // one order for every run; the same file asked for twice is taken once, in the stronger mode
-    std::sort(locks.begin(), locks.end(), [](const LockRequest& a, const LockRequest& b) {
-        return lock_file(a.results_root, a.name) < lock_file(b.results_root, b.name);
-    });
+    const auto file_of = [](const LockRequest& r) { return lock_file(r.results_root, r.name); };
+    std::sort(locks.begin(), locks.end(), [&](const auto& a, const auto& b) { return file_of(a) < file_of(b); });
     for (std::size_t i = 1; i < locks.size();)
-        if (lock_file(locks[i].results_root, locks[i].name) == lock_file(locks[i - 1].results_root, locks[i - 1].name)) {
+        if (file_of(locks[i]) == file_of(locks[i - 1])) {
             if (locks[i].mode == LockMode::Exclusive) locks[i - 1].mode = LockMode::Exclusive;
             locks.erase(locks.begin() + static_cast<std::ptrdiff_t>(i));
         } else {
@@ -128,54 +183,10 @@ void ResultsLock::take(std::vector<LockRequest> locks, bool wait) {
         }
     bool writes = false;
     for (const LockRequest& r : locks) {
-        const auto file = lock_file(r.results_root, r.name);
-        std::error_code ec;
-        std::filesystem::create_directories(file.parent_path(), ec);
-        // O_CLOEXEC: an engine exec'd while the lock is held must not keep it alive after granlub
-        int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
-        const bool can_record = fd >= 0;
-        if (fd < 0 && errno == EACCES) fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);  // another user's file
-        if (fd < 0)
-            throw Error(fmt::format("{}: cannot open the lock file: {} (granlub locks {} while a run uses them)",
-                                    file.string(), std::strerror(errno), guarded(r)));
-        const int op = r.mode == LockMode::Exclusive ? LOCK_EX : LOCK_SH;
-        if (flock_retrying(fd, op | LOCK_NB) != 0) {
-            const int e = errno;
-            if (unsupported(e)) {
-                static std::atomic<bool> warned{false};
-                if (!warned.exchange(true))
-                    fmt::print(stderr,
-                               "granlub: warning: {}: this file system cannot lock files ({}); running without a lock: "
-                               "do not start another run on these results until this one ends\n",
-                               file.string(), std::strerror(e));
-                ::close(fd);
-                continue;
-            }
-            if (e != EWOULDBLOCK) {
-                ::close(fd);
-                throw Error(fmt::format("{}: cannot lock: {}", file.string(), std::strerror(e)));
-            }
-            const std::string holder = read_holder(fd);
-            const std::string who = holder.empty() ? "another run (it has not yet said which)" : holder;
-            if (!wait) {
-                ::close(fd);
-                throw ResultsInUse(fmt::format("{} are in use by {} ({}); not waiting (--no-wait; without it granlub "
-                                               "waits for that run to end)",
-                                               guarded(r), who, file.string()));
-            }
-            fmt::print(stderr, "granlub: waiting for {}: in use by {} ({}; --no-wait fails instead)\n", guarded(r),
-                       who, file.string());
-            std::fflush(stderr);
-            const auto t0 = std::chrono::steady_clock::now();
-            if (flock_retrying(fd, op) != 0) {
-                const int e2 = errno;
-                ::close(fd);
-                throw Error(fmt::format("{}: cannot lock: {}", file.string(), std::strerror(e2)));
-            }
-            fmt::print(stderr, "granlub: {} free after {:.0f} s, going on\n", guarded(r),
-                       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-        }
-        fds_.push_back(fd);  // released by release(), also when a later lock throws
+        bool can_record = false;
+        const int fd = open_lock_file(r, can_record);
+        fds_.push_back(fd);  // closed by release(), also when this or a later lock throws
+        if (!lock_or_wait(fd, r.mode == LockMode::Exclusive ? LOCK_EX : LOCK_SH, r, wait)) continue;
         if (can_record) {
             const std::string rec = holder_record(r.mode);
             [[maybe_unused]] const ssize_t n = ::pwrite(fd, rec.data(), rec.size(), 0);
