@@ -13,10 +13,8 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <set>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -43,13 +41,6 @@ fs::path scratch(const std::string& name) {
     return dir;
 }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 // Polls `done` every 20 ms for up to `seconds`: waiting for a state, not for a time.
 bool within(double seconds, const std::function<bool()>& done) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -72,11 +63,12 @@ struct Granlub {
         : out(std::move(out_file)) {
         std::vector<std::string> argv{GRANLUB_EXE};
         argv.insert(argv.end(), args.begin(), args.end());
+        const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);  // there for text() at once
+        BOOST_TEST_REQUIRE(fd >= 0);
         pid = ::fork();
         BOOST_TEST_REQUIRE(pid >= 0);
         if (pid == 0) {
-            const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-            if (fd < 0 || ::dup2(fd, 1) < 0 || ::dup2(fd, 2) < 0) ::_exit(126);
+            if (::dup2(fd, 1) < 0 || ::dup2(fd, 2) < 0) ::_exit(126);
             if (pause_fifo.empty())
                 ::unsetenv("GRANLUB_TEST_LOCK_PAUSE");
             else
@@ -87,6 +79,7 @@ struct Granlub {
             ::execv(a[0], a.data());
             ::_exit(127);
         }
+        ::close(fd);
     }
     ~Granlub() {
         if (!reaped) {
@@ -104,7 +97,7 @@ struct Granlub {
         if (!within(seconds, [&] { return !running(); })) return -1000;
         return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
     }
-    std::string text() const { return slurp(out); }
+    std::string text() const { return granlub::read_file(out); }
 };
 
 fs::path pause_fifo(const fs::path& dir) {
