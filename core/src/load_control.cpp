@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "granlub/run_id.h"
+
 namespace granlub {
 
 BlockEstimate mean_gap(const PlateSeries& plate, const SteadyWindow& w, std::size_t blocks) {
@@ -36,9 +38,9 @@ std::string gap_csv(const ServoSettings& s, double time_step, std::span<const do
                     std::span<const double> top_stress, const PlateSeries& plate, const std::string& comment) {
     const std::vector<double> p_w = window_stresses(s, wall_step, top_stress, plate);
     std::string out = fmt::format("# {}\n# plate (top wall) position after each servo window of {} steps; stress = "
-                                  "top-wall normal stress averaged over the window; target {} Pa\n"
+                                  "top-wall normal stress averaged over the window; target {} Pa\n# {}\n"
                                   "time_s,gap_m,normal_stress_top_Pa\n",
-                                  comment, s.servo_every, s.target_stress);
+                                  comment, s.servo_every, s.target_stress, run_id_comment());
     for (std::size_t j = 0; j < plate.step.size(); ++j)
         out += fmt::format("{},{},{}\n", plate.step[j] * time_step, plate.gap[j],
                            p_w[j] >= 0 ? fmt::format("{}", p_w[j]) : std::string(""));

@@ -16,6 +16,7 @@
 #include "granlub/error.h"
 #include "granlub/text.h"
 #include "granlub/results.h"
+#include "granlub/run_id.h"
 #include "granlub/table.h"
 #include "granlub/wall_bumps.h"
 #include "lattice_insertion.h"
@@ -274,6 +275,7 @@ std::filesystem::path final_state_path(const std::filesystem::path& root, const 
 void write_particle_state(const std::filesystem::path& path, const ParticleState& s, std::vector<std::string> comments) {
     comments.push_back(fmt::format("gap: {:.17g}", s.gap));
     comments.push_back(fmt::format("time: {:.17g}", s.time));
+    comments.push_back(run_id_comment());  // a run's output (results.h), unlike the shared initial grains
     write_particles_csv(path, s.particles, comments);
 }
 

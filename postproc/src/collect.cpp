@@ -165,20 +165,17 @@ std::size_t Collection::count(ResultState state) const {
         std::count_if(runs.begin(), runs.end(), [&](const auto& kv) { return kv.second.status.state == state; }));
 }
 
-Collection collect(const Case& c, const RunOptions& o) {
-    Collection col;
-    col.root = results_root(c, o);
-    col.points = c.select(o.point);
-    std::vector<std::string> others;
+std::vector<std::string> result_solvers(const std::filesystem::path& root, std::vector<std::string>* missing) {
+    std::vector<std::string> solvers, others;
     std::error_code ec;
     for (const char* s : kKnownSolvers) {
-        if (std::filesystem::is_directory(col.root / s, ec))
-            col.solvers.emplace_back(s);
-        else
-            col.missing_solvers.emplace_back(s);
+        if (std::filesystem::is_directory(root / s, ec))
+            solvers.emplace_back(s);
+        else if (missing)
+            missing->emplace_back(s);
     }
-    if (std::filesystem::is_directory(col.root, ec)) {
-        for (const auto& e : std::filesystem::directory_iterator(col.root, ec)) {
+    if (std::filesystem::is_directory(root, ec)) {
+        for (const auto& e : std::filesystem::directory_iterator(root, ec)) {
             const std::string name = e.path().filename().string();
             if (!e.is_directory() || name == "report" || name == "initial" || name.starts_with(".") ||
                 name.find(".partial") != std::string::npos ||
@@ -188,7 +185,15 @@ Collection collect(const Case& c, const RunOptions& o) {
         }
     }
     std::sort(others.begin(), others.end());
-    col.solvers.insert(col.solvers.end(), others.begin(), others.end());
+    solvers.insert(solvers.end(), others.begin(), others.end());
+    return solvers;
+}
+
+Collection collect(const Case& c, const RunOptions& o) {
+    Collection col;
+    col.root = results_root(c, o);
+    col.points = c.select(o.point);
+    col.solvers = result_solvers(col.root, &col.missing_solvers);
     for (const auto& s : col.solvers)
         for (const OperatingPoint* p : col.points) col.runs.emplace(std::pair(s, p->id), load_run(c, col.root, s, *p));
     return col;

@@ -10,6 +10,7 @@
 
 #include "granlub/error.h"
 #include "granlub/progress.h"
+#include "granlub/run_id.h"
 #include "granlub/yade/driver.h"
 #include "granlub/yade/reduce.h"
 #include "granlub/yade/settings.h"
@@ -84,7 +85,8 @@ InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingP
     init.file = dir / "warm_start.csv";
     fs::create_directories(dir);
     fs::copy_file(from, init.file, fs::copy_options::overwrite_existing);
-    record = {{"from", from.string()}, {"time_s", st.time}, {"gap_m", st.gap}, {"grains", st.particles.size()}};
+    record = {{"from", from.string()}, {"time_s", st.time}, {"gap_m", st.gap}, {"grains", st.particles.size()},
+              {"dem_run_id", read_table_run_id(from).value_or("")}};  // which dem run it started from
     init.particles = std::move(st.particles);
     return init;
 }
@@ -152,6 +154,9 @@ void check(const Case& c, const RunOptions& o) {
 int run(const Case& c, const RunOptions& o) {
     // each point is one single-threaded YADE process (-j1): as many side by side as cores allow
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
+    // a warm start reads dem's final states: dem's results stay locked (shared) while yade runs, so
+    // that no dem run replaces them half-way through the sweep (granlub/run_lock.h)
+    const bool warm = c.section("yade").string("start") == "warm";
     return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {
             return solve_point(c, o, p, dir);
@@ -162,7 +167,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    }, at_once);
+    }, at_once, warm ? std::vector<std::string>{"dem"} : std::vector<std::string>{});
 }
 
 }  // namespace granlub::yade
