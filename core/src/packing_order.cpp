@@ -76,19 +76,46 @@ BondOrder bond_order(const ParticleSet& p, const ParticleBox& box) {
     return o;
 }
 
+LayerOrder layer_order(const ParticleSet& p, double lo, double hi, double d) {
+    LayerOrder best;
+    constexpr int kSteps = 80;  // lambda resolved to 0.005 d: a peak of N grains is ~lambda / (N y) wide
+    for (int k = 0; k <= kSteps; ++k) {
+        const double lambda = d * (kLayerSpacingMin + (kLayerSpacingMax - kLayerSpacingMin) * k / kSteps);
+        double c = 0, s = 0;
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            if (p.y[i] < lo || p.y[i] > hi) continue;
+            const double phase = 2.0 * std::numbers::pi * p.y[i] / lambda;
+            c += std::cos(phase), s += std::sin(phase), ++n;
+        }
+        if (n == 0) return best;
+        const double a = std::hypot(c, s) / static_cast<double>(n);
+        if (a > best.order) best = {a, lambda, n};
+    }
+    return best;
+}
+
 void OrderSeries::add(const ParticleSet& p, double time) {
     if (time < t_start_ - 1e-12) return;
     const BondOrder o = bond_order(p, box_);
     q6_.push_back(o.q6);
     Q6_.push_back(o.Q6);
     neighbours_.push_back(o.neighbours);
+    const LayerOrder l = granlub::layer_order(p, lo_, hi_, d_);
+    layer_.push_back(l.order);
+    spacing_.push_back(l.spacing);
 }
 
-double OrderSeries::mean_neighbours() const {
+namespace {
+double mean_of(const std::vector<double>& v) {
     double s = 0;
-    for (double v : neighbours_) s += v;
-    return neighbours_.empty() ? 0.0 : s / static_cast<double>(neighbours_.size());
+    for (double x : v) s += x;
+    return v.empty() ? 0.0 : s / static_cast<double>(v.size());
 }
+}  // namespace
+
+double OrderSeries::mean_neighbours() const { return mean_of(neighbours_); }
+double OrderSeries::mean_layer_spacing() const { return mean_of(spacing_); }
 
 std::optional<double> layering_amplitude(const Profile& profile, double gap, double diameter) {
     const auto& y = profile.column("y_over_H");

@@ -115,6 +115,9 @@ nlohmann::json flow_regime_record(const ParticlePipeline& in, const ParticleReco
     return j;
 }
 
+// How far a wall's bumps reach from its plane (0 for a plane).
+double protrusion(const std::optional<BumpLayer>* b) { return b && *b ? 0.5 * (*b)->diameter : 0.0; }
+
 // run.order and the outputs "layering" and "q6" (packing_order.h): layering from the profile,
 // q6 over the steady snapshots when their positions are recorded.
 nlohmann::json order_record(const ParticlePipeline& in, ParticleReduction& out, double gap,
@@ -124,16 +127,21 @@ nlohmann::json order_record(const ParticlePipeline& in, ParticleReduction& out, 
     j["layering"] = layering ? nlohmann::json(*layering) : nlohmann::json();
     if (layering) out.outputs["layering"] = Scalar{*layering, std::nullopt, ""};
     if (!order || order->q6().empty()) {
-        j["q6"] = j["Q6"] = nullptr;
+        j["q6"] = j["Q6"] = j["layer_order"] = nullptr;
         j["q6_not_measured"] = order ? "no steady snapshot" : "the snapshots hold no positions along the flow";
         return j;
     }
     const BlockEstimate q6 = block_average(order->q6(), in.blocks), Q6 = block_average(order->Q6(), in.blocks);
+    const BlockEstimate layers = block_average(order->layer_order(), in.blocks);
     out.outputs["q6"] = Scalar{q6.mean, q6.stderr_, ""};
+    out.outputs["layer_order"] = Scalar{layers.mean, layers.stderr_, ""};
     j.update(nlohmann::json{{"q6", q6.mean},
                             {"q6_stderr", q6.stderr_},
                             {"Q6", Q6.mean},
                             {"Q6_stderr", Q6.stderr_},
+                            {"layer_order", layers.mean},
+                            {"layer_order_stderr", layers.stderr_},
+                            {"layer_spacing_over_d", order->mean_layer_spacing() / in.c.grains.diameter},
                             {"mean_neighbours", order->mean_neighbours()},
                             {"snapshots", order->q6().size()}});
     return j;
@@ -157,7 +165,14 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
     CrossSection xs = CrossSection::for_grains(in.c.grains.diameter, gap, in.box.width, in.box.length);
     std::optional<ContactSeries> contacts;
     std::optional<OrderSeries> order;
-    if (in.contact_box) contacts.emplace(*in.contact_box, window.t_start), order.emplace(*in.contact_box, window.t_start);
+    if (in.contact_box) {
+        contacts.emplace(*in.contact_box, window.t_start);
+        // layers counted a mean diameter clear of the walls (of a rough wall's bumps); the ring's
+        // axis is its y too
+        const double d = in.c.grains.diameter;
+        order.emplace(*in.contact_box, window.t_start, protrusion(in.bumps_bottom) + d, gap - protrusion(in.bumps_top) - d,
+                      d);
+    }
     ParticleSet mapped;  // the ring's grains in the slice frame (annulus.h)
     double solids = 0;   // the grains' volume, from their radii as the engine ran them
     rec.snapshots.read([&](const ParticleSet& g, double t) {
@@ -184,7 +199,9 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
                                               .solids_volume = solids,
                                               .simulated_s = in.simulated_s,
                                               .section = &xs,
-                                              .plate_start = in.plate_start});
+                                              .plate_start = in.plate_start,
+                                              .slip_bottom_from = protrusion(in.bumps_bottom),
+                                              .slip_top_from = protrusion(in.bumps_top)});
     write_file_atomic(dir / kSectionFile,
                       profile_csv(out.section,
                                   {in.what, "solid fraction and u/U over the cross-section: y across the gap (0 = moving "
@@ -205,7 +222,8 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
     out.run["walls"] = {{"bottom", walls_json(in.bumps_bottom ? *in.bumps_bottom : none)},
                         {"top", walls_json(in.bumps_top ? *in.bumps_top : none)},
                         {"slip_measured", "wall speed minus the mean velocity of the station next to the wall's "
-                                          "plane (through the bumps' centres on a rough wall)"}};
+                                          "plane; on a rough wall, of the first station whose centre is clear of "
+                                          "its bumps (half a bump diameter from the plane through their centres)"}};
     return out;
 }
 

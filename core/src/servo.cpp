@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/wall_bumps.h"
 
 namespace granlub {
 
@@ -51,9 +52,10 @@ ServoSettings resolve_servo(const Case& c, const OperatingPoint& p, const Sectio
     v.insert_fill_key = p.solid_fraction > 0 ? "[operating] solid_fraction"
                                              : fmt::format("[{}] fill_for_load{}", s.name(),
                                                            s.is_default("fill_for_load") ? " (default)" : "");
-    // the plate cannot go below the closest packing of the inserted grains
-    v.gap_min = v.insert_fill * c.cell.gap / kClosestPacking;
-    if (c.cell.ring() || !c.grains.sizes().equal()) v.plate_start = v.gap_max;
+    // the plate cannot go below the closest packing of the inserted grains (between the bumps' halves)
+    const double bumps = bump_protrusion(c, p.bottom) + bump_protrusion(c, p.top);
+    v.gap_min = v.insert_fill * c.cell.gap / kClosestPacking + bumps;
+    if (c.cell.ring() || !c.grains.sizes().equal() || bumps > 0) v.plate_start = v.gap_max;
     return v;
 }
 

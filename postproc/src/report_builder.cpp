@@ -264,7 +264,7 @@ Table scope_table(const Case& c, const Collection& col) {
 // the grains crystallised, which the continuum does not describe.
 Table order_table(const Collection& col) {
     Table t;
-    t.header = {"solver", "point", "status", "q6", "Q6", "layering", "coordination Z", "regime"};
+    t.header = {"solver", "point", "status", "q6", "Q6", "layer order Λ", "layering of ν(y)", "coordination Z", "regime"};
     for (const OperatingPoint* p : col.points)
         for (const auto& s : col.solvers) {
             const Run& r = col.run(s, p->id);
@@ -281,6 +281,7 @@ Table order_table(const Collection& col) {
                               {r.state_name(), r.state_class()},
                               {value_pm(r.scalar("q6"), r.scalar_stderr("q6")), cls},
                               {number(o, "Q6"), cls},
+                              {value_pm(r.scalar("layer_order"), r.scalar_stderr("layer_order")), cls},
                               {number(o, "layering"), cls},
                               {number(fr, "coordination_number"), cls},
                               {fr.contains("regime") && fr["regime"].is_string() ? fr["regime"].get<std::string>() : "—",
@@ -329,8 +330,11 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
         rep.text("q6: the mean local bond-orientational order of the grains (Steinhardt, Nelson & Ronchetti 1983; "
                  "neighbours within 1.2 (r_i + r_j), grains with at least 4): 0.575 for FCC, 0.485 for HCP, about 0.35–0.45 "
                  "for a dense disordered packing. Q6: the same over all bonds at once, near 0 without long-range "
-                 "order. Layering: the relative spread std(ν)/mean(ν) of the solid-fraction profile away from the walls "
-                 "(half a diameter in), large when the grains sit in layers. The continuum describes a disordered "
+                 "order. Layer order Λ: how sharply the grain centres stack in layers parallel to the walls (the peak of "
+                 "|⟨exp(2πi y/λ)⟩| over λ = 0.6–1.0 d, grains a diameter clear of the walls): 1 for flat layers, "
+                 "small without. Layering of ν(y): the relative spread std(ν)/mean(ν) of the solid-fraction profile "
+                 "the report draws, half a diameter from the walls; it smears each grain over its diameter and also "
+                 "shows the layering any flat wall imposes. The continuum describes a disordered "
                  "fluid: where the particle packings are ordered, its profiles are not expected to match.");
     }
 

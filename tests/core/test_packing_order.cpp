@@ -80,13 +80,19 @@ BOOST_AUTO_TEST_CASE(a_crystal_is_ordered_and_a_gas_is_not) {
     BOOST_TEST(o.Q6 == 0.57452, tt::tolerance(0.02));  // every bond of an FCC direction
     BOOST_TEST(o.q6 > 0.50);                           // the bulk 0.575; the two free faces lower it
     BOOST_TEST(o.neighbours > 11.0);
-    // an ideal gas of the same grains at a tenth of the density
+    // an ideal gas of as many grains (overlaps allowed: positions at random)
     std::mt19937_64 g(7);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     ParticleSet gas;
-    for (std::size_t n = 0; n < crystal.size() / 10; ++n)
+    for (std::size_t n = 0; n < crystal.size(); ++n)
         gas.push_back(u(g) * box.length, u(g) * box.gap, (u(g) - 0.5) * box.width, 0, 0, 0, 0.5 * d);
     BOOST_TEST(bond_order(gas, box).Q6 < 0.2);
+    // layers: the crystal's (001) planes are a/2 = 0.707 d apart along y, away from its two faces
+    const LayerOrder layers = layer_order(crystal, 1.0, box.gap - 1.0, d);
+    BOOST_TEST(layers.order == 1.0, tt::tolerance(0.01));
+    BOOST_TEST(layers.spacing == 0.5 * a, tt::tolerance(0.01));
+    BOOST_TEST(layer_order(gas, 1.0, box.gap - 1.0, d).order < 0.15);  // ~1/sqrt(N): 0.03 for N = 1300
+    BOOST_TEST(layer_order(gas, 100.0, 200.0, d).grains == 0u);        // none in range: nothing measured
 }
 
 BOOST_AUTO_TEST_CASE(layering_of_hand_made_profiles) {
