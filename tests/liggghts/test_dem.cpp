@@ -298,4 +298,13 @@ BOOST_AUTO_TEST_CASE(every_result_carries_its_flow_regime_and_refine_dt_reruns_a
     BOOST_TEST(!p.run.contains("dt_refinement"));
     BOOST_TEST(!p.outputs.at("shear_stress_bottom").dt_error.has_value());
     BOOST_TEST(!fs::exists(plain.dir / "dt_full"));
+    // the default check is cold: the half-step run starts from the initial grains for the whole time
+    const Run cold = run(kCase + "refine_dt = true\n", "refine_dt_cold");
+    BOOST_TEST_REQUIRE(cold.code == 0);
+    const Summary c = read_summary(cold.dir / "summary.json");
+    const auto& crec = c.run.at("dt_refinement");
+    BOOST_TEST(crec.at("start").get<std::string>().starts_with("cold"));
+    BOOST_TEST(c.run.at("steps").get<long>() == 2 * crec.at("full_step_run").at("steps").get<long>());
+    BOOST_TEST(crec.at("full_step_run").at("outputs").at("shear_stress_bottom").at("value").get<double>() ==
+               p.value("shear_stress_bottom"));
 }
