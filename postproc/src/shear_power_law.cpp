@@ -79,8 +79,9 @@ std::vector<Figure> shear_power_law_figures(const Collection& col, const SpeedLo
                 line.style = solver_style(col, s);
                 line.dashed = true;
                 line.label = fit.fit->exponent_stderr
-                                 ? fmt::format("n = {:.2f} ± {:.2f}", fit.fit->exponent, *fit.fit->exponent_stderr)
-                                 : fmt::format("n = {:.2f}", fit.fit->exponent);
+                                 ? fmt::format("{}, {}: n = {:.2f} ± {:.2f}", s, group.label, fit.fit->exponent,
+                                               *fit.fit->exponent_stderr)
+                                 : fmt::format("{}, {}: n = {:.2f}", s, group.label, fit.fit->exponent);
                 double lo = 0, hi = 0;
                 for (const OperatingPoint* p : group.points) lo = lo > 0 ? std::min(lo, p->speed) : p->speed, hi = std::max(hi, p->speed);
                 for (double u : {lo / 1.1, hi * 1.1})
