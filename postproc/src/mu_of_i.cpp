@@ -89,8 +89,8 @@ std::vector<Figure> mu_of_i_figures(const Case& c, const Collection& col, const 
                                       "analogues with no pressure in Pa).",
                                       list_text(without));
     const std::string law = fmt::format(
-        " Black dashed: μ(I) = μ_s + (μ_2 − μ_s)/(I_0/I + 1) of Jop, Forterre & Pouliquen 2006 (Nature 441:727, "
-        "eq. 2) for glass beads, μ_s = tan 20.9° = {:.3f}, μ_2 = tan 32.76° = {:.3f}, I_0 = {}: a reference for "
+        " Black dashed: μ(I) = μ_s + (μ_2 − μ_s)/(I_0/I + 1) of Jop, Forterre & Pouliquen 2006 (Nature 441:727) "
+        "for glass beads, μ_s = tan 20.9° = {:.3f}, μ_2 = tan 32.76° = {:.3f}, I_0 = {}: a reference for "
         "dense flow, not a fit.",
         kJopMuS, kJopMu2, kJopI0);
     std::vector<Figure> figs;

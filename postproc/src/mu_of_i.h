@@ -1,8 +1,9 @@
 // The friction coefficient mu = tau / P and the mean solid fraction against the inertial number I,
 // with the glass-bead mu(I) law of Jop, Forterre & Pouliquen 2006 as the reference line.
 //
-// mu(I) = mu_s + (mu_2 - mu_s) / (I_0 / I + 1)   (Jop, Forterre & Pouliquen 2006, Nature 441:727,
-// eq. 2), fitted there to glass beads (d = 0.5 mm) flowing down a heap:
+// mu(I) = mu_s + (mu_2 - mu_s) / (I_0 / I + 1)   (Jop, Forterre & Pouliquen 2006, Nature 441:727:
+// their mu(I) law, written out here; its equation number there is not checked), with the values
+// they give for glass beads:
 //   mu_s = tan 20.9 deg ~ 0.38, mu_2 = tan 32.76 deg ~ 0.64, I_0 = 0.279.
 // I = gamma_dot d / sqrt(P / rho_p) (GDR MiDi 2004, eq. 1), gamma_dot either U/H ("nominal") or the
 // measured mid-gap shear rate (core granlub/flow_regime.h, run.flow_regime).
