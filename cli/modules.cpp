@@ -36,8 +36,10 @@ int check_solvers(const Case& c, const RunOptions& o) {
     for (const auto& m : solver_modules()) {
         std::vector<std::string> cannot;  // points this solver cannot run: a warning, not bad input
         std::size_t no_answer = 0;        // of which the model has no answer for (error.h, NoAnswer)
+        std::string at;                   // the point whose check found bad input (a key that fails there)
         try {
             for (const OperatingPoint* p : c.select(o.point)) {
+                at = p->id;
                 RunOptions one = o;
                 one.point = p->id;
                 try {
@@ -54,7 +56,7 @@ int check_solvers(const Case& c, const RunOptions& o) {
                 }
             }
         } catch (const CaseError& e) {
-            fmt::print("#   {:<10} bad input (see the error)\n", m.name);
+            fmt::print("#   {:<10} bad input, found at point {} (see the error)\n", m.name, at);
             std::fflush(stdout);
             fmt::print(stderr, "error: {}: {}\n", m.name, e.what());
             rc = 2;

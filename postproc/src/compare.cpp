@@ -15,6 +15,7 @@
 #include "granlub/run_lock.h"
 #include "metrics.h"
 #include "paraview.h"
+#include "regime_section.h"
 #include "report_builder.h"
 #include "ring_slice.h"
 #include "section_map.h"
@@ -125,8 +126,10 @@ int compare(const Case& c, const RunOptions& o) {
         figs.solid_fraction = emit({solid_fraction_figure(col, c.cell.max_solid_fraction)}, plots);
         const RingSliceSection ring = ring_slice_section(c, col);
         figs.ring_slice = emit(ring.figures, plots);
+        const RegimeSection regime = regime_section(c, col);
+        figs.regime = emit(regime.figures, plots);
         const auto vtm = write_paraview(col, c.cell.gap, c.cell.width, staging / "paraview");
-        const Report rep = build_report(c, col, metrics, figs, vtm, &ring);
+        const Report rep = build_report(c, col, metrics, figs, vtm, &ring, &regime);
         write_file_atomic(staging / "metrics.csv", metrics_csv(metrics));
         write_file_atomic(staging / "report.md", render_markdown(rep));
         write_file_atomic(staging / "index.html", render_html(rep));  // last: the completion marker

@@ -6,8 +6,10 @@
 
 #include <fmt/format.h>
 
+#include "granlub/flow_regime.h"
 #include "granlub/regime.h"
 #include "granlub/results.h"
+#include "regime_section.h"
 #include "ring_slice.h"
 #include "scope.h"
 #include "text.h"
@@ -296,15 +298,14 @@ Table order_table(const Collection& col) {
                               {value_pm(r.scalar("layer_order"), r.scalar_stderr("layer_order")), cls},
                               {number(o, "layering"), cls},
                               {number(fr, "coordination_number"), cls},
-                              {fr.contains("regime") && fr["regime"].is_string() ? fr["regime"].get<std::string>() : "—",
-                               cls}});
+                              {fr.contains("regime") ? read_flow_verdict(fr).label() : "—", cls}});
         }
     return t;
 }
 
 Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
                     const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
-                    const RingSliceSection* ring) {
+                    const RingSliceSection* ring, const RegimeSection* regime) {
     Report rep;
     rep.title = fmt::format("Cross-code comparison: {}", c.title.empty() ? c.name : c.title);
     std::vector<std::string> with_results, without;
@@ -409,6 +410,8 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
                              kMinFitPoints));
     else
         rep.table(std::move(ex));
+
+    if (regime) add_regime_section(rep, *regime, figs.regime);
 
     rep.heading("Slip at the walls");  // against roughness or speed: the figure titles say which
     rep.figures(figs.slip);

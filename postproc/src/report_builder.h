@@ -16,13 +16,15 @@ struct ReportFigures {
     std::map<std::string, std::vector<FigureRef>> profiles;  // by point id
     std::vector<FigureRef> stress, slip, solid_fraction;
     std::vector<FigureRef> ring_slice;  // ring_slice.h
+    std::vector<FigureRef> regime;      // regime_section.h
 };
 
 struct RingSliceSection;
+struct RegimeSection;
 
 Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
                     const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
-                    const RingSliceSection* ring = nullptr);
+                    const RingSliceSection* ring = nullptr, const RegimeSection* regime = nullptr);
 
 // Key numbers per solver and point (nu_bar/nu_max, wall stresses, slip/U, wall clock; under load
 // control also the gap and P_top / target); used by the report and by summary_table().

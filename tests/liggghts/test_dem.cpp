@@ -12,6 +12,8 @@
 #include <numbers>
 #include <regex>
 
+#include <fmt/format.h>
+
 #include "granlub/case.h"
 #include "granlub/dem/command.h"
 #include "granlub/error.h"
@@ -216,6 +218,23 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
             BOOST_TEST(std::string(e.what()).find("time_step") != std::string::npos);
         }
     }
+}
+
+// [dem] strain: a run length in shear strain U t / H, never below `time`, capped by strain_time_max.
+BOOST_AUTO_TEST_CASE(run_length_in_shear_strain_with_a_cap) {
+    const Case base = parse_case(kCase, "tiny.toml", schema());
+    const double H = base.cell.gap, U = base.points.front().speed;
+    const double t0 = dem::resolve(base, base.points.front(), RunOptions{}).time;
+    auto time_with = [&](const std::string& keys) {
+        const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\n" + keys), "tiny.toml", schema());
+        return dem::resolve(c, c.points.front(), RunOptions{}).time;
+    };
+    const double two = 2 * t0 * U / H;  // the strain of twice `time`
+    BOOST_TEST(std::abs(time_with(fmt::format("strain = {:.17g}", two)) - 2 * t0) < 1e-12 * t0);
+    BOOST_TEST(std::abs(time_with(fmt::format("strain = {:.17g}\nstrain_time_max = {:.17g}", two, 1.5 * t0)) -
+                        1.5 * t0) < 1e-12 * t0);
+    BOOST_TEST(time_with(fmt::format("strain = {:.17g}", 0.5 * two)) == t0);  // never below `time`
+    BOOST_TEST(time_with("strain = 0") == t0);                                // off
 }
 
 // The wall-force and plate-position readers: comments and blank lines skipped, rows parsed, and a

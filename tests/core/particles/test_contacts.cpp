@@ -101,21 +101,87 @@ BOOST_AUTO_TEST_CASE(persistence_counts_the_pairs_that_stay) {
     BOOST_TEST(coordination_number(before, 4) == 2.0);
 }
 
-BOOST_AUTO_TEST_CASE(inertial_number_and_regime) {
+BOOST_AUTO_TEST_CASE(inertial_number_and_its_class_at_each_boundary) {
     // I = gamma_dot d / sqrt(P / rho): 100/s, 1 mm, 2500 Pa, 2500 kg/m^3 -> 0.1 / 1 = 0.1
     BOOST_TEST(std::abs(*inertial_number(-100.0, 1e-3, 2500.0, 2500.0) - 0.1) < 1e-15);
     BOOST_TEST(!inertial_number(100.0, 1e-3, 0.0, 2500.0));
-    BOOST_TEST(to_string(flow_regime(0.5)) == "collisional");
-    BOOST_TEST(to_string(flow_regime(0.01)) == "dense-inertial");
-    BOOST_TEST(to_string(flow_regime(1e-4)) == "quasi-static");
-    BOOST_TEST(enduring_contacts(4.5, 0.8));
-    BOOST_TEST(!enduring_contacts(3.0, 0.8));
-    BOOST_TEST(!enduring_contacts(4.5, 0.1));
+    // GDR MiDi 2004 / da Cruz et al. 2005: quasi-static < 1e-3 <= dense-inertial <= 0.1 < rapid
+    const double lo = kQuasiStaticMaxInertialNumber, hi = kRapidMinInertialNumber;
+    BOOST_TEST(to_string(inertial_class(std::nextafter(lo, 0.0))) == "quasi-static");
+    BOOST_TEST(to_string(inertial_class(lo)) == "dense-inertial");
+    BOOST_TEST(to_string(inertial_class(hi)) == "dense-inertial");
+    BOOST_TEST(to_string(inertial_class(std::nextafter(hi, 1.0))) == "rapid");
+    BOOST_TEST(to_string(inertial_class(0.0)) == "quasi-static");
+}
+
+BOOST_AUTO_TEST_CASE(one_verdict_at_each_boundary_with_the_criterion_that_decided) {
+    const double z = kEnduringMinCoordination, p = kEnduringMinPersistence;
+    const double z_below = std::nextafter(z, 0.0), p_below = std::nextafter(p, 0.0);
+    // both thresholds met exactly: a contact network
+    Verdict v = lubrication_verdict(z, p);
+    BOOST_TEST((v.lubrication == Lubrication::Contact));
+    BOOST_TEST(v.criterion.find(">= 4") != std::string::npos);
+    BOOST_TEST(v.criterion.find("50 %") != std::string::npos);
+    // Z just below: collisions, whatever the persistence; Z named as the criterion
+    v = lubrication_verdict(z_below, 1.0);
+    BOOST_TEST((v.lubrication == Lubrication::Collision));
+    BOOST_TEST(v.criterion.find("< 4") != std::string::npos);
+    BOOST_TEST((lubrication_verdict(z_below, std::nullopt).lubrication == Lubrication::Collision));
+    // persistence just below: collisions; the persistence named
+    v = lubrication_verdict(z, p_below);
+    BOOST_TEST((v.lubrication == Lubrication::Collision));
+    BOOST_TEST(v.criterion.find("persist <") != std::string::npos);
+    // what would decide was not measured: undetermined, and said which
+    v = lubrication_verdict(std::nullopt, 0.9);
+    BOOST_TEST((v.lubrication == Lubrication::Undetermined));
+    BOOST_TEST(v.criterion.find("not measured") != std::string::npos);
+    v = lubrication_verdict(5.0, std::nullopt);
+    BOOST_TEST((v.lubrication == Lubrication::Undetermined));
+    BOOST_TEST(v.criterion.find("persistence was not measured") != std::string::npos);
+    BOOST_TEST(enduring_contacts(z, p));
+    BOOST_TEST(!enduring_contacts(z_below, p));
+    BOOST_TEST(!enduring_contacts(z, p_below));
     BOOST_TEST(!enduring_contacts(std::nullopt, 0.9));
-    const auto j = flow_regime_json({0.3, 0.05, 5.0, 0.9});
-    BOOST_TEST(j.at("regime") == "dense-inertial");  // the mid-gap number wins over U/H
+}
+
+BOOST_AUTO_TEST_CASE(the_record_never_contradicts_itself) {
+    // the point: I above 0.1 with an enduring network. Before, "collisional, enduring contacts".
+    const auto j = flow_regime_json({0.4, 0.3, 4.6, 0.9});
+    BOOST_TEST(j.at("regime") == "contact lubrication");
+    BOOST_TEST(j.at("inertial_class") == "rapid");  // the mid-gap number wins over U/H
     BOOST_TEST(j.at("enduring_contacts") == true);
-    BOOST_TEST(flow_regime_json({std::nullopt, std::nullopt, 1.0, 0.1}).at("regime").is_null());
+    BOOST_TEST(j.at("verdict_version") == 2);
+    const std::string reason = j.at("reason");
+    BOOST_TEST(reason.find("collisional") == std::string::npos);
+    BOOST_TEST(reason.find("contact lubrication: Z = 4.6 >= 4") == 0u);
+    // the label a report prints: the verdict, the class beside it
+    const FlowVerdict fv = read_flow_verdict(j);
+    BOOST_TEST(fv.label() == "contact lubrication (I rapid)");
+    BOOST_TEST(fv.criterion == j.at("criterion").get<std::string>());
+    BOOST_TEST(*fv.inertial_mid_gap == 0.3);
+    // a network that does not endure: collision lubrication, whatever I
+    BOOST_TEST(flow_regime_json({1e-4, 1e-4, 4.6, 0.2}).at("regime") == "collision lubrication");
+    // no pressure: no inertial class, the verdict still from the contacts
+    const auto none = flow_regime_json({std::nullopt, std::nullopt, 1.0, 0.1});
+    BOOST_TEST(none.at("inertial_class").is_null());
+    BOOST_TEST(none.at("regime") == "collision lubrication");
+}
+
+BOOST_AUTO_TEST_CASE(older_records_are_read_with_todays_thresholds) {
+    // a summary written before verdict_version 2: "regime" was the inertial class
+    const nlohmann::json old = {{"regime", "collisional"},          {"enduring_contacts", true},
+                                {"coordination_number", 4.57},      {"contact_persistence", 0.9},
+                                {"inertial_number_nominal", 0.39},  {"inertial_number_mid_gap", 0.079}};
+    const FlowVerdict v = read_flow_verdict(old);
+    BOOST_TEST((v.lubrication == Lubrication::Contact));
+    BOOST_TEST(v.inertial_class == "rapid");
+    BOOST_TEST(v.criterion.find("recomputed from an older record") != std::string::npos);
+    BOOST_TEST(*v.inertial_nominal == 0.39);
+    // YADE's: no persistence
+    BOOST_TEST((read_flow_verdict({{"regime", "dense-inertial"}, {"coordination_number", 5.0},
+                                   {"contact_persistence", nullptr}})
+                    .lubrication == Lubrication::Undetermined));
+    BOOST_TEST((read_flow_verdict(nlohmann::json()).lubrication == Lubrication::Undetermined));
 }
 
 BOOST_AUTO_TEST_CASE(mid_gap_shear_rate_is_the_central_slope) {

@@ -11,6 +11,7 @@
 #include "engine.h"
 #include "granlub/annulus.h"
 #include "granlub/error.h"
+#include "granlub/flow_regime.h"
 #include "granlub/particle_pipeline.h"
 #include "granlub/particles.h"
 #include "granlub/regime.h"
@@ -238,10 +239,10 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     r.summary.run["initial_configuration"] = init.file.string();
     r.summary.run["initial_configuration_reused"] = init.reused;
     const auto& fr = out.run.at("flow_regime");
-    r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s] regime: {}{}", out.line, init.particles.size(),
-                         rs.steps, r.summary.run["atom_steps_per_s"].get<double>(),
-                         fr.at("regime").is_string() ? fr.at("regime").get<std::string>() : std::string("unknown"),
-                         fr.at("enduring_contacts").get<bool>() ? ", enduring contacts" : "");
+    const FlowVerdict verdict = read_flow_verdict(fr);
+    r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s] regime: {} ({})", out.line,
+                         init.particles.size(), rs.steps, r.summary.run["atom_steps_per_s"].get<double>(),
+                         verdict.label(), verdict.criterion);
     if (refined) {
         const nlohmann::json rec = refinement_record(*refined, s, r.summary.outputs);
         r.summary.run["dt_refinement"] = rec;

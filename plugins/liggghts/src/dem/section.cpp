@@ -29,6 +29,12 @@ SectionSpec section() {
            "step's state: on sawyer2001 it missed the cold run's answer by 3-6 standard errors at 1.4 and 2 m/s)");
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
+    s.real("strain", 0.0, Range::closed(0, 1e6), "",
+           "run length in shear strain U t / H (H the case's gap) instead of a time: each point runs max(time, "
+           "min(strain H / U, strain_time_max)) (time_full with --full), so slow points run as many strains as fast "
+           "ones; 0 = off");
+    s.real("strain_time_max", 2.0, Range::positive(), "s",
+           "the cap on a strain-derived run length (a point at a small U would otherwise run for ever)");
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");
     s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
            "impulse model: diameters of the smallest grain travelled per step at the larger of U, sqrt(2 g H) and, under load "

@@ -53,6 +53,8 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.seed = start.insertion.seed;
     st.velocity_noise = start.insertion.velocity_noise;
     st.time = o.full ? s.real("time_full") : s.real("time");
+    if (const double strain = s.real("strain"); strain > 0 && p.speed > 0)  // [dem] strain: a run length in U t / H
+        st.time = std::max(st.time, std::min(strain * c.cell.gap / p.speed, s.real("strain_time_max")));
 
     if (c.cell.annulus_radius > 0 && c.cell.annulus_radius <= 0.5 * st.box.width)
         s.fail("annulus_radius", fmt::format("the annulus radius {:g} m must exceed half the cell width {:g} m "

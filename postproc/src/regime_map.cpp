@@ -1,0 +1,195 @@
+#include "regime_map.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "figures.h"
+#include "granlub/flow_regime.h"
+#include "mu_of_i.h"
+#include "state_series.h"
+#include "text.h"
+
+namespace granlub::postproc {
+namespace {
+
+std::vector<const OperatingPoint*> grid_points(const SpeedLoadGrid& grid) {
+    std::vector<const OperatingPoint*> points;
+    for (const auto& g : grid.per_load) points.insert(points.end(), g.points.begin(), g.points.end());
+    return points;
+}
+
+bool has_verdict(const Run& r) {
+    return r.usable() && r.summary->run.is_object() && r.summary->run.contains("flow_regime");
+}
+
+std::string slug(const std::string& s) {
+    std::string out;
+    for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::tolower(ch)) : '-';
+    return out;
+}
+
+// The experiment's critical shear rate as a vertical black dotted line at U = 100 1/s x H over [lo, hi].
+void add_critical_rate(const Case& c, Figure& f, double lo, double hi) {
+    Series line;
+    line.label = fmt::format("U/H = {} 1/s (Sawyer & Tichy 2001)", num(kSawyerCriticalShearRate));
+    line.style = 6;  // black
+    line.dashed = true;
+    const double u = kSawyerCriticalShearRate * c.cell.gap;
+    line.x = {u, u};
+    line.y = {lo, hi};
+    f.series.push_back(std::move(line));
+    f.caption += fmt::format(" Black dashed vertical: U = {} 1/s × H = {} m/s (H = {} mm, the case's gap), the shear "
+                             "rate above which Sawyer & Tichy 2001 saw the upper surface lift off.",
+                             num(kSawyerCriticalShearRate), num(u), num(c.cell.gap * 1e3));
+}
+
+// The y range of the figure's data (for the vertical line), padded.
+std::pair<double, double> y_span(const Figure& f, bool log) {
+    double lo = 0, hi = 0;
+    bool any = false;
+    for (const Series& s : f.series)
+        for (double y : s.y) {
+            if (log && !(y > 0)) continue;
+            lo = any ? std::min(lo, y) : y, hi = any ? std::max(hi, y) : y, any = true;
+        }
+    if (!any) return {log ? 1.0 : 0.0, log ? 10.0 : 1.0};
+    return log ? std::pair(lo / 1.3, hi * 1.3) : std::pair(lo - 0.05 * (hi - lo + 1e-12), hi + 0.05 * (hi - lo + 1e-12));
+}
+
+}  // namespace
+
+std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, const SpeedLoadGrid& grid) {
+    const auto points = grid_points(grid);
+    std::vector<Figure> figs;
+    for (const auto& s : col.solvers) {
+        if (std::none_of(points.begin(), points.end(), [&](const OperatingPoint* p) { return has_verdict(col.run(s, p->id)); }))
+            continue;
+        Figure f;
+        f.name = "regime_map_" + slug(s);
+        f.title = fmt::format("Regime map over speed and load: {}", s);
+        f.caption = fmt::format(
+            "{}'s verdict at each point (core flow_regime.h): contact lubrication where the contacts endure (Z ≥ {} "
+            "and ≥ {:.0f} % of contacts survive a shear strain of {}), collision lubrication where they do not "
+            "(Sawyer & Tichy 2001's two regimes); undetermined where what decides was not measured. The criterion "
+            "that decided each point is in the table below. Hollow purple diamonds: points of the sweep with no usable "
+            "result.",
+            s, num(kEnduringMinCoordination), 100 * kEnduringMinPersistence, num(kPersistenceStrain));
+        f.x.label = "wall speed U (m/s)";
+        f.y.label = "load P (Pa)";
+        f.y.log = true;
+        // contact: blue circles, collision: vermillion squares, undetermined: black triangles (figure.cpp)
+        const int styles[] = {0, 1, 6};
+        int k = 0;
+        for (Lubrication l : {Lubrication::Contact, Lubrication::Collision, Lubrication::Undetermined}) {
+            auto series = series_by_state(col, s, points, to_string(l), styles[k++],
+                                          [&](const Run& r, const OperatingPoint& p) {
+                                              if (!has_verdict(r)) return std::optional<std::pair<double, double>>();
+                                              if (read_flow_verdict(r.summary->run["flow_regime"]).lubrication != l)
+                                                  return std::optional<std::pair<double, double>>();
+                                              return std::optional(std::pair(p.speed, p.normal_stress));
+                                          });
+            for (auto& ser : series) f.series.push_back(std::move(ser));
+        }
+        Series holes;
+        holes.label = "no usable result";
+        holes.style = 3;  // hollow reddish-purple diamonds
+        holes.mark = Mark::Points;
+        holes.open = true;
+        for (const OperatingPoint* p : points)
+            if (!col.run(s, p->id).usable()) holes.x.push_back(p->speed), holes.y.push_back(p->normal_stress);
+        if (!holes.x.empty()) f.series.push_back(std::move(holes));
+        const auto [lo, hi] = y_span(f, true);
+        add_critical_rate(c, f, lo, hi);
+        say_unsteady(f);
+        figs.push_back(std::move(f));
+    }
+    return figs;
+}
+
+std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const SpeedLoadGrid& grid) {
+    std::vector<Figure> figs;
+    for (const bool gap : {true, false}) {
+        Figure f;
+        f.name = gap ? "regime_liftoff_gap" : "regime_liftoff_nu";
+        f.title = gap ? "Lift-off: the gap against speed, per load" : "Lift-off: mean solid fraction against speed, per load";
+        f.caption = gap ? fmt::format("The mean gap between the walls (the loaded plate's mean height) against U at "
+                                      "each load; solvers with a fixed gap are not drawn. Sky blue: the case's "
+                                      "gap H = {} mm. Markers open on every other load.",
+                                      num(c.cell.gap * 1e3))
+                        : std::string("The mean solid fraction ν̄ over the gap against U at each load: a bed that "
+                                      "lifts off dilates. Markers open on every other load.");
+        f.x.label = "wall speed U (m/s)";
+        f.y.label = gap ? "gap (mm)" : "ν̄ (mean solid fraction)";
+        for (std::size_t g = 0; g < grid.per_load.size(); ++g)
+            for (const auto& s : col.solvers) {
+                auto series = series_by_state(col, s, grid.per_load[g].points,
+                                              fmt::format("{}, {}", s, grid.per_load[g].label), solver_style(col, s),
+                                              [&](const Run& r, const OperatingPoint& p) {
+                                                  const auto v = r.scalar(gap ? "gap" : "mean_solid_fraction");
+                                                  if (!v) return std::optional<std::pair<double, double>>();
+                                                  return std::optional(std::pair(p.speed, gap ? *v * 1e3 : *v));
+                                              });
+                for (auto& ser : series) {
+                    ser.open = ser.open || g % 2 == 1;
+                    if (!ser.unsteady && ser.x.size() > 1) {  // a line through the steady points
+                        Series line;
+                        line.style = ser.style;
+                        line.x = ser.x;
+                        line.y = ser.y;
+                        f.series.push_back(std::move(line));
+                    }
+                    f.series.push_back(std::move(ser));
+                }
+            }
+        if (f.series.empty()) continue;  // no solver reports a gap
+        if (gap) {
+            Series h;
+            h.label = "case gap H";
+            h.style = 5;  // sky blue, its own dash: not the black dashed critical rate
+            h.x = {grid.speeds.front(), grid.speeds.back()};
+            h.y = {c.cell.gap * 1e3, c.cell.gap * 1e3};
+            f.series.push_back(std::move(h));
+        }
+        const auto [lo, hi] = y_span(f, false);
+        add_critical_rate(c, f, lo, hi);
+        say_unsteady(f);
+        figs.push_back(std::move(f));
+    }
+    return figs;
+}
+
+Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& grid) {
+    Table t;
+    t.header = {"solver", "point", "U (m/s)", "P (Pa)", "status", "verdict", "decided by", "I (U/H)", "I (mid-gap)",
+                "gap (mm)"};
+    for (const auto& g : grid.per_load)
+        for (const OperatingPoint* p : g.points)
+            for (const auto& s : col.solvers) {
+                const Run& r = col.run(s, p->id);
+                if (!r.usable()) continue;
+                const std::string cls = r.steady() ? "" : r.state_class();
+                std::string verdict = "—", why = "no contact record (run.flow_regime): a model without grain contacts";
+                if (has_verdict(r)) {
+                    const FlowVerdict v = read_flow_verdict(r.summary->run["flow_regime"]);
+                    verdict = v.label();
+                    why = v.criterion;
+                }
+                const RunInertia I = run_inertia(c, r);
+                const auto gap = r.scalar("gap");
+                t.rows.push_back({{s, ""},
+                                  {p->id, ""},
+                                  {num(p->speed), ""},
+                                  {num(p->normal_stress), ""},
+                                  {r.state_name(), r.state_class()},
+                                  {verdict, cls},
+                                  {why, cls},
+                                  {I.nominal ? num(*I.nominal, 3) : "—", cls},
+                                  {I.mid_gap ? num(*I.mid_gap, 3) : "—", cls},
+                                  {gap ? num(*gap * 1e3, 3) : "—", cls}});
+            }
+    return t;
+}
+
+}  // namespace granlub::postproc

@@ -1,0 +1,159 @@
+// The regime section of the report (postproc regime_section.h) end to end on synthetic results: a
+// case that sweeps speed and load draws the map, the lift-off, mu(I) and tau(U) per load, says
+// which criterion decided each point and draws a transient hollow; a one-point case and a
+// speed-only sweep draw no map and say why.
+#include <cmath>
+#include <fstream>
+
+#include <boost/test/unit_test.hpp>
+#include <nlohmann/json.hpp>
+
+#include "granlub/flow_regime.h"
+#include "granlub/postproc/command.h"
+#include "granlub/regime.h"
+#include "granlub/results.h"
+#include "synthetic.h"
+#include "xml_check.h"
+
+using namespace granlub;
+namespace fs = std::filesystem;
+
+namespace {
+
+test::SyntheticCase grid_case(const std::string& name, const std::string& operating) {
+    test::SyntheticCase s;
+    s.dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / "postproc-tmp" / name;
+    fs::remove_all(s.dir);
+    fs::create_directories(s.dir);
+    std::ofstream(s.dir / "case.toml") << R"([case]
+name = "regime_grid"
+
+[grains]
+diameter = 1.0e-3
+density = 2500.0
+restitution = 0.9
+
+[walls]
+restitution = 0.8
+roughness = 0.5
+
+[cell]
+gap = 5.0e-3
+length = 20.0e-3
+width = 0.0
+max_solid_fraction = 0.65
+
+[operating]
+control = "load"
+solid_fraction = 0.55
+)" << operating;
+    s.c = load_case(s.dir, Schema::common());
+    s.o.results_root = s.dir / "results";
+    return s;
+}
+
+// dem: tau = 0.4 P (n = 0 at every load), a linear u(y); the grains lift off (Z = 3) at 500 Pa
+// above 1 m/s; the point U2 at 2000 Pa is transient. continuum: tau = 50 U^2 (n = 2), no contacts.
+void write_results(const test::SyntheticCase& s) {
+    for (const OperatingPoint& p : s.c.points)
+        for (const char* solver : {"dem", "continuum"}) {
+            const bool dem = solver == std::string("dem");
+            const double P = p.normal_stress, U = p.speed;
+            Summary sum = make_summary(s.c, p, solver, dem ? std::optional<std::uint64_t>(7) : std::nullopt);
+            const double tau = dem ? 0.4 * P : 50 * U * U;
+            sum.set("normal_stress_bottom", P * 1.02, "Pa").set("normal_stress_top", P, "Pa");
+            sum.set("shear_stress_bottom", tau, "Pa").set("shear_stress_top", tau, "Pa");
+            sum.set("slip_bottom", 0.1 * U, "m/s").set("slip_top", 0.1 * U, "m/s");
+            const bool lifted = dem && P < 1000 && U > 1.0;
+            sum.set("mean_solid_fraction", lifted ? 0.42 : 0.58, "").set("max_solid_fraction", 0.65, "");
+            if (dem) sum.set("gap", lifted ? 6.5e-3 : 5.0e-3, "m");
+            std::vector<double> y, u, nu, T;
+            for (int k = 0; k < 20; ++k) y.push_back((k + 0.5) / 20.0);
+            for (double v : y) u.push_back(1.0 - v), nu.push_back(0.6), T.push_back(0.01);
+            Profile prof;
+            prof.add("y_over_H", y).add("u_over_U", u).add("solid_fraction", nu).add("temperature_over_U2", T);
+            sum.run = {{"steps", 1000}, {"wall_clock_s", 0.5}};
+            const bool transient = dem && P > 1000 && U > 1.5;
+            set_regime(sum.run, transient ? RegimeStatus::Transient : RegimeStatus::Steady, transient ? "too short" : "");
+            if (dem) {
+                FlowDiagnostics d{0.05 * U, 0.04 * U, lifted ? 3.0 : 4.8, 0.9};
+                sum.run["flow_regime"] = flow_regime_json(d);
+            }
+            write_result(result_dir(s.o.results_root, solver, p.id), prof, sum);
+        }
+}
+
+std::string section(const std::string& html) {
+    const auto start = html.find("Regimes over speed and load</h2>");
+    BOOST_TEST_REQUIRE(start != std::string::npos);
+    const auto end = html.find("<h2", start);
+    return html.substr(start, end - start);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(regime_report)
+
+BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) {
+    auto s = grid_case("regime_grid", "speed = [0.5, 1.0, 2.0]\nnormal_stress = [500.0, 2000.0]\n");
+    BOOST_TEST_REQUIRE(s.c.points.size() == 6u);
+    write_results(s);
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const fs::path rep = s.o.results_root / "report";
+    const std::string sec = section(test::slurp(rep / "index.html"));
+    for (const char* f : {"regime_map_dem", "regime_liftoff_gap", "regime_liftoff_nu", "regime_mu_of_i_mid_gap",
+                          "regime_mu_of_i_nominal", "regime_nu_of_i", "regime_tau_of_u_bottom", "regime_tau_of_u_top"}) {
+        BOOST_TEST(fs::exists(rep / "plots" / (std::string(f) + ".svg")), f);
+        if (fs::exists(rep / "plots" / (std::string(f) + ".svg"))) {
+            const std::string err = test::xml_error(test::slurp(rep / "plots" / (std::string(f) + ".svg")));
+            BOOST_TEST(err.empty(), f << ": " << err);
+        }
+    }
+    BOOST_TEST(!fs::exists(rep / "plots" / "regime_map_continuum.svg"));  // no contacts, no verdict
+    // every verdict with the criterion that decided it; no contradictory label anywhere
+    BOOST_TEST(sec.find("collision lubrication") != std::string::npos);
+    BOOST_TEST(sec.find("contact lubrication") != std::string::npos);
+    BOOST_TEST(sec.find("Z = 3 &lt; 4") != std::string::npos);
+    BOOST_TEST(sec.find(", enduring contacts") == std::string::npos);  // the old contradictory label
+    // the experiment's critical shear rate at U = 100 1/s x 5 mm = 0.5 m/s
+    const std::string map = test::slurp(rep / "plots" / "regime_map_dem.svg");
+    BOOST_TEST(map.find("Sawyer") != std::string::npos);
+    BOOST_TEST(sec.find("= 0.5 m/s") != std::string::npos);
+    // the transient point drawn as one, and left out of the fits: dem has 2 steady speeds at 2000 Pa
+    BOOST_TEST(map.find("transient") != std::string::npos);
+    BOOST_TEST(sec.find("not fitted: 2 steady points") != std::string::npos);
+    // the fits: dem n = 0 at 500 Pa (quasi-static), continuum n = 2 (Bagnold)
+    BOOST_TEST(sec.find("quasi-static") != std::string::npos);
+    BOOST_TEST(sec.find("Bagnold (collisional)") != std::string::npos);
+    // the reference law is drawn and cited
+    const std::string mu = test::slurp(rep / "plots" / "regime_mu_of_i_mid_gap.svg");
+    BOOST_TEST(mu.find("Jop et al. 2006") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_one_point_case_and_a_speed_only_sweep_draw_no_map_and_say_why) {
+    auto one = grid_case("regime_one", "speed = 1.0\nnormal_stress = 1000.0\n");
+    write_results(one);
+    BOOST_TEST(postproc::compare(one.c, one.o) == 0);
+    std::string sec = section(test::slurp(one.o.results_root / "report" / "index.html"));
+    BOOST_TEST(sec.find("No regime map: the case has one operating point") != std::string::npos);
+    BOOST_TEST(!fs::exists(one.o.results_root / "report" / "plots" / "regime_map_dem.svg"));
+
+    auto speeds = grid_case("regime_speeds", "speed = [0.5, 1.0, 2.0]\nnormal_stress = 1000.0\n");
+    write_results(speeds);
+    BOOST_TEST(postproc::compare(speeds.c, speeds.o) == 0);
+    sec = section(test::slurp(speeds.o.results_root / "report" / "index.html"));
+    BOOST_TEST(sec.find("No regime map: one load (P = 1000 Pa)") != std::string::npos);
+    BOOST_TEST(!fs::exists(speeds.o.results_root / "report" / "plots" / "regime_map_dem.svg"));
+}
+
+BOOST_AUTO_TEST_CASE(a_hole_in_the_grid_is_drawn_as_one) {
+    auto s = grid_case("regime_hole", "speed = [0.5, 1.0, 2.0]\nnormal_stress = [500.0, 2000.0]\n");
+    write_results(s);
+    // the solver could not run one point: no result there, the rest drawn
+    fs::remove_all(result_dir(s.o.results_root, "dem", s.c.points.front().id));
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string map = test::slurp(s.o.results_root / "report" / "plots" / "regime_map_dem.svg");
+    BOOST_TEST(map.find("no usable result") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
