@@ -46,7 +46,7 @@ Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     prm.lattice.rows = static_cast<int>(rows);
     prm.lattice.columns = static_cast<int>(cols);
 
-    // Fill: [automaton] fill, else the point's solid fraction over the model maximum [ASSUMED].
+    // Fill: [automaton] fill, else the point's solid fraction over the model maximum [ASSUMPTION].
     if (const auto f = s.maybe_real("fill")) {
         prm.lattice.fill = *f;
         m.fill_source = "[automaton] fill";

@@ -168,7 +168,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
                               {"reached", r.steady.reached}, {"from_step", r.steady.step},
                               {"note", r.steady.note}};
     if (rp.used) {
-        steady["window"] = "second half of the last run [ASSUMED]";
+        steady["window"] = "second half of the last run [ASSUMPTION]";
         steady["run_lengths"] = rp.lengths;
         steady["max_du_over_U"] = rp.du;  // run k vs run k-1, k >= 2
         steady["max_dnu"] = rp.dnu;

@@ -10,9 +10,9 @@ constexpr double kMaxSteps = 1e8;
 SectionSpec section() {
     SectionSpec s("automaton", "lattice cellular automaton (Jasti & Higgs 2006)");
     s.choice("mode", "jh", {"jh", "vector"},
-             "rules: jh = JH06 as specified (scalar u_p); vector = momentum-consistent variant [ASSUMED]");
+             "rules: jh = JH06 as specified (scalar u_p); vector = momentum-consistent variant [ASSUMPTION]");
     s.real_optional("fill", Range::open_closed(0, 1), "",
-                    "fraction of lattice cells holding a grain; default solid_fraction / max_solid_fraction [ASSUMED]");
+                    "fraction of lattice cells holding a grain; default solid_fraction / max_solid_fraction [ASSUMPTION]");
     s.integer("steps", 10000, Range::closed(1, kMaxSteps), "time steps per replica (quick runs; JH06 used 10 000)");
     s.integer("steps_full", 50000, Range::closed(1, kMaxSteps), "time steps per replica with --full");
     s.integer("t_avg_start", 2000, Range::closed(0, kMaxSteps), "first step of the sampling window (a multiple of block)");
@@ -22,20 +22,20 @@ SectionSpec section() {
     s.integer("replicas_full", 16, Range::closed(1, 1024), "independent replicas with --full");
     s.integer("threads", 0, Range::closed(0, 1024), "threads for the replicas; 0 = one per core (--threads overrides)");
     s.integer("seed", 1, Range::at_least(0), "random seed (--seed overrides); same seed = same numbers");
-    s.real("s0_max", 0.1, Range::open_closed(0, 1), "", "initial u_p/U uniform on (0, s0_max] [ASSUMED]");
-    s.integer("tf_max", 50, Range::closed(1, 1e6), "slowest time factor; grains with u_p < U/tf_max are at rest [ASSUMED]");
+    s.real("s0_max", 0.1, Range::open_closed(0, 1), "", "initial u_p/U uniform on (0, s0_max] [ASSUMPTION]");
+    s.integer("tf_max", 50, Range::closed(1, 1e6), "slowest time factor; grains with u_p < U/tf_max are at rest [ASSUMPTION]");
     s.choice("tf_rounding", "round", {"round", "ceil", "accumulate"},
-             "time factor from u_p: round(U/u_p), ceil(U/u_p), or a continuous progress counter [ASSUMED]");
+             "time factor from u_p: round(U/u_p), ceil(U/u_p), or a continuous progress counter [ASSUMPTION]");
     s.choice("wall_speed", "sequential", {"sequential", "by_incidence"},
-             "wall speed law: Eq. 6 then Eq. 7, or Eq. 7 for normal / Eq. 6 for oblique impacts [ASSUMED]");
+             "wall speed law: Eq. 6 then Eq. 7, or Eq. 7 for normal / Eq. 6 for oblique impacts [ASSUMPTION]");
     s.real_optional("p_drag", Range::unit(), "",
-                    "probability of the +x drag notch at the moving wall; default = bottom-wall roughness [ASSUMED]");
+                    "probability of the +x drag notch at the moving wall; default = bottom-wall roughness [ASSUMPTION]");
     s.integer("pp_deflect", 90, Range::closed(45, 90), "mover deflection at a grain hit: 90 (billiard) or 45 degrees [RECON]");
     s.choice("struck_dir", "line", {"line", "keep"},
-             "struck grain's new direction: along the line of centres, or unchanged [ASSUMED]");
-    s.real("pp_jitter", 22.5, Range::closed(0, 90), "deg", "vector mode: spread of the line of centres [ASSUMED]");
+             "struck grain's new direction: along the line of centres, or unchanged [ASSUMPTION]");
+    s.real("pp_jitter", 22.5, Range::closed(0, 90), "deg", "vector mode: spread of the line of centres [ASSUMPTION]");
     s.choice("vec_blocked", "deflect", {"deflect", "wait"},
-             "vector mode, grains not approaching: deflect the mover by 45 degrees, or end its update [ASSUMED]");
+             "vector mode, grains not approaching: deflect the mover by 45 degrees, or end its update [ASSUMPTION]");
     s.real("steady_tol_u", 0.02, Range::positive(), "", "block test: max |change of u/U| between consecutive blocks");
     s.real("steady_tol_nu", 0.02, Range::positive(), "", "block test: max |change of occupancy| between blocks");
     s.choice("steady_state", "blocks", {"blocks", "runs"},

@@ -195,7 +195,7 @@ inline void Engine<Rng>::chain(Ctx& c, std::int32_t i, double u) {
             ++c.pp;
             if constexpr (M == Mode::JH) {
                 // Grain-grain, jh mode (§3.4): JH06 Eqs. 8-9 on both speeds; the struck grain moves
-                // off along the line of centres [ASSUMED] (struck_dir = line); the mover's two
+                // off along the line of centres [ASSUMPTION] (struck_dir = line); the mover's two
                 // candidates in the order a coin picks.
                 double uj = c.up[occ];
                 eq8_9_collide_weighted(u, uj, c.eq89_weight);
