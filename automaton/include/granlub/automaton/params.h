@@ -1,6 +1,6 @@
 // Plain parameters of one CA run, in lattice units (U = 1, cell = one grain diameter).
-// Names and defaults are the [automaton] keys (automaton/README.md); the tags say where each rule
-// comes from (docs/automaton-model.md §1).
+// Names and defaults are the [automaton] keys (automaton/README.md); the switches' case-file names
+// are in variants.h. The tags say where each rule comes from (docs/automaton-model.md §1).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -73,12 +73,5 @@ struct Params {
 
 // Throws granlub::Error naming the parameter, its value and what is allowed.
 void validate(const Params& p);
-
-const char* to_string(Mode m);
-const char* to_string(TfRounding t);
-const char* to_string(WallSpeed w);
-const char* to_string(StruckDir s);
-const char* to_string(VecBlocked v);
-const char* to_string(SteadyProtocol s);
 
 }  // namespace granlub::automaton
