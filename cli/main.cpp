@@ -167,6 +167,7 @@ int main(int argc, char** argv) {
 
     try {
         const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
+        for (const auto& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
         if (check->parsed()) {
             fmt::print("{}", granlub::describe(c));
             std::fflush(stdout);

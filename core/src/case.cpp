@@ -126,7 +126,9 @@ double number(const std::string& file, const std::string& section, const KeySpec
     return v == 0 ? 0.0 : v;  // -0 is 0: ids and comparisons must not tell them apart
 }
 
-Value parse_value(const std::string& file, const std::string& section, const KeySpec& k, const toml::node& n) {
+// `notes` receives a warning for each old spelling read (KeySpec::old_spellings).
+Value parse_value(const std::string& file, const std::string& section, const KeySpec& k, const toml::node& n,
+                  std::vector<std::string>& notes) {
     switch (k.type) {
         case KeyType::Real: {
             if (k.sweepable) {
@@ -167,9 +169,16 @@ Value parse_value(const std::string& file, const std::string& section, const Key
             auto* s = n.as_string();
             if (!s) bad_value(file, section, k, n, "expected a string");
             std::string v = s->get();
-            if (k.type == KeyType::Choice && std::find(k.choices.begin(), k.choices.end(), v) == k.choices.end())
-                bad_value(file, section, k, n, fmt::format("unknown value; {}", suggestion(v, k.choices)));
-            return v;
+            if (k.type != KeyType::Choice || std::find(k.choices.begin(), k.choices.end(), v) != k.choices.end())
+                return v;
+            for (const auto& [old, now] : k.old_spellings)
+                if (v == old) {
+                    notes.push_back(fmt::format("{}: [{}] {} = \"{}\" is the old spelling of \"{}\", read as that; "
+                                                "write \"{}\" (the old spellings will go)",
+                                                where(file, n.source()), section, k.name, old, now, now));
+                    return now;
+                }
+            bad_value(file, section, k, n, fmt::format("unknown value; {}", suggestion(v, k.choices)));
         }
     }
     throw Error("internal: unhandled key type");
@@ -177,7 +186,8 @@ Value parse_value(const std::string& file, const std::string& section, const Key
 
 // Fills `out` with the table's values, defaults for keys not given; rejects unknown keys.
 void read_section(const std::string& file, const SectionSpec& spec, const toml::table* t,
-                  const toml::source_region& header, Section& out, std::set<std::string>& given_as_list) {
+                  const toml::source_region& header, Section& out, std::set<std::string>& given_as_list,
+                  std::vector<std::string>& notes) {
     std::vector<std::string> names;
     for (const auto& k : spec.keys) names.push_back(k.name);
     if (t) {
@@ -192,7 +202,7 @@ void read_section(const std::string& file, const SectionSpec& spec, const toml::
                                             spec.name, clipped(one_line(name)), suggestion(name, all),
                                             fmt::join(all, ", ")));
             }
-            Value v = parse_value(file, spec.name, *k, node);
+            Value v = parse_value(file, spec.name, *k, node, notes);
             if (k->sweepable && node.is_array()) given_as_list.insert(name);
             out.set(name, std::move(v),
                     SourcePos{static_cast<int>(node.source().begin.line), static_cast<int>(node.source().begin.column)},
@@ -284,7 +294,7 @@ std::set<std::string> read_sections(toml::table& root, const std::string& source
         const toml::source_region header = t ? t->source() : toml::source_region{};
         Section sec(&spec, source);
         std::set<std::string> lists;
-        read_section(source, spec, t, header, sec, lists);
+        read_section(source, spec, t, header, sec, lists, c.warnings);
         if (spec.name == "operating") swept_lists = lists;
         c.sections.emplace(spec.name, std::move(sec));
     }

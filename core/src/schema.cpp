@@ -1,5 +1,6 @@
 #include "granlub/schema.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -117,6 +118,19 @@ SectionSpec& SectionSpec::choice(const std::string& key, std::string def, std::v
     return *this;
 }
 
+SectionSpec& SectionSpec::old_spellings(std::vector<std::pair<std::string, std::string>> old_to_new) {
+    if (keys.empty() || keys.back().type != KeyType::Choice)
+        throw Error(fmt::format("internal: [{}] old_spellings() follows a choice key", name));
+    KeySpec& k = keys.back();
+    for (const auto& [old, now] : old_to_new)
+        if (std::find(k.choices.begin(), k.choices.end(), now) == k.choices.end() ||
+            std::find(k.choices.begin(), k.choices.end(), old) != k.choices.end())
+            throw Error(fmt::format("internal: [{}] {}: old spelling \"{}\" of \"{}\" is a choice, or names none",
+                                    name, k.name, old, now));
+    k.old_spellings = std::move(old_to_new);
+    return *this;
+}
+
 const KeySpec* SectionSpec::find(const std::string& key) const {
     for (const auto& k : keys)
         if (k.name == key) return &k;
@@ -137,9 +151,17 @@ std::string value_text(const Value& v) {
     return std::visit(V{}, v);
 }
 
-std::string key_table_markdown(const SectionSpec& spec) {
-    std::string out = fmt::format("### [{}]\n\n{}\n\n| key | default | allowed | unit | meaning |\n|---|---|---|---|---|\n",
-                                  spec.name, spec.doc);
+namespace {
+// A table cell: a '|' in the text would end the cell.
+std::string cell(const std::string& text) {
+    std::string out;
+    for (char ch : text) out += ch == '|' ? std::string("\\|") : std::string(1, ch);
+    return out;
+}
+}  // namespace
+
+std::string key_table(const SectionSpec& spec) {
+    std::string out = "| key | default | allowed | unit | meaning |\n|---|---|---|---|---|\n";
     for (const auto& k : spec.keys) {
         std::string def = k.default_value ? value_text(*k.default_value) : (k.optional_key ? "(not set)" : "required");
         std::string allowed;
@@ -150,9 +172,16 @@ std::string key_table_markdown(const SectionSpec& spec) {
             case KeyType::String: allowed = "string"; break;
             case KeyType::Choice: allowed = fmt::format("{}", fmt::join(k.choices, ", ")); break;
         }
-        out += fmt::format("| `{}` | {} | {} | {} | {} |\n", k.name, def, allowed, k.unit, k.doc);
+        for (std::size_t i = 0; i < k.old_spellings.size(); ++i)
+            allowed += fmt::format("{}{} = {}", i ? ", " : "; old spellings still read: ", k.old_spellings[i].first,
+                                   k.old_spellings[i].second);
+        out += fmt::format("| `{}` | {} | {} | {} | {} |\n", k.name, cell(def), cell(allowed), k.unit, cell(k.doc));
     }
     return out;
+}
+
+std::string key_table_markdown(const SectionSpec& spec) {
+    return fmt::format("### [{}]\n\n{}\n\n{}", spec.name, spec.doc, key_table(spec));
 }
 
 void Section::set(const std::string& key, Value v, std::optional<SourcePos> pos, bool defaulted) {

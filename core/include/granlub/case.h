@@ -91,6 +91,7 @@ struct Case {
     std::vector<OperatingPoint> points;
     std::map<std::string, Section> sections;  // every declared section, resolved
     std::string file_hash;                    // hash of the file's bytes (provenance)
+    std::vector<std::string> warnings;        // accepted but to be changed: old spellings of values
 
     const Section& section(std::string_view name) const;
     // Points selected by --point (all when `id` is empty); throws naming the valid ids.
@@ -103,11 +104,12 @@ struct Case {
     std::map<std::string, std::string> inputs(std::string_view solver_section) const;
 };
 
-// All sections a case may have: the common ones (case, grains, walls, cell, operating,
-// body_forces) plus whatever the solver modules add.
+// All sections a case may have: the common ones (case, grains, walls with walls.bottom and
+// walls.top, cell, operating, body_forces, report), [particles], which the particle solvers share
+// (granlub/particle_section.h), plus whatever the solver modules add.
 class Schema {
 public:
-    static Schema common();            // the common sections only
+    static Schema common();            // the common sections and [particles]: every section but the solvers'
     Schema& add(SectionSpec section);  // a solver's section
     const SectionSpec* find(std::string_view name) const;
     const std::vector<SectionSpec>& sections() const { return sections_; }
@@ -125,7 +127,8 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
 // operating points. What `granlub check` prints.
 std::string describe(const Case& c);
 
-// True for the sections every case shares (case, grains, walls, cell, operating, body_forces).
+// True for the common sections (case, grains, walls, walls.bottom, walls.top, cell, operating,
+// body_forces, report): not [particles], which only the solvers that `use` it depend on.
 bool common_sections_contains(std::string_view name);
 
 // Stable 64-bit FNV-1a of bytes, as 16 hex digits.

@@ -1,6 +1,8 @@
 // Declaring case keys: every key is declared once, here-style, with its type, default, range,
-// unit and a one-line doc. The declaration drives validation, `granlub check` output and the
-// key tables in the READMEs (idea borrowed from deal.II's ParameterHandler).
+// unit and a one-line doc. The declaration drives validation, `granlub check` output, `granlub
+// keys` and the key tables in the READMEs, which are key_table() output between marker comments,
+// rewritten by `granlub keys --update` and checked by the repo_key_tables test (cli/key_tables.h).
+// (Idea borrowed from deal.II's ParameterHandler.)
 //
 // A module declares its own section in one function, one line per key (continuum/src/section.cpp
 // is a full example):
@@ -16,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -54,6 +57,8 @@ struct KeySpec {
     bool sweepable = false;              // a list of values is swept (only in [operating])
     Range range;
     std::vector<std::string> choices;    // for Choice
+    // Choice: old spellings still read, each with the choice it now is (SectionSpec::old_spellings).
+    std::vector<std::pair<std::string, std::string>> old_spellings;
     std::string unit;                    // SI unit, "" = dimensionless
     std::string doc;
 
@@ -91,6 +96,9 @@ struct SectionSpec {
     SectionSpec& string(const std::string& key, std::string def, const std::string& doc);
     SectionSpec& choice(const std::string& key, std::string def, std::vector<std::string> allowed,
                         const std::string& doc);
+    // Renamed values of the choice key declared last, as {old, new} pairs: a case that writes an old
+    // spelling still parses, as the new value, with a warning naming it (Case::warnings).
+    SectionSpec& old_spellings(std::vector<std::pair<std::string, std::string>> old_to_new);
 
     const KeySpec* find(const std::string& key) const;
 };
@@ -139,8 +147,10 @@ private:
 
 std::string value_text(const Value& v);
 
-// The section's keys as a Markdown table (key, default, allowed, unit, meaning): what `granlub keys`
-// prints and what the READMEs' key tables are made from.
+// The section's keys as a Markdown table (key, default, allowed, unit, meaning): what the READMEs'
+// marked key tables hold.
+std::string key_table(const SectionSpec& spec);
+// The same under a "### [section]" heading and the section's doc: what `granlub keys` prints.
 std::string key_table_markdown(const SectionSpec& spec);
 
 }  // namespace granlub
