@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "full_schema.h"
+#include "key_tables.h"
 #include "granlub/case.h"
 #include "granlub/error.h"
 #include "granlub/plausibility.h"
@@ -104,8 +105,18 @@ int main(int argc, char** argv) {
 
     auto* keys = app.add_subcommand("keys", "print every case key (type, default, range, unit, meaning) as Markdown");
     std::string keys_section;
-    keys->add_option("SECTION", keys_section, "only this section, e.g. continuum (default: every section)")
+    std::vector<std::string> keys_check, keys_update;
+    auto* section_opt = keys->add_option("SECTION", keys_section, "only this section, e.g. continuum (default: every section)")
         ->type_name("NAME");
+    auto* check_opt = keys->add_option("--check", keys_check,
+                                       "check the key tables between <!-- keys:SECTION --> and <!-- /keys --> in these "
+                                       "Markdown files against the declarations; exit 1 naming each that differs")
+        ->type_name("FILE...")
+        ->excludes(section_opt);
+    keys->add_option("--update", keys_update, "rewrite those tables from the declarations")
+        ->type_name("FILE...")
+        ->excludes(section_opt)
+        ->excludes(check_opt);
 
     std::vector<std::pair<CLI::App*, const granlub::cli::SolverModule*>> solver_cmds;
     for (const auto& m : granlub::cli::solver_modules()) {
@@ -152,6 +163,15 @@ int main(int argc, char** argv) {
 
     if (keys->parsed()) {
         const granlub::Schema schema = granlub::cli::full_schema();
+        if (!keys_check.empty() || !keys_update.empty()) {
+            try {
+                const bool update = !keys_update.empty();
+                return granlub::cli::check_key_tables(update ? keys_update : keys_check, update, schema);
+            } catch (const granlub::Error& e) {  // a file that cannot be read or written
+                fmt::print(stderr, "error: {}\n", e.what());
+                return 2;
+            }
+        }
         bool any = false;
         for (const auto& spec : schema.sections()) {
             if (!keys_section.empty() && spec.name != keys_section) continue;
