@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "figure_style.h"
 #include "granlub/results.h"
 #include "svg_plot.h"
 #include "text.h"

@@ -1,4 +1,4 @@
-#include "figure.h"
+#include "figure_style.h"
 
 namespace granlub::postproc {
 namespace {

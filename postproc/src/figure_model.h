@@ -1,6 +1,7 @@
-// A plot described once. One renderer draws what the report shows: svg_plot.h. The gnuplot
-// export (gnuplot.h) hands the same data, limits and labels to a user who wants their own
-// figure; it is a starting point, not a second drawing of the report's figure.
+// A line-and-point plot described once (the report's figures are built in figures.h). One
+// renderer draws it in the report: svg_plot.h. The gnuplot export (gnuplot.h) hands the same
+// data, limits and labels to a user who wants their own figure; it is a starting point, not a
+// second drawing of the report's figure. Colours and dashes per style: figure_style.h.
 #pragma once
 #include <optional>
 #include <string>
@@ -36,12 +37,5 @@ struct Figure {
     Axis x, y;
     std::vector<Series> series;
 };
-
-// Okabe & Ito (2008) colour-blind-safe palette, with dash patterns and markers so figures also
-// read in greyscale.
-const char* style_colour(int style);
-const char* style_dash(int style);     // SVG stroke-dasharray ("" = solid)
-int style_gnuplot_dashtype(int style);  // gnuplot dt
-int style_gnuplot_pointtype(int style, bool open);
 
 }  // namespace granlub::postproc
