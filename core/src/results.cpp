@@ -166,6 +166,7 @@ nlohmann::json summary_json(const Summary& s) {
     for (const auto& [name, v] : s.outputs) {
         out[name] = {{"value", v.value}, {"unit", v.unit}};
         out[name]["stderr"] = v.stderr_ ? nlohmann::json(*v.stderr_) : nlohmann::json(nullptr);
+        if (v.dt_error) out[name]["dt_error"] = *v.dt_error;
     }
     nlohmann::json prov = {{"granlub_version", s.provenance.version},
                            {"case_file", s.provenance.case_file},
@@ -195,6 +196,7 @@ Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
             sc.value = v.at("value").get<double>();
             sc.unit = v.value("unit", "");
             if (v.contains("stderr") && !v.at("stderr").is_null()) sc.stderr_ = v.at("stderr").get<double>();
+            if (v.contains("dt_error") && !v.at("dt_error").is_null()) sc.dt_error = v.at("dt_error").get<double>();
             s.outputs[name] = sc;
         }
         const auto& p = j.at("provenance");
@@ -240,7 +242,8 @@ void write_result(const std::filesystem::path& dir, const Profile& profile, cons
         if (!summary.outputs.count(name))
             throw Error(fmt::format("internal: {} {}: summary lacks output '{}'", summary.solver, summary.point, name));
     for (const auto& [name, v] : summary.outputs) {
-        if (!std::isfinite(v.value) || (v.stderr_ && !std::isfinite(*v.stderr_)))
+        if (!std::isfinite(v.value) || (v.stderr_ && !std::isfinite(*v.stderr_)) ||
+            (v.dt_error && !(std::isfinite(*v.dt_error) && *v.dt_error >= 0)))
             throw SolverError(fmt::format("{} {}: output '{}' is not finite; nothing written", summary.solver,
                                           summary.point, name));
         if (v.stderr_ && *v.stderr_ < 0)
@@ -277,6 +280,8 @@ std::string result_problem(const std::filesystem::path& dir, const Summary& s, c
         if (!std::isfinite(sc.value)) return fmt::format("{}: output \"{}\" is not a finite number", sp, name);
         if (sc.stderr_ && !(*sc.stderr_ >= 0 && std::isfinite(*sc.stderr_)))
             return fmt::format("{}: output \"{}\" has stderr {} (allowed: finite, >= 0)", sp, name, *sc.stderr_);
+        if (sc.dt_error && !(*sc.dt_error >= 0 && std::isfinite(*sc.dt_error)))
+            return fmt::format("{}: output \"{}\" has dt_error {} (allowed: finite, >= 0)", sp, name, *sc.dt_error);
     }
     if (!(s.value("max_solid_fraction") > 0))
         return fmt::format("{}: max_solid_fraction = {} (allowed: > 0)", sp, s.value("max_solid_fraction"));

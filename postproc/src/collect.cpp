@@ -65,10 +65,19 @@ std::optional<double> Run::wall_roughness(bool bottom) const {
 }
 
 std::optional<double> Run::scalar_stderr(const std::string& name) const {
+    return scaled_error(name, [](const Scalar& s) { return s.stderr_; });
+}
+
+std::optional<double> Run::scalar_dt_error(const std::string& name) const {
+    return scaled_error(name, [](const Scalar& s) { return s.dt_error; });
+}
+
+std::optional<double> Run::scaled_error(const std::string& name,
+                                        const std::function<std::optional<double>(const Scalar&)>& error) const {
     if (!usable()) return std::nullopt;
     auto se = [&](const std::string& n) -> std::optional<double> {
         const auto it = summary->outputs.find(n);
-        return it == summary->outputs.end() ? std::nullopt : it->second.stderr_;
+        return it == summary->outputs.end() ? std::nullopt : error(it->second);
     };
     if (name == "nu_bar_over_numax") {
         const auto s = se("mean_solid_fraction");

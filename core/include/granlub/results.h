@@ -5,7 +5,7 @@
 //   Required columns: y_over_H, u_over_U, solid_fraction, temperature_over_U2; statistical
 //   solvers add <column>_stderr; solvers may add further columns.
 // summary.json: {"format", "solver", "case", "point", "inputs", "outputs", "run", "provenance"}.
-//   outputs: name -> {"value", "stderr" (null when not statistical), "unit"}.
+//   outputs: name -> {"value", "stderr" (null when not statistical), "unit"[, "dt_error"]}.
 //   Standard outputs (see kStandardOutputs): normal and shear stress on each wall (Pa, positive
 //   magnitudes), slip at each wall (m/s: U - u(0) at the bottom, u(H) at the top),
 //   mean_solid_fraction, max_solid_fraction.
@@ -41,6 +41,9 @@ struct Scalar {
     double value = 0;
     std::optional<double> stderr_;  // standard error, for statistical solvers
     std::string unit;
+    // the time-step error estimate of a value checked at half the time step: |value(dt) - value(dt/2)|,
+    // the value being the dt/2 run's (the error of a first-order method at dt/2)
+    std::optional<double> dt_error = std::nullopt;
 };
 
 inline constexpr const char* kStandardOutputs[] = {

@@ -125,32 +125,66 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     return r;
 }
 
-// run.dt_refinement: the point rerun at half the time step in <dir>/dt_half (its profile.csv and
-// engine files stay there), compared with the main run.
-nlohmann::json refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
-                         const fs::path& dir, const std::string& prov, const DemOutputs& main) {
-    const Settings h = half_step(s);
-    const fs::path sub = dir / kRefineDir;
-    fs::create_directories(sub);
-    const OneRun r = run_once(c, p, h, init, sub, prov);
-    write_file_atomic(sub / "profile.csv",
-                      profile_csv(r.out.profile, {fmt::format("case {} point {}: the rerun at half the time step ({:g} "
-                                                              "s); the point's result is ../profile.csv",
-                                                              c.name, p.id, h.time_step),
-                                                  prov}));
-    nlohmann::json rec = dt_refinement_record(h.time_step, main.outputs, r.out.outputs);
-    nlohmann::json outputs;
-    for (const auto& [name, v] : r.out.outputs)
-        outputs[name] = v.stderr_ ? nlohmann::json{{"value", v.value}, {"stderr", *v.stderr_}}
-                                  : nlohmann::json{{"value", v.value}};
-    rec["refined_run"] = {{"folder", kRefineDir},
-                          {"steps", h.steps},
-                          {"status", r.out.run.at("status")},
-                          {"status_reason", r.out.run.at("status_reason")},
-                          {"steady_state_start_s", r.out.run.at("steady_state_start_s")},
-                          {"wall_clock_s", r.er.wall_clock_s},
-                          {"flow_regime", r.out.run.at("flow_regime")},
-                          {"outputs", outputs}};
+// The run of the point at half the time step is its answer, checked against the full step
+// ([dem] refine_dt): the full-step run goes into <dir>/dt_full (cold, from the initial grains, the
+// whole `time`); the half-step run into <dir> itself, warm-started from dt_full's final state for
+// refine_time (or, with refine_time = 0, cold from the initial grains for the whole `time`). Every
+// file of the point folder is then the half-step run's, and each output carries dt_error =
+// |value(dt) - value(dt/2)|, the error estimate of a first-order method at dt/2.
+struct Refined {
+    OneRun coarse, fine;
+    Settings h;  // the half-step run's settings
+    bool warm = false;
+};
+
+Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
+                  const fs::path& dir, const std::string& prov) {
+    Refined r;
+    const fs::path full = dir / kCoarseDir;
+    fs::create_directories(full);
+    r.coarse = run_once(c, p, s, init, full, prov);
+    write_file_atomic(full / "profile.csv",
+                      profile_csv(r.coarse.out.profile,
+                                  {fmt::format("case {} point {}: the run at the full time step ({:g} s), the check of "
+                                               "the point's result ../profile.csv (at half the step)",
+                                               c.name, p.id, s.time_step),
+                                   prov}));
+    r.warm = s.refine_time > 0;
+    InitialParticles start = init;
+    r.h = refine_settings(s);
+    if (r.warm) {  // from where the full-step run ended: its grains, spins and plate
+        const ParticleState st = read_particle_state(full / kFinalState);
+        start.particles = st.particles;
+        start.file = full / kFinalState;
+        start.reused = true;
+        if (s.load) r.h.plate_start = st.gap;
+    }
+    r.fine = run_once(c, p, r.h, start, dir, prov);
+    return r;
+}
+
+// run.dt_refinement: the full-step run against the half-step run; dt_error on every output both have.
+nlohmann::json refinement_record(const Refined& r, const Settings& s, std::map<std::string, Scalar>& outputs) {
+    nlohmann::json rec = dt_refinement_record(r.h.time_step, r.coarse.out.outputs, r.fine.out.outputs);
+    for (auto& [name, v] : outputs)
+        if (const auto it = r.coarse.out.outputs.find(name); it != r.coarse.out.outputs.end())
+            v.dt_error = std::abs(it->second.value - v.value);
+    nlohmann::json coarse;
+    for (const auto& [name, v] : r.coarse.out.outputs)
+        coarse[name] = v.stderr_ ? nlohmann::json{{"value", v.value}, {"stderr", *v.stderr_}}
+                                 : nlohmann::json{{"value", v.value}};
+    rec["reported"] = "the run at half the time step (this folder); dt_error = |value(dt) - value(dt/2)|";
+    rec["start"] = r.warm ? fmt::format("warm: from the full-step run's final state, {:g} s at dt/2", r.h.time)
+                          : std::string("cold: from the initial grains, the whole run at dt/2");
+    rec["full_step_run"] = {{"folder", kCoarseDir},
+                            {"time_step_s", s.time_step},
+                            {"steps", s.steps},
+                            {"status", r.coarse.out.run.at("status")},
+                            {"status_reason", r.coarse.out.run.at("status_reason")},
+                            {"steady_state_start_s", r.coarse.out.run.at("steady_state_start_s")},
+                            {"wall_clock_s", r.coarse.er.wall_clock_s},
+                            {"flow_regime", r.coarse.out.run.at("flow_regime")},
+                            {"outputs", coarse}};
     return rec;
 }
 
@@ -164,12 +198,17 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
-    const OneRun main = run_once(c, p, s, init, dir, prov);
-    const DemOutputs& out = main.out;
-    const EngineRun& er = main.er;
-    fs::remove_all(dir / kRefineDir);  // a rerun of an older result is not this one's
-    nlohmann::json dt_record;
-    if (s.refine_dt) dt_record = refine_dt(c, p, s, init, dir, prov, out);
+    fs::remove_all(dir / kCoarseDir);  // a check of an older result is not this one's
+    fs::remove_all(dir / "dt_half");   // where earlier versions put the half-step rerun
+    std::optional<Refined> refined;
+    OneRun single;
+    if (s.refine_dt)
+        refined = refine_dt(c, p, s, init, dir, prov);
+    else
+        single = run_once(c, p, s, init, dir, prov);
+    const OneRun& reported = refined ? refined->fine : single;
+    const Settings& rs = refined ? refined->h : s;
+    const DemOutputs& out = reported.out;
 
     PointResult r;
     r.profile = out.profile;
@@ -177,35 +216,47 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     r.summary.outputs = out.outputs;
     r.summary.provenance.settings["resolved"] = s.to_json();
     const double atoms = static_cast<double>(init.particles.size());
-    const double loop = er.loop_time_s > 0 ? er.loop_time_s : er.wall_clock_s;
-    const auto engine_steps = s.steps + s.persistence_run_steps();  // the loop time covers both runs
+    // the loop time covers the run and its persistence snapshots, of both runs when checked
+    double loop = 0, wall = 0, engine_steps = 0;
+    auto count = [&](const OneRun& run, const Settings& x) {
+        loop += run.er.loop_time_s > 0 ? run.er.loop_time_s : run.er.wall_clock_s;
+        wall += run.er.wall_clock_s;
+        engine_steps += static_cast<double>(x.steps + x.persistence_run_steps());
+    };
+    if (refined) count(refined->coarse, s);
+    count(reported, rs);
     r.summary.run = out.run;
     r.summary.run["model"] = s.model == Model::Impulse ? "impulse" : "hertz";
     r.summary.run["atoms"] = init.particles.size();
-    r.summary.run["steps"] = s.steps;
-    r.summary.run["time_step_s"] = s.time_step;
-    r.summary.run["simulated_time_s"] = static_cast<double>(s.steps) * s.time_step;
-    r.summary.run["wall_clock_s"] = er.wall_clock_s;
-    r.summary.run["loop_time_s"] = er.loop_time_s;
-    r.summary.run["atom_steps_per_s"] = atoms * static_cast<double>(engine_steps) / loop;
-    r.summary.run["ranks"] = er.ranks;
+    r.summary.run["steps"] = rs.steps;
+    r.summary.run["time_step_s"] = rs.time_step;
+    r.summary.run["simulated_time_s"] = static_cast<double>(rs.steps) * rs.time_step;
+    r.summary.run["wall_clock_s"] = wall;
+    r.summary.run["loop_time_s"] = loop;
+    r.summary.run["atom_steps_per_s"] = atoms * engine_steps / loop;
+    r.summary.run["ranks"] = reported.er.ranks;
     r.summary.run["initial_configuration"] = init.file.string();
     r.summary.run["initial_configuration_reused"] = init.reused;
     const auto& fr = out.run.at("flow_regime");
     r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s] regime: {}{}", out.line, init.particles.size(),
-                         s.steps, r.summary.run["atom_steps_per_s"].get<double>(),
+                         rs.steps, r.summary.run["atom_steps_per_s"].get<double>(),
                          fr.at("regime").is_string() ? fr.at("regime").get<std::string>() : std::string("unknown"),
                          fr.at("enduring_contacts").get<bool>() ? ", enduring contacts" : "");
-    if (s.refine_dt) {
-        r.summary.run["dt_refinement"] = dt_record;
-        const std::string why = dt_unconverged_reason(dt_record);
-        const RegimeStatus status = read_regime(r.summary.run).status;
-        if (!why.empty() && status == RegimeStatus::DtUnconverged)
-            set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
-        if (status == RegimeStatus::Transient)
-            r.line += " dt/2: no verdict (the run is not steady)";  // its stresses are not an answer to compare
-        else
-            r.line += why.empty() ? " dt/2: converged" : " dt/2: NOT CONVERGED (" + why + ")";
+    if (refined) {
+        const nlohmann::json rec = refinement_record(*refined, s, r.summary.outputs);
+        r.summary.run["dt_refinement"] = rec;
+        const bool coarse_steady = read_regime(refined->coarse.out.run).steady();
+        if (read_regime(r.summary.run).status == RegimeStatus::Transient || !coarse_steady) {
+            if (!coarse_steady && read_regime(r.summary.run).steady())
+                set_regime(r.summary.run, RegimeStatus::Transient,
+                           "the full-step run the half-step run checks against did not reach a steady state: "
+                           "run longer (--full)");
+            r.line += " [dt/2] no verdict on dt (a run is not steady)";  // its stresses are no answer to compare
+        } else {
+            const std::string why = dt_unconverged_reason(rec);
+            if (!why.empty()) set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
+            r.line += why.empty() ? " [dt/2] converged in dt" : " [dt/2] NOT CONVERGED in dt (" + why + ")";
+        }
     }
     return r;
 }

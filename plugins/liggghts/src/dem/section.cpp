@@ -20,8 +20,12 @@ SectionSpec section() {
            "impulse model: restitution only for approach speeds above this (below, e = 0); 0 = at every speed "
            "(our assumption, not S&T's)");
     s.boolean("refine_dt", false,
-              "also rerun every point at half the time step (same seed and initial grains) into the point's "
-              "folder dt_half/; run.dt_refinement compares the two (the result stays the full-step run)");
+              "check every point's time step: a run at the full step (folder dt_full/), then the point's answer at "
+              "half the step; run.dt_refinement compares them, each output carries dt_error = |value(dt) - "
+              "value(dt/2)|, and a point that moves more than the rule allows is dt-unconverged");
+    s.real("refine_time", 0.1, Range::non_negative(), "s",
+           "refine_dt: simulated time of the half-step run, warm-started from the full-step run's final state "
+           "(grains, spins, plate); 0 = a cold rerun of the whole `time` from the initial grains");
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");

@@ -100,12 +100,18 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
                fmt::format("{:g} s is {} steps of {:g} s: fewer than 20 wall-stress samples of {} steps "
                            "(sample_every); run longer",
                            st.time, st.steps, st.time_step, st.sample_every));
-    const auto snaps = s.integer("snapshots");
-    st.snapshot_every = std::max<std::int64_t>(1, st.steps / snaps);
+    st.snapshots = s.integer("snapshots");
+    st.snapshot_every = std::max<std::int64_t>(1, st.steps / st.snapshots);
     st.stations = static_cast<std::size_t>(s.integer("stations"));
     st.blocks = static_cast<std::size_t>(s.integer("blocks"));
     st.skin = s.real("skin") * c.grains.diameter;
     st.refine_dt = s.boolean("refine_dt");
+    st.refine_time = s.real("refine_time");
+    if (st.refine_dt) try {  // a refine_time too short fails now, not after the full-step run
+            (void)refine_settings(st);
+        } catch (const CaseError& e) {
+            s.fail("refine_time", e.what());
+        }
     if (st.ring) {
         st.annulus = annulus(c);
         const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
@@ -122,6 +128,24 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
                                                     std::max<std::int64_t>(1, st.steps / 100));
 
     return st;
+}
+
+Settings refine_settings(const Settings& s) {
+    Settings h = half_step(s);
+    if (s.refine_time <= 0) return h;
+    h.time = s.refine_time;
+    const std::int64_t window = h.load ? h.servo_every : h.sample_every;
+    h.steps = static_cast<std::int64_t>(std::ceil(h.time / h.time_step - 1e-9));
+    h.steps = (h.steps + window - 1) / window * window;
+    const auto fail = [&](const std::string& why) {
+        throw CaseError(fmt::format("{} steps of {:g} s {}; run the half-step check longer", h.steps, h.time_step,
+                                    why));
+    };
+    if (h.steps < 20 * h.sample_every) fail(fmt::format("give fewer than 20 wall-stress samples of {} steps", h.sample_every));
+    if (h.load && h.steps < kMinServoUpdates * h.servo_every)
+        fail(fmt::format("give fewer than {} plate updates of {} steps", kMinServoUpdates, h.servo_every));
+    h.snapshot_every = std::max<std::int64_t>(1, h.steps / s.snapshots);
+    return h;
 }
 
 Settings half_step(const Settings& s) {
@@ -153,6 +177,7 @@ nlohmann::json Settings::to_json() const {
                             {"box_m", {box.length, box.gap, box.width}},
                             {"periodic_z", box.periodic_z},
                             {"refine_dt", refine_dt},
+                            {"refine_time_s", refine_time},
                             {"geometry", ring ? "annulus" : "slice"},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});

@@ -36,7 +36,9 @@ struct Settings : ServoSettings {
     std::uint64_t seed = 1;
     double velocity_noise = 0;
     bool vtk = false;
-    bool refine_dt = false;       // also rerun the point at time_step / 2 (run.dt_refinement)
+    bool refine_dt = false;       // the point's answer at time_step / 2, checked against time_step (run.dt_refinement)
+    double refine_time = 0;       // s, the half-step run warm-started from the full-step run's end; 0: cold, `time`
+    std::int64_t snapshots = 0;   // particle snapshots per run ([dem] snapshots)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
     std::int64_t persistence_every = 1;
@@ -82,6 +84,11 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o);
 // The same run at half the time step: the same simulated time, blocks, snapshots, servo windows
 // and persistence interval in seconds, twice the steps.
 Settings half_step(const Settings& s);
+
+// The half-step run of refine_dt: half_step(s), and with refine_time > 0 that simulated time (whole
+// servo windows, the same number of snapshots). Throws CaseError (why, without the key: resolve()
+// names it) when it is too short for the blocks or the servo.
+Settings refine_settings(const Settings& s);
 
 // Reference speed of the impulse model's time step: the largest of
 //  - the wall speed U;
