@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "granlub/results.h"
-#include "granlub/schema.h"
+#include "granlub/results/results.h"
+#include "granlub/case/schema.h"
 #include "granlub/text.h"
 
 namespace granlub::cli {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 
 namespace granlub::cli {
 

@@ -13,11 +13,11 @@
 
 #include "full_schema.h"
 #include "key_tables.h"
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/error.h"
-#include "granlub/plausibility.h"
-#include "granlub/results.h"
-#include "granlub/run_lock.h"
+#include "granlub/case/plausibility.h"
+#include "granlub/results/results.h"
+#include "granlub/run/run_lock.h"
 #include "granlub/text.h"
 #include "modules.h"
 #include "run_all.h"
@@ -60,7 +60,7 @@ void add_point(CLI::App* sub, Args& a) {
         ->type_name("ID");
 }
 
-// Another run holding the same results (granlub/run_lock.h): wait for it, or fail at once.
+// Another run holding the same results (granlub/run/run_lock.h): wait for it, or fail at once.
 void add_wait(CLI::App* sub, Args& a) {
     sub->add_flag("--wait,!--no-wait", a.opt.wait,
                   "when another run is using the same results: wait for it, saying which run (default), or with "

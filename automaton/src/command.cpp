@@ -12,10 +12,10 @@
 #include "granlub/automaton/variants.h"
 #include "granlub/automaton/vtk.h"
 #include "granlub/error.h"
-#include "granlub/progress.h"
-#include "granlub/regime.h"
-#include "granlub/results.h"
-#include "granlub/run_id.h"
+#include "granlub/run/progress.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_id.h"
 
 namespace granlub::automaton {
 

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "figure_style.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "svg_plot.h"
 #include "text.h"
 

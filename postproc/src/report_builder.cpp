@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "granlub/regime.h"
-#include "granlub/results.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/results.h"
 #include "ring_slice.h"
 #include "scope.h"
 #include "text.h"

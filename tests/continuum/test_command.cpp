@@ -10,11 +10,11 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/continuum/case_setup.h"
 #include "granlub/continuum/command.h"
 #include "granlub/error.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;

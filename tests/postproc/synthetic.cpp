@@ -5,8 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "granlub/regime.h"
-#include "granlub/results.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/results.h"
 
 namespace granlub::test {
 

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "granlub/automaton/params.h"
-#include "granlub/case.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::automaton {
 

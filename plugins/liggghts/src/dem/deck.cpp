@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/flow_regime.h"
+#include "granlub/statistics/flow_regime.h"
 #include "granlub/text.h"
 
 namespace granlub::dem {
