@@ -2,56 +2,50 @@
 // its rule, and one row here.
 #include "granlub/automaton/variants.h"
 
+#include <initializer_list>
+
 namespace granlub::automaton {
 
 namespace {
-// The table, its names checked once, where it is built.
+// The table of E, built and its names checked once, on first use (one table per enum, so the
+// function-local static is that table).
 template <class E>
-std::vector<Variant<E>> checked(std::vector<Variant<E>> table, const char* key) {
-    registry_checked(table, key);
+const std::vector<Variant<E>>& once(std::initializer_list<Variant<E>> rows, const char* key) {
+    static const std::vector<Variant<E>> table = [&] {
+        std::vector<Variant<E>> t(rows);
+        registry_checked(t, key);
+        return t;
+    }();
     return table;
 }
 }  // namespace
 
 template <>
 const std::vector<Variant<Mode>>& variants<Mode>() {
-    static const auto t = checked<Mode>({{"jh", Mode::JH}, {"vector", Mode::Vector}}, "mode");
-    return t;
+    return once<Mode>({{"jh", Mode::JH}, {"vector", Mode::Vector}}, "mode");
 }
-
 template <>
 const std::vector<Variant<TfRounding>>& variants<TfRounding>() {
-    static const auto t = checked<TfRounding>(
+    return once<TfRounding>(
         {{"round", TfRounding::Round}, {"ceil", TfRounding::Ceil}, {"accumulate", TfRounding::Accumulate}},
         "tf_rounding");
-    return t;
 }
-
 template <>
 const std::vector<Variant<WallSpeed>>& variants<WallSpeed>() {
-    static const auto t = checked<WallSpeed>(
-        {{"sequential", WallSpeed::Sequential}, {"by_incidence", WallSpeed::ByIncidence}}, "wall_speed");
-    return t;
+    return once<WallSpeed>({{"sequential", WallSpeed::Sequential}, {"by_incidence", WallSpeed::ByIncidence}},
+                           "wall_speed");
 }
-
 template <>
 const std::vector<Variant<StruckDir>>& variants<StruckDir>() {
-    static const auto t = checked<StruckDir>({{"line", StruckDir::Line}, {"keep", StruckDir::Keep}}, "struck_dir");
-    return t;
+    return once<StruckDir>({{"line", StruckDir::Line}, {"keep", StruckDir::Keep}}, "struck_dir");
 }
-
 template <>
 const std::vector<Variant<VecBlocked>>& variants<VecBlocked>() {
-    static const auto t =
-        checked<VecBlocked>({{"deflect", VecBlocked::Deflect}, {"wait", VecBlocked::Wait}}, "vec_blocked");
-    return t;
+    return once<VecBlocked>({{"deflect", VecBlocked::Deflect}, {"wait", VecBlocked::Wait}}, "vec_blocked");
 }
-
 template <>
 const std::vector<Variant<SteadyProtocol>>& variants<SteadyProtocol>() {
-    static const auto t =
-        checked<SteadyProtocol>({{"blocks", SteadyProtocol::Blocks}, {"runs", SteadyProtocol::Runs}}, "steady_state");
-    return t;
+    return once<SteadyProtocol>({{"blocks", SteadyProtocol::Blocks}, {"runs", SteadyProtocol::Runs}}, "steady_state");
 }
 
 }  // namespace granlub::automaton
