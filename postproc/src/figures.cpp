@@ -258,7 +258,10 @@ std::vector<Figure> slip_figures(const Collection& col) {
             walls += fmt::format(" {} had a frictional plane here, which has no R{}.", list_text(planes),
                                  swept ? ": not drawn" : "");
         if (!bumps.empty())
-            walls += fmt::format(" {} had a layer of bumps built to the point's R (drawn at the R they give).",
+            walls += fmt::format(" {} had a layer of bumps built to the point's R (drawn at the R they give); "
+                                 "their slip is the wall's speed against the grains' mean velocity in the first "
+                                 "coarse-graining station clear of the bumps (half a bump diameter from the "
+                                 "plane through their centres), not at the plane.",
                                  list_text(bumps));
         f.caption = (bottom ? "Slip (U − u(0)) / U" : "Slip u(H) / U") +
                     (swept ? std::string(" against the ") + wall + "'s roughness R"

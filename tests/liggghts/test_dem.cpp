@@ -111,6 +111,24 @@ BOOST_AUTO_TEST_CASE(same_seed_same_numbers) {
     BOOST_TEST(sa.value("shear_stress_bottom") == sb.value("shear_stress_bottom"));
 }
 
+// How many points run at once: a last round that would leave cores idle is folded into the first
+// (single-rank points, no --threads), never with MPI ranks or an explicit --threads.
+BOOST_AUTO_TEST_CASE(points_at_once_leaves_no_idle_last_round) {
+    RunOptions o;  // all cores, one rank per point
+    BOOST_TEST(points_at_once(o, 1, 2) == 1);
+    BOOST_TEST(points_at_once(o, 2, 2) == 2);
+    BOOST_TEST(points_at_once(o, 3, 2) == 3);  // 1.5 rounds shared, not 2 rounds
+    BOOST_TEST(points_at_once(o, 4, 2) == 2);  // two full rounds
+    BOOST_TEST(points_at_once(o, 7, 4) == 7);
+    BOOST_TEST(points_at_once(o, 8, 4) == 4);
+    RunOptions ranks;
+    ranks.np = 2;
+    BOOST_TEST(points_at_once(ranks, 3, 2) == 1);
+    RunOptions capped;
+    capped.threads = 2;
+    BOOST_TEST(points_at_once(capped, 3, 8) == 2);
+}
+
 // Points run side by side (one LIGGGHTS process each) give exactly what they give one at a time.
 BOOST_AUTO_TEST_CASE(points_side_by_side_give_the_same_numbers) {
     const Case c = parse_case(edit(kCase, "speed = \\[1.0\\]", "speed = [1.0, 1.5, 2.0]"), "tiny.toml", schema());

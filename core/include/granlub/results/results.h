@@ -13,7 +13,7 @@
 // profile.csv without a current summary, which counts as incomplete.
 // Every file of a point names the run that wrote it (run_id.h): summary.json's provenance.run_id
 // and a "# run_id <id>" line in profile.csv and in each of the point's other tables (section.csv,
-// width_profile.csv, gap.csv, final_state.csv, timeseries.csv, dt_half/profile.csv); a point
+// width_profile.csv, gap.csv, final_state.csv, timeseries.csv, dt_full/profile.csv); a point
 // whose files name different runs is corrupt.
 #pragma once
 #include <cstdint>
@@ -31,6 +31,11 @@
 #include "granlub/results/table.h"
 
 namespace granlub {
+
+// A particle point checked in its time step ([dem] refine_dt) keeps the full-step run it was checked
+// against in this folder beside its files; its profile is one of the point's tables.
+inline constexpr const char* kDtCheckDir = "dt_full";
+inline constexpr const char* kDtCheckProfile = "dt_full/profile.csv";
 
 struct Case;
 struct OperatingPoint;

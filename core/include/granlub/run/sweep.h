@@ -57,7 +57,9 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
               int points_at_once = 1, const std::vector<std::string>& reads = {});
 
 // How many single-process points fit the machine: --threads (default: all cores) over --np ranks
-// per point, at least 1 and at most `points`.
-int points_at_once(const RunOptions& o, int points);
+// per point, at least 1 and at most `points`; all of them when they are fewer than two rounds of
+// single-rank points and --threads is not given (the kernel shares the cores; no idle last round).
+// machine_cores: 0 = this machine's.
+int points_at_once(const RunOptions& o, int points, int machine_cores = 0);
 
 }  // namespace granlub

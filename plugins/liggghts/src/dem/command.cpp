@@ -140,7 +140,7 @@ struct Refined {
 Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
                   const fs::path& dir, const std::string& prov) {
     Refined r;
-    const fs::path full = dir / kCoarseDir;
+    const fs::path full = dir / kDtCheckDir;
     fs::create_directories(full);
     r.coarse = run_once(c, p, s, init, full, prov);
     write_file_atomic(full / "profile.csv",
@@ -176,7 +176,7 @@ nlohmann::json refinement_record(const Refined& r, const Settings& s, std::map<s
     rec["reported"] = "the run at half the time step (this folder); dt_error = |value(dt) - value(dt/2)|";
     rec["start"] = r.warm ? fmt::format("warm: from the full-step run's final state, {:g} s at dt/2", r.h.time)
                           : std::string("cold: from the initial grains, the whole run at dt/2");
-    rec["full_step_run"] = {{"folder", kCoarseDir},
+    rec["full_step_run"] = {{"folder", kDtCheckDir},
                             {"time_step_s", s.time_step},
                             {"steps", s.steps},
                             {"status", r.coarse.out.run.at("status")},
@@ -198,7 +198,7 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
-    fs::remove_all(dir / kCoarseDir);  // a check of an older result is not this one's
+    fs::remove_all(dir / kDtCheckDir);  // a check of an older result is not this one's
     fs::remove_all(dir / "dt_half");   // where earlier versions put the half-step rerun
     std::optional<Refined> refined;
     OneRun single;

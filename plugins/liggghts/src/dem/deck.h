@@ -18,7 +18,6 @@ inline constexpr const char* kWallFile = "walls.txt";       // fix ave/time: wal
 inline constexpr const char* kSnapshots = "snapshots.txt";  // dump custom: kSnapshotColumns
 inline constexpr const char* kContactsFile = "contacts.txt";  // the persistence snapshots after the run
 inline constexpr const char* kSnapshotColumns = "id x y z vx vy vz radius";  // both dumps, sorted by id
-inline constexpr const char* kCoarseDir = "dt_full";  // [dem] refine_dt: the full-step run the point is checked against
 inline constexpr const char* kLog = "log.liggghts";
 inline constexpr const char* kPlateFile = "plate.txt";      // control = load: plate position per servo update
 inline constexpr const char* kPvdFile = "post/particles.pvd";  // --vtk: ParaView collection
