@@ -110,10 +110,11 @@ int main(int argc, char** argv) {
         ->type_name("NAME");
     auto* check_opt = keys->add_option("--check", keys_check,
                                        "check the key tables between <!-- keys:SECTION --> and <!-- /keys --> in these "
-                                       "Markdown files against the declarations; exit 1 naming each that differs")
+                                       "Markdown files against the declarations; exit 1 naming each that differs (default: none; print the "
+                                       "tables)")
         ->type_name("FILE...")
         ->excludes(section_opt);
-    keys->add_option("--update", keys_update, "rewrite those tables from the declarations")
+    keys->add_option("--update", keys_update, "rewrite those tables from the declarations (default: none)")
         ->type_name("FILE...")
         ->excludes(section_opt)
         ->excludes(check_opt);
