@@ -2,7 +2,7 @@
 // module compiled in. Its own file so that the case-parser fuzzer (tests/core/fuzz) can compile
 // it with the section declarations alone, without the solvers.
 #pragma once
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 
 namespace granlub::cli {
 

@@ -12,11 +12,12 @@
 #include <fmt/format.h>
 
 #include "full_schema.h"
-#include "granlub/case.h"
+#include "key_tables.h"
+#include "granlub/case/case.h"
 #include "granlub/error.h"
-#include "granlub/plausibility.h"
-#include "granlub/results.h"
-#include "granlub/run_lock.h"
+#include "granlub/case/plausibility.h"
+#include "granlub/results/results.h"
+#include "granlub/run/run_lock.h"
 #include "granlub/text.h"
 #include "modules.h"
 #include "run_all.h"
@@ -59,7 +60,7 @@ void add_point(CLI::App* sub, Args& a) {
         ->type_name("ID");
 }
 
-// Another run holding the same results (granlub/run_lock.h): wait for it, or fail at once.
+// Another run holding the same results (granlub/run/run_lock.h): wait for it, or fail at once.
 void add_wait(CLI::App* sub, Args& a) {
     sub->add_flag("--wait,!--no-wait", a.opt.wait,
                   "when another run is using the same results: wait for it, saying which run (default), or with "
@@ -104,8 +105,19 @@ int main(int argc, char** argv) {
 
     auto* keys = app.add_subcommand("keys", "print every case key (type, default, range, unit, meaning) as Markdown");
     std::string keys_section;
-    keys->add_option("SECTION", keys_section, "only this section, e.g. continuum (default: every section)")
+    std::vector<std::string> keys_check, keys_update;
+    auto* section_opt = keys->add_option("SECTION", keys_section, "only this section, e.g. continuum (default: every section)")
         ->type_name("NAME");
+    auto* check_opt = keys->add_option("--check", keys_check,
+                                       "check the key tables between <!-- keys:SECTION --> and <!-- /keys --> in these "
+                                       "Markdown files against the declarations; exit 1 naming each that differs (default: none; print the "
+                                       "tables)")
+        ->type_name("FILE...")
+        ->excludes(section_opt);
+    keys->add_option("--update", keys_update, "rewrite those tables from the declarations (default: none)")
+        ->type_name("FILE...")
+        ->excludes(section_opt)
+        ->excludes(check_opt);
 
     std::vector<std::pair<CLI::App*, const granlub::cli::SolverModule*>> solver_cmds;
     for (const auto& m : granlub::cli::solver_modules()) {
@@ -152,6 +164,15 @@ int main(int argc, char** argv) {
 
     if (keys->parsed()) {
         const granlub::Schema schema = granlub::cli::full_schema();
+        if (!keys_check.empty() || !keys_update.empty()) {
+            try {
+                const bool update = !keys_update.empty();
+                return granlub::cli::check_key_tables(update ? keys_update : keys_check, update, schema);
+            } catch (const granlub::Error& e) {  // a file that cannot be read or written
+                fmt::print(stderr, "error: {}\n", e.what());
+                return 2;
+            }
+        }
         bool any = false;
         for (const auto& spec : schema.sections()) {
             if (!keys_section.empty() && spec.name != keys_section) continue;
@@ -167,6 +188,7 @@ int main(int argc, char** argv) {
 
     try {
         const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
+        for (const auto& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
         if (check->parsed()) {
             fmt::print("{}", granlub::describe(c));
             std::fflush(stdout);

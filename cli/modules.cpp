@@ -6,7 +6,7 @@
 
 #include "granlub/error.h"
 #include "granlub/registry.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "solver_commands.h"
 
 #ifdef GRANLUB_HAVE_POSTPROC

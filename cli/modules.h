@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "granlub/case.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::cli {
 

@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/results.h"
-#include "granlub/run_lock.h"
+#include "granlub/results/results.h"
+#include "granlub/run/run_lock.h"
 #include "modules.h"
 
 namespace granlub::cli {

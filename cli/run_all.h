@@ -2,8 +2,8 @@
 #include <string>
 #include <vector>
 
-#include "granlub/case.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::cli {
 // `granlub run`: the selected solvers (all when empty), then compare; one overall progress line

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "granlub/automaton/variants.h"
 #include "granlub/error.h"
 
 namespace granlub::automaton {
@@ -13,11 +14,10 @@ namespace {
 // Memory of the lattice and its grains (a few tens of bytes per cell) and int indices bound it.
 constexpr double kMaxLatticeCells = 5e7;
 
+// The variant the case names for `key` (the schema has checked that it is one).
 template <class E>
-E pick(const std::string& v, std::initializer_list<std::pair<const char*, E>> table) {
-    for (const auto& [name, e] : table)
-        if (v == name) return e;
-    throw Error("automaton: unknown value " + v);  // unreachable: the schema checks choices
+E pick(const Section& s, const char* key) {
+    return variant<E>(s.string(key), key);
 }
 
 }  // namespace
@@ -46,7 +46,7 @@ Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     prm.lattice.rows = static_cast<int>(rows);
     prm.lattice.columns = static_cast<int>(cols);
 
-    // Fill: [automaton] fill, else the point's solid fraction over the model maximum [ASSUMED].
+    // Fill: [automaton] fill, else the point's solid fraction over the model maximum [ASSUMPTION].
     if (const auto f = s.maybe_real("fill")) {
         prm.lattice.fill = *f;
         m.fill_source = "[automaton] fill";
@@ -72,7 +72,7 @@ Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
 
     // Rules.
     Rules& r = prm.rules;
-    r.mode = pick<Mode>(s.string("mode"), {{"jh", Mode::JH}, {"vector", Mode::Vector}});
+    r.mode = pick<Mode>(s, "mode");
     r.e_p = c.grains.restitution;
     r.e_w_bottom = p.bottom.restitution;
     r.e_w_top = p.top.restitution;
@@ -80,15 +80,12 @@ Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     r.R_top = p.top.roughness;
     r.p_drag = s.maybe_real("p_drag").value_or(r.R_bottom);
     r.tf_max = static_cast<int>(s.integer("tf_max"));
-    r.tf_rounding = pick<TfRounding>(s.string("tf_rounding"), {{"round", TfRounding::Round},
-                                                                {"ceil", TfRounding::Ceil},
-                                                                {"accumulate", TfRounding::Accumulate}});
-    r.wall_speed = pick<WallSpeed>(s.string("wall_speed"),
-                                   {{"sequential", WallSpeed::Sequential}, {"by_incidence", WallSpeed::ByIncidence}});
+    r.tf_rounding = pick<TfRounding>(s, "tf_rounding");
+    r.wall_speed = pick<WallSpeed>(s, "wall_speed");
     r.pp_deflect = static_cast<int>(s.integer("pp_deflect"));
-    r.struck_dir = pick<StruckDir>(s.string("struck_dir"), {{"line", StruckDir::Line}, {"keep", StruckDir::Keep}});
+    r.struck_dir = pick<StruckDir>(s, "struck_dir");
     r.pp_jitter_deg = s.real("pp_jitter");
-    r.vec_blocked = pick<VecBlocked>(s.string("vec_blocked"), {{"deflect", VecBlocked::Deflect}, {"wait", VecBlocked::Wait}});
+    r.vec_blocked = pick<VecBlocked>(s, "vec_blocked");
 
     // Run.
     RunSpec& run = prm.run;
@@ -102,8 +99,7 @@ Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     run.seed = o.seed ? *o.seed : static_cast<std::uint64_t>(s.integer("seed"));
     run.steady_tol_u = s.real("steady_tol_u");
     run.steady_tol_nu = s.real("steady_tol_nu");
-    run.steady_protocol = pick<SteadyProtocol>(s.string("steady_state"), {{"blocks", SteadyProtocol::Blocks},
-                                                                          {"runs", SteadyProtocol::Runs}});
+    run.steady_protocol = pick<SteadyProtocol>(s, "steady_state");
     run.runs_start = s.integer("runs_start");
     run.runs_max_steps = s.integer("runs_max_steps");
     run.runs_tol_u = s.real("runs_tol_u");

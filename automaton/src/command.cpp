@@ -9,12 +9,13 @@
 
 #include "granlub/automaton/case_mapping.h"
 #include "granlub/automaton/ensemble.h"
+#include "granlub/automaton/variants.h"
 #include "granlub/automaton/vtk.h"
 #include "granlub/error.h"
-#include "granlub/progress.h"
-#include "granlub/regime.h"
-#include "granlub/results.h"
-#include "granlub/run_id.h"
+#include "granlub/run/progress.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_id.h"
 
 namespace granlub::automaton {
 
@@ -23,7 +24,7 @@ namespace {
 nlohmann::json settings_json(const Params& p) {
     const auto& r = p.rules;
     const auto& run = p.run;
-    return {{"mode", to_string(r.mode)},
+    return {{"mode", variant_name(r.mode)},
             {"rows", p.lattice.rows},
             {"columns", p.lattice.columns},
             {"particles", p.lattice.particles()},
@@ -36,12 +37,12 @@ nlohmann::json settings_json(const Params& p) {
             {"R_top", r.R_top},
             {"p_drag", r.p_drag},
             {"tf_max", r.tf_max},
-            {"tf_rounding", to_string(r.tf_rounding)},
-            {"wall_speed", to_string(r.wall_speed)},
+            {"tf_rounding", variant_name(r.tf_rounding)},
+            {"wall_speed", variant_name(r.wall_speed)},
             {"pp_deflect", r.pp_deflect},
-            {"struck_dir", to_string(r.struck_dir)},
+            {"struck_dir", variant_name(r.struck_dir)},
             {"pp_jitter", r.pp_jitter_deg},
-            {"vec_blocked", to_string(r.vec_blocked)},
+            {"vec_blocked", variant_name(r.vec_blocked)},
             {"steps", run.steps},
             {"t_avg_start", run.t_avg_start},
             {"block", run.block},
@@ -50,7 +51,7 @@ nlohmann::json settings_json(const Params& p) {
             {"seed", run.seed},
             {"steady_tol_u", run.steady_tol_u},
             {"steady_tol_nu", run.steady_tol_nu},
-            {"steady_state", to_string(run.steady_protocol)},
+            {"steady_state", variant_name(run.steady_protocol)},
             {"runs_start", run.runs_start},
             {"runs_max_steps", run.runs_max_steps},
             {"runs_tol_u", run.runs_tol_u},
@@ -164,11 +165,11 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
 
     const auto& T = r.totals;
     const double reps = r.replicas;
-    nlohmann::json steady = {{"protocol", to_string(prm.run.steady_protocol)},
+    nlohmann::json steady = {{"protocol", variant_name(prm.run.steady_protocol)},
                               {"reached", r.steady.reached}, {"from_step", r.steady.step},
                               {"note", r.steady.note}};
     if (rp.used) {
-        steady["window"] = "second half of the last run [ASSUMED]";
+        steady["window"] = "second half of the last run [ASSUMPTION]";
         steady["run_lengths"] = rp.lengths;
         steady["max_du_over_U"] = rp.du;  // run k vs run k-1, k >= 2
         steady["max_dnu"] = rp.dnu;

@@ -235,7 +235,7 @@ std::vector<std::vector<Block>> blocks_of(const std::vector<std::unique_ptr<Repl
     return blocks;
 }
 
-// The parameters of run T of the §4.5 protocol: T steps, read over their second half [ASSUMED].
+// The parameters of run T of the §4.5 protocol: T steps, read over their second half [ASSUMPTION].
 Params run_of_length(const Params& p, std::int64_t T) {
     Params q = p;
     q.run.steps = T;

@@ -78,15 +78,6 @@ void validate(const Params& p) {
     if (run.snapshot_every < 0) bad("snapshot_every", run.snapshot_every, "an integer >= 0 (0 = none)");
 }
 
-const char* to_string(Mode m) { return m == Mode::JH ? "jh" : "vector"; }
-const char* to_string(TfRounding t) {
-    return t == TfRounding::Round ? "round" : t == TfRounding::Ceil ? "ceil" : "accumulate";
-}
-const char* to_string(WallSpeed w) { return w == WallSpeed::Sequential ? "sequential" : "by_incidence"; }
-const char* to_string(StruckDir s) { return s == StruckDir::Line ? "line" : "keep"; }
-const char* to_string(VecBlocked v) { return v == VecBlocked::Deflect ? "deflect" : "wait"; }
-const char* to_string(SteadyProtocol s) { return s == SteadyProtocol::Blocks ? "blocks" : "runs"; }
-
 const char* dir_name(int d) {
     static const char* names[8] = {"E", "NE", "N", "NW", "W", "SW", "S", "SE"};
     return names[d & 7];

@@ -1,5 +1,5 @@
 #include "granlub/automaton/vtk.h"
-#include "granlub/pvd.h"
+#include "granlub/results/pvd.h"
 
 #include <cmath>
 

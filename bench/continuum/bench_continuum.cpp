@@ -14,7 +14,7 @@ using namespace granlub::continuum;
 
 namespace {
 
-Problem sawyer(double U, double P, Mode mode = Mode::Load, const char* wall = "k") {
+Problem sawyer(double U, double P, Mode mode = Mode::Load, const char* wall = "kinetic") {
     Problem p;
     p.closures = std::make_shared<Closures>(Lun84Params{0.9, 1.0, true},
                                             std::shared_ptr<const RadialDistribution>(make_g0("ogawa", 0.65)));

@@ -17,8 +17,8 @@ int main() {
     int total = 0, continued = 0;
     std::map<std::string, int> fails;
     double worst_ms = 0;
-    for (const char* wall : {"k", "jj"})
-        for (const char* g0 : {"ogawa", "ls", "cs", "ma", "torquato"})
+    for (const char* wall : {"kinetic", "johnson_jackson"})
+        for (const char* g0 : {"ogawa", "lun_savage", "carnahan_starling", "ma_ahmadi", "torquato"})
             for (double ep : {0.5, 0.8, 0.95, 0.99})
                 for (double lambda : {2.0, 5.0, 10.0, 20.0, 40.0})
                     for (double R : {0.05, 0.5, 1.0})

@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "granlub/error.h"
-#include "granlub/process.h"
-#include "granlub/results.h"
+#include "granlub/run/process.h"
+#include "granlub/results/results.h"
 
 namespace fs = std::filesystem;
 

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "granlub/error.h"
-#include "granlub/results.h"
-#include "granlub/process.h"
+#include "granlub/results/results.h"
+#include "granlub/run/process.h"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
 #include "granlub/error.h"
-#include "granlub/regime.h"
+#include "granlub/results/run_status.h"
 
 namespace granlub::continuum {
 

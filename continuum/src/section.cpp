@@ -9,8 +9,12 @@ SectionSpec section() {
     SectionSpec s("continuum", "GKL continuum solver (Sawyer & Tichy 2001; closures of Lun et al. 1984)");
     s.choice("method", "fv", {"fv", "shooting"},
              "fv: finite volumes + Newton (default); shooting: GSL shooting cross-check (small gaps only)");
-    s.choice("g0", "ogawa", g0_names(), "radial distribution g0(nu); nu_max is [cell] max_solid_fraction");
-    s.choice("wall_model", "k", wall_names(), "wall-condition family for B5..B8: k (kinetic) or jj (Johnson-Jackson)");
+    // Values are named as their files (src/g0/lun_savage.cpp); the short names they had are still read.
+    s.choice("g0", "ogawa", g0_names(), "radial distribution g0(nu); nu_max is [cell] max_solid_fraction")
+        .old_spellings(g0_old_names());
+    s.choice("wall_model", "kinetic", wall_names(),
+             "wall-condition family for B5..B8: kinetic (P-based, Jenkins-Richman-structured) or johnson_jackson")
+        .old_spellings(wall_old_names());
     s.real("viscosity_alpha", 1.0, Range::closed(0.0, 4.0), "",
            "LSJC viscosity factor (2 + alpha)/3; 1 = original theory, 1.6 = MFiX");
     s.boolean("dufour", true, "include the grad-nu heat-flux term of LSJC (sign uncertain, effect < 1e-4)");

@@ -10,10 +10,10 @@
 #               Side walls slide with the bottom wall, as in `granlub dem`.
 #               Writes wallforce.csv, samples.bin and, last, driver_summary.json.
 #               With a "servo" object (control = "load"): the top wall is a plate moved every
-#               servo.every steps by the servo of `granlub dem` (core/include/granlub/servo.h);
+#               servo.every steps by the servo of `granlub dem` (core/include/granlub/particles/servo.h);
 #               its position after each window goes to plate.csv.
 #               With a "bumps" object ({"bottom"|"top": {"diameter", "x": [...], "z": [...]}}): rough
-#               walls, fixed spheres centred on the wall's plane (core/include/granlub/wall_bumps.h).
+#               walls, fixed spheres centred on the wall's plane (core/include/granlub/case/wall_bumps.h).
 #   "collision" binary collisions (grain-grain and grain-wall for every wall material): the
 #               measured normal restitution of the contact law as run, in collision.json.
 #
@@ -347,7 +347,7 @@ SPIN_COLUMNS = GRAIN_COLUMNS + ["wx", "wy", "wz"]
 
 
 def read_initial(path):
-    """x,y,z,vx,vy,vz,radius[,wx,wy,wz] rows after '#' comments (core/include/granlub/particles.h);
+    """x,y,z,vx,vy,vz,radius[,wx,wy,wz] rows after '#' comments (core/include/granlub/particles/particles.h);
     rows of 10 values (spins zero when the file has none)."""
     rows = []
     header = None
@@ -548,7 +548,7 @@ def run_couette(p):
             fplate.write("%d,%.17g\n" % (k, h))
             state["h"] = h
             return
-        # The servo of `granlub dem` (core/include/granlub/servo.h): P_top is the top-wall stress
+        # The servo of `granlub dem` (core/include/granlub/particles/servo.h): P_top is the top-wall stress
         # averaged over the window (the force summed every step), the commanded position moves by
         # step * clamp((P_top - P)/P, -1, max_error) and stays in [gap_min, gap_max]. The plate
         # travels there at constant speed over the next window instead of jumping: a jump of

@@ -10,11 +10,11 @@
 #include <utility>
 #include <vector>
 
-#include "granlub/case.h"
-#include "granlub/failure_record.h"
-#include "granlub/regime.h"
-#include "granlub/results.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/results/failure_record.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/results.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::postproc {
 

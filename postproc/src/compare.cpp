@@ -12,7 +12,7 @@
 #include "gnuplot.h"
 #include "granlub/error.h"
 #include "granlub/postproc/command.h"
-#include "granlub/run_lock.h"
+#include "granlub/run/run_lock.h"
 #include "metrics.h"
 #include "paraview.h"
 #include "regime_section.h"
@@ -71,7 +71,7 @@ std::string text_table(const Table& t) {
     return out;
 }
 
-// What compare locks (granlub/run_lock.h): every solver's results it reads, shared, so that no
+// What compare locks (granlub/run/run_lock.h): every solver's results it reads, shared, so that no
 // run rewrites them half-way through the reading (the known solvers' whether or not their folder
 // exists yet: a sweep that holds its lock may not have made it); the report, exclusive, so that
 // two compares do not swap their reports in at once; and the slice case's dem results it sets

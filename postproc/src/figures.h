@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "collect.h"
-#include "figure.h"
+#include "figure_model.h"
 
 namespace granlub::postproc {
 

@@ -2,7 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "granlub/results.h"
+#include "figure_style.h"
+#include "granlub/results/results.h"
 #include "svg_plot.h"
 #include "text.h"
 

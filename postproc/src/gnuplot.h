@@ -5,7 +5,7 @@
 #pragma once
 #include <filesystem>
 
-#include "figure.h"
+#include "figure_model.h"
 
 namespace granlub::postproc {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "figures.h"
-#include "granlub/flow_regime.h"
+#include "granlub/statistics/flow_regime.h"
 #include "scope.h"
 #include "state_series.h"
 #include "text.h"

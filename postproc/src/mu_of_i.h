@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "collect.h"
-#include "figure.h"
+#include "figure_model.h"
 #include "speed_load_grid.h"
 
 namespace granlub::postproc {

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "figures.h"
-#include "granlub/flow_regime.h"
+#include "granlub/statistics/flow_regime.h"
 #include "mu_of_i.h"
 #include "state_series.h"
 #include "text.h"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "collect.h"
-#include "figure.h"
+#include "figure_model.h"
 #include "report.h"
 #include "speed_load_grid.h"
 

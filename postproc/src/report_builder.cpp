@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "granlub/flow_regime.h"
-#include "granlub/regime.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_status.h"
+#include "granlub/statistics/flow_regime.h"
 #include "regime_section.h"
 #include "ring_slice.h"
 #include "scope.h"

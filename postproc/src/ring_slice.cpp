@@ -9,7 +9,7 @@
 
 #include "figures.h"
 #include "granlub/error.h"
-#include "granlub/table.h"
+#include "granlub/results/table.h"
 #include "text.h"
 
 namespace granlub::postproc {

@@ -1,6 +1,6 @@
 // The whole ring against its slice ([report] slice_case): granlub dem's results of a ring case
 // ([cell] geometry = "annulus") beside those of a slice case at the same point ids. Both are
-// written in the slice's frame (core granlub/annulus.h), so they compare column by column; the
+// written in the slice's frame (core granlub/particles/annulus.h), so they compare column by column; the
 // width profile shows what the slice's centripetal body force stands in for.
 #pragma once
 #include <filesystem>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "collect.h"
-#include "figure.h"
+#include "figure_model.h"
 #include "report.h"
 
 namespace granlub::postproc {

@@ -20,7 +20,7 @@ std::string run_text(const Run& r, const char* key) {
     return run.is_object() && run.contains(key) && run[key].is_string() ? run[key].get<std::string>() : "";
 }
 
-// How the run decided its steady window (run.steady_state of granlub/steady_state.h), or "".
+// How the run decided its steady window (run.steady_state of granlub/statistics/steady_state.h), or "".
 std::string steady_rule(const Run& r) {
     const auto& run = r.summary->run;
     if (!run.is_object() || !run.contains("steady_state") || !run["steady_state"].is_object()) return "";

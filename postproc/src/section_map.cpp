@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "figures.h"
-#include "granlub/cross_section.h"
+#include "granlub/particles/cross_section.h"
 #include "granlub/error.h"
 #include "svg_plot.h"
 #include "text.h"

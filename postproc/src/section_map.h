@@ -1,5 +1,5 @@
 // The cross-section maps of the particle solvers (the points' section.csv, core's
-// granlub/cross_section.h): solid fraction and u/U over y x z as heat maps, the way Sawyer &
+// granlub/particles/cross_section.h): solid fraction and u/U over y x z as heat maps, the way Sawyer &
 // Tichy drew their Figs. 7-8. Rendered straight to SVG; there is no gnuplot script for them, the
 // CSV beside each map holds the numbers.
 #pragma once

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "collect.h"
-#include "figure.h"
+#include "figure_model.h"
 
 namespace granlub::postproc {
 

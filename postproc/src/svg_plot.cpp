@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "figure_style.h"
 #include "text.h"
 
 namespace granlub::postproc {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "figure.h"
+#include "figure_model.h"
 
 namespace granlub::postproc {
 

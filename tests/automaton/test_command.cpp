@@ -10,7 +10,7 @@
 #include "granlub/automaton/case_mapping.h"
 #include "granlub/automaton/command.h"
 #include "granlub/error.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;

@@ -5,7 +5,6 @@
 
 #include "granlub/automaton/ensemble.h"
 #include "granlub/automaton/invariants.h"
-#include "step_skeleton.h"
 
 using namespace granlub::automaton;
 
@@ -52,8 +51,8 @@ BOOST_AUTO_TEST_CASE(invariants_every_switch) {
     for (const Params& p : variants) check_run(p, 300);
 }
 
-BOOST_AUTO_TEST_CASE(skeleton_step_decides_but_moves_nothing) {
-    // StepSkeleton::step() (the floor measured by bench_automaton's BM_StepSkeleton) must make
+BOOST_AUTO_TEST_CASE(clocks_only_step_decides_but_moves_nothing) {
+    // step_clocks_only() (the floor measured by bench_automaton's BM_StepSkeleton) must make
     // every grain's time-factor decision as step() does and leave the lattice itself untouched.
     Lattice e = make_lattice(small(), 0);
     for (int t = 0; t < 200; ++t) e.step();
@@ -65,7 +64,7 @@ BOOST_AUTO_TEST_CASE(skeleton_step_decides_but_moves_nothing) {
         u[i] = e.up(static_cast<int>(i)); k[i] = e.clock(static_cast<int>(i));
     }
     const Counters before = e.counters();
-    const std::uint64_t attempts = StepSkeleton::step(e);
+    const std::uint64_t attempts = e.step_clocks_only();
     std::uint64_t expected = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const int g = static_cast<int>(i);

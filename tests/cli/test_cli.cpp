@@ -140,6 +140,47 @@ BOOST_AUTO_TEST_CASE(keys_are_printed_from_their_declarations) {
     BOOST_TEST(bad.text.find("no section [nosuchsection]") != std::string::npos, bad.text);
 }
 
+BOOST_AUTO_TEST_CASE(key_tables_in_pages_are_checked_and_rewritten_from_the_declarations) {
+    const fs::path dir = fs::temp_directory_path() / "granlub_test_cli_key_tables";
+    fs::create_directories(dir);
+    const fs::path page = dir / "README.md";
+    auto write = [&](const std::string& text) { std::ofstream(page) << text; };
+    auto read = [&] {
+        std::ifstream in(page);
+        return std::string((std::istreambuf_iterator<char>(in)), {});
+    };
+    // A stale table (a key missing, a default changed by hand) between markers: --check names it.
+    write("# Grains\n\n<!-- keys:grains -->\n| key | default | allowed | unit | meaning |\n|---|---|---|---|---|\n"
+          "| `friction` | 0.3 | >= 0 | | hand-written |\n<!-- /keys -->\n\nText after.\n");
+    auto stale = run(exe + " keys --check " + page.string());
+    BOOST_TEST(stale.rc == 1, stale.text);
+    BOOST_TEST(stale.text.find("README.md:3: the [grains] key table differs from the declarations: line 6 reads") !=
+                   std::string::npos,
+               stale.text);
+    // --update rewrites only what stands between the markers; then --check passes.
+    auto update = run(exe + " keys --update " + page.string());
+    BOOST_TEST(update.rc == 0, update.text);
+    const std::string fixed = read();
+    BOOST_TEST(fixed.starts_with("# Grains\n\n<!-- keys:grains -->\n| key | default |"), fixed);
+    BOOST_TEST(fixed.find("| `size_spread` | 0 | [0, 0.2] |") != std::string::npos, fixed);
+    BOOST_TEST(fixed.ends_with("<!-- /keys -->\n\nText after.\n"), fixed);
+    BOOST_TEST(run(exe + " keys grains").text.find(fixed.substr(fixed.find("| key"), 200)) != std::string::npos);
+    auto ok = run(exe + " keys --check " + page.string());
+    BOOST_TEST(ok.rc == 0, ok.text);
+    // A key table outside markers, a section that does not exist and a marker never closed.
+    write("| key | default | meaning |\n|---|---|---|\n\n<!-- keys:nosuch -->\n<!-- /keys -->\n"
+          "<!-- keys:cell -->\n");
+    auto bad = run(exe + " keys --check " + page.string());
+    BOOST_TEST(bad.rc == 1, bad.text);
+    BOOST_TEST(bad.text.find("README.md:1: a key table outside <!-- keys:SECTION -->") != std::string::npos, bad.text);
+    BOOST_TEST(bad.text.find("README.md:4: `<!-- keys:nosuch -->` names no declared section") != std::string::npos,
+               bad.text);
+    BOOST_TEST(bad.text.find("README.md:6: `<!-- keys:cell -->` has no closing <!-- /keys -->") != std::string::npos,
+               bad.text);
+    BOOST_TEST(run(exe + " keys --update " + page.string()).rc == 1);  // not mended by --update
+    fs::remove_all(dir);
+}
+
 namespace {
 // cases/sawyer2001_fill (no solver sections) with `from` replaced by `to` (or appended when `from` is
 // empty), in a scratch folder.

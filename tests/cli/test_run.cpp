@@ -5,7 +5,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "run_command.h"
 #include "xml_check.h"
 

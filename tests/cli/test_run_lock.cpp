@@ -1,6 +1,6 @@
 // Issue 34: two runs on one case. Two `granlub automaton --force` with different seeds used to
 // both exit 0 and leave points with one run's summary.json beside the other's profile.csv. Here
-// the first run is held inside its lock by the test hook of granlub/run_lock.h (it reads a fifo
+// the first run is held inside its lock by the test hook of granlub/run/run_lock.h (it reads a fifo
 // to its end right after taking the lock), so what the second run does while the first holds the
 // results is observed, not guessed at with sleeps: it waits (default) or fails with exit 2
 // (--no-wait); a holder killed with kill -9 blocks nobody; another solver is not blocked.
@@ -22,9 +22,9 @@
 #include <boost/test/unit_test.hpp>
 #include <fmt/format.h>
 
-#include "granlub/results.h"
-#include "granlub/run_id.h"
-#include "granlub/run_lock.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_id.h"
+#include "granlub/run/run_lock.h"
 #include "run_command.h"
 
 namespace fs = std::filesystem;

@@ -11,7 +11,7 @@ namespace granlub::continuum::testing {
 struct Spec {
     double d = 0.787e-3, rho = 2550, H = 4e-3, U = 2.0, P = 5.5e3;
     double ep = 0.9, ew = 0.9, R = 0.5, numax = 0.65;
-    std::string g0 = "ogawa", wall = "k";
+    std::string g0 = "ogawa", wall = "kinetic";
     Mode mode = Mode::Load;
     double nu_mean = 0.595;
     double alpha = 1.0;

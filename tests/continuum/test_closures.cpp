@@ -3,6 +3,7 @@
 #define BOOST_TEST_MODULE continuum_closures
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include <boost/test/unit_test.hpp>
@@ -41,7 +42,7 @@ void check_row(const std::string& g0, const Row& r) {
         BOOST_CHECK_CLOSE_FRACTION(n.dK / n.K, r.B2, tol);
         BOOST_CHECK_CLOSE_FRACTION(n.C / n.K, r.b3, tol);
         BOOST_CHECK_CLOSE_FRACTION(n.M / n.K, r.b4, tol);
-        const auto w = make_wall_family("k")->coefficients(s, WallParams{0.9, 0.5, 0.5, 0.5, 0.5, 0.0}, 0.65);
+        const auto w = make_wall_family("kinetic")->coefficients(s, WallParams{0.9, 0.5, 0.5, 0.5, 0.5, 0.0}, 0.65);
         BOOST_CHECK_CLOSE_FRACTION(w.b5.v, r.b5, tol);
         BOOST_CHECK_CLOSE_FRACTION(w.b6.v, r.b6, tol);
         BOOST_CHECK_CLOSE_FRACTION(w.b8.v, r.b4, tol);  // b8 = b4 (§4.1)
@@ -77,17 +78,18 @@ BOOST_AUTO_TEST_CASE(lun_savage_function_values) {
         {0.6, 64.588909, 2099.1395, 88.957627, 3167.1483, 24.323738, 78.334063, -59.54722, 29.910272, 2848.466,
          2.5789251, 3.3949724, 17.808534, 0.29989069, 0.010500484, 0.75963063, 1.5358165, 0.0024917945},
     }};
-    for (const auto& r : rows) check_row("ls", r);
+    for (const auto& r : rows) check_row("lun_savage", r);
 }
 
 BOOST_AUTO_TEST_CASE(carnahan_starling_function_values) {
-    check_row("cs", {0.5, 6, 32, 6.2, 54.2, 1.7045176, 5.6626242, -1.1340031, 1.9295284, 50.636298, 0.68455074,
-                     3.2800043, 4.2698277, -3.9114932, 0.038105636, 0.20870422, 1.527484, 0.0097694429});
+    check_row("carnahan_starling", {0.5, 6, 32, 6.2, 54.2, 1.7045176, 5.6626242, -1.1340031, 1.9295284, 50.636298,
+                                    0.68455074, 3.2800043, 4.2698277, -3.9114932, 0.038105636, 0.20870422, 1.527484,
+                                    0.0097694429});
 }
 
 BOOST_AUTO_TEST_CASE(johnson_jackson_b5_b6) {
     const auto c = make_closures("ogawa", 0.9);
-    const auto jj = make_wall_family("jj");
+    const auto jj = make_wall_family("johnson_jackson");
     const std::array<std::array<double, 3>, 4> rows{
         {{0.1, 3.2897031, 0.015514705}, {0.3, 3.6067009, 0.031549815}, {0.5, 2.5706781, 0.020109338},
          {0.6, 2.212728, 0.0080980475}}};
@@ -195,7 +197,7 @@ BOOST_AUTO_TEST_CASE(simple_shear_limits) {
             BOOST_CHECK_CLOSE_FRACTION(std::sqrt(d.fmu.v * d.fgam.v) / d.fp.v, e[1], 2e-5);
             const double Tnu2 = d.fmu.v / d.fgam.v * 1e-18 * d.g.v * d.g.v;  // g0 -> 1 slowly (see above)
             BOOST_CHECK_CLOSE_FRACTION(Tnu2, 5 * std::numbers::pi / (1152 * eta * (2 - eta) * (1 - ep * ep)), 1e-6);
-            if (name == "cs") continue;  // no divergence at nu_max
+            if (name == "carnahan_starling") continue;  // no divergence at nu_max
             const auto s = c->state(0.65 * (1 - 1e-13));
             BOOST_CHECK_CLOSE_FRACTION(s.fmu.v / s.fgam.v, e[2], 1e-5);
             BOOST_CHECK_CLOSE_FRACTION(std::sqrt(s.fmu.v * s.fgam.v) / s.fp.v, e[3], 1e-5);
@@ -204,19 +206,31 @@ BOOST_AUTO_TEST_CASE(simple_shear_limits) {
 }
 
 BOOST_AUTO_TEST_CASE(registries_name_every_form_and_reject_unknown_names) {
-    BOOST_TEST(g0_names() == (std::vector<std::string>{"ogawa", "ls", "cs", "ma", "torquato"}),
+    BOOST_TEST(g0_names() ==
+                   (std::vector<std::string>{"ogawa", "lun_savage", "carnahan_starling", "ma_ahmadi", "torquato"}),
                boost::test_tools::per_element());
-    BOOST_TEST(wall_names() == (std::vector<std::string>{"k", "jj"}), boost::test_tools::per_element());
+    BOOST_TEST(wall_names() == (std::vector<std::string>{"kinetic", "johnson_jackson"}),
+               boost::test_tools::per_element());
     try {
         make_g0("bogus", 0.65);
         BOOST_FAIL("unknown g0 accepted");
     } catch (const granlub::Error& e) {
-        BOOST_TEST(std::string(e.what()).find("allowed: ogawa, ls, cs, ma, torquato") != std::string::npos);
+        BOOST_TEST(std::string(e.what()).find("allowed: ogawa, lun_savage, carnahan_starling, ma_ahmadi, torquato") != std::string::npos);
     }
     BOOST_CHECK_THROW(make_wall_family("smooth"), granlub::Error);
     // Torquato is continuous at the freezing point; CS caps the logit map at 0.95.
     const auto t = make_closures("torquato", 0.9);
     BOOST_CHECK_CLOSE_FRACTION(t->g0().g0(0.49 - 1e-12), t->g0().g0(0.49 + 1e-12), 1e-9);
-    BOOST_TEST(make_closures("cs", 0.9)->cap() == 0.95);
+    BOOST_TEST(make_closures("carnahan_starling", 0.9)->cap() == 0.95);
     BOOST_TEST(make_closures("ogawa", 0.9)->cap() == 0.65);
+}
+
+BOOST_AUTO_TEST_CASE(every_registered_name_is_its_file) {
+    // As LAMMPS' style name <-> file name: [continuum] g0 = "x" is src/g0/x.cpp, wall_model = "x"
+    // src/walls/x.cpp. An old spelling is read as the name it became.
+    const std::filesystem::path src = std::filesystem::path(GRANLUB_SOURCE_DIR) / "continuum" / "src";
+    for (const auto& n : g0_names()) BOOST_TEST(std::filesystem::is_regular_file(src / "g0" / (n + ".cpp")), n);
+    for (const auto& n : wall_names()) BOOST_TEST(std::filesystem::is_regular_file(src / "walls" / (n + ".cpp")), n);
+    BOOST_TEST(g0_old_names().size() == 3u);
+    BOOST_TEST(wall_old_names().size() == 2u);
 }

@@ -10,11 +10,11 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/continuum/case_setup.h"
 #include "granlub/continuum/command.h"
 #include "granlub/error.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;
@@ -72,13 +72,20 @@ struct TempDir {
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
+// Options that write into `tmp`, every point or only `point`.
+RunOptions into(const TempDir& tmp, const std::string& point = "") {
+    RunOptions o;
+    o.results_root = tmp.path;
+    o.point = point;
+    return o;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(run_writes_complete_results_and_resumes) {
     TempDir tmp;
     const Case c = parse("");
-    RunOptions o;
-    o.results_root = tmp.path;
+    RunOptions o = into(tmp);
     BOOST_TEST(continuum::run(c, o) == 0);
     const double expect_nu[3] = {0.61039, 0.57768, 0.53034};
     const double expect_tau[3] = {1512.30, 1506.21, 1496.09};
@@ -115,9 +122,7 @@ BOOST_AUTO_TEST_CASE(run_writes_complete_results_and_resumes) {
 BOOST_AUTO_TEST_CASE(point_selection_and_determinism) {
     TempDir tmp;
     const Case c = parse("");
-    RunOptions o;
-    o.results_root = tmp.path;
-    o.point = "U2.0";
+    RunOptions o = into(tmp, "U2.0");
     BOOST_TEST(continuum::run(c, o) == 0);
     BOOST_TEST(!fs::exists(tmp.path / "continuum" / "U1.4"));
     const Summary a = read_summary(tmp.path / "continuum" / "U2.0" / "summary.json");
@@ -179,7 +184,7 @@ BOOST_AUTO_TEST_CASE(bad_keys_are_rejected_with_the_key_and_what_is_allowed) {
     BOOST_TEST(contains(e, "100"));
     e = case_error("[continuum]\nwall_model = \"smooth\"\n");
     BOOST_TEST(contains(e, "wall_model"));
-    BOOST_TEST(contains(e, "jj"));
+    BOOST_TEST(contains(e, "johnson_jackson"));
     e = case_error("[continuum]\nr5 = 1.5\n");
     BOOST_TEST(contains(e, "r5"));
     e = case_error("[continuum]\ncels = 200\n");
@@ -188,13 +193,24 @@ BOOST_AUTO_TEST_CASE(bad_keys_are_rejected_with_the_key_and_what_is_allowed) {
     BOOST_TEST(contains(e, "tolerance"));
 }
 
+BOOST_AUTO_TEST_CASE(old_spellings_are_read_as_the_new_names_with_a_warning) {
+    const Case c = parse("[continuum]\ng0 = \"ls\"\nwall_model = \"jj\"\n");
+    BOOST_TEST(c.section("continuum").string("g0") == "lun_savage");
+    BOOST_TEST(c.section("continuum").string("wall_model") == "johnson_jackson");
+    BOOST_REQUIRE(c.warnings.size() == 2u);
+    BOOST_TEST(contains(c.warnings[0], "test.toml:20:6: [continuum] g0 = \"ls\" is the old spelling of \"lun_savage\""),
+               c.warnings[0]);
+    // the same inputs as the new spelling: results stay current when a case is updated
+    const Case n = parse("[continuum]\ng0 = \"lun_savage\"\nwall_model = \"johnson_jackson\"\n");
+    BOOST_TEST(n.warnings.empty());
+    BOOST_TEST(c.inputs_hash("continuum") == n.inputs_hash("continuum"));
+}
+
 BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
     TempDir tmp;
     // smooth walls: no traction, no sheared steady state
     const Case c = parse("[continuum]\nr5 = 0.0\n");
-    RunOptions o;
-    o.results_root = tmp.path;
-    o.point = "U2.0";
+    RunOptions o = into(tmp, "U2.0");
     BOOST_TEST(continuum::run(c, o) == 1);
     BOOST_TEST(!fs::exists(tmp.path / "continuum" / "U2.0" / "summary.json"));
     BOOST_TEST(!fs::exists(tmp.path / "continuum" / "U2.0" / "profile.csv"));

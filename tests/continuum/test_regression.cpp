@@ -82,8 +82,8 @@ BOOST_AUTO_TEST_CASE(sawyer_tichy_jj_ls) {
                           Row{2.8, 0.51852, 0.33854, 1613.95, 0.51937, 0.51681}}) {
         BOOST_TEST_CONTEXT("U = " << r.U) {
             Spec sp = sawyer(r.U);
-            sp.wall = "jj";
-            sp.g0 = "ls";
+            sp.wall = "johnson_jackson";
+            sp.g0 = "lun_savage";
             const auto [o, s] = solve(sp);
             BOOST_TEST(std::abs(o.nu_mean - r.nu) < 2e-5);
             BOOST_TEST(std::abs(o.nu_centre - r.nu_c) < 2e-5);
@@ -97,11 +97,16 @@ BOOST_AUTO_TEST_CASE(sawyer_tichy_jj_ls) {
 // §7.2 sensitivity table: mean nu for each wall family and g0 (3 decimals).
 BOOST_AUTO_TEST_CASE(sawyer_tichy_g0_and_wall_variants) {
     struct Row { const char* wall; const char* g0; std::array<double, 3> nu; };
-    const Row rows[] = {{"k", "ogawa", {0.610, 0.578, 0.530}}, {"k", "ls", {0.592, 0.565, 0.529}},
-                        {"k", "ma", {0.639, 0.622, 0.588}},    {"k", "torquato", {0.630, 0.611, 0.579}},
-                        {"k", "cs", {0.733, 0.673, 0.608}},    {"jj", "ogawa", {0.606, 0.569, 0.516}},
-                        {"jj", "ls", {0.588, 0.558, 0.519}},   {"jj", "ma", {0.638, 0.618, 0.578}},
-                        {"jj", "torquato", {0.628, 0.606, 0.570}}, {"jj", "cs", {0.729, 0.665, 0.595}}};
+    const Row rows[] = {{"kinetic", "ogawa", {0.610, 0.578, 0.530}},
+                        {"kinetic", "lun_savage", {0.592, 0.565, 0.529}},
+                        {"kinetic", "ma_ahmadi", {0.639, 0.622, 0.588}},
+                        {"kinetic", "torquato", {0.630, 0.611, 0.579}},
+                        {"kinetic", "carnahan_starling", {0.733, 0.673, 0.608}},
+                        {"johnson_jackson", "ogawa", {0.606, 0.569, 0.516}},
+                        {"johnson_jackson", "lun_savage", {0.588, 0.558, 0.519}},
+                        {"johnson_jackson", "ma_ahmadi", {0.638, 0.618, 0.578}},
+                        {"johnson_jackson", "torquato", {0.628, 0.606, 0.570}},
+                        {"johnson_jackson", "carnahan_starling", {0.729, 0.665, 0.595}}};
     const double speeds[3] = {1.4, 2.0, 2.8};
     for (const auto& r : rows) {
         for (int k = 0; k < 3; ++k) {
@@ -196,7 +201,7 @@ BOOST_AUTO_TEST_CASE(jasti_higgs_default_model) {
 // §7.4: with JJ walls the J&H flow is denser at the walls than in the centre.
 BOOST_AUTO_TEST_CASE(jasti_higgs_jj_walls_are_dense) {
     Spec sp = jasti();
-    sp.wall = "jj";
+    sp.wall = "johnson_jackson";
     const auto [o, s] = solve(sp);
     BOOST_TEST(std::abs(o.nu_bottom - 0.5984) < 1e-4);
     BOOST_TEST(std::abs(o.nu_centre - 0.5904) < 1e-4);
@@ -212,7 +217,7 @@ BOOST_AUTO_TEST_CASE(jasti_higgs_slip_against_roughness) {
     const double k_dnu[7] = {0.004, 0.007, 0.009, 0.008, 0.006, 0.003, -0.000};
     const double jj_dnu[7] = {0.003, 0.004, 0.002, -0.003, -0.008, -0.013, -0.019};
     for (int i = 0; i < 7; ++i) {
-        for (const char* wall : {"k", "jj"}) {
+        for (const char* wall : {"kinetic", "johnson_jackson"}) {
             BOOST_TEST_CONTEXT(wall << ", R = " << R[i]) {
                 Spec sp = jasti();
                 sp.R = R[i];

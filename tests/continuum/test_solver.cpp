@@ -33,7 +33,8 @@ double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
 // Lambda^2 f_gamma = Pi f_mu f_p (1 - 2 u_s)^2.
 BOOST_AUTO_TEST_CASE(adiabatic_walls_give_the_uniform_shear_solution) {
     struct Expect { const char* wall; double nu, us, tau; };
-    for (const auto& e : {Expect{"k", 0.58579297, 0.16938779, 1660.5025}, Expect{"jj", 0.57217876, 0.12733887, 1657.3654}}) {
+    for (const auto& e : {Expect{"kinetic", 0.58579297, 0.16938779, 1660.5025},
+                          Expect{"johnson_jackson", 0.57217876, 0.12733887, 1657.3654}}) {
         BOOST_TEST_CONTEXT("wall family " << e.wall) {
             Spec sp = sawyer(2.0);
             sp.wall = e.wall;
@@ -60,7 +61,7 @@ BOOST_AUTO_TEST_CASE(adiabatic_walls_give_the_uniform_shear_solution) {
 
 // §8.5: symmetry, constant shear stress (discretely exact), global energy balance.
 BOOST_AUTO_TEST_CASE(invariants_of_every_solution) {
-    for (const char* wall : {"k", "jj"}) {
+    for (const char* wall : {"kinetic", "johnson_jackson"}) {
         for (Mode mode : {Mode::Load, Mode::Fill}) {
             BOOST_TEST_CONTEXT("wall " << wall << ", mode " << (mode == Mode::Load ? "load" : "fill")) {
                 Spec sp = sawyer(2.0);
@@ -139,7 +140,7 @@ BOOST_AUTO_TEST_CASE(energy_balance_converges_at_second_order) {
 
 // §6.1 "Accuracy": second order in nu_mean and tau under mesh refinement.
 BOOST_AUTO_TEST_CASE(second_order_mesh_convergence) {
-    for (const char* wall : {"k", "jj"}) {
+    for (const char* wall : {"kinetic", "johnson_jackson"}) {
         Spec sp = sawyer(2.0);
         sp.wall = wall;
         const Problem p = problem(sp);
@@ -186,7 +187,7 @@ BOOST_AUTO_TEST_CASE(bagnold_invariance) {
 // §6.2: the independent shooting solver agrees with FV to <= 1e-5 (profiles and Pi), for
 // both wall families, both controls, equal and unequal walls.
 BOOST_AUTO_TEST_CASE(finite_volumes_agree_with_shooting) {
-    for (const char* wall : {"k", "jj"}) {
+    for (const char* wall : {"kinetic", "johnson_jackson"}) {
         for (Mode mode : {Mode::Load, Mode::Fill}) {
             for (bool unequal : {false, true}) {
                 for (double U : {1.4, 2.8}) {
@@ -269,8 +270,8 @@ BOOST_AUTO_TEST_CASE(failures_are_clean) {
 // Dufour flag (§7.3): effect < 1e-4 on nu_mean; JJ/LS at S&T U = 1.4.
 BOOST_AUTO_TEST_CASE(dufour_term_is_switchable_and_small) {
     Spec sp = sawyer(1.4);
-    sp.wall = "jj";
-    sp.g0 = "ls";
+    sp.wall = "johnson_jackson";
+    sp.g0 = "lun_savage";
     const auto on = observe(problem(sp), solve_fv(problem(sp), mesh(200)));
     sp.dufour = false;
     const auto off = observe(problem(sp), solve_fv(problem(sp), mesh(200)));

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/error.h"
 
 namespace granlub::test {

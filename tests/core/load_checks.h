@@ -1,4 +1,4 @@
-// The checks of a load-controlled particle run (granlub/load_control.h) that every engine's test
+// The checks of a load-controlled particle run (granlub/particles/load_control.h) that every engine's test
 // makes the same way: tests/liggghts/test_dem_load.cpp and tests/yade/test_load.cpp.
 #pragma once
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 
 namespace granlub::test {
 

@@ -1,4 +1,4 @@
-// The whole ring's geometry (granlub/annulus.h): the equal-area map onto the slice's frame, the
+// The whole ring's geometry (granlub/particles/annulus.h): the equal-area map onto the slice's frame, the
 // walls' loads as slice wall forces, the torque balance, and the ring insertion (overlap-free,
 // inside the trough, seeded, a clear error when the grains do not fit).
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/annulus.h"
+#include "granlub/particles/annulus.h"
 #include "granlub/error.h"
 
 using namespace granlub;

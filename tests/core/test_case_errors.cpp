@@ -8,7 +8,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "case_text.h"
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/error.h"
 
 using namespace granlub;

@@ -7,8 +7,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/error.h"
-#include "granlub/load_control.h"
-#include "granlub/servo.h"
+#include "granlub/particles/load_control.h"
+#include "granlub/particles/servo.h"
 
 using namespace granlub;
 

@@ -9,7 +9,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/packing_order.h"
+#include "granlub/particles/packing_order.h"
 
 using namespace granlub;
 namespace tt = boost::test_tools;

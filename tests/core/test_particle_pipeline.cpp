@@ -9,9 +9,9 @@
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/error.h"
-#include "granlub/particle_pipeline.h"
-#include "granlub/regime.h"
-#include "granlub/table.h"
+#include "granlub/particles/particle_pipeline.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/table.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;

@@ -6,8 +6,8 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/particle_reduction.h"
-#include "granlub/regime.h"
+#include "granlub/particles/particle_reduction.h"
+#include "granlub/results/run_status.h"
 
 using namespace granlub;
 

@@ -20,7 +20,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/process.h"
+#include "granlub/run/process.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;

@@ -14,7 +14,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "granlub/progress.h"
+#include "granlub/run/progress.h"
 
 namespace fs = std::filesystem;
 using granlub::Progress;

@@ -1,9 +1,9 @@
-// The one .pvd writer (granlub/pvd.h): the collection VTK writes, one DataSet per (time, part).
+// The one .pvd writer (granlub/results/pvd.h): the collection VTK writes, one DataSet per (time, part).
 #include <boost/test/unit_test.hpp>
 
 #include <string>
 
-#include "granlub/pvd.h"
+#include "granlub/results/pvd.h"
 
 using namespace granlub;
 

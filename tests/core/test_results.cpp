@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 
 #include "case_text.h"
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/error.h"
-#include "granlub/results.h"
-#include "granlub/run_id.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_id.h"
 
 using namespace granlub;
 using granlub::test::TmpDir;

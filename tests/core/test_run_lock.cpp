@@ -1,4 +1,4 @@
-// The locks on a case's results (granlub/run_lock.h): what conflicts and what does not, the holder
+// The locks on a case's results (granlub/run/run_lock.h): what conflicts and what does not, the holder
 // named when a run will not wait, a failed taking that keeps nothing, a holder killed with kill -9,
 // and an engine started under a lock that does not hold it. A second open file description in this
 // process conflicts with the first as another process's would (flock(2)), so most of this needs no
@@ -16,8 +16,8 @@
 
 #include <fmt/format.h>
 
-#include "granlub/process.h"
-#include "granlub/run_lock.h"
+#include "granlub/run/process.h"
+#include "granlub/run/run_lock.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;

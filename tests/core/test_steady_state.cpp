@@ -1,4 +1,4 @@
-// Steady-state detection (granlub/steady_state.h): MSER-5's start, the drift checks, and the two
+// Steady-state detection (granlub/statistics/steady_state.h): MSER-5's start, the drift checks, and the two
 // ways MSER-5 alone was measured to fail on cases/sawyer2001, as synthetic series.
 #include <boost/test/unit_test.hpp>
 
@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "granlub/steady_state.h"
+#include "granlub/statistics/steady_state.h"
 
 using namespace granlub;
 

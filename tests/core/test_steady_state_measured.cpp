@@ -1,4 +1,4 @@
-// The steady-state detector (granlub/steady_state.h) on series measured on cases/sawyer2001
+// The steady-state detector (granlub/statistics/steady_state.h) on series measured on cases/sawyer2001
 // (tests/core/data): U = 2.0 m/s, which MSER-5 alone called a transient over a 0.4 % bump of the
 // gap, and U = 2.8 m/s, which it called steady from 0.055 s while the gap still compacted.
 #include <boost/test/unit_test.hpp>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "granlub/steady_state.h"
+#include "granlub/statistics/steady_state.h"
 
 using namespace granlub;
 

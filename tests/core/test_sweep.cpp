@@ -7,9 +7,9 @@
 
 #include "case_text.h"
 #include "granlub/error.h"
-#include "granlub/failure_record.h"
-#include "granlub/run_id.h"
-#include "granlub/sweep.h"
+#include "granlub/results/failure_record.h"
+#include "granlub/results/run_id.h"
+#include "granlub/run/sweep.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "granlub/error.h"
-#include "granlub/table.h"
+#include "granlub/results/table.h"
 
 using namespace granlub;
 

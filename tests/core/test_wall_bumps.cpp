@@ -5,9 +5,9 @@
 #include <boost/test/unit_test.hpp>
 
 #include "case_text.h"
-#include "granlub/case.h"
-#include "granlub/particles.h"
-#include "granlub/wall_bumps.h"
+#include "granlub/case/case.h"
+#include "granlub/particles/particles.h"
+#include "granlub/case/wall_bumps.h"
 
 using namespace granlub;
 using granlub::test::error_of;

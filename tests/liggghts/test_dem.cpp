@@ -14,13 +14,13 @@
 
 #include <fmt/format.h>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/dem/command.h"
 #include "granlub/error.h"
-#include "granlub/particles.h"
-#include "granlub/regime.h"
-#include "granlub/results.h"
-#include "granlub/sweep.h"
+#include "granlub/particles/particles.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/results.h"
+#include "granlub/run/sweep.h"
 #include "outputs.h"
 #include "run_driver.h"
 #include "settings.h"

@@ -11,12 +11,12 @@
 #include <regex>
 #include <sstream>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/dem/command.h"
 #include "granlub/error.h"
-#include "granlub/particles.h"
-#include "granlub/results.h"
-#include "granlub/sweep.h"
+#include "granlub/particles/particles.h"
+#include "granlub/results/results.h"
+#include "granlub/run/sweep.h"
 #include "settings.h"
 #include "load_checks.h"
 #include "tiny_cell.h"

@@ -14,12 +14,12 @@
 
 #include <fmt/format.h>
 
-#include "granlub/block_average.h"
-#include "granlub/case.h"
+#include "granlub/statistics/block_average.h"
+#include "granlub/case/case.h"
 #include "granlub/dem/command.h"
-#include "granlub/results.h"
-#include "granlub/table.h"
-#include "granlub/sweep.h"
+#include "granlub/results/results.h"
+#include "granlub/results/table.h"
+#include "granlub/run/sweep.h"
 #include "load_checks.h"
 #include "tiny_cell.h"
 

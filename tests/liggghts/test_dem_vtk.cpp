@@ -8,11 +8,11 @@
 #include <regex>
 #include <sstream>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/dem/command.h"
 #include "granlub/error.h"
-#include "granlub/results.h"
-#include "granlub/sweep.h"
+#include "granlub/results/results.h"
+#include "granlub/run/sweep.h"
 #include "pvd.h"
 #include "tiny_cell.h"
 

@@ -11,10 +11,10 @@
 #include <filesystem>
 #include <numbers>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/dem/command.h"
-#include "granlub/results.h"
-#include "granlub/sweep.h"
+#include "granlub/results/results.h"
+#include "granlub/run/sweep.h"
 #include "tiny_cell.h"
 
 using namespace granlub;

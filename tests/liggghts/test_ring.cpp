@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "granlub/block_average.h"
+#include "granlub/statistics/block_average.h"
 #include "run_driver.h"
 
 namespace fs = std::filesystem;

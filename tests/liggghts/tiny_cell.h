@@ -6,7 +6,7 @@
 #include <regex>
 #include <string>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/dem/command.h"
 
 namespace granlub::test {

@@ -5,8 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "granlub/regime.h"
-#include "granlub/results.h"
+#include "case_text.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/results.h"
 
 namespace granlub::test {
 
@@ -15,31 +16,11 @@ SyntheticCase make_case(const std::string& name, const std::string& extra_toml) 
     s.dir = std::filesystem::path(GRANLUB_BINARY_DIR) / "tests" / "postproc-tmp" / name;
     std::filesystem::remove_all(s.dir);
     std::filesystem::create_directories(s.dir);
-    std::ofstream(s.dir / "case.toml") << R"([case]
-name = "synthetic"
-title = "Synthetic results with known answers"
-
-[grains]
-diameter = 1.0e-3
-density = 2500.0
-restitution = 0.9
-
-[walls]
-restitution = 0.8
-roughness = 0.5
-
-[cell]
-gap = 5.0e-3
-length = 20.0e-3
-width = 0.0
-max_solid_fraction = 0.65
-
-[operating]
-speed = [1.0, 2.0, 4.0]
-control = "fill"
-solid_fraction = 0.52
-normal_stress = 1000.0
-)" << extra_toml;
+    // tests/core/case_text.h's valid case, named, with a third speed and its own fill
+    std::string text = with("name = \"t\"", "name = \"synthetic\"\ntitle = \"Synthetic results with known answers\"");
+    text = with("speed = [1.0, 2.0]", "speed = [1.0, 2.0, 4.0]", text);
+    text = with("solid_fraction = 0.5", "solid_fraction = 0.52", text);
+    std::ofstream(s.dir / "case.toml") << text << extra_toml;
     s.c = load_case(s.dir, Schema::common());
     s.o.results_root = s.dir / "results";
     return s;

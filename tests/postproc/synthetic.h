@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "granlub/case.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::test {
 

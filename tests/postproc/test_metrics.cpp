@@ -5,7 +5,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "collect.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "metrics.h"
 #include "synthetic.h"
 

@@ -8,10 +8,10 @@
 #include <boost/test/unit_test.hpp>
 #include <nlohmann/json.hpp>
 
-#include "granlub/flow_regime.h"
+#include "granlub/statistics/flow_regime.h"
 #include "granlub/postproc/command.h"
-#include "granlub/regime.h"
-#include "granlub/results.h"
+#include "granlub/results/run_status.h"
+#include "granlub/results/results.h"
 #include "synthetic.h"
 #include "xml_check.h"
 

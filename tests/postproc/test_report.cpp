@@ -11,7 +11,7 @@
 
 #include "granlub/error.h"
 #include "granlub/postproc/command.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "synthetic.h"
 #include "xml_check.h"
 

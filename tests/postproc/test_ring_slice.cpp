@@ -9,7 +9,7 @@
 
 #include "granlub/error.h"
 #include "granlub/postproc/command.h"
-#include "granlub/run_id.h"
+#include "granlub/results/run_id.h"
 #include "synthetic.h"
 #include "xml_check.h"
 

@@ -8,7 +8,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/postproc/command.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "synthetic.h"
 
 using namespace granlub;

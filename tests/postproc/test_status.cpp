@@ -5,9 +5,9 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/failure_record.h"
+#include "granlub/results/failure_record.h"
 #include "granlub/postproc/command.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "synthetic.h"
 #include "xml_check.h"
 

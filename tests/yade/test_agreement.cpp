@@ -17,7 +17,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "run_command.h"
 #include "yade_installed.h"
 

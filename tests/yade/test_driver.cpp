@@ -9,9 +9,9 @@
 #include <numbers>
 
 #include "granlub/error.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "granlub/yade/driver.h"
-#include "granlub/process.h"
+#include "granlub/run/process.h"
 #include "granlub/yade/settings.h"
 #include "yade_installed.h"
 #include "yade_test_case.h"

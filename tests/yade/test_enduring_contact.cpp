@@ -23,9 +23,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "granlub/process.h"
-#include "granlub/results.h"
-#include "granlub/table.h"
+#include "granlub/run/process.h"
+#include "granlub/results/results.h"
+#include "granlub/results/table.h"
 #include "yade_installed.h"
 
 namespace fs = std::filesystem;

@@ -11,9 +11,9 @@
 #include <sys/stat.h>
 
 #include "granlub/error.h"
-#include "granlub/failure_record.h"
-#include "granlub/particles.h"
-#include "granlub/results.h"
+#include "granlub/results/failure_record.h"
+#include "granlub/particles/particles.h"
+#include "granlub/results/results.h"
 #include "granlub/yade/driver.h"
 #include "granlub/yade/reduce.h"
 #include "granlub/yade/settings.h"

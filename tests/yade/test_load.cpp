@@ -1,5 +1,5 @@
 // `granlub yade` with control = "load": the servo-controlled top plate (the servo of `granlub dem`,
-// granlub/servo.h) reaches the target normal stress within 3 block standard errors, a higher load
+// granlub/particles/servo.h) reaches the target normal stress within 3 block standard errors, a higher load
 // gives a smaller gap and a denser packing, and the result files are those of `granlub dem`
 // (gap, run.load_control, gap.csv). Skipped when YADE is not installed.
 #define BOOST_TEST_MODULE yade_load
@@ -7,7 +7,7 @@
 
 #include <utility>
 
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 #include "load_checks.h"
 #include "yade_installed.h"
 #include "yade_test_case.h"

@@ -79,7 +79,7 @@ BOOST_AUTO_TEST_CASE(too_short_run_is_rejected) {
     BOOST_TEST(has(e, "blocks"));
 }
 
-// control = "load": the servo of granlub dem, its keys declared once (granlub/servo.h) in [yade].
+// control = "load": the servo of granlub dem, its keys declared once (granlub/particles/servo.h) in [yade].
 const char* kFill = "control = \"fill\"";
 const char* kLoad = "control = \"load\"\nnormal_stress = 5e3";
 

@@ -5,7 +5,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "granlub/process.h"
+#include "granlub/run/process.h"
 
 namespace granlub::yade::test {
 

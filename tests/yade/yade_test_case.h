@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/yade/command.h"
 
 namespace granlub::yade::test {

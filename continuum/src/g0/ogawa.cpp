@@ -1,5 +1,5 @@
 // g0 of the 1/3-power form, g0 = 1/(1 - (nu/nu_max)^{1/3}) (docs/continuum-model.md §2.3). Ogawa et al. 1980 /
-// Bagnold; often labelled "Lun et al. 1984" (ANSYS Fluent "lun-et-al") [LIT, not retrieved].
+// Bagnold; often labelled "Lun et al. 1984" (ANSYS Fluent "lun-et-al") [LIT].
 // The default: it fits S&T's mean nu best (RMS 0.016, §7.2).
 #include <cmath>
 

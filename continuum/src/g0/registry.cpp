@@ -1,4 +1,5 @@
-// The g0 registry: one row per form. Adding a form = one file in this folder + one row here.
+// The g0 registry: one row per form, named as its file (lun_savage -> lun_savage.cpp). Adding a
+// form = one file in this folder + one row here.
 #include "granlub/continuum/g0/radial_distribution.h"
 #include "granlub/registry.h"
 
@@ -13,9 +14,10 @@ std::unique_ptr<RadialDistribution> make_g0_torquato(double numax);
 const std::vector<G0Entry>& g0_registry() {
     static const std::vector<G0Entry> table = {
         {"ogawa", "1/(1 - (nu/nu_max)^(1/3)), Ogawa et al. 1980 (the LSJC 1984 form)", make_g0_ogawa},
-        {"ls", "(1 - nu/nu_max)^(-2.5 nu_max), Lun & Savage 1986", make_g0_lun_savage},
-        {"cs", "(2 - nu)/(2 (1 - nu)^3), Carnahan & Starling 1969 (no nu_max)", make_g0_carnahan_starling},
-        {"ma", "Ma & Ahmadi 1986", make_g0_ma_ahmadi},
+        {"lun_savage", "(1 - nu/nu_max)^(-2.5 nu_max), Lun & Savage 1986", make_g0_lun_savage, "ls"},
+        {"carnahan_starling", "(2 - nu)/(2 (1 - nu)^3), Carnahan & Starling 1969 (no nu_max)",
+         make_g0_carnahan_starling, "cs"},
+        {"ma_ahmadi", "Ma & Ahmadi 1986", make_g0_ma_ahmadi, "ma"},
         {"torquato", "Carnahan-Starling below 0.49, then (nu_max - 0.49)/(nu_max - nu), Torquato 1995",
          make_g0_torquato},
     };
@@ -25,6 +27,7 @@ const std::vector<G0Entry>& g0_registry() {
 }
 
 std::vector<std::string> g0_names() { return registry_names(g0_registry()); }
+std::vector<std::pair<std::string, std::string>> g0_old_names() { return registry_old_names(g0_registry()); }
 
 std::unique_ptr<RadialDistribution> make_g0(const std::string& name, double numax) {
     return registry_find(g0_registry(), name, "g0").make(numax);

@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "granlub/error.h"
@@ -19,6 +20,16 @@ std::vector<std::string> registry_names(const std::vector<Row>& table) {
     std::vector<std::string> names;
     for (const Row& r : table) names.emplace_back(r.name);
     return names;
+}
+
+// {old_name, name} for every row with an old spelling (a Row::old_name that is not null): what a
+// case-file key still accepts (SectionSpec::old_spellings).
+template <class Row>
+std::vector<std::pair<std::string, std::string>> registry_old_names(const std::vector<Row>& table) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const Row& r : table)
+        if (r.old_name) out.emplace_back(r.old_name, r.name);
+    return out;
 }
 
 // The row called `name`; throws Error `unknown <what> "<name>" (allowed: a, b, ...)` otherwise.

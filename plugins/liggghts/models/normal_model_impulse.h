@@ -28,10 +28,9 @@
     velocities at the start of the step: under newton off both owners compute
     it, each seeing only its own grain's impulses so far, and sequential
     impulses would differ between the two sides, so momentum would not be
-    conserved (measured before this rule: a bed riding on its floor kept its
-    velocity while its walls recorded a net streamwise force and 16 % more
-    than its weight). From the same start-of-step state both sides give the
-    same impulse, equal and opposite.
+    conserved (measured: docs/measurements/liggghts.md, "The recorded wall
+    forces balance the grains' momentum"). From the same start-of-step state
+    both sides give the same impulse, equal and opposite.
 
     What Sawyer & Tichy state and what we add. S&T define the operator for
     a collision (Eq. 19) and resolve overlaps one after the other; they say
@@ -44,18 +43,14 @@
     contact-dynamics solvers do (Catto 2005; Acary 2013, CMAME 256:224).
     Contacts are found by overlap only, so without it grains pressed
     together by gravity, a load or the shear stay overlapped, are re-hit
-    every step and sink into each other (a resting bed of 324 grains: median
-    overlap 16 % of the radii sum after 1 s; with it 0.1 %). Measured on
-    the sawyer2001 cell at 5.5 kPa: without it nu = 0.74 (jammed far above
-    random close packing), with it 0.59 and first-order convergence in dt.
+    every step and sink into each other (measured on a resting bed and on
+    the sawyer2001 cell under load: docs/measurements/liggghts.md, "Rigid
+    contacts under a load").
 
     bounce_speed V (default 0; our assumption). Restitution only for
     approach speeds above V, e = 0 below, as Chrono, Bullet and Box2D do for
-    resting contacts. Measured on sawyer2001 at 5.5 kPa, U = 1.4 m/s (4913
-    grains): nu = 0.645 / 0.640 / 0.636 at dt = 11.2 / 5.5 / 2.7 us without
-    it, 0.649 / 0.644 with V = 0.05 m/s, 0.644 / 0.639 with 0.005 m/s; it
-    neither changes the answer nor speeds up its convergence in dt, so it
-    is off by default.
+    resting contacts. It neither changes the answer nor speeds up its
+    convergence in dt (measured: the same page), so it is off by default.
 
     Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
     LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree.

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
     MPI_Init(&argc, &argv);
     granlub_liggghts_register();  // explicit, so the linker can never drop the plugin
     LAMMPS_NS::LAMMPS* lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
-    granlub_liggghts_register_styles(lammps);  // fix and compute styles live in the instance (register_styles.cpp)
+    granlub_liggghts_register_styles(lammps);  // fix and compute styles live in the instance (register_fix_compute.cpp)
     lammps->input->file();
     delete lammps;
     MPI_Finalize();

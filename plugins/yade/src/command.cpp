@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/progress.h"
-#include "granlub/run_id.h"
+#include "granlub/run/progress.h"
+#include "granlub/results/run_id.h"
 #include "granlub/yade/driver.h"
 #include "granlub/yade/reduce.h"
 #include "granlub/yade/settings.h"
@@ -155,7 +155,7 @@ int run(const Case& c, const RunOptions& o) {
     // each point is one single-threaded YADE process (-j1): as many side by side as cores allow
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
     // a warm start reads dem's final states: dem's results stay locked (shared) while yade runs, so
-    // that no dem run replaces them half-way through the sweep (granlub/run_lock.h)
+    // that no dem run replaces them half-way through the sweep (granlub/run/run_lock.h)
     const bool warm = c.section("yade").string("start") == "warm";
     return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {

@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/results.h"
-#include "granlub/process.h"
+#include "granlub/results/results.h"
+#include "granlub/run/process.h"
 
 #ifndef GRANLUB_YADE_DRIVER_PATH
 #error "GRANLUB_YADE_DRIVER_PATH must name plugins/yade/granlub_yade.py"
@@ -83,7 +83,7 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
     auto layer = [](const BumpLayer& b) { return json{{"diameter", b.diameter}, {"x", b.x}, {"z", b.z}}; };
     if (s.bumps_bottom) j["bumps"]["bottom"] = layer(*s.bumps_bottom);
     if (s.bumps_top) j["bumps"]["top"] = layer(*s.bumps_top);
-    if (s.servo.load) {  // the plate servo of granlub/servo.h, lengths in m
+    if (s.servo.load) {  // the plate servo of granlub/particles/servo.h, lengths in m
         const ServoSettings& v = s.servo;
         j["servo"] = {{"target_stress", v.target_stress},
                       {"every", v.servo_every},

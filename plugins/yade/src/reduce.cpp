@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "granlub/error.h"
-#include "granlub/particle_pipeline.h"
-#include "granlub/table.h"
+#include "granlub/particles/particle_pipeline.h"
+#include "granlub/results/table.h"
 
 namespace granlub::yade {
 

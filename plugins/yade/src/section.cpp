@@ -1,8 +1,8 @@
 // The [yade] case section: one line per key (type, default, range, unit, doc).
 #include "granlub/yade/command.h"
 
-#include "granlub/particle_section.h"
-#include "granlub/servo.h"
+#include "granlub/particles/particle_section.h"
+#include "granlub/particles/servo.h"
 
 namespace granlub::yade {
 
@@ -37,8 +37,8 @@ SectionSpec section() {
     s.real("plate_mass", 1.0, Range::positive(), "",
            "servo_plate = \"weight\": the plate's mass as a multiple of the grains' (a numerical choice: a light "
            "plate follows the bed within a millisecond, a dead weight P A / g oscillates for tens of ms)");
-    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particle_section.h)
-    add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/servo.h)
+    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
+    add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/particles/servo.h)
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with dem
     return s;
 }

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/particle_section.h"
+#include "granlub/particles/particle_section.h"
 
 namespace granlub::yade {
 

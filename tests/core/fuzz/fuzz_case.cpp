@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "full_schema.h"
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

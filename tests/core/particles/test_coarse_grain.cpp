@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "granlub/coarse_grain.h"
+#include "granlub/particles/coarse_grain.h"
 
 using namespace granlub;
 

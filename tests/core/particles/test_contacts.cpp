@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "granlub/contacts.h"
-#include "granlub/flow_regime.h"
+#include "granlub/particles/contacts.h"
+#include "granlub/statistics/flow_regime.h"
 
 using namespace granlub;
 

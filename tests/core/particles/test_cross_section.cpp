@@ -1,11 +1,11 @@
-// The y x z cross-section (granlub/cross_section.h): grains packed into one corner show up there,
+// The y x z cross-section (granlub/particles/cross_section.h): grains packed into one corner show up there,
 // every grain's volume is kept, and the velocity is the volume-weighted mean.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
 #include <numbers>
 
-#include "granlub/cross_section.h"
+#include "granlub/particles/cross_section.h"
 
 using namespace granlub;
 

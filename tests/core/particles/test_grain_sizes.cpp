@@ -8,8 +8,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/error.h"
-#include "granlub/grain_sizes.h"
-#include "granlub/particles.h"
+#include "granlub/case/grain_sizes.h"
+#include "granlub/particles/particles.h"
 
 using namespace granlub;
 namespace tt = boost::test_tools;

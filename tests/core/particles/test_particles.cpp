@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "granlub/error.h"
-#include "granlub/particles.h"
+#include "granlub/particles/particles.h"
 
 using namespace granlub;
 

@@ -33,7 +33,7 @@ struct Candidates {
 
 // Grain-wall, jh mode, the direction (Tables W-T, W-B): specular reflection (dx, dy) -> (dx, -dy)
 // [RECON]; at the moving bottom wall the reflected direction turns one notch toward +x, never past
-// NE, when drag() says so [ASSUMED: probability p_drag]. drag() is asked only where a notch can turn
+// NE, when drag() says so [ASSUMPTION: probability p_drag]. drag() is asked only where a notch can turn
 // the direction, so elsewhere the rule draws nothing.
 template <class Drag>
 [[gnu::always_inline]] inline unsigned wall_reflection(unsigned d, bool bottom, Drag&& drag) {
@@ -48,7 +48,7 @@ template <class Drag>
     return sequential ? wall_sequential(u, U_w, R, e_w) : wall_by_incidence(u, U_w, R, e_w, kDx[d] == 0);
 }
 
-// Vector mode [ASSUMED]: stochastic king-move rounding of a velocity onto the 8 directions,
+// Vector mode [ASSUMPTION]: stochastic king-move rounding of a velocity onto the 8 directions,
 // unbiased in the mean. Sets `speed` to min(max(|vx|, |vy|), U) and returns the direction; draws
 // below(8) for a zero velocity, else one uniform() when the minor component is not zero.
 template <class Rng>
@@ -80,7 +80,7 @@ struct Velocity {
     return {eq6_roughness(v.x, U_w, R), -e_w * v.y};
 }
 
-// Vector mode, grain-grain [ASSUMED]: the mover (direction d, speed u_i) hits grain j (dir_j, u_j)
+// Vector mode, grain-grain [ASSUMPTION]: the mover (direction d, speed u_i) hits grain j (dir_j, u_j)
 // along a line of centres jittered uniformly by +-jitter radians; if they approach, JH06 Eqs. 8-9
 // act on the normal components, tangential components are kept, and both grains are rounded back
 // onto the lattice (mover first). If not, the mover deflects by +-45 degrees (`coin` picks the side)

@@ -1,9 +1,9 @@
 // `granlub automaton CASE [--point ID] [--seed N] [--vtk] [--full]`: the Jasti-Higgs lattice
 // cellular automaton on every operating point of a case (docs/automaton-model.md; automaton/README.md).
 #pragma once
-#include "granlub/case.h"
-#include "granlub/schema.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/case/schema.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::automaton {
 

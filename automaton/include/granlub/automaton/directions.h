@@ -1,6 +1,6 @@
 // The eight lattice directions of the CA (docs/automaton-model.md §2.2), numbered k = 0..7 counter-clockwise
 // from +x (E). JH06's "1-direction" is +x, the direction of the moving bottom wall; we assume the
-// paper's Fig. 4 numbers them the same way (paper number = k + 1) [ASSUMED].
+// paper's Fig. 4 numbers them the same way (paper number = k + 1) [ASSUMPTION].
 #pragma once
 #include <array>
 #include <cstdint>
@@ -14,7 +14,7 @@ inline constexpr std::array<int, 8> kDy = {0, +1, +1, +1, 0, -1, -1, -1};
 
 // Specular reflection at a horizontal wall: (dx, dy) -> (dx, -dy)  [RECON, §3.3].
 inline constexpr std::array<std::uint8_t, 8> kReflect = {E, SE, S, SW, W, NW, N, NE};
-// The drag notch at the moving wall: turn 45 degrees toward +x, never past NE  [ASSUMED, §3.3].
+// The drag notch at the moving wall: turn 45 degrees toward +x, never past NE  [ASSUMPTION, §3.3].
 // Only used on reflected (upward) directions: NW -> N, N -> NE, NE -> NE.
 inline constexpr std::array<std::uint8_t, 8> kDrag = {E, NE, NE, N, W, SW, S, SE};
 

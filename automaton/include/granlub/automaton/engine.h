@@ -51,8 +51,6 @@ struct Counters {
     double normal_top = 0;
 };
 
-struct StepSkeleton;  // bench/automaton/step_skeleton.h: the benchmark's floor under step()
-
 template <class Rng>
 class Engine {
 public:
@@ -125,13 +123,22 @@ public:
     void step() {
         if (steps_ % kRelabelEvery == 0) relabel();
         ++steps_;
-        const bool big = order_.size() > kPrefetchFrom;
         with_constant(rules_.mode, [&](auto m) {
-            with_constant(rules_.tf_rounding, [&](auto t) {
-                with_constant(big, [&](auto p) { this->template run<decltype(m)::value, decltype(t)::value, decltype(p)::value>(); });
-            });
+            constexpr Mode M = decltype(m)::value;
+            step_with([this](Ctx& c, std::int32_t i, double u) { chain<M>(c, i, u); });
         });
         counters_.visits += order_.size();
+    }
+
+    // The step's update order and clocks without the moves: the same shuffle, clocks and "does it
+    // move" decisions as step(), but a grain whose time factor is up is counted instead of making
+    // its move attempt, so nothing moves or collides (the clocks advance, the order stream is
+    // drawn; steps and counters stay). Returns the count. What step() costs beyond this is the
+    // cost of the collision chains (bench_automaton's BM_StepSkeleton).
+    std::uint64_t step_clocks_only() {
+        std::uint64_t attempts = 0;
+        step_with([&attempts](Ctx&, std::int32_t, double) { ++attempts; });
+        return attempts;
     }
 
     // Renumber the grains in grid order (spatial locality). The dynamics do not depend on labels:
@@ -184,8 +191,6 @@ public:
     int dir(int i) const { return dir_[i]; }
     double up(int i) const { return up_[i]; }
     double clock(int i) const { return accumulate() ? acc_[i] : tick_[i]; }
-    void set_dir(int i, int d) { dir_[i] = static_cast<std::uint8_t>(d); }
-    void set_up(int i, double u) { up_[i] = u; }
     void set_clock(int i, double c) {
         if (accumulate()) acc_[i] = c; else tick_[i] = static_cast<std::uint16_t>(c);
     }
@@ -203,8 +208,6 @@ public:
     std::vector<std::int64_t>& kin() { return kin_; }
 
 private:
-    friend struct StepSkeleton;
-
     // Grains from which the step loop prefetches (measured: below ~5e4 grains the state sits in
     // L2 and prefetching costs more than it saves).
     static constexpr std::size_t kPrefetchFrom = 50000;
@@ -241,11 +244,19 @@ private:
         }* walls;
     };
 
-    // The step loop (engine_step.h).
+    // The step loop (engine_step.h). step_with() runs run<>() for the clock rule and lattice size;
+    // `attempt(c, i, u)` is what a grain whose time factor is up does.
     Ctx context();
     void commit(const Ctx& c);
-    template <Mode M, TfRounding T, bool Prefetch, bool Attempts = true>
-    void run();
+    template <class Attempt>
+    void step_with(Attempt attempt) {
+        const bool big = order_.size() > kPrefetchFrom;
+        with_constant(rules_.tf_rounding, [&](auto t) {
+            with_constant(big, [&](auto p) { this->template run<decltype(t)::value, decltype(p)::value>(attempt); });
+        });
+    }
+    template <TfRounding T, bool Prefetch, class Attempt>
+    void run(Attempt attempt);
     template <Mode M, TfRounding T>
     void update_as(int i);
     template <Mode M, TfRounding T>
@@ -295,7 +306,6 @@ private:
     BigVector<double> sup_, sacc_;
     BigVector<std::uint16_t> stick_;
     Counters counters_;
-    std::uint64_t skipped_attempts_ = 0;  // StepSkeleton only: the attempts it counted
     typename Ctx::WallSums wall_sums_{};  // wall sums during a step (Ctx::walls points here)
 };
 

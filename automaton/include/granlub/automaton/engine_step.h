@@ -88,11 +88,11 @@ inline void Engine<Rng>::prefetch_ahead(const Ctx& c, const std::int32_t* order,
 // and the order stream is separate from the rule stream, so the pass can run one chunk ahead of the
 // visits in its own tight loop (the visit loop keeps its registers) with draws and outcome those of
 // a full shuffle followed by the updates. On large lattices a whole chunk's partners are drawn
-// first and their slots prefetched. With Attempts = false (StepSkeleton, benchmark only) the chains
-// are counted into skipped_attempts_ instead of run.
+// first and their slots prefetched. A grain whose time factor is up calls attempt(c, i, u): its
+// move attempt and collision chain in step(), a count in step_clocks_only().
 template <class Rng>
-template <Mode M, TfRounding T, bool Prefetch, bool Attempts>
-void Engine<Rng>::run() {
+template <TfRounding T, bool Prefetch, class Attempt>
+void Engine<Rng>::run(Attempt attempt) {
     const auto n = static_cast<std::uint32_t>(order_.size());
     if (n == 0) return;
     Ctx c = context();
@@ -144,11 +144,7 @@ void Engine<Rng>::run() {
                 go = clock_decides<T>(u, kc, k1, c.rest, c.tf_max);
             }
             store_clock<T>(c, i, k1);
-            if constexpr (Attempts) {
-                if (go) chain<M>(c, i, u);
-            } else {
-                skipped_attempts_ += go;
-            }
+            if (go) attempt(c, i, u);
         }
     }
     commit(c);
@@ -195,7 +191,7 @@ inline void Engine<Rng>::chain(Ctx& c, std::int32_t i, double u) {
             ++c.pp;
             if constexpr (M == Mode::JH) {
                 // Grain-grain, jh mode (§3.4): JH06 Eqs. 8-9 on both speeds; the struck grain moves
-                // off along the line of centres [ASSUMED] (struck_dir = line); the mover's two
+                // off along the line of centres [ASSUMPTION] (struck_dir = line); the mover's two
                 // candidates in the order a coin picks.
                 double uj = c.up[occ];
                 eq8_9_collide_weighted(u, uj, c.eq89_weight);

@@ -12,7 +12,7 @@
 #include "granlub/automaton/params.h"
 #include "granlub/automaton/philox.h"
 #include "granlub/automaton/sampler.h"
-#include "granlub/block_average.h"
+#include "granlub/statistics/block_average.h"
 
 namespace granlub::automaton {
 

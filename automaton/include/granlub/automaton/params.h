@@ -1,17 +1,17 @@
 // Plain parameters of one CA run, in lattice units (U = 1, cell = one grain diameter).
-// Names and defaults are the [automaton] keys (automaton/README.md); the tags say where each rule
-// comes from (docs/automaton-model.md §1).
+// Names and defaults are the [automaton] keys (automaton/README.md); the switches' case-file names
+// are in variants.h. The tags say where each rule comes from (docs/automaton-model.md §1).
 #pragma once
 #include <cstdint>
 #include <string>
 
 namespace granlub::automaton {
 
-enum class Mode { JH, Vector };                   // jh: JH06 as specified (§3); vector: §5 [ASSUMED]
-enum class TfRounding { Round, Ceil, Accumulate };  // §2.4 [ASSUMED]
-enum class WallSpeed { Sequential, ByIncidence };   // §3.3 [ASSUMED]
-enum class StruckDir { Line, Keep };                 // §3.4 [ASSUMED]
-enum class VecBlocked { Deflect, Wait };             // §5 [ASSUMED]
+enum class Mode { JH, Vector };                   // jh: JH06 as specified (§3); vector: §5 [ASSUMPTION]
+enum class TfRounding { Round, Ceil, Accumulate };  // §2.4 [ASSUMPTION]
+enum class WallSpeed { Sequential, ByIncidence };   // §3.3 [ASSUMPTION]
+enum class StruckDir { Line, Keep };                 // §3.4 [ASSUMPTION]
+enum class VecBlocked { Deflect, Wait };             // §5 [ASSUMPTION]
 enum class SteadyProtocol { Blocks, Runs };          // §4.4 block test, or JH06's literal runs (§4.5)
 
 // The collision rules and their switches.
@@ -21,14 +21,14 @@ struct Rules {
     double e_w_bottom = 0.65;   // grain-wall restitution, JH06 Eq. 7
     double e_w_top = 0.65;
     double R_bottom = 0.65;     // roughness, JH06 Eq. 6
-    double R_top = 0.65;        // [ASSUMED] = R unless set
-    double p_drag = 0.65;       // drag-notch probability at the moving wall [ASSUMED] = R
-    int tf_max = 50;            // slowest time factor; slower grains are at rest [ASSUMED]
+    double R_top = 0.65;        // [ASSUMPTION] = R unless set
+    double p_drag = 0.65;       // drag-notch probability at the moving wall [ASSUMPTION] = R
+    int tf_max = 50;            // slowest time factor; slower grains are at rest [ASSUMPTION]
     TfRounding tf_rounding = TfRounding::Round;
     WallSpeed wall_speed = WallSpeed::Sequential;
     int pp_deflect = 90;        // mover leaves at +-90 (billiard) or +-45 degrees [RECON]
     StruckDir struck_dir = StruckDir::Line;
-    double pp_jitter_deg = 22.5;  // vector mode: spread of the line of centres [ASSUMED]
+    double pp_jitter_deg = 22.5;  // vector mode: spread of the line of centres [ASSUMPTION]
     VecBlocked vec_blocked = VecBlocked::Deflect;
 };
 
@@ -37,7 +37,7 @@ struct LatticeSpec {
     int columns = 100;     // L, periodic along x
     int rows = 10;         // H particle rows between the wall rows y = -1 and y = H
     double fill = 0.85;    // nu0: N = round(fill * L * H)
-    double s0_max = 0.1;   // initial u_p uniform on (0, s0_max] [ASSUMED value of "much smaller"]
+    double s0_max = 0.1;   // initial u_p uniform on (0, s0_max] [ASSUMPTION: the value of "much smaller"]
     std::int64_t particles() const;
 };
 
@@ -56,7 +56,7 @@ struct RunSpec {
     int steady_pairs = 3;             // consecutive passing block pairs
     double drift_tol = 0.005;         // max |slope| of <u_p>(block) over the last 5 blocks, U/block
     // JH06's literal protocol (§4.5): runs of T_1 = runs_start, T_k = 2 T_(k-1) steps; each run's
-    // reading is its average over its second half [ASSUMED]; stop when consecutive readings agree.
+    // reading is its average over its second half [ASSUMPTION]; stop when consecutive readings agree.
     SteadyProtocol steady_protocol = SteadyProtocol::Blocks;
     std::int64_t runs_start = 1000;      // T_1, a multiple of 2 x block
     std::int64_t runs_max_steps = 16000; // step limit: fail if T_k would exceed it
@@ -73,12 +73,5 @@ struct Params {
 
 // Throws granlub::Error naming the parameter, its value and what is allowed.
 void validate(const Params& p);
-
-const char* to_string(Mode m);
-const char* to_string(TfRounding t);
-const char* to_string(WallSpeed w);
-const char* to_string(StruckDir s);
-const char* to_string(VecBlocked v);
-const char* to_string(SteadyProtocol s);
 
 }  // namespace granlub::automaton

@@ -13,12 +13,12 @@ inline double eq6_roughness(double u, double U_w, double R) { return u + R * (U_
 // JH06 Eq. 7 (wall restitution): u_f = U_w - e_w (U_w - u_i).
 inline double eq7_restitution(double u, double U_w, double e_w) { return U_w - e_w * (U_w - u); }
 
-// Wall hit, `sequential` (default, [ASSUMED]): Eq. 6 then Eq. 7, so that
+// Wall hit, `sequential` (default, [ASSUMPTION]): Eq. 6 then Eq. 7, so that
 // U_w - u_f = e_w (1 - R)(U_w - u_i).
 inline double wall_sequential(double u, double U_w, double R, double e_w) {
     return clamp_unit(eq7_restitution(eq6_roughness(u, U_w, R), U_w, e_w));
 }
-// Wall hit, `by_incidence` ([ASSUMED] alternative reading): Eq. 7 alone for a normal impact
+// Wall hit, `by_incidence` ([ASSUMPTION] alternative reading): Eq. 7 alone for a normal impact
 // (incoming N or S), Eq. 6 alone for an oblique one.
 inline double wall_by_incidence(double u, double U_w, double R, double e_w, bool normal_impact) {
     return clamp_unit(normal_impact ? eq7_restitution(u, U_w, e_w) : eq6_roughness(u, U_w, R));

@@ -21,7 +21,7 @@ template <TfRounding T>
 using ClockOf = std::conditional_t<T == TfRounding::Accumulate, double, unsigned>;
 
 // One update's clock rule. A grain at rest (u < rest = 1/tf_max) never starts a move and keeps its
-// clock; it can still be struck [ASSUMED]. Otherwise the clock advances and the grain moves ("go",
+// clock; it can still be struck [ASSUMPTION]. Otherwise the clock advances and the grain moves ("go",
 // returned) when its time factor is up; k1 is the clock after this update. Selects, not branches.
 template <TfRounding T>
 bool clock_decides(double u, ClockOf<T> k0, ClockOf<T>& k1, double rest, double tf_max) {

@@ -4,9 +4,9 @@
 #include <memory>
 #include <string>
 
-#include "granlub/case.h"
+#include "granlub/case/case.h"
 #include "granlub/continuum/problem.h"
-#include "granlub/sweep.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::continuum {
 

@@ -1,8 +1,8 @@
 // `granlub continuum CASE [--point ID]`: the GKL continuum solver on every operating point.
 #pragma once
-#include "granlub/case.h"
-#include "granlub/schema.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/case/schema.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::continuum {
 

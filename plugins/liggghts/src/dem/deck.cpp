@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/flow_regime.h"
+#include "granlub/statistics/flow_regime.h"
 #include "granlub/text.h"
 
 namespace granlub::dem {
@@ -270,7 +270,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("# with R the annulus mean radius (Sawyer & Tichy 2001, particle simulation)");
     if (c.gravity > 0) line(fmt::format("fix grav {} gravity {} vector 0 -1 0", g, c.gravity));
     // a compiled fix (plugins/liggghts/doc/fix_centripetal_annulus.txt): the same force, bit for bit, as the
-    // atom-style variable + fix addforce it replaced, which took about 7 % of the loop (plugins/liggghts/README.md)
+    // atom-style variable + fix addforce it replaced, which took about 7 % of the loop (docs/measurements/liggghts.md)
     if (c.cell.annulus_radius > 0)
         line(fmt::format("fix cent {} centripetal/annulus {}", g, c.cell.annulus_radius));
     line(fmt::format("fix integr {} nve/sphere", g));
@@ -278,7 +278,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("# wall forces (on the grains), averaged over blocks of sample_every steps, sampled every step");
     line("# (impulse forces last one step). Columns: step, then fx fy fz of bottom, top[, fx fx fy fy of the side walls].");
     // compute wall/gran/force (plugins/liggghts/doc/compute_wall_gran_force.txt): every wall's force in one
-    // pass, the same bits as a compute reduce per wall, which took about 10 % of the loop (plugins/liggghts/README.md)
+    // pass, the same bits as a compute reduce per wall, which took about 10 % of the loop (docs/measurements/liggghts.md)
     // vector: fx fy fz of wbot, wtop[, wsid1, wsid2]
     line(fmt::format("compute fwall all wall/gran/force wbot wtop{}", box.periodic_z ? "" : " wsid1 wsid2"));
     std::string cols = "c_fwall[1] c_fwall[2] c_fwall[3] c_fwall[4] c_fwall[5] c_fwall[6]";

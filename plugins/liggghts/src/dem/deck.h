@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "granlub/case.h"
-#include "granlub/particles.h"
+#include "granlub/case/case.h"
+#include "granlub/particles/particles.h"
 #include "settings.h"
 
 namespace granlub::dem {

@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/process.h"
-#include "granlub/progress.h"
+#include "granlub/run/process.h"
+#include "granlub/run/progress.h"
 
 namespace granlub::dem {
 

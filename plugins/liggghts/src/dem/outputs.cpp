@@ -9,7 +9,7 @@
 #include "deck.h"
 #include "ring_deck.h"
 #include "granlub/error.h"
-#include "granlub/table.h"
+#include "granlub/results/table.h"
 
 namespace granlub::dem {
 

@@ -1,16 +1,16 @@
-// Reading LIGGGHTS' output files into the engine-independent series that granlub/particle_reduction.h
+// Reading LIGGGHTS' output files into the engine-independent series that granlub/particles/particle_reduction.h
 // turns into the point's results.
 #pragma once
 #include <filesystem>
 #include <functional>
 #include <vector>
 
-#include "granlub/annulus.h"
-#include "granlub/case.h"
-#include "granlub/coarse_grain.h"
-#include "granlub/load_control.h"
-#include "granlub/particle_reduction.h"
-#include "granlub/results.h"
+#include "granlub/particles/annulus.h"
+#include "granlub/case/case.h"
+#include "granlub/particles/coarse_grain.h"
+#include "granlub/particles/load_control.h"
+#include "granlub/particles/particle_reduction.h"
+#include "granlub/results/results.h"
 #include "settings.h"
 
 namespace granlub::dem {
@@ -36,7 +36,7 @@ PlateSeries read_plate_series(const std::filesystem::path& file);
 // control = load: the plate position the deck printed after the run (kFinalPlateFile), m.
 double read_final_plate(const std::filesystem::path& file);
 
-// The common series (granlub/particle_reduction.h): LIGGGHTS records the force of each wall on the
+// The common series (granlub/particles/particle_reduction.h): LIGGGHTS records the force of each wall on the
 // grains, the reduction takes the force of the grains on the walls, so every column changes sign.
 WallForceSeries wall_forces(const WallSeries& walls);
 
@@ -44,7 +44,7 @@ WallForceSeries wall_forces(const WallSeries& walls);
 // the meshes, as recorded (no sign change: a mesh records the force on itself).
 RingWallLoads ring_wall_loads(const WallSeries& walls, const std::filesystem::path& file);
 
-// The point's results: the shared particle reduction (granlub/particle_reduction.h).
+// The point's results: the shared particle reduction (granlub/particles/particle_reduction.h).
 using DemOutputs = ParticleReduction;
 
 }  // namespace granlub::dem

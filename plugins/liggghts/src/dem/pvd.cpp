@@ -1,4 +1,4 @@
-// ParaView collection for the VTK dumps (pvd.h), through core's one .pvd writer (granlub/pvd.h).
+// ParaView collection for the VTK dumps (pvd.h), through core's one .pvd writer (granlub/results/pvd.h).
 #include "pvd.h"
 
 #include <algorithm>
@@ -9,8 +9,8 @@
 
 #include "deck.h"
 #include "granlub/error.h"
-#include "granlub/pvd.h"
-#include "granlub/results.h"
+#include "granlub/results/pvd.h"
+#include "granlub/results/results.h"
 
 namespace granlub::dem {
 

@@ -73,7 +73,7 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
                      "= torque / {} m^3",
                      A, an.polar_moment()));
     line("");
-    line("# particle snapshots for coarse-graining (granlub maps them onto the slice's frame, granlub/annulus.h)");
+    line("# particle snapshots for coarse-graining (granlub maps them onto the slice's frame, granlub/particles/annulus.h)");
     output_block(s, line);
     if (!s.load) {
         line(fmt::format("run             {}", s.steps));

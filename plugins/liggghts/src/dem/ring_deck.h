@@ -1,4 +1,4 @@
-// The LIGGGHTS deck of the whole ring ([cell] geometry = "annulus"; granlub/annulus.h): the
+// The LIGGGHTS deck of the whole ring ([cell] geometry = "annulus"; granlub/particles/annulus.h): the
 // trough's floor and both cylinders are STL meshes (ring_meshes.h) whose surfaces turn at
 // Omega = U / R about the y axis (LIGGGHTS' surface_ang_vel: the surfaces move, the meshes stay
 // put); the flat annular top is still, and under load control moved along the axis by the

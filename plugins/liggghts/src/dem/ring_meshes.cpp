@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "deck.h"
-#include "granlub/results.h"
+#include "granlub/results/results.h"
 
 namespace granlub::dem {
 

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <filesystem>
 
-#include "granlub/annulus.h"
+#include "granlub/particles/annulus.h"
 
 namespace granlub::dem {
 

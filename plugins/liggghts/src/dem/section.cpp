@@ -1,8 +1,8 @@
 // The [dem] case section: one line per key (type, default, range, unit, doc). Apart from the
 // engine pipeline so that it compiles with core alone (the case-parser fuzzer builds it).
 #include "granlub/dem/command.h"
-#include "granlub/particle_section.h"
-#include "granlub/servo.h"
+#include "granlub/particles/particle_section.h"
+#include "granlub/particles/servo.h"
 #include "settings.h"
 
 namespace granlub::dem {
@@ -45,8 +45,8 @@ SectionSpec section() {
     s.real("ring_facet", 0.7, Range::closed(0.05, 5), "",
            "[cell] geometry = annulus: longest facet edge along the ring's circles, in grain diameters (the "
            "meshes' facets per circle follow from the outer wall's circumference)");
-    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particle_section.h)
-    add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/servo.h)
+    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
+    add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/particles/servo.h)
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with yade
     return s;
 }

@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
-#include "granlub/flow_regime.h"
-#include "granlub/particle_section.h"
+#include "granlub/statistics/flow_regime.h"
+#include "granlub/particles/particle_section.h"
 
 namespace granlub::dem {
 

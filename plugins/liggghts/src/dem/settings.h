@@ -7,19 +7,19 @@
 
 #include <nlohmann/json.hpp>
 
-#include "granlub/annulus.h"
-#include "granlub/case.h"
-#include "granlub/particles.h"
-#include "granlub/servo.h"
-#include "granlub/wall_bumps.h"
-#include "granlub/sweep.h"
+#include "granlub/particles/annulus.h"
+#include "granlub/case/case.h"
+#include "granlub/particles/particles.h"
+#include "granlub/particles/servo.h"
+#include "granlub/case/wall_bumps.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::dem {
 
 enum class Model { Impulse, Hertz };
 
 // The servo part (control = "load": the top wall is a plate moved by the deck every servo_every
-// steps, see deck.h and README "Load control") is shared with granlub yade (granlub/servo.h).
+// steps, see deck.h and README "Load control") is shared with granlub yade (granlub/particles/servo.h).
 struct Settings : ServoSettings {
     Model model = Model::Impulse;
     double beta0 = 0;             // Walton's tangential restitution (impulse); 0 = stick limit
@@ -58,7 +58,7 @@ struct Settings : ServoSettings {
     // contacts"). So the gain is at most plate_overlap / d: a unit error moves the plate by one
     // contact overlap at the target load. Impulse contacts have no overlap scale: no cap.
     // [cell] geometry = "annulus": the whole ring (ring_deck.h). box is then its slice-frame box
-    // (granlub/annulus.h): 2 pi R x H x W, the frame the results are written in.
+    // (granlub/particles/annulus.h): 2 pi R x H x W, the frame the results are written in.
     bool ring = false;
     Annulus annulus;
     std::size_t ring_facets = 0;  // facets per circle of the ring's meshes

@@ -7,8 +7,8 @@
 #pragma once
 #include <string>
 
-#include "granlub/case.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::postproc {
 
@@ -16,7 +16,7 @@ namespace granlub::postproc {
 // Returns 0 when every result found was usable, 1 when some were stale or corrupt (the report is
 // still written without them and names them). Throws Error when no usable result exists at all.
 // Honours o.point (only that point) and o.results_root. Holds every solver's results locked shared
-// and the report exclusive while it works (granlub/run_lock.h): another run holding them makes it
+// and the report exclusive while it works (granlub/run/run_lock.h): another run holding them makes it
 // wait, or with o.wait false throw ResultsInUse.
 int compare(const Case& c, const RunOptions& o);
 

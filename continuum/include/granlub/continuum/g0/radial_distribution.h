@@ -7,6 +7,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "granlub/continuum/dual.h"
@@ -46,10 +47,13 @@ struct G0Entry {
     const char* name;  // the case-file value of [continuum] g0
     const char* doc;   // one line with the source
     std::unique_ptr<RadialDistribution> (*make)(double numax);
+    const char* old_name = nullptr;  // its spelling before it was named as its file: still read
 };
 
 const std::vector<G0Entry>& g0_registry();
 std::vector<std::string> g0_names();
+// {old, new} for each renamed row, for SectionSpec::old_spellings.
+std::vector<std::pair<std::string, std::string>> g0_old_names();
 // Throws granlub::Error naming the allowed forms when `name` is unknown.
 std::unique_ptr<RadialDistribution> make_g0(const std::string& name, double numax);
 

@@ -5,6 +5,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "granlub/continuum/closures/lun84.h"
@@ -33,10 +34,13 @@ struct WallEntry {
     const char* name;  // the case-file value of [continuum] wall_model
     const char* doc;
     std::unique_ptr<WallFamily> (*make)();
+    const char* old_name = nullptr;  // its spelling before it was named as its file: still read
 };
 
 const std::vector<WallEntry>& wall_registry();
 std::vector<std::string> wall_names();
+// {old, new} for each renamed row, for SectionSpec::old_spellings.
+std::vector<std::pair<std::string, std::string>> wall_old_names();
 // Shared instance of a registered family; throws granlub::Error naming the allowed families.
 std::shared_ptr<const WallFamily> make_wall_family(const std::string& name);
 

@@ -5,9 +5,9 @@
 // state on the wall stresses, coarse-grains nu(y), u(y), T(y) and writes profile.csv and
 // summary.json. Details: plugins/liggghts/README.md.
 #pragma once
-#include "granlub/case.h"
-#include "granlub/schema.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/case/schema.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::dem {
 

@@ -1,12 +1,12 @@
 // `granlub yade CASE [--point ID]`: the cross-check of `granlub dem` in YADE 2023.02a.
-// Each point: the shared initial configuration (granlub/particles.h), a JSON parameter file,
+// Each point: the shared initial configuration (granlub/particles/particles.h), a JSON parameter file,
 // the project's driver script granlub_yade.py run by `yade -n -j1 -x` (timeout, exit code
-// checked, log kept), then the shared coarse-graining (granlub/coarse_grain.h) into
+// checked, log kept), then the shared coarse-graining (granlub/particles/coarse_grain.h) into
 // results/yade/<point>/{profile.csv, summary.json}. See plugins/yade/README.md.
 #pragma once
-#include "granlub/case.h"
-#include "granlub/schema.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/case/schema.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub::yade {
 

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "granlub/case.h"
-#include "granlub/particles.h"
+#include "granlub/case/case.h"
+#include "granlub/particles/particles.h"
 #include "granlub/yade/settings.h"
 
 namespace granlub::yade {

@@ -1,6 +1,6 @@
 // From the driver's raw outputs to granlub's result files: this file reads the driver's outputs;
 // stresses, steady state, standard errors, profile, slips and the console line are the shared
-// particle reduction of `granlub dem` as well (granlub/particle_reduction.h).
+// particle reduction of `granlub dem` as well (granlub/particles/particle_reduction.h).
 //
 // Driver outputs read here (all in the point folder):
 //   driver_summary.json  written last by the driver: counts, dt, timings, YADE version
@@ -8,15 +8,15 @@
 //   samples.bin          per snapshot: x, y, z, vx, vy, vz of every grain, float64 little-endian,
 //                        grains in the order of the initial file (deleted once coarse-grained)
 //   plate.csv            control = load: plate position (m) after each servo window; reduced
-//                        to gap.csv and run.load_control as `granlub dem` (granlub/load_control.h)
+//                        to gap.csv and run.load_control as `granlub dem` (granlub/particles/load_control.h)
 #pragma once
 #include <filesystem>
 #include <vector>
 
-#include "granlub/case.h"
-#include "granlub/particle_reduction.h"
-#include "granlub/particles.h"
-#include "granlub/sweep.h"
+#include "granlub/case/case.h"
+#include "granlub/particles/particle_reduction.h"
+#include "granlub/particles/particles.h"
+#include "granlub/run/sweep.h"
 #include "granlub/yade/settings.h"
 
 namespace granlub::yade {

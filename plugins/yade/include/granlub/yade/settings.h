@@ -1,17 +1,17 @@
 // The [yade] settings of one run, resolved from the case, the point and the command line, and
 // checked before YADE starts. Run length, sampling and averaging follow `granlub dem`'s
 // definitions (wall forces summed every step and averaged over blocks of sample_every steps,
-// `snapshots` particle snapshots over the run, granlub/steady_state.h's window, block standard errors).
+// `snapshots` particle snapshots over the run, granlub/statistics/steady_state.h's window, block standard errors).
 #pragma once
 #include <cstdint>
 #include <optional>
 #include <string>
 
-#include "granlub/case.h"
-#include "granlub/particles.h"
-#include "granlub/servo.h"
-#include "granlub/sweep.h"
-#include "granlub/wall_bumps.h"
+#include "granlub/case/case.h"
+#include "granlub/particles/particles.h"
+#include "granlub/particles/servo.h"
+#include "granlub/run/sweep.h"
+#include "granlub/case/wall_bumps.h"
 
 namespace granlub::yade {
 
@@ -33,13 +33,13 @@ struct Settings {
     std::int64_t blocks = 10;
     double timeout = 0;                    // s; 0 = from the run size
     // The initial configuration, shared with `granlub dem`: [particles] seed, velocity_noise and
-    // periodic_depth (granlub/particle_section.h); --seed overrides.
+    // periodic_depth (granlub/particles/particle_section.h); --seed overrides.
     InsertionOptions insertion;
     double periodic_depth = 0;
     // [yade] start = "warm": start from granlub dem's final state of the point (final_state_path())
     bool warm_start = false;
     // control = "load": the top wall is a plate the driver moves every servo_every steps, the
-    // servo of `granlub dem` (granlub/servo.h) with the same keys in [yade]; or, with
+    // servo of `granlub dem` (granlub/particles/servo.h) with the same keys in [yade]; or, with
     // servo_plate = "weight", a plate of plate_mass x the grains' mass pressed by P A
     ServoSettings servo;
     bool weight_plate = false;

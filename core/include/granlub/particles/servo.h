@@ -1,0 +1,56 @@
+// Load control (control = "load") of the particle engines, `granlub dem` and `granlub yade`: the
+// top wall is a plate moved every `every` steps by gain d clamp((P_top - P)/P, -1, max_error),
+// P_top the top-wall normal stress averaged over those steps, and kept in [gap_min, gap_max]. An
+// integral controller: at steady state the plate's mean drift is zero, so the window-averaged
+// P_top equals P while the clamps are inactive. Its keys (fill_for_load, servo_every, servo_gain,
+// servo_max_gap) are declared here once and added to each engine's own section.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "granlub/case/case.h"
+#include "granlub/case/schema.h"
+
+namespace granlub {
+
+// Upper clamp of the relative stress error in a servo update: spikes of an impulsive top-wall
+// force raise the plate by at most this many gains (a stress below target lowers it by at most 1).
+inline constexpr double kServoMaxError = 3.0;
+
+// Solid fraction of the closest packing of equal spheres (FCC): the plate's lowest position.
+inline constexpr double kClosestPacking = 0.7405;
+
+// Fewest plate updates of a load-controlled run.
+inline constexpr std::int64_t kMinServoUpdates = 20;
+
+struct ServoSettings {
+    bool load = false;                // control = "load"; all below but insert_fill* unused otherwise
+    double target_stress = 0;         // Pa, the point's normal_stress
+    std::int64_t servo_every = 0;     // steps between plate updates (a multiple of sample_every)
+    double servo_gain = 0;            // plate move per update, diameters per unit relative error
+    double servo_max_error = 0;       // relative stress error is clamped to [-1, servo_max_error]
+    double gap_min = 0;               // plate limits, m: closest packing of the grains ...
+    double gap_max = 0;               // ... and the box top (servo_max_gap x H)
+    // where the top wall starts and below which the grains are inserted: H, or under load gap_max
+    // for grains that need more room than H (the whole ring, whose insertion lattice holds fewer
+    // grains per volume, annulus.h; grains of several sizes, on a lattice spaced for the largest;
+    // rough walls, whose bumps take room, wall_bumps.h)
+    double plate_start = 0;
+    double insert_fill = 0;           // solid fraction inserted (point's, or fill_for_load)
+    std::string insert_fill_key;      // which key it came from, for messages
+
+    nlohmann::json to_json() const;   // control, target, servo_*, gap limits (summary provenance)
+};
+
+// Adds fill_for_load, servo_every, servo_gain and servo_max_gap to an engine's section.
+void add_servo_keys(SectionSpec& s);
+
+// The servo of point p from the servo keys of section `s` (the engine's own, which add_servo_keys
+// declared). Under load, `steps` is rounded up to whole servo windows and checked to give at least
+// kMinServoUpdates updates; servo_every = 0 means sample_every. Throws CaseError naming the key.
+ServoSettings resolve_servo(const Case& c, const OperatingPoint& p, const Section& s, std::int64_t sample_every,
+                            double time_step, std::int64_t& steps);
+
+}  // namespace granlub

@@ -1,0 +1,24 @@
+// The keys both particle engines share (particle_section.h).
+#include "granlub/particles/particle_section.h"
+
+namespace granlub {
+
+void add_sampling_keys(SectionSpec& s) {
+    s.integer("sample_every", 100, Range::closed(1, 1e8),
+              "wall-force block length in steps (forces are summed every step)");
+    s.integer("snapshots", 50, Range::closed(4, 1e5), "particle snapshots over the run for coarse-graining");
+    s.integer("stations", 20, Range::closed(2, 1e5), "coarse-graining slabs across the gap");
+    s.integer("blocks", 10, Range::closed(2, 1e4), "blocks for the standard errors (block averaging)");
+}
+
+ParticleStart particle_start(const Case& c, const OperatingPoint& p, std::optional<std::uint64_t> seed) {
+    const Section& s = c.section(kParticlesSection);
+    ParticleStart r;
+    r.insertion.seed = seed ? *seed : static_cast<std::uint64_t>(s.integer("seed"));
+    r.insertion.velocity_noise = s.real("velocity_noise");
+    r.insertion.wall_speed = p.speed;
+    r.periodic_depth = s.real("periodic_depth");
+    return r;
+}
+
+}  // namespace granlub

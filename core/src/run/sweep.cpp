@@ -1,0 +1,161 @@
+#include "granlub/run/sweep.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <mutex>
+#include <new>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "granlub/error.h"
+#include "granlub/results/failure_record.h"
+#include "granlub/run/run_lock.h"
+
+namespace granlub {
+
+std::filesystem::path results_root(const Case& c, const RunOptions& o) {
+    return o.results_root.empty() ? c.dir / "results" : o.results_root;
+}
+
+namespace {
+// Options that change a result without changing the case: the run lengths (--full) and an
+// explicit --seed. A complete result computed otherwise is recomputed, not reused.
+std::string run_options_differ(const Summary& s, const RunOptions& o) {
+    const bool was_full = s.run.is_object() && s.run.value("full", false);
+    if (was_full != o.full) return was_full ? "it was a --full run" : "it was not a --full run";
+    if (o.seed && s.provenance.seed != o.seed)
+        return s.provenance.seed ? fmt::format("it used seed {}", *s.provenance.seed) : "it used no seed";
+    return "";
+}
+}  // namespace
+
+void for_each_run(const Case& c, const RunOptions& o,
+                  const std::function<void(const OperatingPoint&, const RunOptions&)>& check) {
+    for (const OperatingPoint* p : c.select(o.point))
+        for (const bool full : {false, true}) {
+            RunOptions variant = o;
+            variant.full = full;
+            check(*p, variant);
+        }
+}
+
+int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve,
+              int points_at_once, const std::vector<std::string>& reads) {
+    const auto points = c.select(o.point);
+    const auto root = results_root(c, o);
+    // Before anything is read: which points are complete is only known once no other run writes.
+    std::vector<LockRequest> locks{{root, solver, LockMode::Exclusive}};
+    for (const auto& r : reads) locks.push_back({root, r, LockMode::Shared});
+    const ResultsLock held(std::move(locks), o.wait);
+    const ResultKey key = result_key(c, solver);
+    std::atomic<int> failed{0};
+    std::mutex print;  // one point's lines stay whole when points run side by side
+    const auto say = [&print](std::FILE* to, const std::string& line) {
+        std::lock_guard lock(print);
+        std::fputs(line.c_str(), to);
+        std::fflush(to);
+    };
+    const auto run_point = [&](const OperatingPoint* p) {
+        const auto dir = result_dir(root, solver, p->id);
+        const LoadedResult prev = load_result(dir, key);  // compare's definition of complete too
+        const ResultStatus& st = prev.status;
+        if (st.state == ResultState::Complete && !o.force) {
+            const std::string differs = run_options_differ(*prev.summary, o);
+            if (differs.empty()) {
+                say(stdout, fmt::format("{} {:<14} complete, skipped (--force recomputes)\n", solver, p->id));
+                return;
+            }
+            say(stdout, fmt::format("{} {:<14} complete, but {}: recomputing\n", solver, p->id, differs));
+        }
+        if (st.state == ResultState::Stale)
+            say(stdout, fmt::format("{} {:<14} stale results, recomputing: {}\n", solver, p->id, st.reason));
+        if (st.state == ResultState::Corrupt)
+            say(stdout, fmt::format("{} {:<14} corrupt results, recomputing: {}\n", solver, p->id, st.reason));
+        const auto t0 = std::chrono::steady_clock::now();
+        try {
+            // The completion marker goes first: a run killed from here on leaves no summary beside
+            // its new deck and logs, so the next run recomputes instead of skipping.
+            std::filesystem::create_directories(dir);
+            std::filesystem::remove(dir / "summary.json");
+            remove_point_tables(dir);  // only this run's tables may stand beside its summary
+            PointResult r = solve(*p, dir);
+            const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            if (!r.summary.run.contains("wall_clock_s")) r.summary.run["wall_clock_s"] = secs;
+            r.summary.run["full"] = o.full;
+            write_result(dir, r.profile, r.summary);
+            remove_failure(dir);
+            say(stdout, fmt::format("{} {:<14} {}  ({:.2f} s)\n", solver, p->id, r.line, secs));
+        } catch (const CaseError&) {
+            throw;  // bad input fails the command (exit 2), not one point
+        } catch (const NoAnswer& e) {  // not a failure: the model cannot answer this point's question
+            say(stdout, fmt::format("{} {:<14} no answer: {}\n", solver, p->id, e.what()));
+            try {
+                write_failure(dir, solver, p->id, e.what(), true);  // the report says why
+            } catch (const std::exception& w) {
+                say(stderr, fmt::format("{} {:<14} (could not record why: {})\n", solver, p->id, w.what()));
+            }
+        } catch (const std::exception& e) {  // Error, bad_alloc, filesystem errors: the sweep goes on
+            ++failed;
+            const std::string why = dynamic_cast<const std::bad_alloc*>(&e)
+                                        ? "out of memory (reduce the case's sizes: cells, grains, steps)"
+                                        : e.what();
+            say(stderr, fmt::format("{} {:<14} FAILED: {}\n", solver, p->id, why));
+            try {
+                write_failure(dir, solver, p->id, why);  // the report says why the point is missing
+            } catch (const std::exception& w) {
+                say(stderr, fmt::format("{} {:<14} (could not record the failure: {})\n", solver, p->id, w.what()));
+            }
+        }
+    };
+
+    // Points are independent (own folder, own seed): up to points_at_once of them run side by
+    // side, each exactly as it would alone, so the results do not depend on the count.
+    const std::size_t workers = std::min<std::size_t>(std::max(1, points_at_once), points.size());
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr case_error;
+    std::mutex error_lock;
+    const auto work = [&] {
+        for (std::size_t i; (i = next++) < points.size();) {
+            {
+                std::lock_guard lock(error_lock);
+                if (case_error) return;
+            }
+            try {
+                run_point(points[i]);
+            } catch (...) {
+                std::lock_guard lock(error_lock);
+                if (!case_error) case_error = std::current_exception();
+            }
+        }
+    };
+    if (workers <= 1) {
+        work();
+    } else {
+        std::vector<std::jthread> pool;
+        for (std::size_t k = 0; k < workers; ++k) pool.emplace_back(work);
+    }
+    if (case_error) std::rethrow_exception(case_error);
+    if (failed)
+        fmt::print(stderr, "{}: {} of {} point(s) failed; their results were not written\n", solver, failed.load(),
+                   points.size());
+    return failed ? 1 : 0;
+}
+
+int points_at_once(const RunOptions& o, int points, int machine_cores) {
+    if (machine_cores <= 0) machine_cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int cores = o.threads > 0 ? o.threads : machine_cores;
+    const int slots = std::max(1, cores / std::max(1, o.np));
+    // Fewer than two rounds of single-process points run all at once: rounds would leave cores idle
+    // in the last one (3 points on 2 cores take two points' time in rounds, 1.5 shared by the
+    // kernel). Each point is a process of its own and runs exactly as alone, so no number changes.
+    // Not with MPI ranks (they busy-wait for each other) nor under an explicit --threads.
+    if (o.np <= 1 && o.threads <= 0 && points > slots && points < 2 * slots) return points;
+    return std::clamp(slots, 1, std::max(1, points));
+}
+
+}  // namespace granlub
