@@ -223,6 +223,7 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     const auto engine_steps = s.steps + s.persistence_run_steps();  // the loop time covers both runs
     r.summary.run = out.run;
     r.summary.run["model"] = s.model == Model::Impulse ? "impulse" : "hertz";
+    if (s.model == Model::Impulse) r.summary.run["contact_solve"] = s.iterated ? "iterated" : "single_pass";
     r.summary.run["atoms"] = init.particles.size();
     r.summary.run["steps"] = s.steps;
     r.summary.run["time_step_s"] = s.time_step;
