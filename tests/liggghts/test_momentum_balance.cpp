@@ -72,11 +72,14 @@ BOOST_AUTO_TEST_CASE(a_bed_riding_on_its_floor_balances) {
     BOOST_TEST(std::abs(b.streamwise) < 0.5);            // Pa; was -4.4
 }
 
-// The same bed with its contacts solved to convergence (contact_solve = "iterated"), on 1 and 2
-// ranks: a pair across the periodic boundary, or across the ranks' boundary, is solved by both of
-// its owners from the same state in every sweep, so they give it equal and opposite impulses.
+// The same bed with its contacts solved by fix impulse/solve (contact_solve = "iterated"), on 1
+// and 2 ranks: a pair across the periodic boundary, or across the ranks' boundary, is solved by
+// both of its owners from the same state in every sweep, so they give it equal and opposite
+// impulses whether or not the sweeps have converged; the cap of 50 sweeps keeps the test short.
+// Measured 2026-11-25 (cap 200): vertical imbalance 5e-5 / 2e-5 Pa on 1 / 2 ranks (single pass 0.21).
 BOOST_AUTO_TEST_CASE(a_bed_riding_on_its_floor_balances_when_its_contacts_are_solved) {
-    const std::string text = test::edit(tiny("riding_iterated", false), "time = 0.4", "time = 0.4\ncontact_solve = \"iterated\"");
+    const std::string text = test::edit(tiny("riding_iterated", false), "time = 0.4",
+                                        "time = 0.4\ncontact_solve = \"iterated\"\nsolve_iterations = 50");
     for (const int np : {1, 2}) {
         const Balance b = run("riding_iterated_np" + std::to_string(np), text, np);
         BOOST_TEST(std::abs(b.vertical) < 0.01 * b.weight, np << " ranks");

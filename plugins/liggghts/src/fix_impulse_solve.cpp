@@ -84,6 +84,7 @@ enum CommMode { kCommStart = 0, kCommVelocity = 1, kCommPseudo = 2 };
 const double kMinTolerance = 1e-12, kMaxTolerance = 0.5;
 const int kMaxIterations = 100000;
 const double kMaxSlop = 0.01;
+const double kMaxRestFactor = 100.0;
 
 [[noreturn]] void fail(Error* error, const std::string& msg) {
     error->all(FLERR, ("fix impulse/solve: " + msg).c_str());
@@ -113,12 +114,13 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
       iterations_(200),
       warm_start_(true),
       restitution_all_(false),
-      rest_factor_(0.0),
+      rest_factor_(2.0),
       slop_(1e-4),
       correction_(1.0),
       comm_mode_(kCommStart),
       any_boundary_(false),
       setup_pending_(false),
+      setup_step_(0),
       last_sweeps_(0),
       last_position_sweeps_(0),
       last_change_(0.0),
@@ -152,11 +154,12 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
             else if (std::strcmp(val, "all") == 0) restitution_all_ = true;
             else fail(error, "restitution must be new or all; got '" + std::string(val) + "'");
         } else if (key == "rest_factor") {
-            rest_factor_ = number(error, "rest_factor", val, 0.0, 1e3, false, "[0, 1000]");
+            rest_factor_ = number(error, "rest_factor", val, 0.0, kMaxRestFactor, false, "[0, 100]");
         } else if (key == "correction") {
             correction_ = number(error, "correction", val, 0.0, 1.0, true, "(0, 1]");
         } else {
-            fail(error, "unknown keyword '" + key + "' (tolerance, iterations, warm_start, restitution, slop, correction)");
+            fail(error, "unknown keyword '" + key + "' (tolerance, iterations, warm_start, restitution, rest_factor, slop, "
+                        "correction)");
         }
     }
     comm_forward = 7;  // kCommStart: velocity, spin, boundary-pair count
@@ -211,6 +214,7 @@ void FixImpulseSolve::setup(int) {
     // their own setup, some after this one); their impulses of the last step are applied before
     // the first half kick (pre_initial_integrate), so a run continues the previous one.
     setup_pending_ = true;
+    setup_step_ = update->ntimestep;  // the step the previous run ended with
     run_steps_ = run_sweeps_ = run_capped_ = 0;
 }
 
@@ -218,8 +222,9 @@ void FixImpulseSolve::pre_initial_integrate() {
     if (!setup_pending_) return;
     setup_pending_ = false;
     const double dt = update->dt;
-    const double step = static_cast<double>(update->ntimestep);
-    // the contacts solved at this very step (the last of the previous run) get their impulses back
+    // the contacts solved at the setup's step (the last of the previous run) get their impulses back
+    // (ntimestep has already moved on to the first step of this run)
+    const double step = static_cast<double>(setup_step_);
     const int n = static_cast<int>(contacts_.size());
     for (int k = 0; k < n; k++) {
         Contact& c = contacts_[k];
@@ -309,14 +314,19 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
         const double* const wj = wall ? zero : omega[j];
         const double vr[3] = {ui[0] - uj[0], ui[1] - uj[1], ui[2] - uj[2]};
         const double vn = vr[0] * en[0] + vr[1] * en[1] + vr[2] * en[2];
-        // Newton's law is an impact law: a contact that carried a normal impulse at the previous step
-        // was solved to v_n >= t_n >= 0 then, and the velocities it arrives with are that solve's,
-        // so its approach now is the solve's residual or the turn of its normal, not an impact
-        // (restitution new; restitution all applies e to every approach)
+        // Newton's law is an impact law; which approaches are impacts is our choice (switchable):
+        //  - a contact pressed at the previous step was solved to v_n >= t_n >= 0 then, and the grains
+        //    arrive with that solve's velocities: its approach now is the solve's residual or the turn
+        //    of its normal, not an impact (restitution new; restitution all: Moreau's law literally);
+        //  - an approach no faster than rest_factor times the contact's load speed (its normal impulse
+        //    the last time it was pressed without restitution, over its effective mass: what its load
+        //    adds in one step) is a resting contact closing again after lifting off for a step or two.
+        //    Without it such micro-bounces (e = 0.9) keep a pile chattering at the solver's resolution.
+        //    The load speed scales with dt, so both rules vanish as dt -> 0.
         const bool enduring = c.history && c.history[kHistStep] == previous && c.history[kHistPn] > 0.0;
         const double load = c.history ? c.history[kHistLoad] * (im[i] + (wall ? 0.0 : im[j])) : 0.0;
-        const double e = -vn > c.bounce && -vn > rest_factor_ * load && !(enduring && !restitution_all_) ? c.e : 0.0;
-        c.tn = vn < 0.0 ? -e * vn : 0.0;
+        const bool impact = -vn > c.bounce && (restitution_all_ || (!enduring && -vn > rest_factor_ * load));
+        c.tn = vn < 0.0 && impact ? -c.e * vn : 0.0;
         c.impact = c.tn > 0.0;
         const double ws[3] = {c.ri * wi[0] + c.rj * wj[0], c.ri * wi[1] + c.rj * wj[1], c.ri * wi[2] + c.rj * wj[2]};
         double exw[3];

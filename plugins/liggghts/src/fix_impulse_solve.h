@@ -53,6 +53,7 @@ private:
     int comm_mode_;
     bool any_boundary_;          // on any rank: then ghosts are refreshed after every sweep
     bool setup_pending_;         // a run's setup collected contacts: apply their stored impulses
+    bigint setup_step_;          // the step of that setup
 
     // statistics (compute_vector, post_run)
     int last_sweeps_, last_position_sweeps_;
