@@ -2,6 +2,13 @@
 // impulse with `iterate on` together, every step, until the impulses converge (projected
 // Gauss-Seidel with accumulated, clamped impulses; overlaps corrected with pseudo-velocities).
 // Doc: plugins/liggghts/doc/fix_impulse_solve.txt; the rules and their sources: the .cpp.
+// The FixStyle line lets the pair of files drop into a LIGGGHTS 3.8 src/ with the model headers
+// (not checked by tools/check-in-tree-build, which copies the model headers only); the plugin
+// registers the style itself (register_styles.cpp).
+#ifdef FIX_CLASS
+FixStyle(impulse/solve,FixImpulseSolve)
+#else
+
 #ifndef GRANLUB_FIX_IMPULSE_SOLVE_H
 #define GRANLUB_FIX_IMPULSE_SOLVE_H
 
@@ -63,4 +70,5 @@ private:
 
 }  // namespace LAMMPS_NS
 
+#endif
 #endif
