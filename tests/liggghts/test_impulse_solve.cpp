@@ -16,6 +16,7 @@
 #include "run_driver.h"
 
 namespace fs = std::filesystem;
+using granlub::test::example_lines;
 using granlub::test::read_text;
 using granlub::test::results;
 using granlub::test::run_driver;
@@ -46,26 +47,6 @@ fs::path iterated(const std::string& fix_lines, const std::string& name) {
 
 void close(double a, double b) { BOOST_TEST(std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)), a << " vs " << b); }
 
-// The command lines of the page's first [Examples:] block.
-std::vector<std::string> example_lines() {
-    std::istringstream in(read_text(kPage));
-    std::vector<std::string> lines;
-    std::string line;
-    bool inside = false;
-    while (std::getline(in, line)) {
-        if (line == "[Examples:]") {
-            inside = true;
-            continue;
-        }
-        if (!inside || line.empty()) continue;
-        const bool last = line.size() >= 4 && line.compare(line.size() - 4, 4, ":pre") == 0;
-        if (last) line = std::regex_replace(line, std::regex(R"(\s*:pre$)"), "");
-        lines.push_back(line);
-        if (last) break;
-    }
-    return lines;
-}
-
 void expect_error(const fs::path& d, const std::string& message) {
     BOOST_TEST_CONTEXT(d.filename().string()) {
         const auto run = run_driver(d.string(), "", 1, kFolder);
@@ -87,7 +68,7 @@ double value_of(const std::string& line, const std::string& key, double def) {
 // rest) are corrected in one step by `correction` of their overlap beyond the slop: by default
 // all of it, down to the slop, 1e-4 of r (wall) and of r_i + r_j (pair).
 BOOST_AUTO_TEST_CASE(page_examples_run_and_correct_the_overlaps_to_the_slop) {
-    const auto lines = example_lines();
+    const auto lines = example_lines(kPage);
     BOOST_TEST_REQUIRE(lines.size() >= 2u);
     int k = 0;
     for (const std::string& line : lines) {

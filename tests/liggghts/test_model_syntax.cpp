@@ -14,6 +14,7 @@
 #include "run_driver.h"
 
 namespace fs = std::filesystem;
+using granlub::test::example_lines;
 using granlub::test::read_text;
 using granlub::test::results;
 using granlub::test::run_driver;
@@ -23,26 +24,6 @@ namespace {
 const fs::path kPlugin = fs::path(GRANLUB_SOURCE_DIR) / "plugins" / "liggghts";
 const fs::path kTinyDeck = fs::path(GRANLUB_SOURCE_DIR) / "tests" / "liggghts" / "in.separate";
 const std::string kFolder = "liggghts_syntax";
-
-// The command lines of a LIGGGHTS doc page's [Examples:] block (up to the line ending in ":pre").
-std::vector<std::string> example_lines(const fs::path& page) {
-    std::istringstream in(read_text(page));
-    std::vector<std::string> lines;
-    std::string line;
-    bool inside = false;
-    while (std::getline(in, line)) {
-        if (line == "[Examples:]") {
-            inside = true;
-            continue;
-        }
-        if (!inside || line.empty()) continue;
-        const bool last = line.size() >= 4 && line.compare(line.size() - 4, 4, ":pre") == 0;
-        if (last) line = std::regex_replace(line, std::regex(R"(\s*:pre$)"), "");
-        lines.push_back(line);
-        if (last) break;
-    }
-    return lines;
-}
 
 // in.separate with its pair_style line or its wall line replaced by `line`; y fixed too, so
 // yplane walls are allowed. A line with `iterate on` gets the other impulse model set to iterate

@@ -100,6 +100,13 @@ double number(Error* error, const char* key, const char* text, double lo, double
     return x;
 }
 
+// A keyword with the values a or b: whether it is b.
+bool second(Error* error, const char* key, const char* val, const char* a, const char* b) {
+    if (std::strcmp(val, a) != 0 && std::strcmp(val, b) != 0)
+        fail(error, std::string(key) + " must be " + a + " or " + b + "; got '" + val + "'");
+    return std::strcmp(val, b) == 0;
+}
+
 inline void cross(const double* a, const double* b, double* c) {
     c[0] = a[1] * b[2] - a[2] * b[1];
     c[1] = a[2] * b[0] - a[0] * b[2];
@@ -144,15 +151,11 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
                             "got '" + std::string(val) + "'");
             iterations_ = static_cast<int>(n);
         } else if (key == "warm_start") {
-            if (std::strcmp(val, "yes") == 0) warm_start_ = true;
-            else if (std::strcmp(val, "no") == 0) warm_start_ = false;
-            else fail(error, "warm_start must be yes or no; got '" + std::string(val) + "'");
+            warm_start_ = !second(error, "warm_start", val, "yes", "no");
         } else if (key == "slop") {
             slop_ = number(error, "slop", val, 0.0, kMaxSlop, false, "[0, 0.01] (a fraction of r_i + r_j)");
         } else if (key == "restitution") {
-            if (std::strcmp(val, "new") == 0) restitution_all_ = false;
-            else if (std::strcmp(val, "all") == 0) restitution_all_ = true;
-            else fail(error, "restitution must be new or all; got '" + std::string(val) + "'");
+            restitution_all_ = second(error, "restitution", val, "new", "all");
         } else if (key == "rest_factor") {
             rest_factor_ = number(error, "rest_factor", val, 0.0, kMaxRestFactor, false, "[0, 100]");
         } else if (key == "correction") {
