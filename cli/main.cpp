@@ -1,5 +1,5 @@
 // granlub: one command, one subcommand per job. Exit codes: 0 done, 1 a solver failed on some
-// point, 2 bad input (case file, options).
+// point, 2 bad input (case file, options) or, with --no-wait, results in use by another run.
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
@@ -16,6 +16,7 @@
 #include "granlub/error.h"
 #include "granlub/plausibility.h"
 #include "granlub/results.h"
+#include "granlub/run_lock.h"
 #include "granlub/text.h"
 #include "modules.h"
 #include "run_all.h"
@@ -58,8 +59,16 @@ void add_point(CLI::App* sub, Args& a) {
         ->type_name("ID");
 }
 
+// Another run holding the same results (granlub/run_lock.h): wait for it, or fail at once.
+void add_wait(CLI::App* sub, Args& a) {
+    sub->add_flag("--wait,!--no-wait", a.opt.wait,
+                  "when another run is using the same results: wait for it, saying which run (default), or with "
+                  "--no-wait fail at once with exit code 2");
+}
+
 void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
     add_point(sub, a);
+    add_wait(sub, a);
     sub->add_flag("--force", a.opt.force,
                   "recompute points whose results are complete and current (default: off, such results are kept)");
     sub->add_flag("--full", a.opt.full,
@@ -111,6 +120,7 @@ int main(int argc, char** argv) {
         compare = app.add_subcommand("compare", "compare every solver's results for a case: results/report/");
         add_case(compare, a);
         add_point(compare, a);  // the report of one point (README: compare cases/jasti2006 --point U2.0_R0.25)
+        add_wait(compare, a);
     }
 
     auto* run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");
@@ -177,6 +187,9 @@ int main(int argc, char** argv) {
         if (compare && compare->parsed()) return granlub::cli::compare(c, a.opt);
         if (run->parsed()) return granlub::cli::run_all(c, a.opt, a.solvers);
     } catch (const granlub::CaseError& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 2;
+    } catch (const granlub::ResultsInUse& e) {  // --no-wait: like bad input, nothing was run
         fmt::print(stderr, "error: {}\n", e.what());
         return 2;
     } catch (const granlub::Error& e) {

@@ -8,6 +8,7 @@
 
 #include "granlub/error.h"
 #include "granlub/results.h"
+#include "granlub/run_lock.h"
 #include "modules.h"
 
 namespace granlub::cli {
@@ -40,6 +41,8 @@ int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& 
         std::fflush(stdout);
         try {
             if (m->run(c, o) != 0) rc = 1;
+        } catch (const ResultsInUse&) {
+            throw;  // --no-wait and another run holds these results: stop, exit 2
         } catch (const Error& e) {
             fmt::print(stderr, "{}: FAILED: {}\n", m->name, e.what());
             rc = 1;
@@ -50,6 +53,8 @@ int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& 
         std::fflush(stdout);
         try {
             if (compare(c, o) != 0) rc = 1;
+        } catch (const ResultsInUse&) {
+            throw;
         } catch (const Error& e) {
             fmt::print(stderr, "compare: FAILED: {}\n", e.what());
             rc = 1;

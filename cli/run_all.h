@@ -7,6 +7,8 @@
 
 namespace granlub::cli {
 // `granlub run`: the selected solvers (all when empty), then compare; one overall progress line
-// per stage and a closing table. Returns 0 if every stage succeeded.
+// per stage and a closing table. Returns 0 if every stage succeeded. Each stage takes and frees
+// its own locks (run_lock.h); none is held from one stage into the next, so a run cannot wait on
+// itself. With --no-wait, a stage whose results another run holds ends the run (ResultsInUse).
 int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& solvers);
 }

@@ -14,6 +14,7 @@
 #include "granlub/progress.h"
 #include "granlub/regime.h"
 #include "granlub/results.h"
+#include "granlub/run_id.h"
 
 namespace granlub::automaton {
 
@@ -88,7 +89,8 @@ Profile make_profile(const EnsembleResult& r, double nu_max) {
 }
 
 std::string timeseries_csv(const std::vector<TimePoint>& ts) {
-    std::string out = "# ensemble mean over replicas; u_p/U\nstep,mean_up_over_U,u_row0_over_U,u_top_row_over_U\n";
+    std::string out = fmt::format("# ensemble mean over replicas; u_p/U\n# {}\n", run_id_comment()) +
+                      "step,mean_up_over_U,u_row0_over_U,u_top_row_over_U\n";
     for (const auto& t : ts)
         out += fmt::format("{},{:.6f},{:.6f},{:.6f}\n", t.step, t.mean_up, t.u_bottom_row, t.u_top_row);
     return out;

@@ -32,7 +32,8 @@ double Grains::mass() const { return density * std::numbers::pi * diameter * dia
 
 double Grains::rayleigh_time() const {
     const double shear_modulus = youngs_modulus / (2.0 * (1.0 + poisson_ratio));
-    return std::numbers::pi * 0.5 * diameter * std::sqrt(density / shear_modulus) / (0.1631 * poisson_ratio + 0.8766);
+    return std::numbers::pi * 0.5 * sizes().min() * std::sqrt(density / shear_modulus) /
+           (0.1631 * poisson_ratio + 0.8766);
 }
 
 std::string hash_hex(std::string_view bytes) {
@@ -314,15 +315,19 @@ void resolve_common(Case& c) {
         cs.fail("title", fmt::format("{} bytes; a title has at most {}", c.title.size(), kMaxTitleBytes));
 
     const Section& g = c.sections.at("grains");
-    c.grains = {g.real("diameter"), g.real("density"), g.real("restitution"),
-                g.real("friction"), g.real("youngs_modulus"), g.real("poisson_ratio")};
+    c.grains = {g.real("diameter"),       g.real("density"),       g.real("restitution"), g.real("friction"),
+                g.real("youngs_modulus"), g.real("poisson_ratio"), g.real("size_spread")};
 
     const Section& w = c.sections.at("walls");
-    const Wall base{w.real("restitution"), w.real("friction"), w.real("roughness")};
+    auto surface = [](const std::string& v) { return v == "bumps" ? WallSurface::Bumps : WallSurface::Plane; };
+    const Wall base{w.real("restitution"), w.real("friction"), w.real("roughness"), surface(w.string("surface")),
+                    w.real("bump_diameter")};
     auto wall = [&](const char* side) {
         const Section& s = c.sections.at(fmt::format("walls.{}", side));
         return Wall{s.maybe_real("restitution").value_or(base.restitution),
-                    s.maybe_real("friction").value_or(base.friction), s.maybe_real("roughness").value_or(base.roughness)};
+                    s.maybe_real("friction").value_or(base.friction), s.maybe_real("roughness").value_or(base.roughness),
+                    s.string("surface").empty() ? base.surface : surface(s.string("surface")),
+                    s.maybe_real("bump_diameter").value_or(base.bump_diameter)};
     };
     c.bottom = wall("bottom");
     c.top = wall("top");
@@ -451,6 +456,7 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
     for (const auto& spec : schema.sections())
         if (spec.validate) spec.validate(c.sections.at(spec.name));
     expand_sweep(c, control, swept_lists);
+    check_wall_bumps(c);  // needs every point's roughness
     return c;
 }
 

@@ -2,6 +2,8 @@
 // Solver sections are declared by their modules (e.g. continuum/src/section.cpp).
 #include <fmt/format.h>
 
+#include "granlub/grain_sizes.h"
+
 #include "common_sections.h"
 
 namespace granlub {
@@ -15,18 +17,29 @@ std::vector<SectionSpec> common_sections() {
     s.push_back(c);
 
     SectionSpec g("grains", "the granular material");
-    g.real_required("diameter", Range::positive(), "m", "grain diameter d");
+    g.real_required("diameter", Range::positive(), "m",
+                    "grain diameter d (with size_spread: the particle solvers' mean diameter; the continuum and the "
+                    "automaton use d)");
     g.real_required("density", Range::positive(), "kg/m^3", "grain material density rho_p");
     g.real_required("restitution", Range::open_closed(0, 1), "", "grain-grain normal restitution e_p");
     g.real("friction", 0.5, Range::non_negative(), "", "grain-grain Coulomb friction coefficient (particle solvers)");
     g.real("youngs_modulus", 63e9, Range::positive(), "Pa", "Young's modulus (soft-sphere models; glass)");
     g.real("poisson_ratio", 0.23, Range{-1.0, 0.5, true, true}, "", "Poisson's ratio (soft-sphere models; glass)");
+    g.real("size_spread", 0.0, Range::closed(0, kMaxSizeSpread), "",
+           "particle solvers: standard deviation of the diameters over their mean d; diameters uniform in "
+           "d (1 +- sqrt(3) size_spread); 0 = equal grains");
     s.push_back(g);
 
     SectionSpec w("walls", "both walls; [walls.bottom] and [walls.top] override per wall");
     w.real_required("restitution", Range::open_closed(0, 1), "", "grain-wall normal restitution e_w");
     w.real("friction", 0.5, Range::non_negative(), "", "grain-wall Coulomb friction coefficient");
     w.real_required("roughness", Range::unit(), "", "wall roughness R: 0 smooth, 1 rough");
+    w.choice("surface", "plane", {"plane", "bumps"},
+             "particle solvers: plane = a smooth frictional plane (R then applies to the continuum and the automaton "
+             "only); bumps = a monolayer of fixed spheres on the plane, hexagonal, spaced so that R = sin(theta) = "
+             "spacing / (bump_diameter + d) (Jenkins & Richman 1986); R = 0: the plane alone");
+    w.real("bump_diameter", 0.0, Range::non_negative(), "m",
+           "surface = bumps: the bumps' diameter; 0 = the largest that give R: min(d, R d / (1 - R))");
     w.subtables = {"bottom", "top"};
     s.push_back(w);
     for (const char* side : {"bottom", "top"}) {
@@ -35,6 +48,8 @@ std::vector<SectionSpec> common_sections() {
         ws.real_optional("restitution", Range::open_closed(0, 1), "", "grain-wall normal restitution e_w");
         ws.real_optional("friction", Range::non_negative(), "", "grain-wall Coulomb friction coefficient");
         ws.real_optional("roughness", Range::unit(), "", "wall roughness R");
+        ws.choice("surface", "", {"", "plane", "bumps"}, "particle solvers' wall: plane or bumps; \"\" = as [walls]");
+        ws.real_optional("bump_diameter", Range::non_negative(), "m", "surface = bumps: the bumps' diameter");
         s.push_back(ws);
     }
 

@@ -2,6 +2,7 @@
 #include "granlub/contacts.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -120,6 +121,18 @@ std::optional<double> contact_persistence(const ContactList& before, const Conta
         else ++kept, ++a, ++b;
     }
     return static_cast<double>(kept) / static_cast<double>(before.size());
+}
+
+void ContactSeries::add(const ParticleSet& p, double time) {
+    if (time < t_start_ - 1e-12) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    const ContactList pairs = touching_pairs(p, box_);
+    z_.push_back(coordination_number(pairs, p.size()));
+    const OverlapStats o = overlaps(p, box_, pairs);
+    max_overlap_ = std::max(max_overlap_, o.max);
+    overlap_sum_ += o.mean * static_cast<double>(o.overlapping);
+    overlapping_ += o.overlapping;
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 }  // namespace granlub

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "granlub/run_id.h"
+
 namespace granlub {
 
 BlockEstimate mean_gap(const PlateSeries& plate, const SteadyWindow& w, std::size_t blocks) {
@@ -36,9 +38,9 @@ std::string gap_csv(const ServoSettings& s, double time_step, std::span<const do
                     std::span<const double> top_stress, const PlateSeries& plate, const std::string& comment) {
     const std::vector<double> p_w = window_stresses(s, wall_step, top_stress, plate);
     std::string out = fmt::format("# {}\n# plate (top wall) position after each servo window of {} steps; stress = "
-                                  "top-wall normal stress averaged over the window; target {} Pa\n"
+                                  "top-wall normal stress averaged over the window; target {} Pa\n# {}\n"
                                   "time_s,gap_m,normal_stress_top_Pa\n",
-                                  comment, s.servo_every, s.target_stress);
+                                  comment, s.servo_every, s.target_stress, run_id_comment());
     for (std::size_t j = 0; j < plate.step.size(); ++j)
         out += fmt::format("{},{},{}\n", plate.step[j] * time_step, plate.gap[j],
                            p_w[j] >= 0 ? fmt::format("{}", p_w[j]) : std::string(""));
@@ -49,8 +51,7 @@ nlohmann::json load_summary(const LoadSummaryInputs& in, std::map<std::string, S
     const ServoSettings& s = in.servo;
     const PlateSeries& plate = in.plate;
     const BlockEstimate g = mean_gap(plate, in.window, in.blocks);
-    const double vg = std::numbers::pi / 6.0 * std::pow(in.grain_diameter, 3);
-    const double nu = static_cast<double>(in.grains) * vg / (in.area * g.mean);
+    const double nu = in.solids_volume / (in.area * g.mean);
     outputs["gap"] = Scalar{g.mean, g.stderr_, "m"};
     outputs["mean_solid_fraction"] = Scalar{nu, nu * g.stderr_ / g.mean, ""};
     const Scalar& top = outputs.at("normal_stress_top");

@@ -82,9 +82,14 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
 
     const auto& u = o.profile.column("u_over_U");
     const auto& ue = o.profile.column("u_over_U_stderr");
-    // slip: wall speed minus the mean velocity of the slab next to the wall (the wall layer)
-    o.outputs["slip_bottom"] = Scalar{U * (1.0 - u.front()), U * ue.front(), "m/s"};
-    o.outputs["slip_top"] = Scalar{U * u.back(), U * ue.back(), "m/s"};
+    // slip: wall speed minus the mean velocity of the slab next to the wall (the wall layer), on a
+    // rough wall of the first slab clear of its bumps
+    const Stations& st_y = in.cg.stations();
+    std::size_t kb = 0, kt = u.size() - 1;
+    while (kb + 1 < u.size() && st_y.centre(kb) < in.slip_bottom_from) ++kb;
+    while (kt > kb && st_y.hi - st_y.centre(kt) < in.slip_top_from) --kt;
+    o.outputs["slip_bottom"] = Scalar{U * (1.0 - u[kb]), U * ue[kb], "m/s"};
+    o.outputs["slip_top"] = Scalar{U * u[kt], U * ue[kt], "m/s"};
     o.outputs["mean_solid_fraction"] = Scalar{in.cg.mean_solid_fraction(first, in.cg.snapshots()), std::nullopt, ""};
     o.outputs["max_solid_fraction"] = Scalar{in.c.cell.max_solid_fraction, std::nullopt, ""};
     std::string load_line;
@@ -97,7 +102,7 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
                                               .window = win,
                                               .blocks = in.blocks,
                                               .grains = in.grains,
-                                              .grain_diameter = in.c.grains.diameter,
+                                              .solids_volume = in.solids_volume,
                                               .area = in.box.length * in.box.width},
                                              o.outputs, load_line);
 
@@ -115,7 +120,7 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
                                         in.simulated_s));
     o.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa "
                          "slip={:.3f}/{:.3f} U{}{}",
-                         o.outputs.at("mean_solid_fraction").value, P_b, P_t, T_b, T_t, 1.0 - u.front(), u.back(),
+                         o.outputs.at("mean_solid_fraction").value, P_b, P_t, T_b, T_t, 1.0 - u[kb], u[kt],
                          win.steady ? fmt::format(" (steady from {:.3g} s)", win.t_start)
                                     : " (NO steady state detected: run longer)",
                          load_line);

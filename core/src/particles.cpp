@@ -16,7 +16,9 @@
 #include "granlub/error.h"
 #include "granlub/text.h"
 #include "granlub/results.h"
+#include "granlub/run_id.h"
 #include "granlub/table.h"
+#include "granlub/wall_bumps.h"
 #include "lattice_insertion.h"
 
 namespace granlub {
@@ -44,27 +46,17 @@ void ParticleSet::push_back(double x_, double y_, double z_, double vx_, double 
     radius.push_back(r);
 }
 
-ParticleBox particle_box(const Case& c, double periodic_depth) {
-    ParticleBox b;
-    b.length = c.cell.length;
-    b.gap = c.cell.gap;
-    if (c.cell.width > 0) {
-        b.width = c.cell.width;
-    } else {
-        b.periodic_z = true;
-        b.width = periodic_depth > 0 ? periodic_depth : kPeriodicDepthDiameters * c.grains.diameter;
-    }
-    return b;
-}
-
-std::size_t grains_for_fill(const ParticleBox& box, double diameter, double nu) {
-    const double vg = std::numbers::pi * diameter * diameter * diameter / 6.0;
-    const double n = nu * box.volume() / vg;
+std::size_t grains_for_fill(const ParticleBox& box, const GrainSizes& sizes, double nu) {
+    const double n = nu * box.volume() / sizes.mean_volume();
     if (!(n <= kMaxGrains))
         throw CaseError(fmt::format("{:.3g} grains of d = {:g} m fill the {:g} x {:g} x {:g} m box at solid fraction "
                                     "{:g}; at most {:g} are allowed (a smaller [cell] length, gap or width)",
-                                    n, diameter, box.length, box.gap, box.width, nu, kMaxGrains));
+                                    n, sizes.mean, box.length, box.gap, box.width, nu, kMaxGrains));
     return static_cast<std::size_t>(std::llround(n));
+}
+
+std::size_t grains_for_fill(const ParticleBox& box, double diameter, double nu) {
+    return grains_for_fill(box, GrainSizes{diameter, 0.0}, nu);
 }
 
 namespace {
@@ -128,47 +120,54 @@ double wrap(double v, double period) {
 
 }  // namespace
 
-// Throws CaseError when n grains of diameter d cannot sit on the densest insertion lattice.
-static void check_fits(const ParticleBox& box, double d, std::size_t n) {
-    const Lattice densest = make_lattice(box, d, d);
+// Throws CaseError when n grains cannot sit on the densest insertion lattice (spaced for the
+// largest grain).
+static void check_fits(const ParticleBox& box, const GrainSizes& g, std::size_t n) {
+    const Lattice densest = make_lattice(box, g.max(), g.max());
     if (densest.count() < n) {
-        const double vg = std::numbers::pi * d * d * d / 6.0;
+        const double vg = g.mean_volume();
         throw CaseError(fmt::format(
             "particle insertion: {} grains (solid fraction {:.4f}) do not fit without overlaps in the "
-            "{:g} x {:g} x {:g} m box; at most {} grains (solid fraction {:.4f}) can be inserted",
-            n, static_cast<double>(n) * vg / box.volume(), box.length, box.gap, box.width, densest.count(),
-            static_cast<double>(densest.count()) * vg / box.volume()));
+            "{:g} x {:g} x {:g} m box{}; at most {} grains (solid fraction {:.4f}) can be inserted",
+            n, static_cast<double>(n) * vg / box.volume(), box.length, box.gap, box.width,
+            g.equal() ? "" : fmt::format(" on a lattice spaced for the largest grain ({:g} m)", g.max()),
+            densest.count(), static_cast<double>(densest.count()) * vg / box.volume()));
     }
 }
 
-ParticleSet insert_grains(const ParticleBox& box, double d, std::size_t n, const InsertionOptions& opt) {
+ParticleSet insert_grains(const ParticleBox& box, double d_mean, std::size_t n, const InsertionOptions& opt) {
+    const GrainSizes g{d_mean, opt.size_spread};
+    const double d = g.max();  // sites and wall margins for the largest grain
     if (!(d > 0) || !(box.length > 0) || !(box.gap > 0) || !(box.width > 0))
         throw CaseError(fmt::format("particle insertion: grain diameter {:g} m and box {:g} x {:g} x {:g} m must "
                                     "be positive",
                                     d, box.length, box.gap, box.width));
-    check_fits(box, d, n);
-    const Lattice l =
-        make_lattice(box, d, largest_spacing(d, n, [&](double a) { return make_lattice(box, d, a).count(); }));
+    check_fits(box, g, n);
+    const double a = largest_spacing(d, n, [&](double s) { return make_lattice(box, d, s).count(); });
+    const Lattice l = make_lattice(box, d, a);
+    const std::vector<double> diameters = draw_diameters(g, n, opt.seed);
     Rng rng(opt.seed);
     const std::vector<std::size_t> sites = random_sites(rng, l.count(), n);
 
     ParticleSet p;
     p.reserve(n);
     const double sigma = opt.velocity_noise * std::abs(opt.wall_speed);
-    for (std::size_t s : sites) {
+    for (std::size_t k = 0; k < n; ++k) {
         double x, y, z;
-        site(l, s, x, y, z);
+        site(l, sites[k], x, y, z);
         double dx, dy, dz;
-        ball_jitter(rng, l.jitter, dx, dy, dz);
+        // each grain moves at most (a - d_i) / 2 from its site: no overlap with a neighbour or a wall
+        ball_jitter(rng, g.equal() ? l.jitter : 0.5 * (a - diameters[k]), dx, dy, dz);
         x = wrap(x + dx, box.length);
         y += dy;
         z += dz;
         if (box.periodic_z) z = wrap(z + 0.5 * box.width, box.width) - 0.5 * box.width;
         const double u = opt.wall_speed * (1.0 - y / box.gap);
+        y += opt.floor;
         const double vx = u + sigma * rng.normal();
         const double vy = sigma * rng.normal();
         const double vz = sigma * rng.normal();
-        p.push_back(x, y, z, vx, vy, vz, 0.5 * d);
+        p.push_back(x, y, z, vx, vy, vz, 0.5 * diameters[k]);
     }
     return p;
 }
@@ -196,6 +195,16 @@ double solid_fraction(const ParticleSet& p, const ParticleBox& box) {
     double v = 0;
     for (double r : p.radius) v += 4.0 / 3.0 * std::numbers::pi * r * r * r;
     return v / box.volume();
+}
+
+double solids_volume(const ParticleSet& p) {
+    if (p.size() == 0) return 0.0;
+    const double r0 = p.radius.front();
+    if (std::all_of(p.radius.begin(), p.radius.end(), [&](double r) { return r == r0; }))
+        return static_cast<double>(p.size()) * (std::numbers::pi / 6.0 * std::pow(2.0 * r0, 3));
+    double v = 0;
+    for (double r : p.radius) v += std::numbers::pi / 6.0 * std::pow(2.0 * r, 3);
+    return v;
 }
 
 std::filesystem::path initial_particles_path(const std::filesystem::path& root, const std::string& point) {
@@ -266,6 +275,7 @@ std::filesystem::path final_state_path(const std::filesystem::path& root, const 
 void write_particle_state(const std::filesystem::path& path, const ParticleState& s, std::vector<std::string> comments) {
     comments.push_back(fmt::format("gap: {:.17g}", s.gap));
     comments.push_back(fmt::format("time: {:.17g}", s.time));
+    comments.push_back(run_id_comment());  // a run's output (results.h), unlike the shared initial grains
     write_particles_csv(path, s.particles, comments);
 }
 
@@ -298,23 +308,32 @@ ParticleBox count_box(const Case& c, double periodic_depth) {
     return c.cell.ring() ? ring_slice_box(c) : particle_box(c, periodic_depth);
 }
 
-double ring_height(const Case& c, const InsertionOptions& opt) { return opt.height > 0 ? opt.height : c.cell.gap; }
+// Where the grains are inserted: below opt.height (the plate's start under load), else below H.
+double insertion_height(const Case& c, const InsertionOptions& opt) { return opt.height > 0 ? opt.height : c.cell.gap; }
+
+// The slice's insertion box: the count box up to the insertion height, less the bumps' halves
+// (insert_grains places it from y = opt.floor).
+ParticleBox insertion_box(const Case& c, const ParticleBox& count, const InsertionOptions& opt) {
+    ParticleBox b = count;
+    b.gap = insertion_height(c, opt) - opt.floor - opt.ceiling;
+    return b;
+}
 
 // The grain count of a point, checked: the one place both initial_particles() and
 // check_initial_particles() take it from.
 std::size_t point_grains(const Case& c, const OperatingPoint& pt, const ParticleBox& box, const std::string& fill_key,
                          const InsertionOptions& opt) {
+    const GrainSizes g = c.grains.sizes();
     try {
-        const std::size_t n = grains_for_fill(box, c.grains.diameter, pt.solid_fraction);
+        const std::size_t n = grains_for_fill(box, g, pt.solid_fraction);
         if (!c.cell.ring()) {
-            check_fits(box, c.grains.diameter, n);
-        } else if (const std::size_t most = ring_capacity(annulus(c), ring_height(c, opt), c.grains.diameter,
-                                                          opt.wall_sag);
+            check_fits(insertion_box(c, box, opt), g, n);
+        } else if (const std::size_t most = ring_capacity(annulus(c), insertion_height(c, opt), g.max(), opt.wall_sag);
                    most < n) {
-            const double vg = std::numbers::pi * std::pow(c.grains.diameter, 3) / 6.0;
             throw CaseError(fmt::format("{} grains do not fit in the ring below {:g} m (where they are inserted); at "
                                         "most {}, a solid fraction of {:.4f} over the gap",
-                                        n, ring_height(c, opt), most, static_cast<double>(most) * vg / box.volume()));
+                                        n, insertion_height(c, opt), most,
+                                        static_cast<double>(most) * g.mean_volume() / box.volume()));
         }
         return n;
     } catch (const CaseError& e) {
@@ -322,11 +341,19 @@ std::size_t point_grains(const Case& c, const OperatingPoint& pt, const Particle
                                     pt.solid_fraction, e.what()));
     }
 }
+
+InsertionOptions with_case(const Case& c, const OperatingPoint& pt, InsertionOptions opt) {
+    opt.wall_speed = pt.speed;
+    opt.size_spread = c.grains.size_spread;
+    opt.floor = bump_protrusion(c, pt.bottom);
+    opt.ceiling = bump_protrusion(c, pt.top);
+    return opt;
+}
 }  // namespace
 
 void check_initial_particles(const Case& c, const OperatingPoint& pt, double periodic_depth,
                              const std::string& fill_key, const InsertionOptions& opt) {
-    point_grains(c, pt, count_box(c, periodic_depth), fill_key, opt);
+    point_grains(c, pt, count_box(c, periodic_depth), fill_key, with_case(c, pt, opt));
 }
 
 InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, const std::filesystem::path& root,
@@ -334,16 +361,19 @@ InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, cons
     InitialParticles out;
     out.box = count_box(c, periodic_depth);
     out.file = initial_particles_path(root, pt.id);
-    InsertionOptions opt = opt_in;
-    opt.wall_speed = pt.speed;
+    const InsertionOptions opt = with_case(c, pt, opt_in);
     const double d = c.grains.diameter;
     const std::size_t n = point_grains(c, pt, out.box, fill_key, opt);
     std::string key = fmt::format("key: box={:.17g},{:.17g},{:.17g},{} d={:.17g} n={} U={:.17g} noise={:.17g} seed={}",
                                   out.box.length, out.box.gap, out.box.width, out.box.periodic_z ? "pz" : "wz", d, n,
                                   opt.wall_speed, opt.velocity_noise, opt.seed);
     if (c.cell.ring())
-        key += fmt::format(" ring R={:.17g} h={:.17g} sag={:.17g}", c.cell.annulus_radius, ring_height(c, opt),
+        key += fmt::format(" ring R={:.17g} h={:.17g} sag={:.17g}", c.cell.annulus_radius, insertion_height(c, opt),
                            opt.wall_sag);
+    else if (opt.height > 0)
+        key += fmt::format(" h={:.17g}", opt.height);
+    if (opt.size_spread > 0) key += fmt::format(" spread={:.17g}", opt.size_spread);
+    if (opt.floor > 0 || opt.ceiling > 0) key += fmt::format(" bumps={:.17g},{:.17g}", opt.floor, opt.ceiling);
     if (std::filesystem::exists(out.file)) {
         const auto comments = read_particles_comments(out.file);
         if (std::find(comments.begin(), comments.end(), key) != comments.end()) {
@@ -354,8 +384,12 @@ InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, cons
             }
         }
     }
-    out.particles = c.cell.ring() ? insert_ring_grains(annulus(c), ring_height(c, opt), d, n, opt, opt.wall_sag)
-                                  : insert_grains(out.box, d, n, opt);
+    out.particles = c.cell.ring() ? insert_ring_grains(annulus(c), insertion_height(c, opt), d, n, opt, opt.wall_sag)
+                                  : insert_grains(insertion_box(c, out.box, opt), d, n, opt);
+    const std::string sizes =
+        opt.size_spread > 0 ? fmt::format("mean diameter {:g} m (spread {:g}, uniform in {:g} to {:g} m)", d,
+                                          opt.size_spread, c.grains.sizes().min(), c.grains.sizes().max())
+                            : fmt::format("diameter {:g} m", d);
     write_particles_csv(
         out.file, out.particles,
         {c.cell.ring() ? fmt::format("granlub {} initial configuration of the whole ring (ring frame, y the axis: "
@@ -363,8 +397,8 @@ InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, cons
                                      version())
                        : fmt::format("granlub {} initial configuration (FCC sites, random subset and jitter)", version()),
          fmt::format("case: {} ({}, hash {})", c.name, c.file.string(), c.file_hash), fmt::format("point: {}", pt.id),
-         fmt::format("grains: {} of diameter {:g} m, solid fraction {:.6f} over the gap", n, d,
-                     static_cast<double>(n) * std::numbers::pi * d * d * d / 6.0 / out.box.volume()),
+         fmt::format("grains: {} of {}, solid fraction {:.6f} over the gap", n, sizes,
+                     solid_fraction(out.particles, out.box)),
          key});
     return out;
 }

@@ -16,7 +16,9 @@
 #include <fmt/format.h>
 
 #include "granlub/case.h"
+#include "granlub/cross_section.h"
 #include "granlub/error.h"
+#include "granlub/load_control.h"
 #include "granlub/text.h"
 
 namespace granlub {
@@ -75,6 +77,7 @@ Summary make_summary(const Case& c, const OperatingPoint& p, const std::string& 
     s.provenance.inputs_hash = c.inputs_hash(solver);
     s.provenance.inputs = c.inputs(solver);
     s.provenance.seed = seed;
+    s.provenance.run_id = run_id();
     s.provenance.settings = nlohmann::json::object();
     auto it = c.sections.find(solver);
     if (it != c.sections.end()) {
@@ -121,9 +124,10 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view bytes
     }
 }
 
-std::string profile_csv(const Profile& p, const std::vector<std::string>& comments) {
+std::string profile_csv(const Profile& p, const std::vector<std::string>& comments, std::string_view run) {
     std::string out;
     for (const auto& c : comments) out += "# " + one_line(c) + "\n";
+    out += "# " + one_line(run_id_comment(run)) + "\n";
     out += fmt::format("{}\n", fmt::join(p.names, ","));
     for (std::size_t r = 0; r < p.rows(); ++r) {
         for (std::size_t c = 0; c < p.columns.size(); ++c)
@@ -162,6 +166,7 @@ nlohmann::json summary_json(const Summary& s) {
     for (const auto& [name, v] : s.outputs) {
         out[name] = {{"value", v.value}, {"unit", v.unit}};
         out[name]["stderr"] = v.stderr_ ? nlohmann::json(*v.stderr_) : nlohmann::json(nullptr);
+        if (v.dt_error) out[name]["dt_error"] = *v.dt_error;
     }
     nlohmann::json prov = {{"granlub_version", s.provenance.version},
                            {"case_file", s.provenance.case_file},
@@ -171,6 +176,7 @@ nlohmann::json summary_json(const Summary& s) {
                            {"settings", s.provenance.settings},
                            {"utc_time", s.provenance.utc_time.empty() ? utc_now() : s.provenance.utc_time}};
     prov["seed"] = s.provenance.seed ? nlohmann::json(*s.provenance.seed) : nlohmann::json(nullptr);
+    prov["run_id"] = s.provenance.run_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.provenance.run_id);
     return {{"format", "granlub-summary-1"}, {"solver", s.solver}, {"case", s.case_name}, {"point", s.point},
             {"inputs", s.inputs},            {"outputs", out},     {"run", s.run},        {"provenance", prov}};
 }
@@ -190,6 +196,7 @@ Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
             sc.value = v.at("value").get<double>();
             sc.unit = v.value("unit", "");
             if (v.contains("stderr") && !v.at("stderr").is_null()) sc.stderr_ = v.at("stderr").get<double>();
+            if (v.contains("dt_error") && !v.at("dt_error").is_null()) sc.dt_error = v.at("dt_error").get<double>();
             s.outputs[name] = sc;
         }
         const auto& p = j.at("provenance");
@@ -201,6 +208,7 @@ Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
         s.provenance.settings = p.value("settings", nlohmann::json::object());
         s.provenance.utc_time = p.value("utc_time", "");
         if (p.contains("seed") && !p.at("seed").is_null()) s.provenance.seed = p.at("seed").get<std::uint64_t>();
+        if (p.contains("run_id") && !p.at("run_id").is_null()) s.provenance.run_id = p.at("run_id").get<std::string>();
         for (const char* name : kStandardOutputs)
             if (!s.outputs.count(name)) throw Error(fmt::format("{}: missing standard output '{}'", source, name));
         return s;
@@ -219,7 +227,9 @@ Summary read_summary(const std::filesystem::path& path) {
     return summary_from_json(j, path.string());
 }
 
-void write_result(const std::filesystem::path& dir, const Profile& profile, const Summary& summary) {
+void write_result(const std::filesystem::path& dir, const Profile& profile, const Summary& summary_in) {
+    Summary summary = summary_in;  // both files name one run: this process's unless the summary names one
+    if (summary.provenance.run_id.empty()) summary.provenance.run_id = run_id();
     for (const char* col : kProfileColumns)
         if (!profile.has(col))
             throw Error(fmt::format("internal: {} {}: profile lacks column '{}'", summary.solver, summary.point, col));
@@ -232,7 +242,8 @@ void write_result(const std::filesystem::path& dir, const Profile& profile, cons
         if (!summary.outputs.count(name))
             throw Error(fmt::format("internal: {} {}: summary lacks output '{}'", summary.solver, summary.point, name));
     for (const auto& [name, v] : summary.outputs) {
-        if (!std::isfinite(v.value) || (v.stderr_ && !std::isfinite(*v.stderr_)))
+        if (!std::isfinite(v.value) || (v.stderr_ && !std::isfinite(*v.stderr_)) ||
+            (v.dt_error && !(std::isfinite(*v.dt_error) && *v.dt_error >= 0)))
             throw SolverError(fmt::format("{} {}: output '{}' is not finite; nothing written", summary.solver,
                                           summary.point, name));
         if (v.stderr_ && *v.stderr_ < 0)
@@ -247,7 +258,8 @@ void write_result(const std::filesystem::path& dir, const Profile& profile, cons
                       profile_csv(profile, {fmt::format("granlub {} profile: case {} point {}", summary.solver,
                                                         summary.case_name, summary.point),
                                             fmt::format("granlub {} inputs_hash {}", summary.provenance.version,
-                                                        summary.provenance.inputs_hash)}));
+                                                        summary.provenance.inputs_hash)},
+                                  summary.provenance.run_id));
     write_file_atomic(dir / "summary.json", summary_json(summary).dump(2) + "\n");
 }
 
@@ -268,6 +280,8 @@ std::string result_problem(const std::filesystem::path& dir, const Summary& s, c
         if (!std::isfinite(sc.value)) return fmt::format("{}: output \"{}\" is not a finite number", sp, name);
         if (sc.stderr_ && !(*sc.stderr_ >= 0 && std::isfinite(*sc.stderr_)))
             return fmt::format("{}: output \"{}\" has stderr {} (allowed: finite, >= 0)", sp, name, *sc.stderr_);
+        if (sc.dt_error && !(*sc.dt_error >= 0 && std::isfinite(*sc.dt_error)))
+            return fmt::format("{}: output \"{}\" has dt_error {} (allowed: finite, >= 0)", sp, name, *sc.dt_error);
     }
     if (!(s.value("max_solid_fraction") > 0))
         return fmt::format("{}: max_solid_fraction = {} (allowed: > 0)", sp, s.value("max_solid_fraction"));
@@ -290,6 +304,38 @@ std::string result_problem(const std::filesystem::path& dir, const Summary& s, c
 }  // namespace
 
 namespace {
+// The tables a point's run may write beside profile.csv (results.h): the cross-section and the
+// profile across the width (cross_section.h), the plate history (load_control.h), dem's final state
+// (particles.h) and its rerun at half the time step (plugins/liggghts, [dem] refine_dt), the
+// automaton's time series.
+constexpr const char* kPointTables[] = {kSectionFile,     kWidthProfileFile, kGapFile,
+                                        "final_state.csv", "timeseries.csv",  "dt_half/profile.csv"};
+
+// "" when every file of the point names the summary's run (run_id.h), else which does not. Results
+// written before run ids name none: they are corrupt, not trusted, because nothing shows that their
+// files come from one run (issue 34), and a sweep recomputes them once.
+std::string run_problem(const std::filesystem::path& dir, const Summary& s) {
+    const auto sp = (dir / "summary.json").string();
+    const std::string& run = s.provenance.run_id;
+    if (run.empty())
+        return fmt::format("{}: written before run ids (no provenance.run_id): nothing shows that the point's files "
+                           "come from one run",
+                           sp);
+    std::vector<std::string> tables{"profile.csv"};
+    tables.insert(tables.end(), std::begin(kPointTables), std::end(kPointTables));
+    std::error_code ec;
+    for (const auto& t : tables) {
+        const auto file = dir / t;
+        if (t != "profile.csv" && !std::filesystem::exists(file, ec)) continue;
+        const auto id = read_table_run_id(file);
+        if (!id) return fmt::format("{} names no run, {} names run {}: not one run's files", file.string(), sp, run);
+        if (*id != run)
+            return fmt::format("{} was written by run {}, {} by run {}: the point's files come from different runs",
+                               file.string(), *id, sp, run);
+    }
+    return "";
+}
+
 // "[grains] density = 2500 -> 2600, [dem] time (new) = 0.2": what changed between two input sets.
 std::string changed_keys(const std::map<std::string, std::string>& was, const std::map<std::string, std::string>& now) {
     std::vector<std::string> diffs;
@@ -334,6 +380,10 @@ LoadedResult load_result(const std::filesystem::path& dir, const ResultKey& key)
             r.status = {ResultState::Corrupt, why};
             return r;
         }
+        if (std::string why = run_problem(dir, s); !why.empty()) {
+            r.status = {ResultState::Corrupt, why};
+            return r;
+        }
         if (s.provenance.inputs_hash != key.inputs_hash) {
             // name the keys that changed where both sides are known (older results lack them)
             const std::string what = s.provenance.inputs.empty() || key.inputs.empty()
@@ -362,6 +412,10 @@ LoadedResult load_result(const std::filesystem::path& dir, const std::string& in
 ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash,
                            const std::string& case_name) {
     return load_result(dir, inputs_hash, case_name).status;
+}
+
+void remove_point_tables(const std::filesystem::path& dir) {
+    for (const char* t : kPointTables) std::filesystem::remove(dir / t);  // throws when it cannot: the sweep says so
 }
 
 }  // namespace granlub

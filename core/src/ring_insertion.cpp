@@ -8,6 +8,7 @@
 
 #include "granlub/annulus.h"
 #include "granlub/error.h"
+#include "granlub/grain_sizes.h"
 #include "lattice_insertion.h"
 
 namespace granlub {
@@ -73,37 +74,41 @@ std::size_t ring_capacity(const Annulus& a, double h, double d, double sag) {
     return make_ring_lattice(a, h, d, d, sag).count();
 }
 
-ParticleSet insert_ring_grains(const Annulus& an, double h, double d, std::size_t n, const InsertionOptions& opt,
+ParticleSet insert_ring_grains(const Annulus& an, double h, double d_mean, std::size_t n, const InsertionOptions& opt,
                                double sag) {
+    const GrainSizes g{d_mean, opt.size_spread};
+    const double d = g.max();  // sites and wall margins for the largest grain
     if (!(d > 0) || !(h > 0) || !(an.W > 0) || !(an.inner() > 0))
         throw CaseError(fmt::format("ring insertion: grain diameter {:g} m, height {:g} m, width {:g} m and inner "
                                     "radius {:g} m must be positive",
                                     d, h, an.W, an.inner()));
     const std::size_t most = ring_capacity(an, h, d, sag);
     if (most < n) {
-        const double vg = kPi * d * d * d / 6.0;
+        const double vg = g.mean_volume();
         throw CaseError(fmt::format("ring insertion: {} grains (solid fraction {:.4f} below the height {:g} m) do "
                                     "not fit on the ring's insertion lattice; at most {} (solid fraction {:.4f})",
                                     n, static_cast<double>(n) * vg / (an.area() * h), h, most,
                                     static_cast<double>(most) * vg / (an.area() * h)));
     }
-    const RingLattice l = make_ring_lattice(
-        an, h, d, largest_spacing(d, n, [&](double a) { return make_ring_lattice(an, h, d, a, sag).count(); }), sag);
+    const double a = largest_spacing(d, n, [&](double s) { return make_ring_lattice(an, h, d, s, sag).count(); });
+    const RingLattice l = make_ring_lattice(an, h, d, a, sag);
+    const std::vector<double> diameters = draw_diameters(g, n, opt.seed);
     Rng rng(opt.seed);
     const std::vector<std::size_t> sites = random_sites(rng, l.count(), n);
 
     ParticleSet p;
     p.reserve(n);
     const double omega = opt.wall_speed / an.R, sigma = opt.velocity_noise * std::abs(opt.wall_speed);
-    for (std::size_t s : sites) {
+    for (std::size_t k = 0; k < n; ++k) {
         double x, y, z;
-        ring_site(l, s, x, y, z);
+        ring_site(l, sites[k], x, y, z);
         double dx, dy, dz;
-        ball_jitter(rng, l.jitter, dx, dy, dz);
+        ball_jitter(rng, g.equal() ? l.jitter : 0.5 * (a - diameters[k]), dx, dy, dz);
         x += dx, y += dy, z += dz;
         // (0, w, 0) x (x, y, z) = (w z, 0, -w x): turning with the floor, slower toward the top
         const double w = omega * (1.0 - y / h);
-        p.push_back(x, y, z, w * z + sigma * rng.normal(), sigma * rng.normal(), -w * x + sigma * rng.normal(), 0.5 * d);
+        p.push_back(x, y, z, w * z + sigma * rng.normal(), sigma * rng.normal(), -w * x + sigma * rng.normal(),
+                    0.5 * diameters[k]);
     }
     return p;
 }

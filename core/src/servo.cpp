@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/wall_bumps.h"
 
 namespace granlub {
 
@@ -22,6 +23,7 @@ void add_servo_keys(SectionSpec& s) {
 ServoSettings resolve_servo(const Case& c, const OperatingPoint& p, const Section& s, std::int64_t sample_every,
                             double time_step, std::int64_t& steps) {
     ServoSettings v;
+    v.plate_start = c.cell.gap;
     if (p.control != Control::Load) {
         v.insert_fill = p.solid_fraction;
         v.insert_fill_key = "[operating] solid_fraction";
@@ -50,8 +52,10 @@ ServoSettings resolve_servo(const Case& c, const OperatingPoint& p, const Sectio
     v.insert_fill_key = p.solid_fraction > 0 ? "[operating] solid_fraction"
                                              : fmt::format("[{}] fill_for_load{}", s.name(),
                                                            s.is_default("fill_for_load") ? " (default)" : "");
-    // the plate cannot go below the closest packing of the inserted grains
-    v.gap_min = v.insert_fill * c.cell.gap / kClosestPacking;
+    // the plate cannot go below the closest packing of the inserted grains (between the bumps' halves)
+    const double bumps = bump_protrusion(c, p.bottom) + bump_protrusion(c, p.top);
+    v.gap_min = v.insert_fill * c.cell.gap / kClosestPacking + bumps;
+    if (c.cell.ring() || !c.grains.sizes().equal() || bumps > 0) v.plate_start = v.gap_max;
     return v;
 }
 
@@ -63,6 +67,7 @@ nlohmann::json ServoSettings::to_json() const {
             {"servo_max_error", servo_max_error},
             {"gap_min_m", gap_min},
             {"gap_max_m", gap_max},
+            {"plate_start_m", plate_start},
             {"insert_fill", insert_fill}};
 }
 

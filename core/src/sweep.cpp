@@ -14,6 +14,7 @@
 
 #include "granlub/error.h"
 #include "granlub/failure_record.h"
+#include "granlub/run_lock.h"
 
 namespace granlub {
 
@@ -44,9 +45,13 @@ void for_each_run(const Case& c, const RunOptions& o,
 }
 
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve,
-              int points_at_once) {
+              int points_at_once, const std::vector<std::string>& reads) {
     const auto points = c.select(o.point);
     const auto root = results_root(c, o);
+    // Before anything is read: which points are complete is only known once no other run writes.
+    std::vector<LockRequest> locks{{root, solver, LockMode::Exclusive}};
+    for (const auto& r : reads) locks.push_back({root, r, LockMode::Shared});
+    const ResultsLock held(std::move(locks), o.wait);
     const ResultKey key = result_key(c, solver);
     std::atomic<int> failed{0};
     std::mutex print;  // one point's lines stay whole when points run side by side
@@ -77,6 +82,7 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
             // its new deck and logs, so the next run recomputes instead of skipping.
             std::filesystem::create_directories(dir);
             std::filesystem::remove(dir / "summary.json");
+            remove_point_tables(dir);  // only this run's tables may stand beside its summary
             PointResult r = solve(*p, dir);
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             if (!r.summary.run.contains("wall_clock_s")) r.summary.run["wall_clock_s"] = secs;

@@ -12,6 +12,8 @@
 #               With a "servo" object (control = "load"): the top wall is a plate moved every
 #               servo.every steps by the servo of `granlub dem` (core/include/granlub/servo.h);
 #               its position after each window goes to plate.csv.
+#               With a "bumps" object ({"bottom"|"top": {"diameter", "x": [...], "z": [...]}}): rough
+#               walls, fixed spheres centred on the wall's plane (core/include/granlub/wall_bumps.h).
 #   "collision" binary collisions (grain-grain and grain-wall for every wall material): the
 #               measured normal restitution of the contact law as run, in collision.json.
 #
@@ -121,6 +123,14 @@ def load_params(path):
             if not sv["gap_min"] < cell["gap"] <= sv["gap_max"]:
                 raise ParamError("servo: the plate limits [%g, %g] m must hold the initial gap %g m"
                                  % (sv["gap_min"], sv["gap_max"], cell["gap"]))
+        for side, layer in p.get("bumps", {}).items():
+            if side not in ("bottom", "top"):
+                raise ParamError("bumps.%s: allowed bottom, top" % side)
+            need(layer, "diameter", "bumps." + side, positive=True)
+            if len(layer.get("x", [])) != len(layer.get("z", [])) or not layer.get("x"):
+                raise ParamError("bumps.%s: x and z must be lists of the same, non-zero length" % side)
+            if side == "top" and sv is not None and sv.get("plate") == "weight":
+                raise ParamError("bumps.top with servo.plate = weight: the bumps would ride a free plate")
         if not os.path.isfile(p.get("initial_file", "")):
             raise ParamError("initial_file %r: no such file" % p.get("initial_file"))
     return p
@@ -372,6 +382,9 @@ def write_json(path, obj):
     os.replace(tmp, path)
 
 
+BUMPS_APART = 16 | 32  # the bump layers' own bits: a bump never meets a bump of its wall
+
+
 def run_couette(p):
     t_start = time.time()
     out = p["output_dir"]
@@ -431,6 +444,30 @@ def run_couette(p):
     gids = range(first, first + n)
     masses = [O.bodies[i].state.mass for i in gids]
 
+    # Rough walls (core wall_bumps.h): fixed spheres with their centres on the wall's plane, the
+    # floor's moving with it, the top's with the window servo's plate. Collision masks (two bodies
+    # meet when their masks share a bit, unless the masks are equal and share a bit with the
+    # collider's avoidSelfInteractionMask, BUMPS_APART): grains (1|2|4) meet the wall boxes (1) and
+    # both layers; a layer (2|16, 4|32) meets neither the boxes, nor the other layer, nor itself.
+    bumps = {"bottom": [], "top": []}
+    layers = p.get("bumps", {})
+    if layers:
+        masks = {"bottom": 2 | 16, "top": 4 | 32}
+        for i in gids:
+            O.bodies[i].groupMask = 1 | 2 | 4
+        for side, y0, vx in (("bottom", 0.0, U), ("top", H, 0.0)):
+            layer = layers.get(side)
+            if not layer:
+                continue
+            for x, z in zip(layer["x"], layer["z"]):
+                b = utils.sphere((x, Y0 + y0, z + Z0), 0.5 * layer["diameter"], material=ids[side], fixed=True,
+                                 color=(0.5, 0.5, 0.5))
+                b.groupMask = masks[side]
+                if p["model"] == "viscel":
+                    b.state.mass = p["contact"]["wall_mass"]  # as the wall boxes (reduced mass m)
+                b.state.vel = Vector3(vx, 0, 0)
+                bumps[side].append(O.bodies.append(b))
+
     every = run["sample_every"]
     snap_every = run["snapshot_every"]
     total = run["steps"]
@@ -455,6 +492,10 @@ def run_couette(p):
         # a snapshot of the grains every snapshot_every steps.
         fb = O.forces.f(bottom)
         ft = O.forces.f(top) - Vector3(0, f_load, 0)  # the grains' force alone
+        for i in bumps["bottom"]:  # a rough wall: its plane's force plus its bumps'
+            fb += O.forces.f(i)
+        for i in bumps["top"]:
+            ft += O.forces.f(i)
         f = state["f"]
         f[0] += fb[0]; f[1] += fb[1]; f[2] += fb[2]
         f[3] += ft[0]; f[4] += ft[1]; f[5] += ft[2]
@@ -521,22 +562,26 @@ def run_couette(p):
         fplate.write("%d,%.17g\n" % (k, state["h"]))
         h = min(max(state["h"] + servo["step"] * err, servo["gap_min"]), servo["gap_max"])
         b.vel = Vector3(0, (h - state["h"]) / (servo["every"] * O.dt), 0)
+        for i in bumps["top"]:  # the top's bumps travel with the plate
+            q = O.bodies[i].state
+            q.pos = Vector3(q.pos[0], Y0 + state["h"], q.pos[2])
+            q.vel = b.vel
         state["h"] = h
 
     def snapshot():
-        # granlub coordinates; columns y, z, vx, vy, vz (the slab coarse-graining and the y x z
-        # cross-section)
+        # granlub coordinates; columns x (wrapped into the period), y, z, vx, vy, vz: the slab
+        # coarse-graining, the y x z cross-section, and the contact and order measures
         buf = []
         for i in gids:
             s = O.bodies[i].state
             v = s.vel
-            buf.extend((s.pos[1] - Y0, s.pos[2] - Z0, v[0], v[1], v[2]))
+            buf.extend((s.pos[0] % L, s.pos[1] - Y0, s.pos[2] - Z0, v[0], v[1], v[2]))
         fbin.write(struct.pack("<%dd" % len(buf), *buf))
         state["snapshots"] += 1
 
     def housekeeping():
         # keep the moving walls within a few periods of the cell (their extent is 1000 periods)
-        for w in moving:
+        for w in moving + bumps["bottom"]:
             q = O.bodies[w].state.pos
             if q[0] > 10 * L:
                 O.bodies[w].state.pos = Vector3(q[0] - 10 * L, q[1], q[2])
@@ -555,7 +600,8 @@ def run_couette(p):
             O.forces.setPermF(i, Vector3(0, 0, -masses[k] * vx * vx / (Ra - (s.pos[2] - Z0))))
 
     O.engines = [ForceResetter(),
-                 InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], allowBiggerThanPeriod=True, sortAxis=1),
+                 InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], allowBiggerThanPeriod=True, sortAxis=1,
+                                       avoidSelfInteractionMask=BUMPS_APART),
                  InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [ip2], [law]),
                  NewtonIntegrator(damping=0.0, gravity=(0, -g, 0)),
                  PyRunner(command="granlub_averaging()", iterPeriod=1, initRun=True),
@@ -590,7 +636,7 @@ def run_couette(p):
         "steps": O.iter, "simulated_time": O.time,
         "sample_every": every, "wall_rows": state["rows"],
         "snapshot_every": snap_every, "snapshots": state["snapshots"],
-        "snapshot_columns": ["y", "vx", "vy", "vz"],
+        "snapshot_columns": ["x", "y", "z", "vx", "vy", "vz"],
         "max_overlap_over_d": max_overlap / d,
         "wall_clock_s": time.time() - t_start, "wall_clock_run_s": wall_clock_run,
     }

@@ -49,11 +49,35 @@ std::optional<double> Run::scalar(const std::string& name) const {
     return it == summary->outputs.end() ? std::nullopt : std::optional(it->second.value);
 }
 
+std::string Run::wall_surface(bool bottom) const {
+    if (!usable()) return "";
+    const auto& run = summary->run;
+    const char* side = bottom ? "bottom" : "top";
+    if (!run.is_object() || !run.contains("walls") || !run["walls"].contains(side)) return "";
+    return run["walls"][side].value("surface", std::string());
+}
+
+std::optional<double> Run::wall_roughness(bool bottom) const {
+    const std::string surface = wall_surface(bottom);
+    if (surface == "plane") return std::nullopt;
+    if (surface == "bumps") return summary->run["walls"][bottom ? "bottom" : "top"].value("roughness_built", 0.0);
+    return bottom ? point->bottom.roughness : point->top.roughness;
+}
+
 std::optional<double> Run::scalar_stderr(const std::string& name) const {
+    return scaled_error(name, [](const Scalar& s) { return s.stderr_; });
+}
+
+std::optional<double> Run::scalar_dt_error(const std::string& name) const {
+    return scaled_error(name, [](const Scalar& s) { return s.dt_error; });
+}
+
+std::optional<double> Run::scaled_error(const std::string& name,
+                                        const std::function<std::optional<double>(const Scalar&)>& error) const {
     if (!usable()) return std::nullopt;
     auto se = [&](const std::string& n) -> std::optional<double> {
         const auto it = summary->outputs.find(n);
-        return it == summary->outputs.end() ? std::nullopt : it->second.stderr_;
+        return it == summary->outputs.end() ? std::nullopt : error(it->second);
     };
     if (name == "nu_bar_over_numax") {
         const auto s = se("mean_solid_fraction");
@@ -150,20 +174,17 @@ std::size_t Collection::count(ResultState state) const {
         std::count_if(runs.begin(), runs.end(), [&](const auto& kv) { return kv.second.status.state == state; }));
 }
 
-Collection collect(const Case& c, const RunOptions& o) {
-    Collection col;
-    col.root = results_root(c, o);
-    col.points = c.select(o.point);
-    std::vector<std::string> others;
+std::vector<std::string> result_solvers(const std::filesystem::path& root, std::vector<std::string>* missing) {
+    std::vector<std::string> solvers, others;
     std::error_code ec;
     for (const char* s : kKnownSolvers) {
-        if (std::filesystem::is_directory(col.root / s, ec))
-            col.solvers.emplace_back(s);
-        else
-            col.missing_solvers.emplace_back(s);
+        if (std::filesystem::is_directory(root / s, ec))
+            solvers.emplace_back(s);
+        else if (missing)
+            missing->emplace_back(s);
     }
-    if (std::filesystem::is_directory(col.root, ec)) {
-        for (const auto& e : std::filesystem::directory_iterator(col.root, ec)) {
+    if (std::filesystem::is_directory(root, ec)) {
+        for (const auto& e : std::filesystem::directory_iterator(root, ec)) {
             const std::string name = e.path().filename().string();
             if (!e.is_directory() || name == "report" || name == "initial" || name.starts_with(".") ||
                 name.find(".partial") != std::string::npos ||
@@ -173,7 +194,15 @@ Collection collect(const Case& c, const RunOptions& o) {
         }
     }
     std::sort(others.begin(), others.end());
-    col.solvers.insert(col.solvers.end(), others.begin(), others.end());
+    solvers.insert(solvers.end(), others.begin(), others.end());
+    return solvers;
+}
+
+Collection collect(const Case& c, const RunOptions& o) {
+    Collection col;
+    col.root = results_root(c, o);
+    col.points = c.select(o.point);
+    col.solvers = result_solvers(col.root, &col.missing_solvers);
     for (const auto& s : col.solvers)
         for (const OperatingPoint* p : col.points) col.runs.emplace(std::pair(s, p->id), load_run(c, col.root, s, *p));
     return col;

@@ -3,6 +3,7 @@
 // a result compare calls corrupt is one the next solver run recomputes.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -50,6 +51,19 @@ struct Run {
     // A summary output; "nu_bar_over_numax" and "slip_bottom_over_U"/"slip_top_over_U" derived.
     std::optional<double> scalar(const std::string& name) const;
     std::optional<double> scalar_stderr(const std::string& name) const;
+    // The time-step error estimate |value(dt) - value(dt/2)| of a value checked at half the step
+    // (the value is the dt/2 run's), scaled as scalar() scales it; nothing when not checked.
+    std::optional<double> scalar_dt_error(const std::string& name) const;
+    // The roughness of the wall this run's solver had (core wall_bumps.h): the R its bumps built
+    // (run.walls.<side>), nothing for a particle solver's plane (a frictional plane has no R), else
+    // the point's R (the continuum's and the automaton's walls are R itself).
+    std::optional<double> wall_roughness(bool bottom) const;
+    // run.walls.<side>.surface of a particle solver ("plane", "bumps"); "" for the others.
+    std::string wall_surface(bool bottom) const;
+
+private:
+    std::optional<double> scaled_error(const std::string& name,
+                                       const std::function<std::optional<double>(const Scalar&)>& error) const;
 };
 
 struct Collection {
@@ -66,6 +80,10 @@ struct Collection {
 };
 
 Collection collect(const Case& c, const RunOptions& o);
+
+// The solvers with a results folder under `root`, in report order (the known ones, then any other
+// folder but report/, initial/ and hidden ones); the known solvers without one go to `missing`.
+std::vector<std::string> result_solvers(const std::filesystem::path& root, std::vector<std::string>* missing = nullptr);
 
 // One run's status without loading it into a collection (for summary_table).
 Run load_run(const Case& c, const std::filesystem::path& root, const std::string& solver, const OperatingPoint& p);

@@ -12,6 +12,7 @@
 #include "gnuplot.h"
 #include "granlub/error.h"
 #include "granlub/postproc/command.h"
+#include "granlub/run_lock.h"
 #include "metrics.h"
 #include "paraview.h"
 #include "report_builder.h"
@@ -69,9 +70,24 @@ std::string text_table(const Table& t) {
     return out;
 }
 
+// What compare locks (granlub/run_lock.h): every solver's results it reads, shared, so that no
+// run rewrites them half-way through the reading (the known solvers' whether or not their folder
+// exists yet: a sweep that holds its lock may not have made it); the report, exclusive, so that
+// two compares do not swap their reports in at once; and the slice case's dem results it sets
+// beside a ring's.
+std::vector<LockRequest> compare_locks(const Case& c, const RunOptions& o) {
+    const auto root = results_root(c, o);
+    std::vector<LockRequest> locks{{root, "report", LockMode::Exclusive}};
+    for (const char* s : kKnownSolvers) locks.push_back({root, s, LockMode::Shared});
+    for (const auto& s : result_solvers(root)) locks.push_back({root, s, LockMode::Shared});  // duplicates: one lock
+    if (const auto slice = slice_results_root(c)) locks.push_back({*slice, kRingSolver, LockMode::Shared});
+    return locks;
+}
+
 }  // namespace
 
 int compare(const Case& c, const RunOptions& o) {
+    const ResultsLock lock(compare_locks(c, o), o.wait);  // until the report is in place
     const Collection col = collect(c, o);
     std::size_t problems = 0;
     for (const auto& [key, r] : col.runs) {
@@ -134,6 +150,8 @@ int compare(const Case& c, const RunOptions& o) {
 }
 
 std::string summary_table(const Case& c, const RunOptions& o) {
+    // Unlocked: a printed table of what is there now; a point another run is rewriting shows as
+    // missing or corrupt, which is what it is at that moment (the report is the locked reading).
     const Collection col = collect(c, o);
     Table t = key_numbers(c, col);
     // Rows for what is not usable, so the table also says what failed; then why, under the table.

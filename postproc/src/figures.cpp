@@ -244,18 +244,36 @@ std::vector<Figure> slip_figures(const Collection& col) {
         Figure f;
         f.name = bottom ? "slip_bottom" : "slip_top";
         f.title = "Slip at the " + wall + (swept ? " against roughness" : " against wall speed");
+        // which solvers had which wall: R for the continuum and the automaton, the bumps' R for a
+        // rough particle wall, no R at all for a particle solver's plane
+        std::vector<std::string> planes, bumps;
+        for (const auto& solver : col.solvers)
+            for (const OperatingPoint* p : col.points) {
+                const std::string surface = col.run(solver, p->id).wall_surface(bottom);
+                auto& list = surface == "plane" ? planes : bumps;
+                if (!surface.empty() && std::find(list.begin(), list.end(), solver) == list.end()) list.push_back(solver);
+            }
+        std::string walls;
+        if (!planes.empty())
+            walls += fmt::format(" {} had a frictional plane here, which has no R{}.", list_text(planes),
+                                 swept ? ": not drawn" : "");
+        if (!bumps.empty())
+            walls += fmt::format(" {} had a layer of bumps built to the point's R (drawn at the R they give).",
+                                 list_text(bumps));
         f.caption = (bottom ? "Slip (U − u(0)) / U" : "Slip u(H) / U") +
                     (swept ? std::string(" against the ") + wall + "'s roughness R"
-                           : fmt::format(" against U (the case has one roughness, R = {})",
+                           : fmt::format(" against U (one roughness, R = {})",
                                          col.points.empty() ? std::string("?") : num(R(*col.points.front())))) +
-                    "; bars ±1 standard error.";
+                    "; bars ±1 standard error." + walls;
         f.x.label = swept ? "roughness R of the " + wall : std::string("wall speed U (m/s)");
         f.y.label = "slip / U at the " + wall;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
                 auto series = points_by_state(col, solver, groups[g].points, with_group(solver, groups[g].label),
                                               [&](const Run& r, const OperatingPoint& p, Series& s) {
-                                                  s.x.push_back(swept ? R(p) : p.speed);
+                                                  const std::optional<double> rough = r.wall_roughness(bottom);
+                                                  if (swept && !rough) return;  // a plane: no R to draw it at
+                                                  s.x.push_back(swept ? *rough : p.speed);
                                                   s.y.push_back(*r.scalar(q));
                                                   s.err.push_back(r.scalar_stderr(q).value_or(0.0));
                                               });

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "granlub/regime.h"
 #include "granlub/results.h"
 #include "ring_slice.h"
 #include "scope.h"
@@ -16,12 +17,6 @@ namespace {
 
 std::optional<double> scaled(const std::optional<double>& v, double factor) {
     return v ? std::optional(*v * factor) : std::nullopt;
-}
-
-std::string list_text(const std::vector<std::string>& v) {
-    std::string s;
-    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
-    return s;
 }
 
 const MetricRow* find_row(const std::vector<MetricRow>& rows, const std::string& kind, const std::string& point,
@@ -204,6 +199,13 @@ Table status_table(const Collection& col) {
     return t;
 }
 
+// value ± standard error, and for a value checked at half the time step its time-step error
+std::string value_cell(const Run& r, const std::string& q, double scale = 1.0, int digits = 4) {
+    std::string v = value_pm(scaled(r.scalar(q), scale), scaled(r.scalar_stderr(q), scale), digits);
+    if (const auto e = r.scalar_dt_error(q); e && !v.empty()) v += " [Δt " + num(*e * scale, 2) + "]";
+    return v;
+}
+
 Table key_numbers(const Case& c, const Collection& col) {
     // Under load control the gap and the solid fraction are results and P_top is held at the target: the
     // table shows them (a bottom-wall σ_yy alone would read as if the fill were fixed).
@@ -221,13 +223,11 @@ Table key_numbers(const Case& c, const Collection& col) {
             // Values of a result that is not steady are shown greyed, never as results.
             const std::string cls = r.steady() ? "" : r.state_class();
             std::vector<Cell> row{{s, ""}, {p->id, ""}, {r.state_name(), r.state_class()}};
-            row.push_back({value_pm(r.scalar("nu_bar_over_numax"), r.scalar_stderr("nu_bar_over_numax")), cls});
+            row.push_back({value_cell(r, "nu_bar_over_numax"), cls});
             if (load) {
                 // A solver with a fixed gap (no "gap" output) solves for ν̄ at the case's gap.
                 const bool moving = r.scalar("gap").has_value();
-                row.push_back({moving ? value_pm(scaled(r.scalar("gap"), 1e3), scaled(r.scalar_stderr("gap"), 1e3))
-                                      : num(c.cell.gap * 1e3) + " (fixed)",
-                               cls});
+                row.push_back({moving ? value_cell(r, "gap", 1e3) : num(c.cell.gap * 1e3) + " (fixed)", cls});
                 const double per = p->control == Control::Load && p->normal_stress > 0 ? 1 / p->normal_stress : 0;
                 row.push_back({lattice_stresses(s) ? "— (lattice, fixed fill)"
                                : per > 0 ? value_pm(scaled(r.scalar("normal_stress_top"), per),
@@ -238,11 +238,10 @@ Table key_numbers(const Case& c, const Collection& col) {
             // The automaton's stresses are lattice analogues: marked in every cell, not only in a footnote.
             const char* lattice = lattice_stresses(s) ? " (lattice)" : "";
             for (const char* q : {"normal_stress_bottom", "shear_stress_bottom", "shear_stress_top"}) {
-                const std::string v = value_pm(r.scalar(q), r.scalar_stderr(q));
+                const std::string v = value_cell(r, q);
                 row.push_back({v.empty() ? v : v + lattice, cls});
             }
-            for (const char* q : {"slip_bottom_over_U", "slip_top_over_U"})
-                row.push_back({value_pm(r.scalar(q), r.scalar_stderr(q)), cls});
+            for (const char* q : {"slip_bottom_over_U", "slip_top_over_U"}) row.push_back({value_cell(r, q), cls});
             const auto& run = r.summary->run;
             row.push_back({run.is_object() && run.contains("wall_clock_s") && run["wall_clock_s"].is_number()
                                ? num(run["wall_clock_s"].get<double>(), 3)
@@ -254,15 +253,52 @@ Table key_numbers(const Case& c, const Collection& col) {
     return t;
 }
 
+bool any_dt_checked(const Collection& col) {
+    for (const OperatingPoint* p : col.points)
+        for (const auto& s : col.solvers)
+            if (col.run(s, p->id).scalar_dt_error("shear_stress_bottom")) return true;
+    return false;
+}
+
 Table scope_table(const Case& c, const Collection& col) {
     Table t;
-    t.header = {"solver", "body forces", "wall stresses", "run length and start"};
+    t.header = {"solver", "grains and walls", "body forces", "wall stresses", "run length and start"};
     for (const auto& s : col.solvers) {
         if (!col.any_usable(s)) continue;
         const SolverScope sc = solver_scope(c, col, s);
-        t.rows.push_back({{s, ""}, {sc.body_forces, ""}, {sc.stresses, ""},
+        t.rows.push_back({{s, ""}, {sc.grains_walls, ""}, {sc.body_forces, ""}, {sc.stresses, ""},
                           {sc.run_length, ""}});
     }
+    return t;
+}
+
+// The packing's order and contacts of the particle solvers (run.order, run.flow_regime): how far
+// the grains crystallised, which the continuum does not describe.
+Table order_table(const Collection& col) {
+    Table t;
+    t.header = {"solver", "point", "status", "q6", "Q6", "layer order Λ", "layering of ν(y)", "coordination Z", "regime"};
+    for (const OperatingPoint* p : col.points)
+        for (const auto& s : col.solvers) {
+            const Run& r = col.run(s, p->id);
+            if (!r.usable() || !r.summary->run.is_object() || !r.summary->run.contains("order")) continue;
+            const auto& run = r.summary->run;
+            const auto& o = run["order"];
+            const std::string cls = r.steady() ? "" : r.state_class();
+            auto number = [](const nlohmann::json& j, const char* k, int digits = 3) {
+                return j.contains(k) && j[k].is_number() ? num(j[k].get<double>(), digits) : std::string("—");
+            };
+            const nlohmann::json fr = run.value("flow_regime", nlohmann::json::object());
+            t.rows.push_back({{s, ""},
+                              {p->id, ""},
+                              {r.state_name(), r.state_class()},
+                              {value_pm(r.scalar("q6"), r.scalar_stderr("q6")), cls},
+                              {number(o, "Q6"), cls},
+                              {value_pm(r.scalar("layer_order"), r.scalar_stderr("layer_order")), cls},
+                              {number(o, "layering"), cls},
+                              {number(fr, "coordination_number"), cls},
+                              {fr.contains("regime") && fr["regime"].is_string() ? fr["regime"].get<std::string>() : "—",
+                               cls}});
+        }
     return t;
 }
 
@@ -298,8 +334,29 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     if (!problems.rows.empty()) rep.table(std::move(problems));
     rep.heading("Key numbers", 3);
     rep.table(key_numbers(c, col));
+    if (any_dt_checked(col))
+        rep.text(fmt::format("[Δt x]: the value comes from the run at half the time step, checked against a run at the "
+                             "full step; x = |value(Δt) − value(Δt/2)| is its time-step error estimate (the methods "
+                             "converge at first order). A point whose mean solid fraction moves by more than {} or "
+                             "whose wall shear stress moves by more than {} % and {} standard errors is "
+                             "dt-unconverged, and says so above.",
+                             num(kDtMaxSolidFractionChange), num(100 * kDtMaxRelativeStressChange),
+                             num(kDtMaxStressZ)));
     rep.heading("What each solver's numbers mean", 3);
     rep.table(scope_table(c, col));
+    if (Table order = order_table(col); !order.rows.empty()) {
+        rep.heading("How ordered the particle packings are", 3);
+        rep.table(std::move(order));
+        rep.text("q6: the mean local bond-orientational order of the grains (Steinhardt, Nelson & Ronchetti 1983; "
+                 "neighbours within 1.2 (r_i + r_j), grains with at least 4): 0.575 for FCC, 0.485 for HCP, about 0.35–0.45 "
+                 "for a dense disordered packing. Q6: the same over all bonds at once, near 0 without long-range "
+                 "order. Layer order Λ: how sharply the grain centres stack in layers parallel to the walls (the peak of "
+                 "|⟨exp(2πi y/λ)⟩| over λ = 0.6–1.0 d, grains a diameter clear of the walls): 1 for flat layers, "
+                 "small without. Layering of ν(y): the relative spread std(ν)/mean(ν) of the solid-fraction profile "
+                 "the report draws, half a diameter from the walls; it smears each grain over its diameter and also "
+                 "shows the layering any flat wall imposes. The continuum describes a disordered "
+                 "fluid: where the particle packings are ordered, its profiles are not expected to match.");
+    }
 
     rep.heading("How to read this report");
     rep.text("Geometry: y/H = 0 is the moving wall (speed U), y/H = 1 the stationary wall. Profiles are "

@@ -229,4 +229,14 @@ RingSliceSection ring_slice_section(const Case& ring, const Collection& col) {
     return sec;
 }
 
+std::optional<std::filesystem::path> slice_results_root(const Case& ring) {
+    const std::string slice_case = ring.section("report").string("slice_case");
+    if (slice_case.empty()) return std::nullopt;
+    try {
+        return results_root(load_case(ring.dir / slice_case, *ring.schema), RunOptions{});  // as collect() below
+    } catch (const Error&) {
+        return std::nullopt;  // ring_slice_section says why in the report
+    }
+}
+
 }  // namespace granlub::postproc

@@ -3,6 +3,8 @@
 // written in the slice's frame (core granlub/annulus.h), so they compare column by column; the
 // width profile shows what the slice's centripetal body force stands in for.
 #pragma once
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,5 +27,9 @@ struct RingSliceSection {
 // cannot be read, or points without steady results on both sides, are notes, not errors: the
 // rest of the report stands.
 RingSliceSection ring_slice_section(const Case& ring, const Collection& col);
+
+// The slice case's results folder that ring_slice_section reads, when [report] slice_case names a
+// case that loads: compare holds its dem results locked (shared) while it reads them.
+std::optional<std::filesystem::path> slice_results_root(const Case& ring);
 
 }  // namespace granlub::postproc

@@ -47,6 +47,31 @@ std::string range_text(const std::vector<double>& v, const char* unit, int digit
     return f(*lo) == f(*hi) ? fmt::format("{} {}", f(*lo), unit) : fmt::format("{}–{} {}", f(*lo), f(*hi), unit);
 }
 
+// One wall as the solver had it: a particle solver's plane or bumps (run.walls), else R.
+std::string wall_text(const Run& r, bool bottom, bool particles) {
+    const char* side = bottom ? "bottom" : "top";
+    const Wall& w = bottom ? r.point->bottom : r.point->top;
+    const auto& run = r.summary->run;
+    if (!particles || !run.is_object() || !run.contains("walls") || !run["walls"].contains(side))
+        return fmt::format("{}: R = {}", side, num(w.roughness));
+    const auto& j = run["walls"][side];
+    if (j.value("surface", std::string()) != "bumps")
+        return fmt::format("{}: a frictional plane (μ_w = {}; R does not apply)", side, num(w.friction));
+    return fmt::format("{}: bumps of {} mm, {} mm apart (R = {} built, θ = {}°)", side,
+                       num(1e3 * j.value("bump_diameter_m", 0.0), 3), num(1e3 * j.value("bump_spacing_m", 0.0), 3),
+                       num(j.value("roughness_built", 0.0), 3), num(j.value("bump_angle_deg", 0.0), 3));
+}
+
+// The grains' sizes and both walls; the continuum and the automaton use the mean diameter.
+std::string grains_and_walls(const Case& c, const Run& first, bool particles) {
+    const GrainSizes g = c.grains.sizes();
+    std::string grains = !particles ? fmt::format("d = {} mm (the mean diameter)", num(1e3 * g.mean, 3))
+                         : g.equal() ? fmt::format("equal grains, d = {} mm", num(1e3 * g.mean, 3))
+                                     : fmt::format("d = {} mm ± {} % (uniform, {}–{} mm)", num(1e3 * g.mean, 3),
+                                                   num(100 * g.spread, 3), num(1e3 * g.min(), 3), num(1e3 * g.max(), 3));
+    return grains + "; " + wall_text(first, true, particles) + "; " + wall_text(first, false, particles);
+}
+
 }  // namespace
 
 bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }
@@ -107,6 +132,7 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
     else
         s.stresses = "as its summary gives them";
 
+    s.grains_walls = grains_and_walls(c, first, particles);
     if (particles) {
         s.run_length = range_text(simulated, "s") + " simulated";
         if (!steady_from.empty()) s.run_length += ", averaged from " + range_text(steady_from, "s");

@@ -12,6 +12,7 @@ struct SolverScope {
     std::string body_forces;  // "gravity ... included", or the solver's own note on what it ignores
     std::string stresses;     // what its wall stresses are
     std::string run_length;   // simulated time, steps or iterations over the compared points
+    std::string grains_walls; // the grains' sizes and the walls this solver had
 };
 
 SolverScope solver_scope(const Case& c, const Collection& col, const std::string& solver);

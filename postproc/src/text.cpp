@@ -46,4 +46,10 @@ std::string value_pm(const std::optional<double>& v, const std::optional<double>
     return num(*v, digits);
 }
 
+std::string list_text(const std::vector<std::string>& v) {
+    std::string s;
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
+    return s;
+}
+
 }  // namespace granlub::postproc

@@ -2,6 +2,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 #include <string_view>
 
 namespace granlub::postproc {
@@ -11,6 +12,7 @@ std::string num(double v, int digits = 4);         // compact: "%.{digits}g"
 std::string num(const std::optional<double>& v, int digits = 4);  // "" when absent
 std::string csv_field(std::string_view s);         // quoted when it holds , " or a newline
 // "v ± se" (se to 2 digits; just v without a positive se; "" without v)
+std::string list_text(const std::vector<std::string>& v);  // "a, b, c"
 std::string value_pm(const std::optional<double>& v, const std::optional<double>& se, int digits = 4);
 
 }  // namespace granlub::postproc

@@ -132,7 +132,8 @@ BOOST_AUTO_TEST_CASE(every_option_says_its_default) {
 BOOST_AUTO_TEST_CASE(keys_are_printed_from_their_declarations) {
     auto o = run(exe + " keys grains");
     BOOST_TEST(o.rc == 0, o.text);
-    BOOST_TEST(o.text.find("| `diameter` | required | > 0 | m | grain diameter d |") != std::string::npos, o.text);
+    BOOST_TEST(o.text.find("| `diameter` | required | > 0 | m | grain diameter d (with size_spread") != std::string::npos, o.text);
+    BOOST_TEST(o.text.find("| `size_spread` | 0 | [0, 0.2] |") != std::string::npos, o.text);
     BOOST_TEST(o.text.find("| `friction` | 0.5 | >= 0 |") != std::string::npos, o.text);
     auto bad = run(exe + " keys nosuchsection");
     BOOST_TEST(bad.rc == 2);

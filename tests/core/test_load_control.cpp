@@ -69,7 +69,7 @@ BOOST_AUTO_TEST_CASE(load_summary_counts_limits_and_clamps) {
                                   .window = win,
                                   .blocks = 5,
                                   .grains = 100,
-                                  .grain_diameter = 1e-3,
+                                  .solids_volume = 100 * std::numbers::pi / 6.0 * 1e-9,
                                   .area = 1e-4},
                                  out, line);
     double mean = 0;

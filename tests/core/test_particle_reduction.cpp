@@ -93,6 +93,7 @@ BOOST_AUTO_TEST_CASE(reduction_of_a_known_run) {
                                                   .servo = servo,
                                                   .blocks = 5,
                                                   .grains = 2,
+                                                  .solids_volume = 2 * 4.0 / 3.0 * std::numbers::pi * 1e-3,
                                                   .simulated_s = 0.4});
     const auto& o = r.outputs;
     BOOST_TEST(o.at("normal_stress_bottom").value == 100.0);

@@ -3,12 +3,16 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
+#include <fmt/format.h>
 
 #include "case_text.h"
 #include "granlub/case.h"
 #include "granlub/error.h"
 #include "granlub/results.h"
+#include "granlub/run_id.h"
 
 using namespace granlub;
 using granlub::test::TmpDir;
@@ -222,4 +226,27 @@ BOOST_AUTO_TEST_CASE(unsound_results_are_corrupt_not_fatal) {
         fs::create_directories(dir / "summary.json");
     }, "not a regular file");
     fs::remove_all(dir / "summary.json");
+}
+
+// The run id (run_id.h): one per process, readable, and read back from the comment lines of a
+// table, never from its data.
+BOOST_AUTO_TEST_CASE(run_id_names_this_process_and_is_read_back_from_tables) {
+    const std::string& id = run_id();
+    BOOST_TEST(&id == &run_id());  // made once
+    // UTC time, host, pid, 8 hex digits
+    const auto dash = id.rfind('-');
+    BOOST_TEST_REQUIRE(dash != std::string::npos);
+    BOOST_TEST(id.size() - dash - 1 == 8u, id);
+    BOOST_TEST(id.find(fmt::format("-{}-", ::getpid())) != std::string::npos, id);
+    BOOST_TEST(id.substr(8, 1) == "T", id);
+    BOOST_TEST(id.substr(15, 2) == "Z-", id);
+    BOOST_TEST(id.find_first_of(" \t\n,#") == std::string::npos, id);
+
+    const std::string csv = profile_csv(small_profile(), {"case t point U1.0"});
+    BOOST_TEST(table_run_id(csv).value_or("") == id);
+    BOOST_TEST(table_run_id(profile_csv(small_profile(), {}, "another-run")).value_or("") == "another-run");
+    BOOST_TEST(!table_run_id("# a table before run ids\ny_over_H\n0\n").has_value());
+    BOOST_TEST(!table_run_id("y_over_H\n# run_id late\n0\n").has_value());  // not a leading comment
+    // the profile still parses as before: the run is a comment
+    BOOST_TEST(parse_profile_csv(csv, "p.csv").rows() == 3u);
 }

@@ -8,12 +8,21 @@
 #include "case_text.h"
 #include "granlub/error.h"
 #include "granlub/failure_record.h"
+#include "granlub/run_id.h"
 #include "granlub/sweep.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;
 
 namespace {
+
+// Options that write into a fresh results folder of this name in the temporary directory.
+RunOptions fresh_results(const std::string& name) {
+    RunOptions o;
+    o.results_root = fs::temp_directory_path() / name;
+    fs::remove_all(o.results_root);
+    return o;
+}
 
 PointResult toy_result(const Case& c, const OperatingPoint& p) {
     PointResult r;
@@ -28,11 +37,9 @@ PointResult toy_result(const Case& c, const OperatingPoint& p) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(skip_force_stale_and_failures) {
-    const fs::path root = fs::temp_directory_path() / "granlub_test_sweep";
-    fs::remove_all(root);
+    RunOptions o = fresh_results("granlub_test_sweep");
+    const fs::path root = o.results_root;
     const Case c = parse_case(granlub::test::kValidCase, "t.toml", Schema::common());
-    RunOptions o;
-    o.results_root = root;
     int calls = 0;
     auto solve = [&](const OperatingPoint& p, const fs::path& dir) {
         ++calls;
@@ -103,5 +110,75 @@ BOOST_AUTO_TEST_CASE(skip_force_stale_and_failures) {
     BOOST_TEST(why->no_answer);
     BOOST_TEST(why->message == "point U1.0: the toy holds a fixed number of grains");
     BOOST_TEST(fs::exists(root / "toy" / "U2.0" / "summary.json"));
+    fs::remove_all(root);
+}
+
+// Issue 34: two runs on one case left a point whose summary.json came from one run and whose
+// profile.csv from the other, and every check passed. Every file of a point now names its run: a
+// point whose files name different runs (or none, written before run ids) is corrupt, says which
+// files and runs, and the next sweep recomputes it.
+BOOST_AUTO_TEST_CASE(a_point_from_two_runs_is_corrupt_and_recomputed) {
+    const Case c = parse_case(granlub::test::kValidCase, "t.toml", Schema::common());
+    RunOptions o = fresh_results("granlub_test_sweep_runs");
+    const fs::path root = o.results_root;
+    int calls = 0;
+    auto solve = [&](const OperatingPoint& p, const fs::path& dir) {  // writes a second table too
+        PointResult r = toy_result(c, p);
+        write_file_atomic(dir / "section.csv", profile_csv(r.profile, {"a table beside the profile"}));
+        ++calls;
+        return r;
+    };
+    BOOST_TEST_REQUIRE(run_sweep(c, "toy", o, solve) == 0);
+    BOOST_TEST_REQUIRE(calls == 2);
+    const fs::path dir = result_dir(root, "toy", "U1.0");
+    const ResultKey key = result_key(c, "toy");
+    BOOST_TEST_REQUIRE((load_result(dir, key).status.state == ResultState::Complete));
+    const std::string mine = read_summary(dir / "summary.json").provenance.run_id;
+    BOOST_TEST(mine == run_id());
+    BOOST_TEST(read_table_run_id(dir / "profile.csv").value_or("") == mine);
+    BOOST_TEST(read_table_run_id(dir / "section.csv").value_or("") == mine);
+
+    // A table written by another run: replace this run's id in it by another's.
+    const std::string other = "20260101T000000Z-elsewhere-1-00000000";
+    auto from_other_run = [&](const fs::path& f) {
+        std::string text = read_file(f);
+        const auto at = text.find(mine);
+        BOOST_TEST_REQUIRE(at != std::string::npos);
+        write_file_atomic(f, text.replace(at, mine.size(), other));
+    };
+    for (const char* table : {"profile.csv", "section.csv"}) {
+        BOOST_TEST_CONTEXT(table) {
+            from_other_run(dir / table);
+            const ResultStatus st = load_result(dir, key).status;
+            BOOST_TEST((st.state == ResultState::Corrupt));
+            for (const std::string& named : {(dir / table).string(), (dir / "summary.json").string(), mine, other})
+                BOOST_TEST(st.reason.find(named) != std::string::npos, st.reason << " lacks " << named);
+            BOOST_TEST(run_sweep(c, "toy", o, solve) == 0);  // recomputed, not skipped
+            BOOST_TEST((load_result(dir, key).status.state == ResultState::Complete));
+            BOOST_TEST(read_table_run_id(dir / table).value_or("") == mine);
+        }
+    }
+    BOOST_TEST(calls == 4);
+
+    // Results written before run ids name none: corrupt, so recomputed once.
+    nlohmann::json old = nlohmann::json::parse(read_file(dir / "summary.json"));
+    old["provenance"].erase("run_id");
+    write_file_atomic(dir / "summary.json", old.dump(2));
+    const ResultStatus before = load_result(dir, key).status;
+    BOOST_TEST((before.state == ResultState::Corrupt));
+    BOOST_TEST(before.reason.find("written before run ids") != std::string::npos, before.reason);
+    BOOST_TEST(run_sweep(c, "toy", o, solve) == 0);
+    BOOST_TEST(calls == 5);
+    BOOST_TEST((load_result(dir, key).status.state == ResultState::Complete));
+
+    // A table an earlier run wrote and this one does not (gap.csv of a load-controlled run) does
+    // not stay behind to make the new result corrupt: the sweep removes it before it recomputes.
+    write_file_atomic(dir / "gap.csv", "# run_id " + other + "\ntime_s,gap_m\n0,1\n");
+    BOOST_TEST((load_result(dir, key).status.state == ResultState::Corrupt));
+    o.force = true;
+    o.point = "U1.0";
+    BOOST_TEST(run_sweep(c, "toy", o, solve) == 0);
+    BOOST_TEST(!fs::exists(dir / "gap.csv"));
+    BOOST_TEST((load_result(dir, key).status.state == ResultState::Complete));
     fs::remove_all(root);
 }

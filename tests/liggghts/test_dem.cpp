@@ -283,7 +283,7 @@ BOOST_AUTO_TEST_CASE(output_readers_parse_rows_and_name_bad_lines) {
 }
 
 BOOST_AUTO_TEST_CASE(every_result_carries_its_flow_regime_and_refine_dt_reruns_at_half_the_step) {
-    const Run r = run(kCase + "refine_dt = true\n", "refine_dt");
+    const Run r = run(kCase + "refine_dt = true\nrefine_time = 0.01\n", "refine_dt");
     BOOST_TEST_REQUIRE(r.code == 0);
     const Summary s = read_summary(r.dir / "summary.json");
     const auto& fr = s.run.at("flow_regime");
@@ -295,24 +295,32 @@ BOOST_AUTO_TEST_CASE(every_result_carries_its_flow_regime_and_refine_dt_reruns_a
     BOOST_TEST(fr.at("contact_persistence").get<double>() <= 1.0);
     BOOST_TEST(fr.at("persistence_snapshots").get<int>() == 3);
     BOOST_TEST(!fs::exists(r.dir / "contacts.txt"));  // read and removed
-    // the rerun: twice the steps of half the size, in dt_half/, and a record read_regime accepts
+    // the check: the full-step run in dt_full/, the point's answer at half the step (warm-started for
+    // refine_time), a record read_regime accepts, and every output's time-step error
     const auto& rec = s.run.at("dt_refinement");
     const double dt = s.run.at("time_step_s").get<double>();
-    BOOST_TEST(rec.at("time_step_s").get<double>() == 0.5 * dt);
-    BOOST_TEST(rec.at("refined_run").at("steps").get<long>() == 2 * s.run.at("steps").get<long>());
-    BOOST_TEST(rec.at("refined_run").at("flow_regime").at("persistence_interval_s").get<double>() ==
+    const auto& full = rec.at("full_step_run");
+    BOOST_TEST(full.at("time_step_s").get<double>() == 2 * dt);
+    BOOST_TEST(rec.at("time_step_s").get<double>() == dt);
+    BOOST_TEST(full.at("flow_regime").at("persistence_interval_s").get<double>() ==
                fr.at("persistence_interval_s").get<double>());
+    BOOST_TEST(rec.at("start").get<std::string>().starts_with("warm"));
     BOOST_CHECK_NO_THROW(dt_unconverged_reason(rec));
     BOOST_TEST((read_regime(s.run).status != RegimeStatus::Unknown));
     BOOST_TEST((read_regime(s.run).status == (s.run.at("status") == "transient" ? RegimeStatus::Transient
                                               : dt_unconverged_reason(rec).empty() ? RegimeStatus::Steady
                                                                                    : RegimeStatus::DtUnconverged)));
-    BOOST_TEST(read_profile(r.dir / "dt_half" / "profile.csv").rows() == 6u);
-    // the main result is the full-step run: the same as without the rerun
+    BOOST_TEST(read_profile(r.dir / "dt_full" / "profile.csv").rows() == 6u);
+    const Scalar& tau = s.outputs.at("shear_stress_bottom");
+    BOOST_TEST_REQUIRE(tau.dt_error.has_value());
+    BOOST_TEST(*tau.dt_error == std::abs(full.at("outputs").at("shear_stress_bottom").at("value").get<double>() -
+                                         tau.value));
+    // the full-step run is the plain run: the same grains, deck and numbers
     const Run plain = run(kCase, "refine_dt_off");
     BOOST_TEST_REQUIRE(plain.code == 0);
     const Summary p = read_summary(plain.dir / "summary.json");
-    BOOST_TEST(p.value("shear_stress_bottom") == s.value("shear_stress_bottom"));
+    BOOST_TEST(p.value("shear_stress_bottom") == full.at("outputs").at("shear_stress_bottom").at("value").get<double>());
     BOOST_TEST(!p.run.contains("dt_refinement"));
-    BOOST_TEST(!fs::exists(plain.dir / "dt_half"));
+    BOOST_TEST(!p.outputs.at("shear_stress_bottom").dt_error.has_value());
+    BOOST_TEST(!fs::exists(plain.dir / "dt_full"));
 }

@@ -9,6 +9,7 @@
 
 #include "granlub/error.h"
 #include "granlub/postproc/command.h"
+#include "granlub/run_id.h"
 #include "synthetic.h"
 #include "xml_check.h"
 
@@ -33,7 +34,8 @@ test::SyntheticCase trough_case(const std::string& name, bool ring, const std::s
 void write_width_profiles(const test::SyntheticCase& s, double a, double b) {
     for (const OperatingPoint& p : s.c.points) {
         std::ofstream f(result_dir(s.o.results_root, "dem", p.id) / "width_profile.csv");
-        f << "# synthetic\nz_over_W,solid_fraction,solid_fraction_stderr,u_over_U,u_over_U_stderr\n";
+        f << "# synthetic\n# " << run_id_comment()  // the run of the dem results beside it
+          << "\nz_over_W,solid_fraction,solid_fraction_stderr,u_over_U,u_over_U_stderr\n";
         for (double z : {-0.375, -0.125, 0.125, 0.375}) f << z << ',' << a + b * z << ",0.002,0.8,0.01\n";
     }
 }

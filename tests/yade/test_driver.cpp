@@ -111,10 +111,14 @@ BOOST_AUTO_TEST_CASE(tiny_deck_runs_and_is_deterministic, *boost::unit_test::pre
     }
     BOOST_TEST(sum.run.at("steps").get<long long>() == 3000);
     BOOST_TEST(sum.run.at("max_overlap_over_d").get<double>() < 0.02);  // stiff contacts
-    // the inertial numbers (core/flow_regime.h); no contacts: the snapshots have no x, z
+    // the inertial numbers (core/flow_regime.h), the coordination number and the order (the
+    // snapshots hold x, y, z); no contact persistence (no snapshots after the run)
     BOOST_TEST(std::isfinite(sum.run.at("flow_regime").at("inertial_number_mid_gap").get<double>()));
     BOOST_TEST(sum.run.at("flow_regime").at("regime").is_string());
-    BOOST_TEST(sum.run.at("flow_regime").at("coordination_number").is_null());
+    BOOST_TEST(sum.run.at("flow_regime").at("coordination_number").get<double>() > 0.0);
+    BOOST_TEST(sum.run.at("flow_regime").at("contact_persistence").is_null());
+    BOOST_TEST(sum.value("q6") > 0.0);
+    BOOST_TEST(sum.value("q6") < 0.7);
     BOOST_TEST(!fs::exists(dir / "samples.bin"));                        // raw snapshots removed
     BOOST_TEST(fs::exists(dir / "yade.log"));
     BOOST_TEST(fs::exists(o.results_root / "initial" / "U2.0" / "particles.csv"));

@@ -209,8 +209,9 @@ BOOST_AUTO_TEST_CASE(reduction_of_known_output) {
             w << i * static_cast<std::size_t>(s.sample_every) << ",-2,-10,0,1.5,8,0,-0.25,-0.75\n";
         std::ofstream b(dir / "samples.bin", std::ios::binary);
         const double y = 0.5 * c.cell.gap;
-        for (std::size_t k = 0; k < snaps * n; ++k) {
-            const double row[5] = {y, 0.0, 0.3 * p.speed, 0.0, 0.0};  // y, z, vx, vy, vz
+        for (std::size_t k = 0; k < snaps * n; ++k) {  // x, y, z, vx, vy, vz; the grains spread along x
+            const double x = static_cast<double>(k % n) * c.cell.length / static_cast<double>(n);
+            const double row[6] = {x, y, 0.0, 0.3 * p.speed, 0.0, 0.0};
             b.write(reinterpret_cast<const char*>(row), sizeof row);
         }
         nlohmann::json d = {{"grains", n},     {"snapshots", snaps},          {"dt", s.dt},
@@ -236,6 +237,9 @@ BOOST_AUTO_TEST_CASE(reduction_of_known_output) {
     BOOST_TEST(u[u.size() / 2] == 0.3, boost::test_tools::tolerance(1e-12));
     BOOST_TEST(nu.front() == 0.0);
     BOOST_TEST(res.summary.run.at("grains").get<std::size_t>() == n);
+    // positions along the flow are recorded: the contacts are counted
+    BOOST_TEST(res.summary.run.at("flow_regime").at("coordination_number").is_number());
+    BOOST_TEST(!res.summary.run.at("flow_regime").contains("contacts_not_measured"));
     // the cross-section holds the same volume, at the middle of the gap and the width
     {
         std::ifstream in(dir / "section.csv");

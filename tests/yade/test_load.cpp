@@ -96,3 +96,36 @@ BOOST_AUTO_TEST_CASE(weight_plate_carries_the_target_load, *boost::unit_test::pr
     const auto params = nlohmann::json::parse(read_text(lo.dir / "params.json"));
     BOOST_TEST(params.at("servo").at("plate").get<std::string>() == "weight");
 }
+
+// The experiment's grains and surfaces in YADE (core grain_sizes.h, wall_bumps.h): a size spread
+// of 0.1 between rough walls (bumps of the grains' size, R = 1/2), under the window servo, which
+// carries the top's bumps with the plate; 0.08 s, as the plate starts at 1.75 H (the grains need
+// room: servo.h plate_start). The plate holds the load with the bumps' force counted,
+// the bumps grip the bed harder than the planes of the smooth run, and the summary says what the
+// walls were.
+BOOST_AUTO_TEST_CASE(rough_walls_and_a_size_spread, *boost::unit_test::precondition(YadeInstalled())) {
+    const Case c = tiny_case_edits({{"control = \"fill\"", "control = \"load\"\nnormal_stress = 200"},
+                                    {"time = 1.5e-3", "time = 0.08"},
+                                    {"snapshots = 30", "snapshots = 20"},
+                                    {"friction = 0.5\n\n[walls]", "friction = 0.5\nsize_spread = 0.1\n\n[walls]"},
+                                    {"roughness = 0.5", "roughness = 0.5\nsurface = \"bumps\""}},
+                                   "contact_time = 5e-5\nservo_every = 100\nstations = 6\nservo_max_gap = 1.75\n");
+    const auto [code, dir] = run_case(c, "rough", 200.0);
+    BOOST_TEST_REQUIRE(code == 0);
+    const Summary s = read_summary(dir / "summary.json");
+    const auto& w = s.run.at("walls");
+    BOOST_TEST(w.at("bottom").at("surface").get<std::string>() == "bumps");
+    BOOST_TEST(w.at("top").at("bumps_per_row").get<int>() == 10);  // 10 d of bumps of d: R = 1/2 exactly
+    const auto params = nlohmann::json::parse(read_text(dir / "params.json"));
+    BOOST_TEST(params.at("bumps").at("bottom").at("x").size() == 60u);  // 10 along the flow x 6 rows
+    // the top's force includes its bumps': the plate holds the load (a plane alone would read ~0)
+    const Scalar& top = s.outputs.at("normal_stress_top");
+    BOOST_TEST(std::abs(top.value - 200.0) < std::max(3.0 * top.stderr_.value_or(0.0), 0.15 * 200.0), top.value);
+    const checks::LoadRun& smooth = run_load(200.0);
+    BOOST_TEST_REQUIRE(smooth.code == 0);
+    const double mu = s.value("shear_stress_bottom") / s.value("normal_stress_bottom");
+    const double mu_smooth = smooth.summary.value("shear_stress_bottom") / smooth.summary.value("normal_stress_bottom");
+    BOOST_TEST(mu > mu_smooth, mu << " vs " << mu_smooth);
+    // the grains' own sizes went in: the initial file's radii differ
+    BOOST_TEST(s.run.at("order").at("q6").is_number());
+}

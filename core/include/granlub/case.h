@@ -9,7 +9,9 @@
 #include <string_view>
 #include <vector>
 
+#include "granlub/grain_sizes.h"
 #include "granlub/schema.h"
+#include "granlub/wall_bumps.h"
 
 namespace granlub {
 
@@ -17,15 +19,18 @@ enum class Control { Fill, Load };
 std::string to_string(Control c);
 
 struct Grains {
-    double diameter = 0;        // m
+    double diameter = 0;        // m, the number mean d of the particle solvers' sizes
     double density = 0;         // kg/m^3
     double restitution = 0;     // e_p, grain-grain
     double friction = 0;        // Coulomb coefficient, grain-grain (particle solvers)
     double youngs_modulus = 0;  // Pa (soft-sphere reference models only)
     double poisson_ratio = 0;
-    double mass() const;        // of one grain, kg
-    // Rayleigh time (Li et al. 2005 form) t_R = pi r sqrt(rho/G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)): the
-    // soft-sphere time-step scale (as LIGGGHTS' check/timestep/gran), shared by both particle engines.
+    double size_spread = 0;     // standard deviation / mean of the diameters (grain_sizes.h); 0 = equal
+    GrainSizes sizes() const { return {diameter, size_spread}; }
+    double mass() const;        // of a grain of the mean diameter, kg
+    // Rayleigh time (Li et al. 2005 form) t_R = pi r sqrt(rho/G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)), of
+    // the smallest grain (the shortest contact): the soft-sphere time-step scale (as LIGGGHTS'
+    // check/timestep/gran), shared by both particle engines.
     double rayleigh_time() const;
 };
 
@@ -33,6 +38,9 @@ struct Wall {
     double restitution = 0;  // e_w
     double friction = 0;     // grain-wall Coulomb coefficient
     double roughness = 0;    // R in [0, 1]
+    // what the particle solvers build (wall_bumps.h): a plane, or bumps on it that give R
+    WallSurface surface = WallSurface::Plane;
+    double bump_diameter = 0;  // m; 0 = the largest bumps that give R
 };
 
 // slice: a periodic stretch of the trough (the curvature, if any, as a centripetal body force);

@@ -41,4 +41,25 @@ double coordination_number(const ContactList& pairs, std::size_t grains);
 // indices, a short time later); nothing when `before` has no contact.
 std::optional<double> contact_persistence(const ContactList& before, const ContactList& after);
 
+// The coordination number of each snapshot from t_start on (earlier ones are not averaged, so
+// they are skipped), and over the same snapshots the deepest overlap and the mean overlap of the
+// overlapping pairs, collected as the snapshots are read.
+class ContactSeries {
+public:
+    ContactSeries(const ParticleBox& box, double t_start) : box_(box), t_start_(t_start) {}
+    void add(const ParticleSet& p, double time);
+    const std::vector<double>& coordination() const { return z_; }
+    double seconds() const { return seconds_; }  // time spent finding contacts
+    double max_overlap() const { return max_overlap_; }
+    double mean_overlap() const { return overlapping_ ? overlap_sum_ / static_cast<double>(overlapping_) : 0.0; }
+
+private:
+    ParticleBox box_;
+    double t_start_;
+    std::vector<double> z_;
+    double seconds_ = 0;
+    double max_overlap_ = 0, overlap_sum_ = 0;
+    std::size_t overlapping_ = 0;
+};
+
 }  // namespace granlub

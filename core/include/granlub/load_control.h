@@ -47,7 +47,7 @@ struct LoadSummaryInputs {
     const SteadyWindow& window;
     std::size_t blocks;
     std::size_t grains;
-    double grain_diameter;             // m
+    double solids_volume;              // m^3, the grains' volume (particles.h, solids_volume)
     double area;                       // m^2, the wall area L W
 };
 nlohmann::json load_summary(const LoadSummaryInputs& in, std::map<std::string, Scalar>& outputs, std::string& line);

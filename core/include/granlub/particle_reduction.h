@@ -62,9 +62,13 @@ struct ParticleReductionInputs {
     const ServoSettings& servo;
     std::size_t blocks;
     std::size_t grains;
+    double solids_volume;              // m^3, the grains' volume (particles.h, solids_volume)
     double simulated_s;                // the run's simulated time (for the transient message)
     const CrossSection* section = nullptr;  // the same snapshots over y x z, when recorded
     double plate_start = 0;            // m, where the plate started (0: box.gap)
+    // slip is taken at the first station whose centre is at least this far from the wall's plane
+    // (a rough wall: its bumps' tops, wall_bumps.h; 0: the station next to the plane)
+    double slip_bottom_from = 0, slip_top_from = 0;  // m
 };
 
 struct ParticleReduction {
@@ -77,7 +81,8 @@ struct ParticleReduction {
 
 // outputs: normal_stress_{bottom,top}, shear_stress_{bottom,top}[, shear_stress_{side,outer,inner},
 // side_wall_support] (Pa, mean
-// and block standard error over the steady window), slip_{bottom,top} (m/s), mean_solid_fraction,
+// and block standard error over the steady window), slip_{bottom,top} (m/s: U - u and u at the
+// stations slip_*_from from the walls), mean_solid_fraction,
 // max_solid_fraction (the case's nu_max); under load also gap (load_summary).
 ParticleReduction reduce_particles(const ParticleReductionInputs& in);
 

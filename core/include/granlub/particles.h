@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "granlub/grain_sizes.h"
+
 namespace granlub {
 
 struct Case;
@@ -61,26 +63,32 @@ ParticleBox particle_box(const Case& c, double periodic_depth = 0);
 inline constexpr double kMaxGrains = 1e7;
 inline constexpr double kMaxSteps = 1e10;
 
-// Number of grains of diameter d giving mean solid fraction nu in the box (rounded to nearest).
-// Throws CaseError above kMaxGrains.
+// Number of grains of the sizes' mean volume giving mean solid fraction nu in the box (rounded to
+// nearest); the second form for equal grains of diameter d. Throws CaseError above kMaxGrains.
+std::size_t grains_for_fill(const ParticleBox& box, const GrainSizes& sizes, double solid_fraction);
 std::size_t grains_for_fill(const ParticleBox& box, double diameter, double solid_fraction);
 
 struct InsertionOptions {
     std::uint64_t seed = 1;
     double wall_speed = 0;       // U: initial mean velocity is the linear Couette profile U (1 - y/H)
     double velocity_noise = 0.1; // Gaussian noise per component, standard deviation as a fraction of U
-    // [cell] geometry = "annulus" (granlub/annulus.h): the grains are inserted in the ring below
-    // `height` (0: the gap H; the plate's start under load control), `wall_sag` (m) clear of the
-    // side walls in addition (a meshed wall's facets inside its circle)
+    double size_spread = 0;      // diameters drawn around the mean (grain_sizes.h); 0 = equal grains
+    // the grains are inserted below `height` (0: the gap H; the plate's start under load control,
+    // where the grains need more room than H), in the ring with `wall_sag` (m) clear of the side
+    // walls in addition (a meshed wall's facets inside its circle)
     double height = 0;
     double wall_sag = 0;
+    // rough walls (wall_bumps.h): the grains are inserted between y = floor and height - ceiling,
+    // clear of the bumps' halves on the floor and under the top (set by initial_particles)
+    double floor = 0;
+    double ceiling = 0;
 };
 
-// Deterministic, overlap-free placement of n equal grains (diameter d) in the box:
-// sites of a face-centred-cubic lattice (hexagonal x-z layers stacked ABC along y) with the
-// largest spacing a >= d that still gives at least n sites; n sites are drawn at random, and
-// each grain is displaced at random by at most (a - d)/2 (so no two grains and no grain and wall
-// overlap). Throws CaseError when n grains cannot fit (the message gives the largest fill that
+// Deterministic, overlap-free placement of n grains of mean diameter d (sizes drawn with
+// opt.size_spread, grain_sizes.h) in the box: sites of a face-centred-cubic lattice (hexagonal
+// x-z layers stacked ABC along y) with the largest spacing a >= d_max that still gives at least n
+// sites; n sites are drawn at random, and each grain is displaced at random by at most
+// (a - d_i)/2 (so no two grains and no grain and wall overlap). Throws CaseError when n grains cannot fit (the message gives the largest fill that
 // can be inserted). Same box, n and options = same particles, bit for bit, on every platform.
 ParticleSet insert_grains(const ParticleBox& box, double diameter, std::size_t n, const InsertionOptions& opt);
 
@@ -90,6 +98,8 @@ double min_gap(const ParticleSet& p, const ParticleBox& box);
 
 // Sum of grain volumes / box volume.
 double solid_fraction(const ParticleSet& p, const ParticleBox& box);
+// Sum of grain volumes, m^3: n pi d^3 / 6 when all grains are equal (exact in the count).
+double solids_volume(const ParticleSet& p);
 
 // <results_root>/initial/<point>/particles.csv
 std::filesystem::path initial_particles_path(const std::filesystem::path& results_root, const std::string& point);

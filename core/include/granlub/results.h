@@ -5,12 +5,16 @@
 //   Required columns: y_over_H, u_over_U, solid_fraction, temperature_over_U2; statistical
 //   solvers add <column>_stderr; solvers may add further columns.
 // summary.json: {"format", "solver", "case", "point", "inputs", "outputs", "run", "provenance"}.
-//   outputs: name -> {"value", "stderr" (null when not statistical), "unit"}.
+//   outputs: name -> {"value", "stderr" (null when not statistical), "unit"[, "dt_error"]}.
 //   Standard outputs (see kStandardOutputs): normal and shear stress on each wall (Pa, positive
 //   magnitudes), slip at each wall (m/s: U - u(0) at the bottom, u(H) at the top),
 //   mean_solid_fraction, max_solid_fraction.
 // summary.json is written last and is the completion marker: a run that dies leaves at most a
 // profile.csv without a current summary, which counts as incomplete.
+// Every file of a point names the run that wrote it (run_id.h): summary.json's provenance.run_id
+// and a "# run_id <id>" line in profile.csv and in each of the point's other tables (section.csv,
+// width_profile.csv, gap.csv, final_state.csv, timeseries.csv, dt_half/profile.csv); a point
+// whose files name different runs is corrupt.
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -22,6 +26,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "granlub/run_id.h"
 #include "granlub/table.h"
 
 namespace granlub {
@@ -36,6 +41,9 @@ struct Scalar {
     double value = 0;
     std::optional<double> stderr_;  // standard error, for statistical solvers
     std::string unit;
+    // the time-step error estimate of a value checked at half the time step: |value(dt) - value(dt/2)|,
+    // the value being the dt/2 run's (the error of a first-order method at dt/2)
+    std::optional<double> dt_error = std::nullopt;
 };
 
 inline constexpr const char* kStandardOutputs[] = {
@@ -53,6 +61,7 @@ struct Provenance {
     nlohmann::json settings;  // the solver's resolved settings
     std::optional<std::uint64_t> seed;
     std::string utc_time;     // ISO 8601, filled at write time when empty
+    std::string run_id;       // the run that wrote the point (run_id.h); "" in results written before
 };
 
 struct Summary {
@@ -69,7 +78,8 @@ struct Summary {
     double value(const std::string& name) const;  // throws naming the outputs
 };
 
-// A summary with solver, case, point, inputs and provenance filled in.
+// A summary with solver, case, point, inputs and provenance (this process's run id included)
+// filled in.
 Summary make_summary(const Case& c, const OperatingPoint& p, const std::string& solver,
                      std::optional<std::uint64_t> seed = std::nullopt);
 
@@ -81,7 +91,10 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view bytes
 // The whole file's bytes; Error "<file>: cannot be read" when it cannot be opened.
 std::string read_file(const std::filesystem::path& path);
 
-std::string profile_csv(const Profile& p, const std::vector<std::string>& comments = {});
+// The table as CSV: the comments, then a comment naming the run `run` (run_id.h), the header row
+// and the rows.
+std::string profile_csv(const Profile& p, const std::vector<std::string>& comments = {},
+                        std::string_view run = run_id());
 Profile parse_profile_csv(std::string_view text, const std::string& source);  // + required columns
 Profile read_profile(const std::filesystem::path& path);
 
@@ -89,8 +102,9 @@ nlohmann::json summary_json(const Summary& s);
 Summary summary_from_json(const nlohmann::json& j, const std::string& source);
 Summary read_summary(const std::filesystem::path& path);
 
-// Writes profile.csv then summary.json (the completion marker), both atomically. Refuses NaN or
-// infinite numbers and a profile without the required columns.
+// Writes profile.csv then summary.json (the completion marker), both atomically, profile.csv
+// naming the summary's run. Refuses NaN or infinite numbers and a profile without the required
+// columns.
 void write_result(const std::filesystem::path& dir, const Profile& profile, const Summary& summary);
 
 enum class ResultState { Missing, Complete, Stale, Corrupt };
@@ -107,7 +121,9 @@ struct LoadedResult {
 // `granlub compare` (plot or name as corrupt) alike. Corrupt: a file is missing or unreadable, a
 // number is not finite, a standard error is negative, y_over_H is not increasing within [0, 1],
 // max_solid_fraction is not positive, or the summary names another solver, point (both taken
-// from the folder, <root>/<solver>/<point>) or case (when `case_name` is given). Stale: all that
+// from the folder, <root>/<solver>/<point>) or case (when `case_name` is given), or the point's
+// files do not all name the summary's run (a table from another run, or results written before
+// run ids: recomputing them is the safe side, see load_result). Stale: all that
 // holds but the summary's inputs_hash differs from the key's. Never throws for bad files.
 struct ResultKey {
     std::string inputs_hash;                    // Case::inputs_hash(solver)
@@ -120,6 +136,11 @@ LoadedResult load_result(const std::filesystem::path& dir, const std::string& in
                          const std::string& case_name = "");
 ResultStatus result_status(const std::filesystem::path& dir, const std::string& inputs_hash,
                            const std::string& case_name = "");
+
+// Removes the tables a point's run may write beside profile.csv (the list in the header comment):
+// a sweep calls it before it recomputes the point, so that a table this run does not write (gap.csv
+// after a change from load to fill control) cannot stay behind naming an earlier run.
+void remove_point_tables(const std::filesystem::path& dir);
 
 std::string version();   // project version + git describe --dirty, taken at build time
 std::string utc_now();   // ISO 8601

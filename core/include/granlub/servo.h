@@ -33,6 +33,11 @@ struct ServoSettings {
     double servo_max_error = 0;       // relative stress error is clamped to [-1, servo_max_error]
     double gap_min = 0;               // plate limits, m: closest packing of the grains ...
     double gap_max = 0;               // ... and the box top (servo_max_gap x H)
+    // where the top wall starts and below which the grains are inserted: H, or under load gap_max
+    // for grains that need more room than H (the whole ring, whose insertion lattice holds fewer
+    // grains per volume, annulus.h; grains of several sizes, on a lattice spaced for the largest;
+    // rough walls, whose bumps take room, wall_bumps.h)
+    double plate_start = 0;
     double insert_fill = 0;           // solid fraction inserted (point's, or fill_for_load)
     std::string insert_fill_key;      // which key it came from, for messages
 

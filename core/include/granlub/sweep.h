@@ -1,12 +1,14 @@
-// Running a solver over the operating points of a case: selection (--point), resume (skip
-// points whose results are complete and current unless --force), timing, atomic result writing
-// and one printed line per point. Every solver's `granlub <solver>` command goes through this.
+// Running a solver over the operating points of a case: the lock on its results (run_lock.h),
+// selection (--point), resume (skip points whose results are complete and current unless
+// --force), timing, atomic result writing and one printed line per point. Every solver's
+// `granlub <solver>` command goes through this.
 #pragma once
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "granlub/case.h"
 #include "granlub/results.h"
@@ -23,6 +25,8 @@ struct RunOptions {
     bool full = false;                        // full-fidelity run lengths (the *_full case keys)
                                               // instead of the quick defaults
     std::filesystem::path results_root;       // empty: <case dir>/results
+    bool wait = true;                         // results locked by another run: wait for it (--wait),
+                                              // or fail at once, exit 2 (--no-wait); run_lock.h
 };
 
 std::filesystem::path results_root(const Case& c, const RunOptions& o);
@@ -46,8 +50,11 @@ void for_each_run(const Case& c, const RunOptions& o,
 // Returns the process exit code: 0 if every selected point is complete afterwards, 1 otherwise.
 // Failures of one point are reported and the sweep goes on with the next. Up to `points_at_once`
 // points run side by side (solvers whose points are separate processes: see points_at_once()).
+// The sweep holds its solver's results locked (exclusive) from start to end, and the results of
+// the solvers in `reads` shared (yade's warm start reads dem's): o.wait says whether it waits
+// for another run holding them or throws ResultsInUse.
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve,
-              int points_at_once = 1);
+              int points_at_once = 1, const std::vector<std::string>& reads = {});
 
 // How many single-process points fit the machine: --threads (default: all cores) over --np ranks
 // per point, at least 1 and at most `points`.

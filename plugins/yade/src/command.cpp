@@ -10,6 +10,7 @@
 
 #include "granlub/error.h"
 #include "granlub/progress.h"
+#include "granlub/run_id.h"
 #include "granlub/yade/driver.h"
 #include "granlub/yade/reduce.h"
 #include "granlub/yade/settings.h"
@@ -19,6 +20,13 @@ namespace granlub::yade {
 namespace fs = std::filesystem;
 
 namespace {
+
+// How the grains are inserted, as granlub dem inserts them: below the plate's start (servo.h).
+InsertionOptions insertion(const Case& c, const Settings& s) {
+    InsertionOptions ins = s.insertion;
+    if (s.servo.plate_start != c.cell.gap) ins.height = s.servo.plate_start;
+    return ins;
+}
 
 nlohmann::json settings_json(const Settings& s) {
     nlohmann::json j = s.servo.to_json();
@@ -55,15 +63,19 @@ InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingP
                                       p.id, from.string()));
     InitialParticles init;
     init.box = particle_box(c, s.periodic_depth);
-    const std::size_t n = grains_for_fill(init.box, c.grains.diameter, p.solid_fraction);
+    const GrainSizes g = c.grains.sizes();
+    const std::size_t n = grains_for_fill(init.box, g, p.solid_fraction);
     ParticleState st = read_particle_state(from);
+    const double tol = 1e-9 * g.mean;
     const bool grains_match = st.particles.size() == n &&
-        std::all_of(st.particles.radius.begin(), st.particles.radius.end(),
-                    [&](double r) { return std::abs(r - 0.5 * c.grains.diameter) <= 1e-9 * c.grains.diameter; });
+        std::all_of(st.particles.radius.begin(), st.particles.radius.end(), [&](double r) {
+            return 0.5 * g.min() - tol <= r && r <= 0.5 * g.max() + tol;
+        });
     if (!grains_match)
-        throw SolverError(fmt::format("point {}: the warm-start state {} holds {} grains, the case {} of diameter {:g} m: "
+        throw SolverError(fmt::format("point {}: the warm-start state {} holds {} grains, the case {} of diameter {:g} m{}: "
                                       "it is from another case; rerun `granlub dem`",
-                                      p.id, from.string(), st.particles.size(), n, c.grains.diameter));
+                                      p.id, from.string(), st.particles.size(), n, g.mean,
+                                      g.equal() ? "" : fmt::format(" (spread {:g})", g.spread)));
     if (s.servo.load ? !(s.servo.gap_min < st.gap && st.gap <= s.servo.gap_max)
                      : std::abs(st.gap - init.box.gap) > 1e-9 * init.box.gap)
         throw SolverError(fmt::format("point {}: the warm-start state {} has its top wall at {:g} m, outside what this "
@@ -73,7 +85,8 @@ InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingP
     init.file = dir / "warm_start.csv";
     fs::create_directories(dir);
     fs::copy_file(from, init.file, fs::copy_options::overwrite_existing);
-    record = {{"from", from.string()}, {"time_s", st.time}, {"gap_m", st.gap}, {"grains", st.particles.size()}};
+    record = {{"from", from.string()}, {"time_s", st.time}, {"gap_m", st.gap}, {"grains", st.particles.size()},
+              {"dem_run_id", read_table_run_id(from).value_or("")}};  // which dem run it started from
     init.particles = std::move(st.particles);
     return init;
 }
@@ -87,7 +100,10 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
     fs::remove(dir / "warm_start.csv");
     const InitialParticles init =
         s.warm_start ? warm_start(c, o, p, s, dir, warm)
-                     : initial_particles(c, p, results_root(c, o), s.insertion, s.periodic_depth, s.servo.insert_fill_key);
+                     : initial_particles(c, p, results_root(c, o), insertion(c, s), s.periodic_depth,
+                                         s.servo.insert_fill_key);
+    ParticleBox start = init.box;  // the driver's cell: the top wall starts where granlub dem's does
+    if (!s.warm_start) start.gap = s.servo.plate_start;
     const DriverPaths paths = locate_driver();
 
     const auto steps = static_cast<double>(s.steps);
@@ -103,7 +119,7 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
         if (in >> done >> total) progress.update(done, fmt::format("{} grains", init.particles.size()));
     };
     fs::remove(dir / "driver_summary.json");  // a stale marker must not pass for this run's
-    run_driver(paths, dir, couette_params(c, p, s, init.box, init.file), p.id, timeout, poll);
+    run_driver(paths, dir, couette_params(c, p, s, start, init.file), p.id, timeout, poll);
 
     Summary base = make_summary(c, p0, "yade", s.insertion.seed);
     base.provenance.settings = settings_json(s);
@@ -131,13 +147,16 @@ void check(const Case& c, const RunOptions& o) {
         const Settings s = resolve_settings(c, p0, v);
         OperatingPoint p = p0;
         p.solid_fraction = s.servo.insert_fill;  // as solve_point() inserts it
-        check_initial_particles(c, p, s.periodic_depth, s.servo.insert_fill_key);
+        check_initial_particles(c, p, s.periodic_depth, s.servo.insert_fill_key, insertion(c, s));
     });
 }
 
 int run(const Case& c, const RunOptions& o) {
     // each point is one single-threaded YADE process (-j1): as many side by side as cores allow
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
+    // a warm start reads dem's final states: dem's results stay locked (shared) while yade runs, so
+    // that no dem run replaces them half-way through the sweep (granlub/run_lock.h)
+    const bool warm = c.section("yade").string("start") == "warm";
     return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {
             return solve_point(c, o, p, dir);
@@ -148,7 +167,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    }, at_once);
+    }, at_once, warm ? std::vector<std::string>{"dem"} : std::vector<std::string>{});
 }
 
 }  // namespace granlub::yade

@@ -7,10 +7,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "granlub/coarse_grain.h"
 #include "granlub/error.h"
-#include "granlub/flow_regime.h"
-#include "granlub/load_control.h"
+#include "granlub/particle_pipeline.h"
 #include "granlub/table.h"
 
 namespace granlub::yade {
@@ -58,11 +56,10 @@ json read_json(const fs::path& file, const std::string& what) {
     }
 }
 
-// Streams samples.bin into the coarse-grainer, one snapshot at a time (no whole-run buffer).
-void coarse_grain_samples(const fs::path& file, std::size_t n, std::size_t snapshots, double snapshot_dt,
-                          const std::vector<double>& radius, const ParticleBox& box, SliceCoarseGrainer& cg,
-                          CrossSection& xs) {
-    constexpr std::size_t kCols = 5;  // y, z, vx, vy, vz
+// Streams samples.bin, one snapshot at a time (no whole-run buffer), to `each` with its time.
+std::size_t read_samples(const fs::path& file, std::size_t n, std::size_t snapshots, double snapshot_dt,
+                         const std::vector<double>& radius, const ParticleBox& box, const SnapshotVisitor& each) {
+    constexpr std::size_t kCols = 6;  // x, y, z, vx, vy, vz
     std::ifstream in(file, std::ios::binary);
     if (!in) throw SolverError(fmt::format("{}: missing (the YADE run wrote no snapshots)", file.string()));
     const auto bytes = fs::file_size(file);
@@ -71,20 +68,20 @@ void coarse_grain_samples(const fs::path& file, std::size_t n, std::size_t snaps
                                       bytes, snapshots, n, kCols));
     std::vector<double> buf(n * kCols);
     ParticleSet p;
-    p.x.assign(n, 0.0), p.y.resize(n), p.z.assign(n, 0.0), p.vx.resize(n), p.vy.resize(n), p.vz.resize(n);
+    p.x.resize(n), p.y.resize(n), p.z.resize(n), p.vx.resize(n), p.vy.resize(n), p.vz.resize(n);
     p.radius = radius;
     for (std::size_t s = 0; s < snapshots; ++s) {
         in.read(reinterpret_cast<char*>(buf.data()), static_cast<std::streamsize>(buf.size() * sizeof(double)));
         if (!in) throw SolverError(fmt::format("{}: short read at snapshot {}", file.string(), s));
         for (std::size_t i = 0; i < n; ++i) {
             const double* r = &buf[i * kCols];  // little-endian doubles, as on every supported host
-            p.y[i] = r[0], p.z[i] = r[1], p.vx[i] = r[2], p.vy[i] = r[3], p.vz[i] = r[4];
+            p.x[i] = r[0], p.y[i] = r[1], p.z[i] = r[2], p.vx[i] = r[3], p.vy[i] = r[4], p.vz[i] = r[5];
             if (box.periodic_z)  // YADE does not wrap positions into the periodic cell
                 p.z[i] -= box.width * std::floor((p.z[i] + 0.5 * box.width) / box.width);
         }
-        cg.add_snapshot(p, static_cast<double>(s + 1) * snapshot_dt);
-        xs.add_snapshot(p, static_cast<double>(s + 1) * snapshot_dt);
+        each(p, static_cast<double>(s + 1) * snapshot_dt);
     }
+    return snapshots;
 }
 
 }  // namespace
@@ -104,47 +101,36 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
         throw SolverError(fmt::format("{}: {} rows, expected {}", (dir / "wallforce.csv").string(), w.rows(),
                                       expected_rows));
     if (box.periodic_z) w.fx_side1.clear(), w.fx_side2.clear();  // no side walls
-    const WallStresses st = wall_stresses(w, box);
 
-    std::optional<PlateSeries> plate;
+    // the driver's files into the shared series; the rest is the one particle pipeline
+    ParticleRecord rec;
+    rec.forces = std::move(w);
     if (s.servo.load) {
-        plate = read_plate(dir / "plate.csv");
+        rec.plate = read_plate(dir / "plate.csv");
         const auto expected_updates = static_cast<std::size_t>(s.steps / s.servo.servo_every);
-        if (plate->step.size() != expected_updates)
+        if (rec.plate->step.size() != expected_updates)
             throw SolverError(fmt::format("{}: {} plate positions, expected {}", (dir / "plate.csv").string(),
-                                          plate->step.size(), expected_updates));
-        write_file_atomic(dir / kGapFile, gap_csv(s.servo, dt, w.step, st.normal_top, *plate,
-                                                  fmt::format("case {} point {} (granlub yade)", c.name, p.id)));
+                                          rec.plate->step.size(), expected_updates));
     }
-    const SteadyWindow win = wall_steady_window(st, w, s.sample_every, dt, plate ? &*plate : nullptr,
-                                                s.servo.servo_every);
-
-    // profile slabs span the gap: the case's H, or the mean plate position under load control
-    const auto blocks = static_cast<std::size_t>(s.blocks);
-    const double gap = plate ? mean_gap(*plate, win, blocks).mean : box.gap;
-    SliceCoarseGrainer cg(Stations{0.0, gap, static_cast<std::size_t>(s.stations)}, box.length * box.width);
-    CrossSection xs = CrossSection::for_grains(c.grains.diameter, gap, box.width, box.length);
-    coarse_grain_samples(dir / "samples.bin", n, snapshots, dt * static_cast<double>(s.snapshot_every), radius, box, cg,
-                         xs);
-    if (cg.snapshots() < 2) throw SolverError(fmt::format("point {}: fewer than 2 particle snapshots", p.id));
-    ParticleReduction red = reduce_particles({.c = c,
-                                              .speed = p.speed,
-                                              .box = box,
-                                              .forces = w,
-                                              .stresses = st,
-                                              .cg = cg,
-                                              .window = win,
-                                              .plate = plate ? &*plate : nullptr,
-                                              .servo = s.servo,
-                                              .blocks = blocks,
-                                              .grains = n,
-                                              .simulated_s = ds.at("simulated_time").get<double>(),
-                                              .section = &xs});
-    write_file_atomic(dir / kSectionFile,
-                      profile_csv(red.section, {fmt::format("case {} point {} (granlub yade)", c.name, p.id),
-                                                "solid fraction and u/U over the cross-section: y across the gap "
-                                                "(0 = moving floor), z across the width (z/W = -1/2: the outer wall), "
-                                                "averaged along the flow and over the snapshots of the steady window"}));
+    const double snapshot_dt = dt * static_cast<double>(s.snapshot_every);
+    rec.snapshots = {(dir / "samples.bin").string(), [&](const SnapshotVisitor& each) {
+                         return read_samples(dir / "samples.bin", n, snapshots, snapshot_dt, radius, box, each);
+                     }};
+    const ParticlePipeline pl{.c = c,
+                              .p = p,
+                              .box = box,
+                              .servo = s.servo,
+                              .time_step = dt,
+                              .sample_every = s.sample_every,
+                              .stations = static_cast<std::size_t>(s.stations),
+                              .blocks = static_cast<std::size_t>(s.blocks),
+                              .grains = n,
+                              .simulated_s = ds.at("simulated_time").get<double>(),
+                              .contact_box = box,  // coordination and order; no persistence snapshots
+                              .bumps_bottom = &s.bumps_bottom,
+                              .bumps_top = &s.bumps_top,
+                              .what = fmt::format("case {} point {} (granlub yade)", c.name, p.id)};
+    ParticleReduction red = run_particle_pipeline(pl, rec, dir);
     Summary sum = std::move(base);
     for (auto& [name, v] : red.outputs) sum.outputs[name] = std::move(v);
     sum.run.update(red.run);
@@ -163,14 +149,6 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     sum.run["atom_steps_per_s"] = yade_run_s > 0 ? static_cast<double>(n) * steps / yade_run_s : 0.0;
     if (ds.contains("en")) sum.run["calibrated_en"] = ds["en"];
     sum.run["command"] = "yade -n -j1 -x granlub_yade.py params.json";
-    // the inertial numbers only: the YADE snapshots hold y and velocities, not x and z, so the
-    // coordination number and contact persistence (contacts.h) are not measured here
-    FlowDiagnostics fd;
-    const double P_mean = 0.5 * (sum.value("normal_stress_bottom") + sum.value("normal_stress_top"));
-    set_inertial_numbers(fd, red.profile, p.speed, box.gap, P_mean, c.grains.diameter, c.grains.density);
-    sum.run["flow_regime"] = flow_regime_json(fd);
-    sum.run["flow_regime"]["contacts_not_measured"] = "the YADE snapshots hold y and velocities only (no x, z)";
-
     PointResult r;
     r.profile = std::move(red.profile);
     r.summary = std::move(sum);

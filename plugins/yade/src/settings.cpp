@@ -65,6 +65,13 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
                                      static_cast<double>(2 * r.blocks * r.sample_every) * r.dt));
     r.steps = rows * r.sample_every;
     r.servo = resolve_servo(c, p, s, r.sample_every, r.dt, r.steps);
+    const ParticleBox box = particle_box(c, r.periodic_depth);
+    r.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", box);
+    r.bumps_top = wall_bumps(c, p, p.top, "top", box);
+    if (r.bumps_top && r.servo.load && r.weight_plate)
+        s.fail("servo_plate", "\"weight\" with a rough top wall ([walls] surface = \"bumps\"): the bumps would ride "
+                              "a free plate; use servo_plate = \"window\" (granlub dem's servo), which moves them "
+                              "with the plate");
 
     // snapshots at whole wall-force blocks (under load: whole servo windows)
     const std::int64_t unit = r.servo.load ? r.servo.servo_every : r.sample_every;

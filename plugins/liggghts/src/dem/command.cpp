@@ -8,11 +8,10 @@
 #include <fmt/format.h>
 
 #include "deck.h"
-#include "diagnostics.h"
 #include "engine.h"
 #include "granlub/annulus.h"
-#include "granlub/coarse_grain.h"
 #include "granlub/error.h"
+#include "granlub/particle_pipeline.h"
 #include "granlub/particles.h"
 #include "granlub/regime.h"
 #include "granlub/results.h"
@@ -28,12 +27,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// How solve() inserts the grains (the ring: below the plate's start, clear of the facets).
-InsertionOptions insertion(const Settings& s) {
+// How solve() inserts the grains: below the plate's start (servo.h); the ring's clear of the facets.
+InsertionOptions insertion(const Case& c, const Settings& s) {
     InsertionOptions ins;
     ins.seed = s.seed;
     ins.velocity_noise = s.velocity_noise;
-    if (s.ring) ins.height = s.plate_start, ins.wall_sag = s.wall_sag;
+    if (s.ring || s.plate_start != c.cell.gap) ins.height = s.plate_start;
+    if (s.ring) ins.wall_sag = s.wall_sag;
     return ins;
 }
 
@@ -54,27 +54,6 @@ void write_final_state(const Case& c, const OperatingPoint& p, const Settings& s
     fs::remove(dir / kFinalPlateFile);
 }
 
-// The profile across the width over the steady snapshots (cross_section.h); the ring's also with
-// the radius each slice-frame z stands for (granlub/annulus.h).
-std::string width_profile_csv(const CrossSection& xs, const DemOutputs& out, double U, const Settings& s,
-                              const std::string& what) {
-    const std::size_t first =
-        out.run.at("snapshots").get<std::size_t>() - out.run.at("snapshots_used").get<std::size_t>();
-    Profile t = xs.width_profile(U, first, s.blocks);
-    std::string frame = "z across the width, z/W = -1/2 the outer wall (where the centripetal force pushes)";
-    if (s.ring) {
-        const auto& z = t.column("z_over_W");
-        std::vector<double> r(z.size());
-        const double R = s.annulus.R, W = s.annulus.W;
-        for (std::size_t i = 0; i < z.size(); ++i) r[i] = (std::sqrt(R * R + 0.25 * W * W - 2.0 * R * z[i] * W) - R) / W;
-        t.add("r_minus_R_over_W", std::move(r));
-        frame = "the whole ring in the slice frame: z/W = -1/2 the outer cylinder, equal-area bands, "
-                "r_minus_R_over_W the radius of each band's centre";
-    }
-    return profile_csv(t, {what, "solid fraction and u/U across the width, over the gap (the mean plate gap under "
-                                 "load) and the snapshots of the steady window; " + frame});
-}
-
 // One engine run of the point in `dir` with settings s: data file, deck, LIGGGHTS, outputs and
 // the flow-regime evidence.
 struct OneRun {
@@ -86,9 +65,12 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
                 const fs::path& dir, const std::string& prov) {
     const double d_g = c.grains.diameter;
     // load control: room above H for the plate to rise
-    const DataBounds bounds = s.ring ? ring_bounds(s, d_g) : slice_bounds(s.box, s.box_top());
+    const DataBounds bounds = s.ring ? ring_bounds(s, d_g) : bump_bounds(slice_bounds(s.box, s.box_top()), s);
+    std::vector<BumpAtoms> bumps;
+    if (s.bumps_bottom) bumps.push_back({*s.bumps_bottom, kBottom, 0.0, p.speed});
+    if (s.bumps_top) bumps.push_back({*s.bumps_top, kTop, s.plate_start, 0.0});
     write_file_atomic(dir / kData, data_file(init.particles, bounds, c.grains.density,
-                                             fmt::format("case {} point {} ({})", c.name, p.id, prov)));
+                                             fmt::format("case {} point {} ({})", c.name, p.id, prov), bumps));
     if (s.ring) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facets);
     write_file_atomic(dir / kDeck, s.ring ? ring_deck(c, p, s, init.particles.size(), prov)
                                           : deck(c, p, s, init.particles.size(), prov));
@@ -101,98 +83,108 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     OneRun r;
     r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
 
+    // LIGGGHTS' files into the shared series; the rest is the one particle pipeline
+    ParticleRecord rec;
     const WallSeries recorded = read_wall_series(dir / kWallFile);
-    std::optional<RingWallLoads> ring_loads;
-    if (s.ring) ring_loads = ring_wall_loads(recorded, dir / kWallFile);
-    const WallForceSeries walls = s.ring ? ring_wall_forces(*ring_loads, s.annulus) : wall_forces(recorded);
-    const WallStresses stresses = wall_stresses(walls, s.box);
-    std::optional<PlateSeries> plate;
-    if (s.load) {
-        plate = read_plate_series(dir / kPlateFile);
-        const std::string what = fmt::format("case {} point {} ({})", c.name, p.id, prov);
-        write_file_atomic(dir / kGapFile, gap_csv(s, s.time_step, walls.step, stresses.normal_top, *plate, what));
-    }
-    const SteadyWindow window = wall_steady_window(stresses, walls, s.sample_every, s.time_step,
-                                                   plate ? &*plate : nullptr, s.servo_every);
-    // profile slabs span the gap: the case's H, or the mean plate position under load control
-    const double gap = plate ? mean_gap(*plate, window, s.blocks).mean : c.cell.gap;
-    SliceCoarseGrainer cg({0.0, gap, s.stations}, s.box.length * s.box.width);
-    CoordinationSeries z(s.contact_box, window.t_start);
-    CrossSection xs = CrossSection::for_grains(d_g, gap, s.box.width, s.box.length);
-    ParticleSet mapped;  // the ring's grains in the slice frame (granlub/annulus.h)
-    const std::size_t snapshots = for_each_snapshot(dir / kSnapshots, [&](const ParticleSet& g, double step) {
-        const double t = step * s.time_step;
-        if (s.ring) to_slice(g, s.annulus, mapped);
-        const ParticleSet& sg = s.ring ? mapped : g;
-        cg.add_snapshot(sg, t);
-        xs.add_snapshot(sg, t);
-        z.add(g, t);  // contacts in the engine's own frame
-    });
-    if (snapshots < 2)
-        throw SolverError(fmt::format("{}: fewer than 2 particle snapshots", (dir / kSnapshots).string()));
-    fs::remove(dir / kSnapshots);  // large; the deck regenerates it
-
+    if (s.ring)
+        rec.ring = ring_wall_loads(recorded, dir / kWallFile);
+    else
+        rec.forces = wall_forces(recorded);
+    if (s.load) rec.plate = read_plate_series(dir / kPlateFile);
+    auto dump = [&](const char* file) {
+        return SnapshotReader{(dir / file).string(), [&, file](const SnapshotVisitor& each) {
+                                  return for_each_snapshot(dir / file, [&](const ParticleSet& g, double step) {
+                                      each(g, step * s.time_step);
+                                  });
+                              }};
+    };
+    rec.snapshots = dump(kSnapshots);
+    rec.persistence = dump(kContactsFile);
+    ParticlePipeline pl{.c = c,
+                        .p = p,
+                        .box = s.box,
+                        .servo = s,
+                        .time_step = s.time_step,
+                        .sample_every = s.sample_every,
+                        .stations = s.stations,
+                        .blocks = s.blocks,
+                        .grains = init.particles.size(),
+                        .simulated_s = static_cast<double>(s.steps) * s.time_step,
+                        .plate_start = s.plate_start,
+                        .annulus = s.ring ? &s.annulus : nullptr,
+                        .contact_box = s.contact_box,
+                        .persistence_every = s.persistence_every,
+                        .bumps_bottom = &s.bumps_bottom,
+                        .bumps_top = &s.bumps_top,
+                        .what = fmt::format("case {} point {} ({})", c.name, p.id, prov)};
+    r.out = run_particle_pipeline(pl, rec, dir);
+    r.out.run["flow_regime"]["persistence_extra_steps"] = s.persistence_run_steps();
+    for (const char* f : {kSnapshots, kContactsFile}) fs::remove(dir / f);  // large; the deck regenerates them
     if (s.vtk) write_pvd(dir, s.time_step);
-
-    r.out = reduce_particles({.c = c,
-                              .speed = p.speed,
-                              .box = s.box,
-                              .forces = walls,
-                              .stresses = stresses,
-                              .cg = cg,
-                              .window = window,
-                              .plate = plate ? &*plate : nullptr,
-                              .servo = s,
-                              .blocks = s.blocks,
-                              .grains = init.particles.size(),
-                              .simulated_s = static_cast<double>(s.steps) * s.time_step,
-                              .section = &xs,
-                              .plate_start = s.plate_start});
-    write_file_atomic(dir / kSectionFile,
-                      profile_csv(r.out.section,
-                                  {fmt::format("case {} point {} ({})", c.name, p.id, prov),
-                                   "solid fraction and u/U over the cross-section: y across the gap (0 = moving floor), "
-                                   "z across the width (z/W = -1/2: the outer wall, where the centripetal force pushes), "
-                                   "averaged along the flow and over the snapshots of the steady window"}));
-    write_file_atomic(dir / kWidthProfileFile, width_profile_csv(xs, r.out, p.speed, s,
-                                                                 fmt::format("case {} point {} ({})", c.name, p.id, prov)));
-    if (s.ring) {  // the torques about the axis: nothing else turns the grains
-        const BlockEstimate e = ring_torque_balance(*ring_loads, window.wall_start, s.blocks);
-        r.out.outputs["torque_balance"] = Scalar{e.mean, e.stderr_, ""};
-        r.out.run["geometry"] = "annulus";
-    }
-    r.out.run["flow_regime"] = flow_regime_record(c, p, s, r.out, cg, z, dir / kContactsFile);
-    fs::remove(dir / kContactsFile);
     write_final_state(c, p, s, dir, prov);
     return r;
 }
 
-// run.dt_refinement: the point rerun at half the time step in <dir>/dt_half (its profile.csv and
-// engine files stay there), compared with the main run.
-nlohmann::json refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
-                         const fs::path& dir, const std::string& prov, const DemOutputs& main) {
-    const Settings h = half_step(s);
-    const fs::path sub = dir / kRefineDir;
-    fs::create_directories(sub);
-    const OneRun r = run_once(c, p, h, init, sub, prov);
-    write_file_atomic(sub / "profile.csv",
-                      profile_csv(r.out.profile, {fmt::format("case {} point {}: the rerun at half the time step ({:g} "
-                                                              "s); the point's result is ../profile.csv",
-                                                              c.name, p.id, h.time_step),
-                                                  prov}));
-    nlohmann::json rec = dt_refinement_record(h.time_step, main.outputs, r.out.outputs);
-    nlohmann::json outputs;
-    for (const auto& [name, v] : r.out.outputs)
-        outputs[name] = v.stderr_ ? nlohmann::json{{"value", v.value}, {"stderr", *v.stderr_}}
-                                  : nlohmann::json{{"value", v.value}};
-    rec["refined_run"] = {{"folder", kRefineDir},
-                          {"steps", h.steps},
-                          {"status", r.out.run.at("status")},
-                          {"status_reason", r.out.run.at("status_reason")},
-                          {"steady_state_start_s", r.out.run.at("steady_state_start_s")},
-                          {"wall_clock_s", r.er.wall_clock_s},
-                          {"flow_regime", r.out.run.at("flow_regime")},
-                          {"outputs", outputs}};
+// The run of the point at half the time step is its answer, checked against the full step
+// ([dem] refine_dt): the full-step run goes into <dir>/dt_full (cold, from the initial grains, the
+// whole `time`); the half-step run into <dir> itself, warm-started from dt_full's final state for
+// refine_time (or, with refine_time = 0, cold from the initial grains for the whole `time`). Every
+// file of the point folder is then the half-step run's, and each output carries dt_error =
+// |value(dt) - value(dt/2)|, the error estimate of a first-order method at dt/2.
+struct Refined {
+    OneRun coarse, fine;
+    Settings h;  // the half-step run's settings
+    bool warm = false;
+};
+
+Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
+                  const fs::path& dir, const std::string& prov) {
+    Refined r;
+    const fs::path full = dir / kCoarseDir;
+    fs::create_directories(full);
+    r.coarse = run_once(c, p, s, init, full, prov);
+    write_file_atomic(full / "profile.csv",
+                      profile_csv(r.coarse.out.profile,
+                                  {fmt::format("case {} point {}: the run at the full time step ({:g} s), the check of "
+                                               "the point's result ../profile.csv (at half the step)",
+                                               c.name, p.id, s.time_step),
+                                   prov}));
+    r.warm = s.refine_time > 0;
+    InitialParticles start = init;
+    r.h = refine_settings(s);
+    if (r.warm) {  // from where the full-step run ended: its grains, spins and plate
+        const ParticleState st = read_particle_state(full / kFinalState);
+        start.particles = st.particles;
+        start.file = full / kFinalState;
+        start.reused = true;
+        if (s.load) r.h.plate_start = st.gap;
+    }
+    r.fine = run_once(c, p, r.h, start, dir, prov);
+    return r;
+}
+
+// run.dt_refinement: the full-step run against the half-step run; dt_error on every output both have.
+nlohmann::json refinement_record(const Refined& r, const Settings& s, std::map<std::string, Scalar>& outputs) {
+    nlohmann::json rec = dt_refinement_record(r.h.time_step, r.coarse.out.outputs, r.fine.out.outputs);
+    for (auto& [name, v] : outputs)
+        if (const auto it = r.coarse.out.outputs.find(name); it != r.coarse.out.outputs.end())
+            v.dt_error = std::abs(it->second.value - v.value);
+    nlohmann::json coarse;
+    for (const auto& [name, v] : r.coarse.out.outputs)
+        coarse[name] = v.stderr_ ? nlohmann::json{{"value", v.value}, {"stderr", *v.stderr_}}
+                                 : nlohmann::json{{"value", v.value}};
+    rec["reported"] = "the run at half the time step (this folder); dt_error = |value(dt) - value(dt/2)|";
+    rec["start"] = r.warm ? fmt::format("warm: from the full-step run's final state, {:g} s at dt/2", r.h.time)
+                          : std::string("cold: from the initial grains, the whole run at dt/2");
+    rec["full_step_run"] = {{"folder", kCoarseDir},
+                            {"time_step_s", s.time_step},
+                            {"steps", s.steps},
+                            {"status", r.coarse.out.run.at("status")},
+                            {"status_reason", r.coarse.out.run.at("status_reason")},
+                            {"steady_state_start_s", r.coarse.out.run.at("steady_state_start_s")},
+                            {"wall_clock_s", r.coarse.er.wall_clock_s},
+                            {"flow_regime", r.coarse.out.run.at("flow_regime")},
+                            {"outputs", coarse}};
     return rec;
 }
 
@@ -201,17 +193,22 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     const Settings s = resolve(c, p, o);
     p.solid_fraction = s.insert_fill;
 
-    const InsertionOptions ins = insertion(s);
+    const InsertionOptions ins = insertion(c, s);
     const InitialParticles init = initial_particles(c, p, results_root(c, o), ins, s.box.width, s.insert_fill_key);
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
-    const OneRun main = run_once(c, p, s, init, dir, prov);
-    const DemOutputs& out = main.out;
-    const EngineRun& er = main.er;
-    fs::remove_all(dir / kRefineDir);  // a rerun of an older result is not this one's
-    nlohmann::json dt_record;
-    if (s.refine_dt) dt_record = refine_dt(c, p, s, init, dir, prov, out);
+    fs::remove_all(dir / kCoarseDir);  // a check of an older result is not this one's
+    fs::remove_all(dir / "dt_half");   // where earlier versions put the half-step rerun
+    std::optional<Refined> refined;
+    OneRun single;
+    if (s.refine_dt)
+        refined = refine_dt(c, p, s, init, dir, prov);
+    else
+        single = run_once(c, p, s, init, dir, prov);
+    const OneRun& reported = refined ? refined->fine : single;
+    const Settings& rs = refined ? refined->h : s;
+    const DemOutputs& out = reported.out;
 
     PointResult r;
     r.profile = out.profile;
@@ -219,36 +216,48 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     r.summary.outputs = out.outputs;
     r.summary.provenance.settings["resolved"] = s.to_json();
     const double atoms = static_cast<double>(init.particles.size());
-    const double loop = er.loop_time_s > 0 ? er.loop_time_s : er.wall_clock_s;
-    const auto engine_steps = s.steps + s.persistence_run_steps();  // the loop time covers both runs
+    // the loop time covers the run and its persistence snapshots, of both runs when checked
+    double loop = 0, wall = 0, engine_steps = 0;
+    auto count = [&](const OneRun& run, const Settings& x) {
+        loop += run.er.loop_time_s > 0 ? run.er.loop_time_s : run.er.wall_clock_s;
+        wall += run.er.wall_clock_s;
+        engine_steps += static_cast<double>(x.steps + x.persistence_run_steps());
+    };
+    if (refined) count(refined->coarse, s);
+    count(reported, rs);
     r.summary.run = out.run;
     r.summary.run["model"] = s.model == Model::Impulse ? "impulse" : "hertz";
     if (s.model == Model::Impulse) r.summary.run["contact_solve"] = s.iterated ? "iterated" : "single_pass";
     r.summary.run["atoms"] = init.particles.size();
-    r.summary.run["steps"] = s.steps;
-    r.summary.run["time_step_s"] = s.time_step;
-    r.summary.run["simulated_time_s"] = static_cast<double>(s.steps) * s.time_step;
-    r.summary.run["wall_clock_s"] = er.wall_clock_s;
-    r.summary.run["loop_time_s"] = er.loop_time_s;
-    r.summary.run["atom_steps_per_s"] = atoms * static_cast<double>(engine_steps) / loop;
-    r.summary.run["ranks"] = er.ranks;
+    r.summary.run["steps"] = rs.steps;
+    r.summary.run["time_step_s"] = rs.time_step;
+    r.summary.run["simulated_time_s"] = static_cast<double>(rs.steps) * rs.time_step;
+    r.summary.run["wall_clock_s"] = wall;
+    r.summary.run["loop_time_s"] = loop;
+    r.summary.run["atom_steps_per_s"] = atoms * engine_steps / loop;
+    r.summary.run["ranks"] = reported.er.ranks;
     r.summary.run["initial_configuration"] = init.file.string();
     r.summary.run["initial_configuration_reused"] = init.reused;
     const auto& fr = out.run.at("flow_regime");
     r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s] regime: {}{}", out.line, init.particles.size(),
-                         s.steps, r.summary.run["atom_steps_per_s"].get<double>(),
+                         rs.steps, r.summary.run["atom_steps_per_s"].get<double>(),
                          fr.at("regime").is_string() ? fr.at("regime").get<std::string>() : std::string("unknown"),
                          fr.at("enduring_contacts").get<bool>() ? ", enduring contacts" : "");
-    if (s.refine_dt) {
-        r.summary.run["dt_refinement"] = dt_record;
-        const std::string why = dt_unconverged_reason(dt_record);
-        const RegimeStatus status = read_regime(r.summary.run).status;
-        if (!why.empty() && status == RegimeStatus::DtUnconverged)
-            set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
-        if (status == RegimeStatus::Transient)
-            r.line += " dt/2: no verdict (the run is not steady)";  // its stresses are not an answer to compare
-        else
-            r.line += why.empty() ? " dt/2: converged" : " dt/2: NOT CONVERGED (" + why + ")";
+    if (refined) {
+        const nlohmann::json rec = refinement_record(*refined, s, r.summary.outputs);
+        r.summary.run["dt_refinement"] = rec;
+        const bool coarse_steady = read_regime(refined->coarse.out.run).steady();
+        if (read_regime(r.summary.run).status == RegimeStatus::Transient || !coarse_steady) {
+            if (!coarse_steady && read_regime(r.summary.run).steady())
+                set_regime(r.summary.run, RegimeStatus::Transient,
+                           "the full-step run the half-step run checks against did not reach a steady state: "
+                           "run longer (--full)");
+            r.line += " [dt/2] no verdict on dt (a run is not steady)";  // its stresses are no answer to compare
+        } else {
+            const std::string why = dt_unconverged_reason(rec);
+            if (!why.empty()) set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
+            r.line += why.empty() ? " [dt/2] converged in dt" : " [dt/2] NOT CONVERGED in dt (" + why + ")";
+        }
     }
     return r;
 }
@@ -260,7 +269,7 @@ void check(const Case& c, const RunOptions& o) {
         OperatingPoint p = p0;
         const Settings s = resolve(c, p, v);
         p.solid_fraction = s.insert_fill;  // as solve() inserts it
-        check_initial_particles(c, p, s.box.width, s.insert_fill_key, insertion(s));  // as solve() inserts
+        check_initial_particles(c, p, s.box.width, s.insert_fill_key, insertion(c, s));  // as solve() inserts
     });
 }
 

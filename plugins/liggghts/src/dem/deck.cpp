@@ -15,17 +15,34 @@ DataBounds slice_bounds(const ParticleBox& box, double top) {
     return {0, box.length, 0, top, -0.5 * box.width, 0.5 * box.width};
 }
 
-std::string data_file(const ParticleSet& p, const DataBounds& b, double density, const std::string& title) {
-    std::string out = fmt::format("LIGGGHTS data file: {}\n\n{} atoms\n4 atom types\n\n", one_line(title), p.size());
+DataBounds bump_bounds(DataBounds b, const Settings& s) {
+    if (s.bumps_bottom) b.ylo = -0.5 * s.bumps_bottom->diameter;
+    if (s.bumps_top) b.yhi += 0.5 * s.bumps_top->diameter;
+    return b;
+}
+
+std::string data_file(const ParticleSet& p, const DataBounds& b, double density, const std::string& title,
+                      const std::vector<BumpAtoms>& bumps) {
+    std::size_t atoms = p.size();
+    for (const auto& w : bumps) atoms += w.layer.size();
+    std::string out = fmt::format("LIGGGHTS data file: {}\n\n{} atoms\n4 atom types\n\n", one_line(title), atoms);
     out += fmt::format("{} {} xlo xhi\n{} {} ylo yhi\n{} {} zlo zhi\n\nAtoms\n\n", b.xlo, b.xhi, b.ylo, b.yhi, b.zlo,
                        b.zhi);
     for (std::size_t i = 0; i < p.size(); ++i)
         out += fmt::format("{} 1 {} {} {} {} {}\n", i + 1, 2.0 * p.radius[i], density, p.x[i],
                            p.y[i], p.z[i]);
+    std::size_t id = p.size();
+    for (const auto& w : bumps)
+        for (std::size_t k = 0; k < w.layer.size(); ++k)
+            out += fmt::format("{} {} {} {} {} {} {}\n", ++id, static_cast<int>(w.type), w.layer.diameter,
+                               kBumpDensityFactor * density, w.layer.x[k], w.y, w.layer.z[k]);
     out += "\nVelocities\n\n";
     for (std::size_t i = 0; i < p.size(); ++i)
         out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, p.vx[i], p.vy[i], p.vz[i], p.has_spin() ? p.wx[i] : 0.0,
                            p.has_spin() ? p.wy[i] : 0.0, p.has_spin() ? p.wz[i] : 0.0);
+    id = p.size();
+    for (const auto& w : bumps)
+        for (std::size_t k = 0; k < w.layer.size(); ++k) out += fmt::format("{} {} 0 0 0 0 0\n", ++id, w.vx);
     return out;
 }
 
@@ -43,7 +60,7 @@ std::string pair_matrix(double pp, double bottom, double top, double side) {
 // Contact persistence (granlub's regime diagnostics, flow_regime.h): after the run, with the
 // result outputs closed, a few snapshots a small shear strain apart. Costs persistence_run_steps().
 void output_block(const Settings& s, const DeckLine& line) {
-    line(fmt::format("dump cg all custom {} {} {}", s.snapshot_every, kSnapshots, kSnapshotColumns));
+    line(fmt::format("dump cg {} custom {} {} {}", s.grains_group(), s.snapshot_every, kSnapshots, kSnapshotColumns));
     line("dump_modify cg sort id");
     if (s.vtk) {
         line(fmt::format("# ParaView: one VTK XML file per snapshot; granlub writes the collection {}", kPvdFile));
@@ -79,7 +96,8 @@ void persistence_block(const Settings& s, const DeckLine& line) {
     if (s.vtk) line("undump vtk");
     line("unfix walls");
     if (s.load) line("unfix plate");
-    line(fmt::format("dump contacts all custom {} {} {}", s.persistence_every, kContactsFile, kSnapshotColumns));
+    line(fmt::format("dump contacts {} custom {} {} {}", s.grains_group(), s.persistence_every, kContactsFile,
+                     kSnapshotColumns));
     line("dump_modify contacts sort id");
     line(fmt::format("run             {}", s.persistence_run_steps()));
 }
@@ -90,7 +108,7 @@ void final_state_block(const Settings& s, const DeckLine& line) {
     line("");
     line(fmt::format("# the final state (17 digits; the starting state of a warm start) in {}", kFinalDump));
     line("undump contacts");
-    line(fmt::format("dump final all custom 1 {} {}", kFinalDump, kFinalColumns));
+    line(fmt::format("dump final {} custom 1 {} {}", s.grains_group(), kFinalDump, kFinalColumns));
     std::string format = "%d";
     for (int k = 0; k < 10; ++k) format += " %.17g";
     line(fmt::format("dump_modify final sort id format \"{}\"", format));
@@ -156,6 +174,52 @@ void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, co
     line(fmt::format("timestep        {}", s.time_step));
 }
 
+namespace {
+
+// Rough walls (core wall_bumps.h): the bumps are atoms of the wall's type (2 floor, 3 top) that no
+// fix integrates; the floor's move along the flow with it, the top's jump with the plate (servo
+// loop). Bumps never meet each other or the planes, which act on the grains only.
+void bump_block(const Settings& s, const DeckLine& line, double U) {
+    line("# rough walls: a monolayer of bumps (atoms of the wall's type, not integrated, heavy: a wall to");
+    line("# the grains); their centres on the wall's plane. Planes, body forces and integration: grains only");
+    line("group grains type 1");
+    if (s.bumps_bottom) {
+        line(fmt::format("group bbump type 2   # {} bumps of {} m, {} m apart along the flow, R = {:.4g}",
+                         s.bumps_bottom->size(), s.bumps_bottom->diameter, s.bumps_bottom->spacing,
+                         s.bumps_bottom->roughness));
+        line(fmt::format("fix bmove bbump move linear {} 0 0", U));
+    }
+    if (s.bumps_top)
+        line(fmt::format("group tbump type 3   # {} bumps of {} m, {} m apart along the flow, R = {:.4g}",
+                         s.bumps_top->size(), s.bumps_top->diameter, s.bumps_top->spacing, s.bumps_top->roughness));
+    for (const char* pair : {"2 2", "2 3", "3 3"}) line(fmt::format("neigh_modify exclude type {}", pair));
+    line("");
+}
+
+// The wall file's columns with bumps: each wall's force on the grains is its plane's plus its
+// bumps', and a bump's force on the grains is minus the grains' force on it (compute reduce of f).
+std::string bump_force_columns(const Settings& s, const DeckLine& line) {
+    std::string cols;
+    const struct {
+        const char* wall;
+        const char* group;
+        int first;  // c_fwall index of the plane's fx
+    } walls[] = {{"b", s.bumps_bottom ? "bbump" : nullptr, 1}, {"t", s.bumps_top ? "tbump" : nullptr, 4}};
+    for (const auto& w : walls) {
+        if (w.group) line(fmt::format("compute fbump{0} {1} reduce sum fx fy fz", w.wall, w.group));
+        for (int k = 0; k < 3; ++k) {
+            const char axis = "xyz"[k];
+            line(w.group ? fmt::format("variable w{0}{1} equal c_fwall[{2}]-c_fbump{0}[{3}]", w.wall, axis, w.first + k,
+                                       k + 1)
+                         : fmt::format("variable w{0}{1} equal c_fwall[{2}]", w.wall, axis, w.first + k));
+            cols += fmt::format("{}v_w{}{}", cols.empty() ? "" : " ", w.wall, axis);
+        }
+    }
+    return cols;
+}
+
+}  // namespace
+
 std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
                  const std::string& provenance) {
     const bool impulse = s.model == Model::Impulse;
@@ -172,7 +236,9 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(fmt::format("# Shear cell: x along the flow (periodic, L = {:g} m), y across the gap (H = {:g} m):", box.length,
                      box.gap));
     line(fmt::format("# bottom wall y = 0 sliding at U = {:g} m/s, top wall {}, z across the width{}.", U,
-                     s.load ? fmt::format("a plate servo-controlled to {:g} Pa (starts at y = H)", s.target_stress)
+                     s.load ? fmt::format("a plate servo-controlled to {:g} Pa (starts at y = {})", s.target_stress,
+                                          s.plate_start == box.gap ? std::string("H")
+                                                                   : fmt::format("{:g} m", s.plate_start))
                             : std::string("y = H fixed"),
                      box.periodic_z ? fmt::format(" (periodic, {:g} m)", box.width)
                                     : fmt::format(" (side walls at +-{:g} m moving with the bottom)", 0.5 * box.width)));
@@ -185,33 +251,36 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("");
     contact_block(c, p, s, line);
     line("");
+    const std::string g = s.grains_group();
+    if (s.bumps()) bump_block(s, line, U);
     line("# walls: primitive planes; `shear x U` moves the bottom and side walls along the flow;");
     line("# store_force gives the force of each wall on each grain (f_force_<id>), summed every step");
-    line(fmt::format("fix wbot all wall/gran {} primitive type 2 yplane 0.0 shear x {} store_force yes{}", model, U,
+    line(fmt::format("fix wbot {} wall/gran {} primitive type 2 yplane 0.0 shear x {} store_force yes{}", g, model, U,
                      settings));
     const std::string top_wall =
-        fmt::format("fix wtop all wall/gran {} primitive type 3 yplane {} store_force yes{}", model,
+        fmt::format("fix wtop {} wall/gran {} primitive type 3 yplane {} store_force yes{}", g, model,
                     s.load ? std::string("${hplate}") : fmt::format("{}", box.gap), settings);
     if (s.load) {
         line(fmt::format("# top wall: a plate at y = hplate, moved by the servo loop at the end (box top {} m)",
                          s.gap_max));
-        line(fmt::format("variable hplate equal {}", box.gap));
+        line(fmt::format("variable hplate equal {}", s.plate_start));
     }
     line(top_wall);
     if (!box.periodic_z) {
-        line(fmt::format("fix wsid1 all wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}",
+        line(fmt::format("fix wsid1 {} wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}", g,
                          model, -0.5 * box.width, U, settings));
-        line(fmt::format("fix wsid2 all wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}",
+        line(fmt::format("fix wsid2 {} wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}", g,
                          model, 0.5 * box.width, U, settings));
     }
     line("");
     line("# body forces: gravity along -y; centripetal acceleration u_x^2 / (R - z) toward the outer wall (-z),");
     line("# with R the annulus mean radius (Sawyer & Tichy 2001, particle simulation)");
-    if (c.gravity > 0) line(fmt::format("fix grav all gravity {} vector 0 -1 0", c.gravity));
+    if (c.gravity > 0) line(fmt::format("fix grav {} gravity {} vector 0 -1 0", g, c.gravity));
     // a compiled fix (plugins/liggghts/doc/fix_centripetal_annulus.txt): the same force, bit for bit, as the
     // atom-style variable + fix addforce it replaced, which took about 7 % of the loop (plugins/liggghts/README.md)
-    if (c.cell.annulus_radius > 0) line(fmt::format("fix cent all centripetal/annulus {}", c.cell.annulus_radius));
-    line("fix integr all nve/sphere");
+    if (c.cell.annulus_radius > 0)
+        line(fmt::format("fix cent {} centripetal/annulus {}", g, c.cell.annulus_radius));
+    line(fmt::format("fix integr {} nve/sphere", g));
     line("");
     line("# wall forces (on the grains), averaged over blocks of sample_every steps, sampled every step");
     line("# (impulse forces last one step). Columns: step, then fx fy fz of bottom, top[, fx fx fy fy of the side walls].");
@@ -220,6 +289,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     // vector: fx fy fz of wbot, wtop[, wsid1, wsid2]
     line(fmt::format("compute fwall all wall/gran/force wbot wtop{}", box.periodic_z ? "" : " wsid1 wsid2"));
     std::string cols = "c_fwall[1] c_fwall[2] c_fwall[3] c_fwall[4] c_fwall[5] c_fwall[6]";
+    if (s.bumps()) cols = bump_force_columns(s, line);
     // x: the side walls' drag; y: what they carry of the grains' weight (the vertical balance)
     if (!box.periodic_z) cols += " c_fwall[7] c_fwall[10] c_fwall[8] c_fwall[11]";
     line(fmt::format("fix walls all ave/time 1 {0} {0} {1} file {2}", s.sample_every, cols, kWallFile));
@@ -248,9 +318,13 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
         line(fmt::format("# (soft contacts: the gain is capped so that a unit error moves the plate by one grain-plate "
                          "overlap at the load, {} m: a jump must not hammer the loaded contacts)", s.plate_overlap));
     line(fmt::format("# hplate kept in [{}, {}] m; plate position per update in {}", s.gap_min, s.gap_max, kPlateFile));
-    servo_rule_block(s, line, "c_fwall[5]", "-", A, d_g);
+    servo_rule_block(s, line, s.bumps_top ? "v_wty" : "c_fwall[5]", "-", A, d_g);
     line("label servo");
     line(fmt::format("run             {} post no", s.servo_every));
+    if (s.bumps_top) {  // the top's bumps jump with the plate
+        line("variable dh equal ${hnew}-${hplate}");
+        line("displace_atoms tbump move 0 ${dh} 0 units box");
+    }
     line("variable hplate equal ${hnew}");
     line("unfix wtop");
     line(top_wall);

@@ -3,6 +3,7 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "granlub/case.h"
 #include "granlub/particles.h"
@@ -17,7 +18,7 @@ inline constexpr const char* kWallFile = "walls.txt";       // fix ave/time: wal
 inline constexpr const char* kSnapshots = "snapshots.txt";  // dump custom: kSnapshotColumns
 inline constexpr const char* kContactsFile = "contacts.txt";  // the persistence snapshots after the run
 inline constexpr const char* kSnapshotColumns = "id x y z vx vy vz radius";  // both dumps, sorted by id
-inline constexpr const char* kRefineDir = "dt_half";  // [dem] refine_dt: the rerun at time_step / 2
+inline constexpr const char* kCoarseDir = "dt_full";  // [dem] refine_dt: the full-step run the point is checked against
 inline constexpr const char* kLog = "log.liggghts";
 inline constexpr const char* kPlateFile = "plate.txt";      // control = load: plate position per servo update
 inline constexpr const char* kPvdFile = "post/particles.pvd";  // --vtk: ParaView collection
@@ -41,9 +42,25 @@ struct DataBounds {
 // The slice's: [0, L) x [0, top] x [-W/2, W/2].
 DataBounds slice_bounds(const ParticleBox& box, double top);
 
+// A rough wall's bumps in the data file (core wall_bumps.h): atoms after the grains, of the
+// wall's type, at height y in the wall's plane, moving at vx. Their density is the grains' times
+// kBumpDensityFactor: LIGGGHTS' pair styles take m_eff = m_i m_j / (m_i + m_j), the impulse model
+// moves both atoms of an overlap in inverse proportion to their masses and counts the impulses so
+// far through f / m; a bump this heavy is a wall to all of them (m_eff within 1e-6 of the grain's).
+inline constexpr double kBumpDensityFactor = 1e6;
+struct BumpAtoms {
+    const BumpLayer& layer;
+    AtomType type;
+    double y;
+    double vx;
+};
+// The data file's box below the floor and above the box top: room for the bumps' halves.
+DataBounds bump_bounds(DataBounds b, const Settings& s);
+
 // LIGGGHTS data file (atom_style granular: id type diameter density x y z; Velocities with the
-// spins when p has them).
-std::string data_file(const ParticleSet& p, const DataBounds& b, double density, const std::string& title);
+// spins when p has them), the grains first, then the bumps.
+std::string data_file(const ParticleSet& p, const DataBounds& b, double density, const std::string& title,
+                      const std::vector<BumpAtoms>& bumps = {});
 
 // The slice's deck: geometry, materials, contact model, walls, body forces, sampling, run.
 std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,

@@ -29,13 +29,17 @@ SectionSpec section() {
     s.integer("solve_iterations", 200, Range::closed(1, 100000),
               "contact_solve = 'iterated': at most this many sweeps per step (velocities, and positions, each)");
     s.boolean("refine_dt", false,
-              "also rerun every point at half the time step (same seed and initial grains) into the point's "
-              "folder dt_half/; run.dt_refinement compares the two (the result stays the full-step run)");
+              "check every point's time step: a run at the full step (folder dt_full/), then the point's answer at "
+              "half the step; run.dt_refinement compares them, each output carries dt_error = |value(dt) - "
+              "value(dt/2)|, and a point that moves more than the rule allows is dt-unconverged");
+    s.real("refine_time", 0.1, Range::non_negative(), "s",
+           "refine_dt: simulated time of the half-step run, warm-started from the full-step run's final state "
+           "(grains, spins, plate); 0 = a cold rerun of the whole `time` from the initial grains");
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");
     s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
-           "impulse model: diameters travelled per step at the larger of U, sqrt(2 g H) and, under load "
+           "impulse model: diameters of the smallest grain travelled per step at the larger of U, sqrt(2 g H) and, under load "
            "control, sqrt(12 P / (pi rho)) (the load's push on one grain over one diameter)");
     s.real("hertz_step_fraction", kHertzStepFraction, Range::open_closed(0, kHertzMaxStepFraction), "",
            "hertz model: time step as a fraction of the Rayleigh time");

@@ -69,14 +69,16 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const double given = s.real("time_step");
     const double v_ref = impulse_reference_speed(c, p);
     if (st.model == Model::Impulse) {
-        // a grain at the reference speed travels step_fraction diameters per step
-        st.time_step = given > 0 ? given : s.real("step_fraction") * c.grains.diameter / v_ref;
-        const double frac = st.time_step * v_ref / c.grains.diameter;
+        // a grain at the reference speed travels step_fraction of the smallest grain's diameter per step
+        const double d_min = c.grains.sizes().min();
+        st.time_step = given > 0 ? given : s.real("step_fraction") * d_min / v_ref;
+        const double frac = st.time_step * v_ref / d_min;
         if (frac > kMaxStepFraction)
             s.fail(given > 0 ? "time_step" : "step_fraction",
-                   fmt::format("a grain at {:g} m/s moves {:.3g} diameters per step of {:g} s; the impulse model finds "
-                               "contacts only by overlap, so at most {:g} diameters per step are allowed",
-                               v_ref, frac, st.time_step, kMaxStepFraction));
+                   fmt::format("a grain at {:g} m/s moves {:.3g} diameters of the smallest grain ({:g} m) per step of "
+                               "{:g} s; the impulse model finds contacts only by overlap, so at most {:g} diameters "
+                               "per step are allowed",
+                               v_ref, frac, d_min, st.time_step, kMaxStepFraction));
     } else {
         const double tr = c.grains.rayleigh_time();
         st.time_step = given > 0 ? given : s.real("hertz_step_fraction") * tr;
@@ -104,23 +106,27 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
                fmt::format("{:g} s is {} steps of {:g} s: fewer than 20 wall-stress samples of {} steps "
                            "(sample_every); run longer",
                            st.time, st.steps, st.time_step, st.sample_every));
-    const auto snaps = s.integer("snapshots");
-    st.snapshot_every = std::max<std::int64_t>(1, st.steps / snaps);
+    st.snapshots = s.integer("snapshots");
+    st.snapshot_every = std::max<std::int64_t>(1, st.steps / st.snapshots);
     st.stations = static_cast<std::size_t>(s.integer("stations"));
     st.blocks = static_cast<std::size_t>(s.integer("blocks"));
     st.skin = s.real("skin") * c.grains.diameter;
     st.refine_dt = s.boolean("refine_dt");
-    st.plate_start = c.cell.gap;
+    st.refine_time = s.real("refine_time");
+    if (st.refine_dt) try {  // a refine_time too short fails now, not after the full-step run
+            (void)refine_settings(st);
+        } catch (const CaseError& e) {
+            s.fail("refine_time", e.what());
+        }
     if (st.ring) {
         st.annulus = annulus(c);
         const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
         st.ring_facets = static_cast<std::size_t>(std::max(64.0, std::ceil(2.0 * std::numbers::pi * ro / chord)));
         st.wall_sag = ro * (1.0 - std::cos(std::numbers::pi / static_cast<double>(st.ring_facets)));
-        // under load the grains fill the ring up to the box top, where the plate starts: the
-        // ring's insertion lattice holds fewer grains per volume than the slice's (annulus.h)
-        if (st.load) st.plate_start = st.gap_max;
         st.contact_box = ring_contact_box(st.annulus, st.box_top(), c.grains.diameter);
     }
+    st.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", st.box);
+    st.bumps_top = wall_bumps(c, p, p.top, "top", st.box);
     // a shear strain of kPersistenceStrain at U/H, at most a hundredth of the run
     const double shear_rate = p.speed / c.cell.gap;
     const double every = shear_rate > 0 ? std::round(kPersistenceStrain / (shear_rate * st.time_step)) : 1.0;
@@ -128,6 +134,24 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
                                                     std::max<std::int64_t>(1, st.steps / 100));
 
     return st;
+}
+
+Settings refine_settings(const Settings& s) {
+    Settings h = half_step(s);
+    if (s.refine_time <= 0) return h;
+    h.time = s.refine_time;
+    const std::int64_t window = h.load ? h.servo_every : h.sample_every;
+    h.steps = static_cast<std::int64_t>(std::ceil(h.time / h.time_step - 1e-9));
+    h.steps = (h.steps + window - 1) / window * window;
+    const auto fail = [&](const std::string& why) {
+        throw CaseError(fmt::format("{} steps of {:g} s {}; run the half-step check longer", h.steps, h.time_step,
+                                    why));
+    };
+    if (h.steps < 20 * h.sample_every) fail(fmt::format("give fewer than 20 wall-stress samples of {} steps", h.sample_every));
+    if (h.load && h.steps < kMinServoUpdates * h.servo_every)
+        fail(fmt::format("give fewer than {} plate updates of {} steps", kMinServoUpdates, h.servo_every));
+    h.snapshot_every = std::max<std::int64_t>(1, h.steps / s.snapshots);
+    return h;
 }
 
 Settings half_step(const Settings& s) {
@@ -160,6 +184,7 @@ nlohmann::json Settings::to_json() const {
                             {"box_m", {box.length, box.gap, box.width}},
                             {"periodic_z", box.periodic_z},
                             {"refine_dt", refine_dt},
+                            {"refine_time_s", refine_time},
                             {"geometry", ring ? "annulus" : "slice"},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
@@ -169,8 +194,7 @@ nlohmann::json Settings::to_json() const {
     if (ring)
         j.update(nlohmann::json{{"annulus_radius_m", annulus.R},
                                 {"ring_facets_per_circle", ring_facets},
-                                {"ring_wall_sag_m", wall_sag},
-                                {"plate_start_m", plate_start}});
+                                {"ring_wall_sag_m", wall_sag}});
     return j;
 }
 

@@ -2,6 +2,7 @@
 // time step derived from the case and checked.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "granlub/case.h"
 #include "granlub/particles.h"
 #include "granlub/servo.h"
+#include "granlub/wall_bumps.h"
 #include "granlub/sweep.h"
 
 namespace granlub::dem {
@@ -37,7 +39,9 @@ struct Settings : ServoSettings {
     std::uint64_t seed = 1;
     double velocity_noise = 0;
     bool vtk = false;
-    bool refine_dt = false;       // also rerun the point at time_step / 2 (run.dt_refinement)
+    bool refine_dt = false;       // the point's answer at time_step / 2, checked against time_step (run.dt_refinement)
+    double refine_time = 0;       // s, the half-step run warm-started from the full-step run's end; 0: cold, `time`
+    std::int64_t snapshots = 0;   // particle snapshots per run ([dem] snapshots)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
     std::int64_t persistence_every = 1;
@@ -62,12 +66,17 @@ struct Settings : ServoSettings {
     Annulus annulus;
     std::size_t ring_facets = 0;  // facets per circle of the ring's meshes
     double wall_sag = 0;          // m: how far the outer wall's facets lie inside its circle at most
-    double plate_start = 0;       // m: the top's starting height (H; the ring under load: gap_max)
     ParticleBox contact_box;      // what core's contact search (contacts.h) is given for the grains
     double plate_overlap = 0;     // m, Hertz grain-plate overlap under the load's share of one grain
     double plate_gain = 0;        // the servo gain the deck uses, diameters per unit relative error
 
     double box_top() const { return load ? gap_max : box.gap; }
+    // rough walls ([walls] surface = "bumps", core wall_bumps.h): atoms of the wall's type that the
+    // deck does not integrate; the floor's move with it, the top's with the plate
+    std::optional<BumpLayer> bumps_bottom, bumps_top;
+    bool bumps() const { return bumps_bottom || bumps_top; }
+    // the group of the integrated grains: "all" without bumps (the deck as it always was)
+    std::string grains_group() const { return bumps() ? "grains" : "all"; }
 
     nlohmann::json to_json() const;
 };
@@ -78,6 +87,11 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o);
 // The same run at half the time step: the same simulated time, blocks, snapshots, servo windows
 // and persistence interval in seconds, twice the steps.
 Settings half_step(const Settings& s);
+
+// The half-step run of refine_dt: half_step(s), and with refine_time > 0 that simulated time (whole
+// servo windows, the same number of snapshots). Throws CaseError (why, without the key: resolve()
+// names it) when it is too short for the blocks or the servo.
+Settings refine_settings(const Settings& s);
 
 // Reference speed of the impulse model's time step: the largest of
 //  - the wall speed U;

@@ -5,7 +5,7 @@
 // Driver outputs read here (all in the point folder):
 //   driver_summary.json  written last by the driver: counts, dt, timings, YADE version
 //   wallforce.csv        per sample_every steps: mean force of the grains on each wall (N)
-//   samples.bin          per snapshot: y, vx, vy, vz of every grain, float64 little-endian,
+//   samples.bin          per snapshot: x, y, z, vx, vy, vz of every grain, float64 little-endian,
 //                        grains in the order of the initial file (deleted once coarse-grained)
 //   plate.csv            control = load: plate position (m) after each servo window; reduced
 //                        to gap.csv and run.load_control as `granlub dem` (granlub/load_control.h)

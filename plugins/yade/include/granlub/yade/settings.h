@@ -4,12 +4,14 @@
 // `snapshots` particle snapshots over the run, granlub/steady_state.h's window, block standard errors).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "granlub/case.h"
 #include "granlub/particles.h"
 #include "granlub/servo.h"
 #include "granlub/sweep.h"
+#include "granlub/wall_bumps.h"
 
 namespace granlub::yade {
 
@@ -42,6 +44,9 @@ struct Settings {
     ServoSettings servo;
     bool weight_plate = false;
     double plate_mass = 1.0;
+    // rough walls ([walls] surface = "bumps", core wall_bumps.h): fixed spheres in the driver, the
+    // floor's moving with it, the top's with the window servo's plate
+    std::optional<BumpLayer> bumps_bottom, bumps_top;
 };
 
 
