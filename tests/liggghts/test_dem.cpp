@@ -232,6 +232,17 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
             BOOST_TEST(std::string(e.what()).find("contact_solve") != std::string::npos, e.what());
         }
     }
+    {  // the iterated solve with rough walls: the fix would move the bump atoms no fix integrates
+        const Case c = parse_case(edit(edit(kCase, "roughness = 0.5\n", "roughness = 0.5\nsurface = \"bumps\"\n"), "\\[dem\\]",
+                                       "[dem]\ncontact_solve = \"iterated\""),
+                                  "tiny.toml", schema());
+        try {
+            dem::resolve(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("expected a CaseError");
+        } catch (const CaseError& e) {
+            BOOST_TEST(std::string(e.what()).find("bumps") != std::string::npos, e.what());
+        }
+    }
     {  // a time step that lets grains tunnel
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ntime_step = 1e-4"), "tiny.toml", schema());
         try {
