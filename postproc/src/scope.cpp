@@ -72,6 +72,22 @@ std::string grains_and_walls(const Case& c, const Run& first, bool particles) {
     return grains + "; " + wall_text(first, true, particles) + "; " + wall_text(first, false, particles);
 }
 
+// Which contact law made a particle solver's numbers (run.model, run.contact_solve), or "". The
+// impulse operator's single pass (Sawyer & Tichy 2001) gives stresses above the soft-sphere
+// reference under enduring contacts; solved to convergence it is the rigid limit of contact
+// dynamics (Moreau 1988, Jean 1999): plugins/liggghts/README.md, "Contacts solved to convergence".
+std::string contact_text(const Run& r) {
+    const std::string model = run_text(r, "model");
+    if (model == "hertz") return "contacts: Hertz–Mindlin springs (soft spheres)";
+    if (model == "viscel") return "contacts: linear visco-elastic springs (soft spheres)";
+    if (model != "impulse") return "";
+    if (run_text(r, "contact_solve") == "iterated")
+        return "contacts: rigid grains, the impulse operator's contacts of each step solved together to convergence "
+               "(contact dynamics)";
+    return "contacts: rigid grains, Sawyer & Tichy's impulse operator, one pass over the contacts per step (its "
+           "wall stresses lie above the converged solve and the soft-sphere reference under enduring contacts)";
+}
+
 }  // namespace
 
 bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }
@@ -126,6 +142,7 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
     else if (particles) {
         s.stresses = "time-averaged wall force / wall area (Pa) over the steady window";
         if (std::string rule = steady_rule(first); !rule.empty()) s.stresses += "; " + rule;
+        if (std::string law = contact_text(first); !law.empty()) s.stresses += "; " + law;
     }
     else if (!iterations.empty())
         s.stresses = "kinetic-theory wall stresses (Pa) of the steady solution";
