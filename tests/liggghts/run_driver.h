@@ -11,6 +11,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace granlub::test {
 
@@ -60,6 +61,26 @@ inline std::string read_text(const std::filesystem::path& file) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
+}
+
+// The command lines of a LIGGGHTS doc page's first [Examples:] block (up to the line ending in ":pre").
+inline std::vector<std::string> example_lines(const std::filesystem::path& page) {
+    std::istringstream in(read_text(page));
+    std::vector<std::string> lines;
+    std::string line;
+    bool inside = false;
+    while (std::getline(in, line)) {
+        if (line == "[Examples:]") {
+            inside = true;
+            continue;
+        }
+        if (!inside || line.empty()) continue;
+        const bool last = line.size() >= 4 && line.compare(line.size() - 4, 4, ":pre") == 0;
+        if (last) line = std::regex_replace(line, std::regex(R"(\s*:pre$)"), "");
+        lines.push_back(line);
+        if (last) break;
+    }
+    return lines;
 }
 
 }  // namespace granlub::test

@@ -177,6 +177,29 @@ BOOST_AUTO_TEST_CASE(two_mpi_ranks_complete) {
     BOOST_TEST(s.value("normal_stress_bottom") > 0.0);
 }
 
+// contact_solve = "iterated": the deck sets `iterate on` on the pair style and every wall and adds
+// the solver fix with the case's tolerance and cap; the same seed gives the same numbers, and it
+// runs on 2 ranks.
+BOOST_AUTO_TEST_CASE(iterated_contact_solve_writes_the_solver_and_runs) {
+    const std::string text = edit(kCase, "\\[dem\\]", "[dem]\ncontact_solve = \"iterated\"\nsolve_tolerance = 1e-5\nsolve_iterations = 300");
+    const Run a = run(text, "iterated_a"), b = run(text, "iterated_b"), two = run(text, "iterated_np2", 2);
+    BOOST_TEST_REQUIRE(a.code == 0);
+    BOOST_TEST_REQUIRE(b.code == 0);
+    BOOST_TEST_REQUIRE(two.code == 0);
+    const std::string deck = test::read_text(a.dir / "in.granlub");
+    BOOST_TEST(deck.find("fix solve all impulse/solve tolerance 1e-05 iterations 300\n") != std::string::npos);
+    // pair style, bottom, top and the two side walls
+    const std::regex iterate_on(" iterate on\n");
+    BOOST_TEST(std::distance(std::sregex_iterator(deck.begin(), deck.end(), iterate_on), std::sregex_iterator()) == 5);
+    const Summary sa = read_summary(a.dir / "summary.json"), sb = read_summary(b.dir / "summary.json");
+    BOOST_TEST(sa.run.at("contact_solve").get<std::string>() == "iterated");
+    BOOST_TEST(sa.provenance.settings.at("resolved").at("solve_tolerance").get<double>() == 1e-5);
+    for (const char* name : kStandardOutputs) BOOST_TEST(sa.value(name) == sb.value(name), name);
+    const Summary s2 = read_summary(two.dir / "summary.json");
+    BOOST_TEST(s2.run.at("ranks").get<int>() == 2);
+    BOOST_TEST(s2.value("normal_stress_bottom") > 0.0);
+}
+
 BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
     try {  // unknown model name
         parse_case(edit(kCase, "\\[dem\\]", "[dem]\nmodel = \"hooke\""), "tiny.toml", schema());
@@ -208,6 +231,37 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
         BOOST_CHECK_THROW(dem::check(c, RunOptions{}), CaseError);
         BOOST_CHECK_THROW(run(dense, "dense"), CaseError);
         BOOST_TEST(!fs::exists(result_dir(scratch("dense"), "dem", c.points.front().id) / "summary.json"));
+    }
+    for (const char* bad : {"solve_tolerance = 0.0", "solve_tolerance = 0.6", "solve_iterations = 0",
+                            "contact_solve = \"twice\""}) {  // the solver's settings out of range
+        try {
+            parse_case(edit(kCase, "\\[dem\\]", std::string("[dem]\n") + bad), "tiny.toml", schema());
+            BOOST_FAIL("expected a CaseError for " << bad);
+        } catch (const CaseError& e) {
+            const std::string key = std::string(bad).substr(0, std::string(bad).find(' '));
+            BOOST_TEST(std::string(e.what()).find(key) != std::string::npos, e.what());
+        }
+    }
+    {  // the iterated solve with the Hertz model: nothing to solve
+        const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\nmodel = \"hertz\"\ncontact_solve = \"iterated\""),
+                                  "tiny.toml", schema());
+        try {
+            dem::resolve(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("expected a CaseError");
+        } catch (const CaseError& e) {
+            BOOST_TEST(std::string(e.what()).find("contact_solve") != std::string::npos, e.what());
+        }
+    }
+    {  // the iterated solve with rough walls: the fix would move the bump atoms no fix integrates
+        const Case c = parse_case(edit(edit(kCase, "roughness = 0.5\n", "roughness = 0.5\nsurface = \"bumps\"\n"), "\\[dem\\]",
+                                       "[dem]\ncontact_solve = \"iterated\""),
+                                  "tiny.toml", schema());
+        try {
+            dem::resolve(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("expected a CaseError");
+        } catch (const CaseError& e) {
+            BOOST_TEST(std::string(e.what()).find("bumps") != std::string::npos, e.what());
+        }
     }
     {  // a time step that lets grains tunnel
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ntime_step = 1e-4"), "tiny.toml", schema());

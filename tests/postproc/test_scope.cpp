@@ -52,6 +52,8 @@ BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
                          {"steps", 20000},
                          {"start", "warm, from a state"},
                          {"plate", "a loaded plate"},
+                         {"model", "impulse"},
+                         {"contact_solve", p.speed == 1.0 ? "single_pass" : "iterated"},
                          {"steady_state",
                           {{"allowed_relative_drift", {{"wall_stress", 0.035}, {"gap", 0.004}}}, {"sigmas", 3.0}}}});
     }
@@ -79,6 +81,11 @@ BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
     BOOST_TEST(dem.find("within 3 combined standard errors or within 3.5 % (wall stresses) and 0.4 % (gap)") !=
                    std::string::npos,
                dem);
+
+    // which contact operator made the DEM numbers (the first usable point's: U = 1, the single pass)
+    BOOST_TEST(dem.find("Sawyer & Tichy's impulse operator, one pass over the contacts per step") != std::string::npos,
+               dem);
+    BOOST_TEST(continuum.find("contacts:") == std::string::npos);
 
     // The automaton's stresses are marked in every key-number cell and named in the stress captions.
     const std::string key = md_row(md, kKey, "automaton", "U1.0");

@@ -52,8 +52,20 @@
     resting contacts. It neither changes the answer nor speeds up its
     convergence in dt (measured: the same page), so it is off by default.
 
+    iterate on|off (default off = Sawyer & Tichy's single pass above; ours).
+    With iterate on this model computes no force: it hands every contact it
+    finds (geometry, e, bounce_speed, separate, where its history and the
+    wall's stored force live; impulse_contacts.h) to fix impulse/solve, which
+    solves all contacts of the step together by projected Gauss-Seidel with
+    accumulated, clamped impulses and corrects overlaps with pseudo-velocities
+    (Moreau 1988; Jean 1999; Catto 2005; doc/fix_impulse_solve.txt). The
+    contact history then keeps each contact's impulses (warm start). A pair
+    style and every wall with model impulse must agree: all iterate on with a
+    fix impulse/solve, or all off without one (checked at each run).
+
     Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
-    LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree.
+    LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree (with
+    impulse_contacts.h, and fix_impulse_solve.* for iterate on).
 ------------------------------------------------------------------------- */
 
 #ifdef NORMAL_MODEL
@@ -69,6 +81,11 @@ NORMAL_MODEL(IMPULSE,impulse,50)
 #include "update.h"
 #include "error.h"
 #include "atom.h"
+#include "modify.h"
+#include "fix.h"
+#include "fix_wall_gran.h"
+#include "impulse_contacts.h"
+#include <string>
 
 namespace LIGGGHTS {
 namespace ContactModels
@@ -81,20 +98,35 @@ namespace ContactModels
       NormalModelBase(lmp, hsetup, c),
       coeffRest(NULL),
       separate(true),
-      bounceSpeed(0.0)
+      bounceSpeed(0.0),
+      iterate(false),
+      historyOffset(-1),
+      wall(dynamic_cast<LAMMPS_NS::FixWallGran *>(hsetup)),
+      sink(NULL)
     {}
 
     // separate on (default): also remove the overlap (see above); off: velocities only.
     // bounce_speed V: restitution only for approach speeds above V (below, e = 0)
+    // iterate on: hand the contacts to fix impulse/solve (above); off (default): single pass
     inline void registerSettings(Settings & settings)
     {
       settings.registerOnOff("separate", separate, true);
       settings.registerDoubleSetting("bounce_speed", bounceSpeed, 0.0);
+      settings.registerOnOff("iterate", iterate, false);
     }
-    inline void postSettings(IContactHistorySetup *, ContactModelBase *)
+    inline void postSettings(IContactHistorySetup * hsetup, ContactModelBase * cmb)
     {
       if (!(bounceSpeed >= 0.0))
         error->all(FLERR, "model impulse: bounce_speed must be >= 0 (m/s; 0 = restitution at every speed)");
+      if (!iterate) return;
+      // the solver's accumulated impulses per contact (warm start, and the force of a run's setup)
+      historyOffset = hsetup->add_history_value("impulse_n", "0");
+      hsetup->add_history_value("impulse_tx", "1");
+      hsetup->add_history_value("impulse_ty", "1");
+      hsetup->add_history_value("impulse_tz", "1");
+      hsetup->add_history_value("impulse_step", "0");
+      hsetup->add_history_value("impulse_load", "0");
+      cmb->add_history_offset("impulse", historyOffset);
     }
 
     inline void connectToProperties(PropertyRegistry & registry)
@@ -104,6 +136,14 @@ namespace ContactModels
       // the operator works on the real grains' masses; coarse-graining would rescale them
       if (force->cg_active())
         error->cg(FLERR, "model impulse");
+      // every run: the solver fix may have been made or removed since the last one
+      sink = find_sink();
+      if (iterate && !sink)
+        error->all(FLERR, ("model impulse iterate on (" + where() + "): no fix impulse/solve to solve the contacts; "
+                           "add one, e.g. 'fix solve all impulse/solve' (a granlub-liggghts style)").c_str());
+      if (!iterate && sink)
+        error->all(FLERR, ("model impulse (" + where() + "): fix impulse/solve solves every impulse contact of the "
+                           "run, so every pair gran and fix wall/gran with model impulse needs 'iterate on'").c_str());
     }
 
     // no elastic law; only fix heat/gran/conduction asks for this
@@ -113,6 +153,10 @@ namespace ContactModels
     {
       if (sidata.contact_flags)
         *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+      if (iterate) {
+        collect(sidata);
+        return;
+      }
 
       // approaching only: v_n = (v_i - v_j).e_n < 0 (e_n points from j to i), with the
       // impulses of the contacts resolved earlier in this step (sequential resolution) -- except
@@ -164,7 +208,11 @@ namespace ContactModels
         *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
     }
 
-    inline void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    // iterate on: the pair style's pass (once per step, before the walls') starts the step's contacts
+    inline void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
+    {
+      if (iterate && sidata.computeflag && !sidata.is_wall) sink->begin_collection();
+    }
     inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
     // One grain a ghost: resolved from the start-of-step velocities alone, identically by both
@@ -175,6 +223,60 @@ namespace ContactModels
     }
 
   private:
+    // iterate on: the contact, for fix impulse/solve; no force here. Only a real force pass
+    // (computeflag) collects: compute pair/gran/local re-runs the loops with computeflag 0.
+    inline void collect(SurfacesIntersectData & sidata)
+    {
+      sidata.Fn = 0.0;
+      sidata.kn = 0.0;
+      sidata.kt = 0.0;
+      sidata.gamman = 0.0;
+      sidata.gammat = 0.0;
+      if (!sidata.computeflag) return;
+      ImpulseContact & c = sink->add_contact();
+      c.i = sidata.i;
+      c.en[0] = sidata.en[0];
+      c.en[1] = sidata.en[1];
+      c.en[2] = sidata.en[2];
+      c.ri = sidata.radi;
+      c.e = coeffRest[sidata.itype][sidata.jtype];
+      c.bounce = bounceSpeed;
+      c.separate = separate;
+      c.history = sidata.contact_history ? sidata.contact_history + historyOffset : NULL;
+      if (sidata.is_wall) {
+        c.j = -1;
+        c.rj = 0.0;
+        c.overlap = sidata.radi - sidata.r;
+        c.vwall[0] = sidata.v_j[0];
+        c.vwall[1] = sidata.v_j[1];
+        c.vwall[2] = sidata.v_j[2];
+        c.wallforce = wall && wall->store_force() ? wall->fix_wallforce()->array_atom[sidata.i] : NULL;
+        c.mesh = sidata.fix_mesh;
+        c.tri = sidata.j;
+        // LIGGGHTS hands the mesh's stress module the negated contact vector (fix_wall_gran_base.h)
+        c.delta[0] = -sidata.delta[0];
+        c.delta[1] = -sidata.delta[1];
+        c.delta[2] = -sidata.delta[2];
+      } else {
+        c.j = sidata.j;
+        c.rj = sidata.radj;
+        c.overlap = sidata.radi + sidata.radj - sidata.r;
+      }
+      if (c.overlap < 0.0) c.overlap = 0.0;
+    }
+
+    inline ImpulseContactSink * find_sink() const
+    {
+      LAMMPS_NS::Fix * f = modify->find_fix_style("impulse/solve", 0);
+      return f ? dynamic_cast<ImpulseContactSink *>(f) : NULL;
+    }
+
+    // the command this model belongs to, for messages
+    inline std::string where() const
+    {
+      return wall ? std::string("fix wall/gran ") + wall->id : std::string("pair_style gran");
+    }
+
     // Moves the surfaces apart along e_n until they touch, in inverse proportion to the masses
     // (a wall does not move). Only local grains are moved; with newton off each owner moves
     // its own grain of a pair that straddles processors.
@@ -207,6 +309,10 @@ namespace ContactModels
     double ** coeffRest;
     bool separate;
     double bounceSpeed;
+    bool iterate;
+    int historyOffset;                // iterate on: kImpulseHistoryValues values from here
+    LAMMPS_NS::FixWallGran * wall;    // the wall this model belongs to; NULL in pair gran
+    ImpulseContactSink * sink;        // fix impulse/solve (iterate on)
   };
 }
 }

@@ -25,6 +25,11 @@
 
     Setting:  beta0 value  (keyword after the model names, default 0)
 
+    With `iterate on` (a setting of model impulse, shared by both models) this
+    model computes no force either: it gives the contact that model impulse has
+    just handed to fix impulse/solve its mu and beta0, and the solver applies
+    the same law to accumulated impulses (doc/fix_impulse_solve.txt).
+
     Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
     LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree.
 ------------------------------------------------------------------------- */
@@ -41,6 +46,9 @@ TANGENTIAL_MODEL(TANGENTIAL_IMPULSE,impulse,50)
 #include "update.h"
 #include "error.h"
 #include "atom.h"
+#include "modify.h"
+#include "fix.h"
+#include "impulse_contacts.h"
 #include <cmath>
 
 namespace LIGGGHTS {
@@ -55,12 +63,16 @@ namespace ContactModels
     TangentialModel(LAMMPS * lmp, IContactHistorySetup * hsetup, class ContactModelBase * cmb) :
       TangentialModelBase(lmp, hsetup, cmb),
       coeffFrict(NULL),
-      beta0(0.0)
+      beta0(0.0),
+      iterate(false),
+      sink(NULL)
     {}
 
+    // iterate: the same setting as model impulse's (LIGGGHTS hands one value to both)
     inline void registerSettings(Settings & settings)
     {
       settings.registerDoubleSetting("beta0", beta0, 0.0);
+      settings.registerOnOff("iterate", iterate, false);
     }
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)
@@ -73,12 +85,19 @@ namespace ContactModels
     {
       registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
       registry.connect("coeffFrict", coeffFrict, "tangential_model impulse");
+      // model impulse checks that the solver exists when iterate is on
+      LAMMPS_NS::Fix * f = iterate ? modify->find_fix_style("impulse/solve", 0) : NULL;
+      sink = f ? dynamic_cast<ImpulseContactSink *>(f) : NULL;
     }
 
     inline void surfacesIntersect(const SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
     {
       if (sidata.contact_flags)
         *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+      if (iterate) {  // the contact model impulse has just collected (a real force pass only)
+        if (sidata.computeflag && sink) sink->set_friction(coeffFrict[sidata.itype][sidata.jtype], beta0);
+        return;
+      }
       const double Fn = sidata.Fn;
       if (Fn <= 0.0) return;  // no normal impulse this step: no friction impulse
 
@@ -175,6 +194,8 @@ namespace ContactModels
   private:
     double ** coeffFrict;
     double beta0;
+    bool iterate;
+    ImpulseContactSink * sink;  // fix impulse/solve (iterate on)
   };
 }
 }

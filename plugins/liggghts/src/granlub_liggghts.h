@@ -8,10 +8,10 @@ extern "C" {
 #endif
 // Returns the number of contact-model combinations registered by this call (0 if already done).
 int granlub_liggghts_register(void);
-// Adds granlub's fix and compute styles (fix centripetal/annulus, compute wall/gran/force) to one
-// LAMMPS instance (a LAMMPS_NS::LAMMPS*); call after constructing it (the input command `clear`
-// remakes its style tables without them). The driver granlub-liggghts does; `LD_PRELOAD` with the
-// stock binary gets the contact models only. Returns the number of styles added.
+// Adds granlub's fix and compute styles (fix centripetal/annulus, fix impulse/solve, compute
+// wall/gran/force) to one LAMMPS instance (a LAMMPS_NS::LAMMPS*); call after constructing it (the
+// input command `clear` remakes its style tables without them). The driver granlub-liggghts does;
+// `LD_PRELOAD` with the stock binary gets the contact models only. Returns the number of styles added.
 int granlub_liggghts_register_styles(void* lammps);
 #ifdef __cplusplus
 }

@@ -12,6 +12,7 @@
 
 #include "compute_wall_gran_force.h"
 #include "fix_centripetal_annulus.h"
+#include "fix_impulse_solve.h"
 #include "granlub_liggghts.h"
 
 using namespace LAMMPS_NS;
@@ -59,6 +60,7 @@ extern "C" int granlub_liggghts_register_styles(void* lammps) {
     std::map<std::string, FixCreator>* fixes = lmp->modify->*fix_map_member(FixMapTag());
     std::map<std::string, ComputeCreator>* computes = lmp->modify->*compute_map_member(ComputeMapTag());
     (*fixes)["centripetal/annulus"] = &create_fix<FixCentripetalAnnulus>;
+    (*fixes)["impulse/solve"] = &create_fix<FixImpulseSolve>;
     (*computes)["wall/gran/force"] = &create_compute<ComputeWallGranForce>;
-    return 2;
+    return 3;
 }

@@ -228,6 +228,7 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     count(reported, rs);
     r.summary.run = out.run;
     r.summary.run["model"] = s.model == Model::Impulse ? "impulse" : "hertz";
+    if (s.model == Model::Impulse) r.summary.run["contact_solve"] = s.iterated ? "iterated" : "single_pass";
     r.summary.run["atoms"] = init.particles.size();
     r.summary.run["steps"] = rs.steps;
     r.summary.run["time_step_s"] = rs.time_step;

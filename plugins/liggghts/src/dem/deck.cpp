@@ -120,8 +120,9 @@ void final_state_block(const Settings& s, const DeckLine& line) {
 ModelText model_text(const Settings& s) {
     if (s.model != Model::Impulse) return {"model hertz tangential history", ""};
     return {"model impulse tangential impulse",
-            fmt::format(" beta0 {} separate {}{}", s.beta0, s.separate ? "on" : "off",
-                        s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "")};
+            fmt::format(" beta0 {} separate {}{}{}", s.beta0, s.separate ? "on" : "off",
+                        s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "",
+                        s.iterated ? " iterate on" : "")};
 }
 
 DeckLine deck_lines(std::string& d) {
@@ -164,6 +165,12 @@ void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, co
     line("");
     line(fmt::format("pair_style      gran {}{}", m.model, m.settings));
     line("pair_coeff      * *");
+    if (s.model == Model::Impulse && s.iterated) {
+        line("# contact_solve = iterated: every impulse contact of a step (pair and walls, `iterate on`) solved together");
+        line("# to convergence (plugins/liggghts/doc/fix_impulse_solve.txt)");
+        line(fmt::format("fix solve all impulse/solve tolerance {} iterations {}", s.solve_tolerance,
+                         s.solve_iterations));
+    }
     line(fmt::format("timestep        {}", s.time_step));
 }
 

@@ -19,6 +19,15 @@ SectionSpec section() {
     s.real("bounce_speed", 0.0, Range::closed(0, 1e3), "m/s",
            "impulse model: restitution only for approach speeds above this (below, e = 0); 0 = at every speed "
            "(our assumption, not S&T's)");
+    s.choice("contact_solve", "single_pass", {"single_pass", "iterated"},
+             "impulse model: 'single_pass' = Sawyer & Tichy's operator (each contact resolved once per step, in "
+             "sequence); 'iterated' = all contacts of a step solved together to convergence (fix impulse/solve: "
+             "projected Gauss-Seidel, warm start, overlaps corrected by pseudo-velocities; our addition)");
+    s.real("solve_tolerance", 1e-4, Range::closed(1e-12, 0.5), "",
+           "contact_solve = 'iterated': stop when the largest impulse change of a sweep is at most this times the "
+           "largest normal impulse of the step");
+    s.integer("solve_iterations", 200, Range::closed(1, 100000),
+              "contact_solve = 'iterated': at most this many sweeps per step (velocities, and positions, each)");
     s.boolean("refine_dt", false,
               "check every point's time step: a run at the full step (folder dt_full/), then the point's answer at "
               "half the step; run.dt_refinement compares them, each output carries dt_error = |value(dt) - "

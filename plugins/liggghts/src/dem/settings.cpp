@@ -44,6 +44,12 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.beta0 = s.real("beta0");
     st.separate = s.boolean("separate_overlaps");
     st.bounce_speed = s.real("bounce_speed");
+    st.iterated = s.string("contact_solve") == "iterated";
+    if (st.iterated && st.model != Model::Impulse)
+        s.fail("contact_solve", "'iterated' solves the impulse model's contacts; model = 'hertz' has none (its "
+                                "forces come from springs): use contact_solve = 'single_pass' or model = 'impulse'");
+    st.solve_tolerance = s.real("solve_tolerance");
+    st.solve_iterations = s.integer("solve_iterations");
     const ParticleStart start = particle_start(c, p, o.seed);
     st.ring = c.cell.ring();
     st.box = st.ring ? ring_slice_box(c) : particle_box(c, start.periodic_depth);
@@ -123,6 +129,12 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     }
     st.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", st.box);
     st.bumps_top = wall_bumps(c, p, p.top, "top", st.box);
+    // fix impulse/solve moves every atom it solves (its pseudo-velocities shift positions), but the
+    // bumps are atoms no fix integrates: the iterated solve would shift them; not served.
+    if (st.iterated && st.bumps())
+        s.fail("contact_solve", "'iterated' does not serve rough walls made of bumps ([walls] surface = \"bumps\"): "
+                                "fix impulse/solve would move the bump atoms; use contact_solve = 'single_pass' or "
+                                "plane walls");
     // a shear strain of kPersistenceStrain at U/H, at most a hundredth of the run
     const double shear_rate = p.speed / c.cell.gap;
     const double every = shear_rate > 0 ? std::round(kPersistenceStrain / (shear_rate * st.time_step)) : 1.0;
@@ -165,6 +177,7 @@ nlohmann::json Settings::to_json() const {
                             {"beta0", beta0},
                             {"separate_overlaps", separate},
                             {"bounce_speed", bounce_speed},
+                            {"contact_solve", iterated ? "iterated" : "single_pass"},
                             {"time_step_s", time_step},
                             {"time_s", time},
                             {"steps", steps},
@@ -183,6 +196,8 @@ nlohmann::json Settings::to_json() const {
                             {"geometry", ring ? "annulus" : "slice"},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
+    if (iterated)
+        j.update(nlohmann::json{{"solve_tolerance", solve_tolerance}, {"solve_iterations", solve_iterations}});
     if (load) j.update(nlohmann::json{{"servo_gain_used", plate_gain}, {"plate_overlap_m", plate_overlap}});
     if (ring)
         j.update(nlohmann::json{{"annulus_radius_m", annulus.R},

@@ -25,6 +25,9 @@ struct Settings : ServoSettings {
     double beta0 = 0;             // Walton's tangential restitution (impulse); 0 = stick limit
     bool separate = false;        // impulse: remove overlaps (position correction)
     double bounce_speed = 0;      // impulse: restitution only above this approach speed (m/s)
+    bool iterated = false;        // impulse: contacts solved to convergence (fix impulse/solve), not one pass
+    double solve_tolerance = 0;   // iterated: largest impulse change / largest normal impulse, to stop
+    std::int64_t solve_iterations = 0;  // iterated: cap on the sweeps per step
     double time_step = 0;         // s
     double time = 0;              // simulated time, s
     std::int64_t steps = 0;       // ceil(time / time_step)

@@ -1,0 +1,93 @@
+/* ----------------------------------------------------------------------
+    granlub: the contacts of model impulse / tangential impulse with
+    `iterate on`, handed from the contact models (pair gran, fix wall/gran)
+    to the solver (fix impulse/solve, plugins/liggghts/src/fix_impulse_solve.*).
+
+    With `iterate on` the models compute no force: for every touching pair or
+    grain-wall contact of the step they append one ImpulseContact (geometry,
+    materials, where its history and the wall's stored force live), and fix
+    impulse/solve, after all forces of the step are known, solves all of them
+    together (doc/fix_impulse_solve.txt). With `iterate off` (default) nothing
+    here is used: the models are Sawyer & Tichy's single pass.
+
+    Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
+    LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree.
+------------------------------------------------------------------------- */
+
+#ifndef GRANLUB_IMPULSE_CONTACTS_H_
+#define GRANLUB_IMPULSE_CONTACTS_H_
+
+#include <vector>
+
+namespace LAMMPS_NS {
+class FixMeshSurface;
+}
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+// Values per contact kept in LIGGGHTS' contact history (pair and wall alike): the accumulated
+// normal impulse, the tangential impulse vector (on grain i), the step they were solved at, and the
+// normal impulse of the last step the contact was pressed without restitution (its load).
+enum ImpulseHistory { kHistPn = 0, kHistPt = 1, kHistStep = 4, kHistLoad = 5, kImpulseHistoryValues = 6 };
+
+struct ImpulseContact {
+  // --- filled by the contact models when the contact is found ---
+  int i;               // the grain (owned by this rank)
+  int j;               // the other grain (owned or ghost); -1 for a wall
+  double en[3];        // unit normal from j (or the wall) to i
+  double ri, rj;       // radii; rj = 0 for a wall
+  double overlap;      // r_i + r_j - |x_i - x_j| (wall: r_i - distance), > 0 or 0
+  double e;            // coefficientRestitution of the two types
+  double bounce;       // bounce_speed: restitution only above this approach speed
+  double mu;           // coefficientFriction (0 without tangential impulse)
+  double beta0;        // Walton's tangential restitution (tangential impulse)
+  double vwall[3];     // a wall's velocity at the contact (0 for grain pairs)
+  double delta[3];     // a mesh wall: the contact vector LIGGGHTS hands to the mesh's stress
+  double * history;    // kImpulseHistoryValues values in the contact history, or NULL
+  double * wallforce;  // a wall with store_force: the wall's force on grain i this step, or NULL
+  LAMMPS_NS::FixMeshSurface * mesh;  // a mesh wall: the mesh (per-element forces), or NULL
+  int tri;             // the mesh element
+  bool separate;       // `separate on`: correct the overlap (pseudo-velocities)
+  // --- the solver's state ---
+  bool boundary;       // a grain pair with j a ghost (periodic image or another rank's)
+  bool impact;         // restitution acts on this contact this step
+  double mn;           // normal effective mass
+  double kt;           // 1 / (tangential inverse mass)
+  double tn;           // target normal velocity
+  double tt[3];        // target slip
+  double pn, pt[3];    // accumulated impulses
+  double dn, dt[3];    // the change of this sweep (boundary contacts: applied after all were computed)
+  double b;            // target separating pseudo-velocity (overlap correction)
+  double q;            // accumulated pseudo-impulse
+};
+
+// The contacts of one step, filled by the models and read by the solver. A model reaches it
+// through the solver fix (dynamic_cast of the fix found by style "impulse/solve").
+class ImpulseContactSink {
+public:
+  virtual ~ImpulseContactSink() {}
+
+  // the pair style's pass starts every step's collection (pair gran runs before the walls)
+  inline void begin_collection() { contacts_.clear(); }
+
+  inline ImpulseContact & add_contact() {
+    contacts_.push_back(ImpulseContact());  // capacity is kept across steps: no allocation once warm
+    return contacts_.back();
+  }
+
+  // tangential impulse: friction of the contact just added by model impulse
+  inline void set_friction(double mu, double beta0) {
+    if (contacts_.empty()) return;
+    contacts_.back().mu = mu;
+    contacts_.back().beta0 = beta0;
+  }
+
+protected:
+  std::vector<ImpulseContact> contacts_;
+};
+
+}
+}
+
+#endif // GRANLUB_IMPULSE_CONTACTS_H_

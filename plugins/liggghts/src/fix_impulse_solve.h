@@ -1,0 +1,74 @@
+// fix ID all impulse/solve [keyword value ...]: solves all contacts of model impulse / tangential
+// impulse with `iterate on` together, every step, until the impulses converge (projected
+// Gauss-Seidel with accumulated, clamped impulses; overlaps corrected with pseudo-velocities).
+// Doc: plugins/liggghts/doc/fix_impulse_solve.txt; the rules and their sources: the .cpp.
+// The FixStyle line lets the pair of files drop into a LIGGGHTS 3.8 src/ with the model headers
+// (not checked by tools/check-in-tree-build, which copies the model headers only); the plugin
+// registers the style itself (register_fix_compute.cpp).
+#ifdef FIX_CLASS
+FixStyle(impulse/solve,FixImpulseSolve)
+#else
+
+#ifndef GRANLUB_FIX_IMPULSE_SOLVE_H
+#define GRANLUB_FIX_IMPULSE_SOLVE_H
+
+#include <vector>
+
+#include "fix.h"
+#include "impulse_contacts.h"
+
+namespace LAMMPS_NS {
+
+class FixImpulseSolve : public Fix, public LIGGGHTS::ContactModels::ImpulseContactSink {
+public:
+    FixImpulseSolve(class LAMMPS* lmp, int narg, char** arg);
+    int setmask();
+    void init();
+    void setup(int vflag);
+    void pre_initial_integrate();
+    void pre_final_integrate();
+    void post_run();
+    double compute_vector(int n);
+    int pack_comm(int n, int* list, double* buf, int pbc_flag, int* pbc);
+    void unpack_comm(int n, int first, double* buf);
+
+private:
+    typedef LIGGGHTS::ContactModels::ImpulseContact Contact;
+
+    void check_styles();
+    void grow(int nall);
+    void prepare(double dt, int nlocal);
+    int solve_velocities(int nlocal);
+    int solve_positions(double dt, int nlocal);
+    void apply_forces(double dt, int nlocal, bool store_history);
+    void forward(int mode);
+    bool all_done(double change, double scale);
+
+    // settings (doc/fix_impulse_solve.txt)
+    double tolerance_;    // largest impulse change / largest impulse of the step, to stop
+    int iterations_;      // cap on the sweeps, for the velocities and for the positions each
+    bool warm_start_;     // start from the impulses of the contact's previous step
+    bool restitution_all_;  // restitution also for contacts pressed at the previous step
+    double rest_factor_;    // approaches below this times the contact's load velocity: no restitution
+    double slop_;         // overlap left uncorrected, fraction of r_i + r_j
+    double correction_;   // fraction of the rest removed per step
+
+    // per atom (owned and ghost), grown only: velocities being solved, inverse mass and inertia,
+    // boundary-contact counts (mass splitting), pseudo-velocities
+    std::vector<double> vel_, omg_, im_, ii_, split_, pv_;
+    std::vector<int> boundary_;  // indices of the boundary contacts of this step
+    int comm_mode_;
+    bool any_boundary_;          // on any rank: then ghosts are refreshed after every sweep
+    bool setup_pending_;         // a run's setup collected contacts: apply their stored impulses
+    bigint setup_step_;          // the step of that setup
+
+    // statistics (compute_vector, post_run)
+    int last_sweeps_, last_position_sweeps_;
+    double last_change_;
+    bigint run_steps_, run_sweeps_, run_capped_;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
