@@ -9,6 +9,7 @@
 
 #include "metrics.h"
 #include "scope.h"
+#include "state_series.h"
 #include "stats.h"
 #include "text.h"
 
@@ -45,26 +46,12 @@ void sort_by_x(Series& s) {
     s = std::move(t);
 }
 
-// A solver's points in one figure: the steady ones under `label`, then one series per other
-// state ("dem: transient"), drawn hollow and faded. add(run, point, series) appends the point.
+// A solver's points in one figure, split by state (state_series.h) in the solver's style.
 template <class Add>
 std::vector<Series> points_by_state(const Collection& col, const std::string& solver,
                                     const std::vector<const OperatingPoint*>& points, const std::string& label,
                                     Add add) {
-    std::vector<Series> out(1);
-    out[0].label = label;
-    for (const OperatingPoint* p : points) {
-        const Run& r = col.run(solver, p->id);
-        if (!r.usable()) continue;
-        std::size_t k = 0;
-        if (!r.steady()) {
-            const std::string l = fmt::format("{}: {}", label, r.state_name());
-            k = 1;
-            while (k < out.size() && out[k].label != l) ++k;
-            if (k == out.size()) out.emplace_back().label = l, out.back().unsteady = true;
-        }
-        add(r, *p, out[k]);
-    }
+    std::vector<Series> out = split_by_state(col, solver, points, label, add);
     for (auto& s : out) s.style = solver_style(col, solver), s.mark = Mark::Points;
     return out;
 }

@@ -12,6 +12,7 @@
 #include "granlub/postproc/command.h"
 #include "granlub/results/run_status.h"
 #include "granlub/results/results.h"
+#include "case_text.h"
 #include "synthetic.h"
 #include "xml_check.h"
 
@@ -25,28 +26,10 @@ test::SyntheticCase grid_case(const std::string& name, const std::string& operat
     s.dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / "postproc-tmp" / name;
     fs::remove_all(s.dir);
     fs::create_directories(s.dir);
-    std::ofstream(s.dir / "case.toml") << R"([case]
-name = "regime_grid"
-
-[grains]
-diameter = 1.0e-3
-density = 2500.0
-restitution = 0.9
-
-[walls]
-restitution = 0.8
-roughness = 0.5
-
-[cell]
-gap = 5.0e-3
-length = 20.0e-3
-width = 0.0
-max_solid_fraction = 0.65
-
-[operating]
-control = "load"
-solid_fraction = 0.55
-)" << operating;
+    // the shared valid case under load, with this test's operating points
+    std::ofstream(s.dir / "case.toml") << test::with(
+        "[operating]\nspeed = [1.0, 2.0]\ncontrol = \"fill\"\nsolid_fraction = 0.5\nnormal_stress = 1000.0\n",
+        "[operating]\ncontrol = \"load\"\nsolid_fraction = 0.55\n" + operating);
     s.c = load_case(s.dir, Schema::common());
     s.o.results_root = s.dir / "results";
     return s;
