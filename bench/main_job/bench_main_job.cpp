@@ -90,9 +90,9 @@ void print(const char* what, const Measured& m) {
     for (const auto& p : m.dem)
         std::printf("  dem %-8s %6.0f s, %.3g grain-steps/s%s\n", p.id.c_str(), p.wall_s, p.grain_steps_per_s,
                     p.full_step_s > 0
-                        ? (", Delta-t/2 check " + std::to_string(static_cast<int>(
-                                                      100 * (p.wall_s - p.full_step_s) / p.wall_s + 0.5)) +
-                           " % of it")
+                        ? (", the Delta-t/2 run " + std::to_string(static_cast<int>(
+                                                          100 * (p.wall_s - p.full_step_s) / p.wall_s + 0.5)) +
+                           " % of it (the full-step run it is checked against the rest)")
                               .c_str()
                         : ", no Delta-t/2 check");
 }
