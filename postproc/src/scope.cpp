@@ -105,6 +105,7 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
     const Run& first = *runs.front();
     std::vector<double> simulated, steady_from, steps, iterations;
     std::vector<double> check_simulated, check_steady_from;  // the full-step runs of a Delta-t check
+    std::string check_start;                                  // how the first checked run's half-step run began
     for (const Run* r : runs) {
         if (auto v = run_number(*r, "simulated_time_s")) simulated.push_back(*v);
         if (auto v = run_number(*r, "steady_state_start_s")) steady_from.push_back(*v);
@@ -113,6 +114,7 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
         const auto& run = r->summary->run;
         if (run.is_object() && run.contains("dt_refinement") && run["dt_refinement"].contains("full_step_run")) {
             const auto& f = run["dt_refinement"]["full_step_run"];
+            if (check_start.empty()) check_start = run["dt_refinement"].value("start", std::string("not recorded"));
             if (f.contains("steps") && f.contains("time_step_s"))
                 check_simulated.push_back(f["steps"].get<double>() * f["time_step_s"].get<double>());
             if (f.contains("steady_state_start_s") && f["steady_state_start_s"].is_number())
@@ -170,8 +172,7 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
         if (!check_simulated.empty()) {  // what the numbers are: the half-step run, checked (refine_dt)
             s.run_length += "; checked against a run of " + range_text(check_simulated, "s") + " at the full step";
             if (!check_steady_from.empty()) s.run_length += " (steady from " + range_text(check_steady_from, "s") + ")";
-            s.run_length += "; the half-step run's start: " +
-                            first.summary->run["dt_refinement"].value("start", std::string("not recorded"));
+            s.run_length += "; the half-step run's start: " + check_start;
         }
         if (const std::string start = run_text(first, "start"); !start.empty()) s.run_length += "; start: " + start;
         if (const std::string plate = run_text(first, "plate"); !plate.empty()) s.run_length += "; load: " + plate;
