@@ -124,11 +124,14 @@ def load_params(path):
                 raise ParamError("servo: the plate limits [%g, %g] m must hold the initial gap %g m"
                                  % (sv["gap_min"], sv["gap_max"], cell["gap"]))
         for side, layer in p.get("bumps", {}).items():
-            if side not in ("bottom", "top"):
-                raise ParamError("bumps.%s: allowed bottom, top" % side)
+            if side not in ("bottom", "top", "sides"):
+                raise ParamError("bumps.%s: allowed bottom, top, sides" % side)
             need(layer, "diameter", "bumps." + side, positive=True)
-            if len(layer.get("x", [])) != len(layer.get("z", [])) or not layer.get("x"):
-                raise ParamError("bumps.%s: x and z must be lists of the same, non-zero length" % side)
+            across = "y" if side == "sides" else "z"
+            if len(layer.get("x", [])) != len(layer.get(across, [])) or not layer.get("x"):
+                raise ParamError("bumps.%s: x and %s must be lists of the same, non-zero length" % (side, across))
+            if side == "sides" and cell.get("periodic_z"):
+                raise ParamError("bumps.sides with cell.periodic_z: there are no side walls")
             if side == "top" and sv is not None and sv.get("plate") == "weight":
                 raise ParamError("bumps.top with servo.plate = weight: the bumps would ride a free plate")
         if not os.path.isfile(p.get("initial_file", "")):
@@ -382,7 +385,7 @@ def write_json(path, obj):
     os.replace(tmp, path)
 
 
-BUMPS_APART = 16 | 32  # the bump layers' own bits: a bump never meets a bump of its wall
+BUMPS_APART = 16 | 32 | 64  # the bump layers' own bits: a bump never meets a bump of its wall
 
 
 def run_couette(p):
@@ -447,20 +450,27 @@ def run_couette(p):
     # Rough walls (core wall_bumps.h): fixed spheres with their centres on the wall's plane, the
     # floor's moving with it, the top's with the window servo's plate. Collision masks (two bodies
     # meet when their masks share a bit, unless the masks are equal and share a bit with the
-    # collider's avoidSelfInteractionMask, BUMPS_APART): grains (1|2|4) meet the wall boxes (1) and
-    # both layers; a layer (2|16, 4|32) meets neither the boxes, nor the other layer, nor itself.
-    bumps = {"bottom": [], "top": []}
+    # collider's avoidSelfInteractionMask, BUMPS_APART): grains (1|2|4|8) meet the wall boxes (1) and
+    # every layer; a layer (2|16, 4|32, side walls 8|64) meets neither the boxes, nor another layer,
+    # nor itself. The side walls' bumps (both walls, one layout at z = -W/2 and W/2) move with the floor.
+    bumps = {"bottom": [], "top": [], "side1": [], "side2": []}
     layers = p.get("bumps", {})
     if layers:
-        masks = {"bottom": 2 | 16, "top": 4 | 32}
+        masks = {"bottom": 2 | 16, "top": 4 | 32, "side1": 8 | 64, "side2": 8 | 64}
+        material = {"bottom": "bottom", "top": "top", "side1": "side", "side2": "side"}
         for i in gids:
-            O.bodies[i].groupMask = 1 | 2 | 4
+            O.bodies[i].groupMask = 1 | 2 | 4 | 8
+        placed = []  # (wall, layer, centre(x, across), vx)
         for side, y0, vx in (("bottom", 0.0, U), ("top", H, 0.0)):
-            layer = layers.get(side)
-            if not layer:
-                continue
-            for x, z in zip(layer["x"], layer["z"]):
-                b = utils.sphere((x, Y0 + y0, z + Z0), 0.5 * layer["diameter"], material=ids[side], fixed=True,
+            if side in layers:
+                placed.append((side, layers[side], lambda x, z, y0=y0: (x, Y0 + y0, z + Z0), vx))
+        if "sides" in layers:
+            for side, zw in (("side1", -0.5 * W), ("side2", 0.5 * W)):
+                placed.append((side, layers["sides"], lambda x, y, zw=zw: (x, Y0 + y, zw + Z0), U))
+        for side, layer, centre, vx in placed:
+            across = layer["y"] if side.startswith("side") else layer["z"]
+            for x, a in zip(layer["x"], across):
+                b = utils.sphere(centre(x, a), 0.5 * layer["diameter"], material=ids[material[side]], fixed=True,
                                  color=(0.5, 0.5, 0.5))
                 b.groupMask = masks[side]
                 if p["model"] == "viscel":
@@ -500,8 +510,8 @@ def run_couette(p):
         f[0] += fb[0]; f[1] += fb[1]; f[2] += fb[2]
         f[3] += ft[0]; f[4] += ft[1]; f[5] += ft[2]
         if sides:
-            f[6] += O.forces.f(sides[0])[0]
-            f[7] += O.forces.f(sides[1])[0]
+            f[6] += O.forces.f(sides[0])[0] + sum(O.forces.f(i)[0] for i in bumps["side1"])
+            f[7] += O.forces.f(sides[1])[0] + sum(O.forces.f(i)[0] for i in bumps["side2"])
         state["steps"] += 1
         state["run_steps"] += 1
         k = state["run_steps"]
@@ -581,7 +591,7 @@ def run_couette(p):
 
     def housekeeping():
         # keep the moving walls within a few periods of the cell (their extent is 1000 periods)
-        for w in moving + bumps["bottom"]:
+        for w in moving + bumps["bottom"] + bumps["side1"] + bumps["side2"]:
             q = O.bodies[w].state.pos
             if q[0] > 10 * L:
                 O.bodies[w].state.pos = Vector3(q[0] - 10 * L, q[1], q[2])

@@ -37,7 +37,7 @@ BOOST_AUTO_TEST_CASE(touching_bumps_of_the_grains_size_give_one_half) {
     double closest = 1e9;
     for (std::size_t i = 0; i < b->size(); ++i)
         for (std::size_t j = i + 1; j < b->size(); ++j) {
-            double dx = b->x[j] - b->x[i], dz = b->z[j] - b->z[i];
+            double dx = b->x[j] - b->x[i], dz = b->across[j] - b->across[i];
             dx -= box.length * std::round(dx / box.length);
             dz -= box.width * std::round(dz / box.width);
             closest = std::min(closest, std::hypot(dx, dz));
@@ -93,4 +93,43 @@ BOOST_AUTO_TEST_CASE(walls_that_cannot_be_built_are_refused_with_the_key_and_wha
     // a spread beyond what the insertion handles
     m = error_of(with("restitution = 0.9", "restitution = 0.9\nsize_spread = 0.3"));
     BOOST_TEST(m.find("[grains] size_spread = 0.3") != std::string::npos, m);
+}
+
+BOOST_AUTO_TEST_CASE(side_walls_as_the_bottom_carry_its_bumps_up_to_the_top) {
+    // a 10 mm trough with the floor's touching 1 mm bumps on both side walls
+    const std::string text = with("width = 0.0", "width = 0.01", kValidCase);
+    const Case c =
+        parse_case(rough("roughness = 0.5\nsurface = \"bumps\"\nsides = \"as_bottom\"", text), "r.toml", Schema::common());
+    const OperatingPoint& p = c.points.front();
+    const ParticleBox box = particle_box(c);
+    const auto floor = wall_bumps(c, p, p.bottom, "bottom", box);
+    const auto side = side_bumps(c, p, box, 6e-3);
+    BOOST_TEST_REQUIRE(side.has_value());
+    BOOST_TEST(side->diameter == floor->diameter);
+    BOOST_TEST(side->count_x == floor->count_x);
+    BOOST_TEST(side->roughness == floor->roughness);
+    BOOST_TEST(side->rows == 6u);  // rows 0.866 mm apart from one row above the floor to 6 mm: 6.93 -> 6
+    BOOST_TEST(side->size() == side->rows * side->count_x);
+    double lowest = 1e9, highest = 0, closest = 1e9;
+    for (std::size_t i = 0; i < side->size(); ++i) {
+        lowest = std::min(lowest, side->across[i]);
+        highest = std::max(highest, side->across[i]);
+        for (std::size_t j = i + 1; j < side->size(); ++j) {
+            double dx = side->x[j] - side->x[i];
+            dx -= box.length * std::round(dx / box.length);
+            closest = std::min(closest, std::hypot(dx, side->across[j] - side->across[i]));
+        }
+    }
+    BOOST_TEST(lowest == side->row_spacing, tt::tolerance(1e-12));
+    BOOST_TEST(highest <= 6e-3);
+    BOOST_TEST(closest >= side->diameter * (1 - 1e-9));  // touching, never overlapping
+    // plane sides (the default), or a plane floor: none
+    const Case plain = parse_case(rough("roughness = 0.5\nsurface = \"bumps\"", text), "r.toml", Schema::common());
+    BOOST_TEST(!side_bumps(plain, plain.points.front(), box, 6e-3));
+    const Case flat = parse_case(rough("roughness = 0.5\nsides = \"as_bottom\"", text), "r.toml", Schema::common());
+    BOOST_TEST(!side_bumps(flat, flat.points.front(), box, 6e-3));
+    // a periodic width has no side walls to roughen
+    const std::string m = error_of(rough("roughness = 0.5\nsurface = \"bumps\"\nsides = \"as_bottom\""));
+    BOOST_TEST(m.find("[walls] sides") != std::string::npos, m);
+    BOOST_TEST(m.find("needs side walls") != std::string::npos, m);
 }

@@ -5,6 +5,8 @@
 #define BOOST_TEST_MODULE yade_load
 #include <boost/test/unit_test.hpp>
 
+#include <map>
+#include <string>
 #include <utility>
 
 #include "granlub/results/results.h"
@@ -97,6 +99,24 @@ BOOST_AUTO_TEST_CASE(weight_plate_carries_the_target_load, *boost::unit_test::pr
     BOOST_TEST(params.at("servo").at("plate").get<std::string>() == "weight");
 }
 
+namespace {
+// The rough, spread case below; `sides` adds [walls] lines (the side walls' surface).
+Case rough_case(const std::string& sides = "") {
+    return tiny_case_edits({{"control = \"fill\"", "control = \"load\"\nnormal_stress = 200"},
+                            {"time = 1.5e-3", "time = 0.08"},
+                            {"snapshots = 30", "snapshots = 20"},
+                            {"friction = 0.5\n\n[walls]", "friction = 0.5\nsize_spread = 0.1\n\n[walls]"},
+                            {"roughness = 0.5", "roughness = 0.5\nsurface = \"bumps\"" + sides}},
+                           "contact_time = 5e-5\nservo_every = 100\nstations = 6\nservo_max_gap = 1.75\n");
+}
+const std::pair<int, fs::path>& rough_run(const std::string& sides = "") {
+    static std::map<std::string, std::pair<int, fs::path>> cache;
+    if (auto it = cache.find(sides); it != cache.end()) return it->second;
+    return cache.emplace(sides, run_case(rough_case(sides), sides.empty() ? "rough" : "rough-sides", 200.0))
+        .first->second;
+}
+}  // namespace
+
 // The experiment's grains and surfaces in YADE (core grain_sizes.h, wall_bumps.h): a size spread
 // of 0.1 between rough walls (bumps of the grains' size, R = 1/2), under the window servo, which
 // carries the top's bumps with the plate; 0.08 s, as the plate starts at 1.75 H (the grains need
@@ -104,13 +124,7 @@ BOOST_AUTO_TEST_CASE(weight_plate_carries_the_target_load, *boost::unit_test::pr
 // the bumps grip the bed harder than the planes of the smooth run, and the summary says what the
 // walls were.
 BOOST_AUTO_TEST_CASE(rough_walls_and_a_size_spread, *boost::unit_test::precondition(YadeInstalled())) {
-    const Case c = tiny_case_edits({{"control = \"fill\"", "control = \"load\"\nnormal_stress = 200"},
-                                    {"time = 1.5e-3", "time = 0.08"},
-                                    {"snapshots = 30", "snapshots = 20"},
-                                    {"friction = 0.5\n\n[walls]", "friction = 0.5\nsize_spread = 0.1\n\n[walls]"},
-                                    {"roughness = 0.5", "roughness = 0.5\nsurface = \"bumps\""}},
-                                   "contact_time = 5e-5\nservo_every = 100\nstations = 6\nservo_max_gap = 1.75\n");
-    const auto [code, dir] = run_case(c, "rough", 200.0);
+    const auto& [code, dir] = rough_run();
     BOOST_TEST_REQUIRE(code == 0);
     const Summary s = read_summary(dir / "summary.json");
     const auto& w = s.run.at("walls");
@@ -128,4 +142,24 @@ BOOST_AUTO_TEST_CASE(rough_walls_and_a_size_spread, *boost::unit_test::precondit
     BOOST_TEST(mu > mu_smooth, mu << " vs " << mu_smooth);
     // the grains' own sizes went in: the initial file's radii differ
     BOOST_TEST(s.run.at("order").at("q6").is_number());
+}
+
+// [walls] sides = "as_bottom": the floor's bumps on both side walls, moving with the floor, their
+// force counted with the side walls' (as in `granlub dem`); they drag the bed's edges harder than
+// the planes of the same rough cell.
+BOOST_AUTO_TEST_CASE(rough_side_walls, *boost::unit_test::precondition(YadeInstalled())) {
+    const auto& [code, dir] = rough_run("\nsides = \"as_bottom\"");
+    BOOST_TEST_REQUIRE(code == 0);
+    const auto params = nlohmann::json::parse(read_text(dir / "params.json"));
+    const auto& sides = params.at("bumps").at("sides");
+    BOOST_TEST(sides.at("y").size() == sides.at("x").size());
+    BOOST_TEST(sides.at("x").size() % 10u == 0u);  // 10 along the flow per row
+    const Summary s = read_summary(dir / "summary.json");
+    BOOST_TEST(s.run.at("walls").at("sides").at("surface").get<std::string>() == "bumps");
+    const auto& [plane_code, plane_dir] = rough_run();
+    BOOST_TEST_REQUIRE(plane_code == 0);
+    const double rough_side = s.value("shear_stress_side");
+    const double plane_side = read_summary(plane_dir / "summary.json").value("shear_stress_side");
+    BOOST_TEST_MESSAGE("side walls' shear stress: plane " << plane_side << " Pa, bumps " << rough_side << " Pa");
+    BOOST_TEST(std::abs(rough_side) > 1.3 * std::abs(plane_side), rough_side << " vs " << plane_side);
 }

@@ -322,6 +322,7 @@ void resolve_common(Case& c) {
     };
     c.bottom = wall("bottom");
     c.top = wall("top");
+    c.side_walls = w.string("sides") == "as_bottom" ? SideWalls::AsBottom : SideWalls::Plane;
 
     const Section& cell = c.sections.at("cell");
     c.cell = {cell.string("geometry") == "annulus" ? Geometry::Annulus : Geometry::Slice,

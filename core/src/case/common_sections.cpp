@@ -41,6 +41,10 @@ std::vector<SectionSpec> common_sections() {
              "spacing / (bump_diameter + d) (Jenkins & Richman 1986); R = 0: the plane alone");
     w.real("bump_diameter", 0.0, Range::non_negative(), "m",
            "surface = bumps: the bumps' diameter; 0 = the largest that give R: min(d, R d / (1 - R))");
+    w.choice("sides", "plane", {"plane", "as_bottom"},
+             "particle solvers' side walls (a slice with width > 0; they move with the bottom wall): plane = smooth "
+             "frictional planes; as_bottom = the bottom wall's surface, its bumps laid out on each side wall "
+             "[ASSUMPTION: plane by default; Sawyer & Tichy 2001 do not say which surfaces their rough runs covered]");
     w.subtables = {"bottom", "top"};
     s.push_back(w);
     for (const char* side : {"bottom", "top"}) {

@@ -100,7 +100,27 @@ std::optional<BumpLayer> wall_bumps(const Case& c, const OperatingPoint& p, cons
         for (std::size_t i = 0; i < b.count_x; ++i) {
             const double shift = b.rows > 1 ? 0.5 * static_cast<double>(j % 2) : 0.0;
             b.x.push_back((static_cast<double>(i) + shift) * b.spacing);
-            b.z.push_back(z0 + static_cast<double>(j) * b.row_spacing);
+            b.across.push_back(z0 + static_cast<double>(j) * b.row_spacing);
+        }
+    return b;
+}
+
+std::optional<BumpLayer> side_bumps(const Case& c, const OperatingPoint& p, const ParticleBox& box, double y_top) {
+    if (c.side_walls != SideWalls::AsBottom || box.periodic_z) return std::nullopt;
+    std::optional<BumpLayer> b = wall_bumps(c, p, p.bottom, "bottom", box);
+    if (!b) return std::nullopt;
+    b->row_spacing = b->spacing * std::sqrt(3.0) / 2.0;
+    b->rows = static_cast<std::size_t>(std::floor(y_top / b->row_spacing * (1 + 1e-12)));
+    if (b->rows == 0)
+        c.section("walls").fail("sides", fmt::format("point {}: the side walls' rows of bumps are {:g} m apart; the "
+                                                     "cell's top ({:g} m) holds none",
+                                                     p.id, b->row_spacing, y_top));
+    b->x.clear();
+    b->across.clear();
+    for (std::size_t j = 1; j <= b->rows; ++j)
+        for (std::size_t i = 0; i < b->count_x; ++i) {
+            b->x.push_back((static_cast<double>(i) + 0.5 * static_cast<double>(j % 2)) * b->spacing);
+            b->across.push_back(static_cast<double>(j) * b->row_spacing);
         }
     return b;
 }
@@ -119,6 +139,11 @@ nlohmann::json walls_json(const std::optional<BumpLayer>& b) {
 
 void check_wall_bumps(const Case& c) {
     const ParticleBox box = particle_box(c);
+    if (c.side_walls == SideWalls::AsBottom && (c.cell.ring() || box.periodic_z))
+        c.section("walls").fail("sides", c.cell.ring() ? "\"as_bottom\": the whole ring's side walls are its cylinders, "
+                                                         "built as planes or meshes only; use \"plane\""
+                                                       : "\"as_bottom\" needs side walls ([cell] width > 0; width = 0 "
+                                                         "is periodic across the width); use \"plane\"");
     for (const OperatingPoint& p : c.points) {
         const auto bottom = wall_bumps(c, p, p.bottom, "bottom", box);
         const auto top = wall_bumps(c, p, p.top, "top", box);

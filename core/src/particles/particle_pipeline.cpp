@@ -221,6 +221,9 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
     const std::optional<BumpLayer> none;
     out.run["walls"] = {{"bottom", walls_json(in.bumps_bottom ? *in.bumps_bottom : none)},
                         {"top", walls_json(in.bumps_top ? *in.bumps_top : none)},
+                        {"sides", in.annulus          ? nlohmann::json("cylinders")
+                                  : in.box.periodic_z ? nlohmann::json("periodic")
+                                                      : walls_json(in.bumps_side ? *in.bumps_side : none)},
                         {"slip_measured", "wall speed minus the mean velocity of the station next to the wall's "
                                           "plane; on a rough wall, of the first station whose centre is clear of "
                                           "its bumps (half a bump diameter from the plane through their centres)"}};

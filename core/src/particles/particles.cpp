@@ -312,10 +312,11 @@ ParticleBox count_box(const Case& c, double periodic_depth) {
 double insertion_height(const Case& c, const InsertionOptions& opt) { return opt.height > 0 ? opt.height : c.cell.gap; }
 
 // The slice's insertion box: the count box up to the insertion height, less the bumps' halves
-// (insert_grains places it from y = opt.floor).
+// (insert_grains places it from y = opt.floor, centred across the width).
 ParticleBox insertion_box(const Case& c, const ParticleBox& count, const InsertionOptions& opt) {
     ParticleBox b = count;
     b.gap = insertion_height(c, opt) - opt.floor - opt.ceiling;
+    if (!b.periodic_z) b.width -= 2.0 * opt.side;
     return b;
 }
 
@@ -347,6 +348,7 @@ InsertionOptions with_case(const Case& c, const OperatingPoint& pt, InsertionOpt
     opt.size_spread = c.grains.size_spread;
     opt.floor = bump_protrusion(c, pt.bottom);
     opt.ceiling = bump_protrusion(c, pt.top);
+    opt.side = c.side_walls == SideWalls::AsBottom ? opt.floor : 0.0;  // the floor's bumps (wall_bumps.h)
     return opt;
 }
 }  // namespace
@@ -374,6 +376,7 @@ InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, cons
         key += fmt::format(" h={:.17g}", opt.height);
     if (opt.size_spread > 0) key += fmt::format(" spread={:.17g}", opt.size_spread);
     if (opt.floor > 0 || opt.ceiling > 0) key += fmt::format(" bumps={:.17g},{:.17g}", opt.floor, opt.ceiling);
+    if (opt.side > 0) key += fmt::format(" side_bumps={:.17g}", opt.side);
     if (std::filesystem::exists(out.file)) {
         const auto comments = read_particles_comments(out.file);
         if (std::find(comments.begin(), comments.end(), key) != comments.end()) {

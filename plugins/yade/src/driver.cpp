@@ -79,10 +79,14 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
                 {"snapshot_every", s.snapshot_every},
                 {"body_force_every", s.body_force_every}};
     j["initial_file"] = fs::absolute(initial_file).string();
-    // rough walls: the bumps' centres in the wall's plane (granlub y = 0, and the top's start)
-    auto layer = [](const BumpLayer& b) { return json{{"diameter", b.diameter}, {"x", b.x}, {"z", b.z}}; };
-    if (s.bumps_bottom) j["bumps"]["bottom"] = layer(*s.bumps_bottom);
-    if (s.bumps_top) j["bumps"]["top"] = layer(*s.bumps_top);
+    // rough walls: the bumps' centres in the wall's plane (granlub y = 0, and the top's start; the
+    // side walls' at z = -W/2 and W/2, their heights in "y")
+    auto layer = [](const BumpLayer& b, const char* across) {
+        return json{{"diameter", b.diameter}, {"x", b.x}, {across, b.across}};
+    };
+    if (s.bumps_bottom) j["bumps"]["bottom"] = layer(*s.bumps_bottom, "z");
+    if (s.bumps_top) j["bumps"]["top"] = layer(*s.bumps_top, "z");
+    if (s.bumps_side) j["bumps"]["sides"] = layer(*s.bumps_side, "y");
     if (s.servo.load) {  // the plate servo of granlub/particles/servo.h, lengths in m
         const ServoSettings& v = s.servo;
         j["servo"] = {{"target_stress", v.target_stress},

@@ -129,6 +129,7 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
                               .contact_box = box,  // coordination and order; no persistence snapshots
                               .bumps_bottom = &s.bumps_bottom,
                               .bumps_top = &s.bumps_top,
+                              .bumps_side = &s.bumps_side,
                               .what = fmt::format("case {} point {} (granlub yade)", c.name, p.id)};
     ParticleReduction red = run_particle_pipeline(pl, rec, dir);
     Summary sum = std::move(base);

@@ -68,6 +68,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     const ParticleBox box = particle_box(c, r.periodic_depth);
     r.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", box);
     r.bumps_top = wall_bumps(c, p, p.top, "top", box);
+    r.bumps_side = side_bumps(c, p, box, r.servo.load ? r.servo.gap_max : box.gap);  // up to the highest plate
     if (r.bumps_top && r.servo.load && r.weight_plate)
         s.fail("servo_plate", "\"weight\" with a rough top wall ([walls] surface = \"bumps\"): the bumps would ride "
                               "a free plate; use servo_plate = \"window\" (granlub dem's servo), which moves them "

@@ -46,6 +46,11 @@ struct Wall {
     double bump_diameter = 0;  // m; 0 = the largest bumps that give R
 };
 
+// The trough's side walls ([walls] sides; a slice with [cell] width > 0), which move with the
+// bottom wall: smooth frictional planes, or the bottom wall's surface (wall_bumps.h: with bumps on
+// the floor, the same bumps on each side wall, moving with it).
+enum class SideWalls { Plane, AsBottom };
+
 // slice: a periodic stretch of the trough (the curvature, if any, as a centripetal body force);
 // annulus: the whole ring trough, run by granlub dem (granlub/particles/annulus.h).
 enum class Geometry { Slice, Annulus };
@@ -93,6 +98,7 @@ struct Case {
     Grains grains;
     Wall bottom;  // as declared (before any roughness sweep)
     Wall top;
+    SideWalls side_walls = SideWalls::Plane;
     Cell cell;
     double gravity = 0;  // m/s^2 along -y
     std::vector<OperatingPoint> points;

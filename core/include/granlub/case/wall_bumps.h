@@ -1,5 +1,6 @@
 // Rough walls of the particle solvers ([walls] surface = "bumps"): a monolayer of fixed spheres on
-// the floor and on the loaded top, moving with their wall, as the experiment's rough surfaces (a
+// the floor and on the loaded top (and on the side walls with [walls] sides = "as_bottom"), moving
+// with their wall, as the experiment's rough surfaces (a
 // bonded monolayer of glass beads, Sawyer & Tichy 2001). Declared and laid out here once; both
 // particle engines build the same bumps from it.
 //
@@ -48,7 +49,9 @@ struct BumpLayer {
     double row_spacing = 0;       // across the width, m
     std::size_t count_x = 0, rows = 0;
     double roughness = 0;         // R built: l / (d_w + d)
-    std::vector<double> x, z;     // centres in the wall's plane (z in [-W/2, W/2])
+    // centres in the wall's plane: x along the flow, and across it z (in [-W/2, W/2]) on the floor
+    // and the top, y (the height above the floor) on a side wall (side_bumps)
+    std::vector<double> x, across;
     std::size_t size() const { return x.size(); }
 };
 
@@ -58,6 +61,14 @@ struct BumpLayer {
 // periodic length that holds no whole number of bumps near R, bumps that leave no room in the gap).
 std::optional<BumpLayer> wall_bumps(const Case& c, const OperatingPoint& p, const Wall& w, const char* side,
                                     const ParticleBox& box);
+
+// The bumps of each side wall of a point ([walls] sides = "as_bottom", side walls at z = -W/2 and
+// W/2), or none for plane sides, a plane floor or a periodic width. The floor's bumps (their
+// diameter, their spacing along the flow, R) on a hexagonal lattice in the wall's x-y plane: rows
+// l sqrt(3)/2 apart in height, every other one shifted by l/2, from one row above the floor (the
+// corner's row would sit on the floor's line) up to y_top, the highest the top wall can go. Rows
+// above the top wall meet no grain. Throws CaseError as wall_bumps, or when y_top holds no row.
+std::optional<BumpLayer> side_bumps(const Case& c, const OperatingPoint& p, const ParticleBox& box, double y_top);
 
 // How far a wall's bumps reach into the gap, m: half their diameter, 0 for a plane (no layout).
 double bump_protrusion(const Case& c, const Wall& w);

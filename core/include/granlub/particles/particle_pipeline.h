@@ -65,6 +65,7 @@ struct ParticlePipeline {
     std::int64_t persistence_every = 0;  // steps between the persistence snapshots
     const std::optional<BumpLayer>* bumps_bottom = nullptr;  // rough walls (wall_bumps.h), for run.walls
     const std::optional<BumpLayer>* bumps_top = nullptr;
+    const std::optional<BumpLayer>* bumps_side = nullptr;    // each side wall's ([walls] sides)
     std::string what;                    // the first comment of every table: case, point, provenance
 };
 

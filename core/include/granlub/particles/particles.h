@@ -64,9 +64,10 @@ struct InsertionOptions {
     double height = 0;
     double wall_sag = 0;
     // rough walls (wall_bumps.h): the grains are inserted between y = floor and height - ceiling,
-    // clear of the bumps' halves on the floor and under the top (set by initial_particles)
+    // and `side` clear of each side wall: clear of the bumps' halves (set by initial_particles)
     double floor = 0;
     double ceiling = 0;
+    double side = 0;
 };
 
 // Deterministic, overlap-free placement of n grains of mean diameter d (sizes drawn with

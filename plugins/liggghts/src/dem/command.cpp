@@ -70,6 +70,9 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     std::vector<BumpAtoms> bumps;
     if (s.bumps_bottom) bumps.push_back({*s.bumps_bottom, kBottom, 0.0, p.speed});
     if (s.bumps_top) bumps.push_back({*s.bumps_top, kTop, s.plate_start, 0.0});
+    if (s.bumps_side)
+        for (double z : {-0.5 * s.box.width, 0.5 * s.box.width})
+            bumps.push_back({*s.bumps_side, kSide, z, p.speed, true});
     write_file_atomic(dir / kData, data_file(init.particles, bounds, c.grains.density,
                                              fmt::format("case {} point {} ({})", c.name, p.id, prov), bumps));
     if (s.ring) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facets);
@@ -117,6 +120,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
                         .persistence_every = s.persistence_every,
                         .bumps_bottom = &s.bumps_bottom,
                         .bumps_top = &s.bumps_top,
+                        .bumps_side = &s.bumps_side,
                         .what = fmt::format("case {} point {} ({})", c.name, p.id, prov)};
     r.out = run_particle_pipeline(pl, rec, dir);
     r.out.run["flow_regime"]["persistence_extra_steps"] = s.persistence_run_steps();

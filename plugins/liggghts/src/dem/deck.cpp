@@ -18,6 +18,10 @@ DataBounds slice_bounds(const ParticleBox& box, double top) {
 DataBounds bump_bounds(DataBounds b, const Settings& s) {
     if (s.bumps_bottom) b.ylo = -0.5 * s.bumps_bottom->diameter;
     if (s.bumps_top) b.yhi += 0.5 * s.bumps_top->diameter;
+    if (s.bumps_side) {  // the side walls' bumps are centred on the planes z = -W/2 and W/2
+        b.zlo -= 0.5 * s.bumps_side->diameter;
+        b.zhi += 0.5 * s.bumps_side->diameter;
+    }
     return b;
 }
 
@@ -35,7 +39,7 @@ std::string data_file(const ParticleSet& p, const DataBounds& b, double density,
     for (const auto& w : bumps)
         for (std::size_t k = 0; k < w.layer.size(); ++k)
             out += fmt::format("{} {} {} {} {} {} {}\n", ++id, static_cast<int>(w.type), w.layer.diameter,
-                               kBumpDensityFactor * density, w.layer.x[k], w.y, w.layer.z[k]);
+                               kBumpDensityFactor * density, w.layer.x[k], w.y(k), w.z(k));
     out += "\nVelocities\n\n";
     for (std::size_t i = 0; i < p.size(); ++i)
         out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, p.vx[i], p.vy[i], p.vz[i], p.has_spin() ? p.wx[i] : 0.0,
@@ -176,9 +180,10 @@ void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, co
 
 namespace {
 
-// Rough walls (core wall_bumps.h): the bumps are atoms of the wall's type (2 floor, 3 top) that no
-// fix integrates; the floor's move along the flow with it, the top's jump with the plate (servo
-// loop). Bumps never meet each other or the planes, which act on the grains only.
+// Rough walls (core wall_bumps.h): the bumps are atoms of the wall's type (2 floor, 3 top, 4 side
+// walls) that no fix integrates; the floor's and the side walls' move along the flow with the
+// floor, the top's jump with the plate (servo loop). Bumps never meet each other or the planes,
+// which act on the grains only.
 void bump_block(const Settings& s, const DeckLine& line, double U) {
     line("# rough walls: a monolayer of bumps (atoms of the wall's type, not integrated, heavy: a wall to");
     line("# the grains); their centres on the wall's plane. Planes, body forces and integration: grains only");
@@ -192,8 +197,36 @@ void bump_block(const Settings& s, const DeckLine& line, double U) {
     if (s.bumps_top)
         line(fmt::format("group tbump type 3   # {} bumps of {} m, {} m apart along the flow, R = {:.4g}",
                          s.bumps_top->size(), s.bumps_top->diameter, s.bumps_top->spacing, s.bumps_top->roughness));
+    if (s.bumps_side) {
+        line(fmt::format("group sbump type 4   # {} bumps on each side wall, {} rows above the floor", s.bumps_side->size(),
+                         s.bumps_side->rows));
+        line("region zlow block INF INF INF INF INF 0.0 units box");
+        line("group zlow region zlow");
+        line("group sbump1 intersect sbump zlow   # on the side wall at z = -W/2");
+        line("group sbump2 subtract sbump sbump1");
+        line(fmt::format("fix smove sbump move linear {} 0 0", U));
+    }
     for (const char* pair : {"2 2", "2 3", "3 3"}) line(fmt::format("neigh_modify exclude type {}", pair));
+    if (s.bumps_side)
+        for (const char* pair : {"2 4", "3 4", "4 4"}) line(fmt::format("neigh_modify exclude type {}", pair));
     line("");
+}
+
+// The side walls' columns (x: their drag; y: what they carry of the grains' weight), fx fx fy fy,
+// each its plane's force plus its bumps' (as bump_force_columns).
+std::string side_force_columns(const Settings& s, const DeckLine& line) {
+    if (!s.bumps_side) return " c_fwall[7] c_fwall[10] c_fwall[8] c_fwall[11]";
+    line("compute fbumps1 sbump1 reduce sum fx fy fz");
+    line("compute fbumps2 sbump2 reduce sum fx fy fz");
+    std::string cols;
+    for (int k = 0; k < 2; ++k)
+        for (int side = 1; side <= 2; ++side) {
+            const char axis = "xy"[k];
+            line(fmt::format("variable ws{0}{1} equal c_fwall[{2}]-c_fbumps{0}[{3}]", side, axis, 4 + 3 * side + k,
+                             k + 1));
+            cols += fmt::format(" v_ws{}{}", side, axis);
+        }
+    return cols;
 }
 
 // The wall file's columns with bumps: each wall's force on the grains is its plane's plus its
@@ -291,7 +324,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     std::string cols = "c_fwall[1] c_fwall[2] c_fwall[3] c_fwall[4] c_fwall[5] c_fwall[6]";
     if (s.bumps()) cols = bump_force_columns(s, line);
     // x: the side walls' drag; y: what they carry of the grains' weight (the vertical balance)
-    if (!box.periodic_z) cols += " c_fwall[7] c_fwall[10] c_fwall[8] c_fwall[11]";
+    if (!box.periodic_z) cols += side_force_columns(s, line);
     line(fmt::format("fix walls all ave/time 1 {0} {0} {1} file {2}", s.sample_every, cols, kWallFile));
     line(fmt::format("# wall area A = L W = {} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A", A));
     line("");

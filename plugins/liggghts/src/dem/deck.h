@@ -47,11 +47,15 @@ DataBounds slice_bounds(const ParticleBox& box, double top);
 // moves both atoms of an overlap in inverse proportion to their masses and counts the impulses so
 // far through f / m; a bump this heavy is a wall to all of them (m_eff within 1e-6 of the grain's).
 inline constexpr double kBumpDensityFactor = 1e6;
+// A floor's or top's layer lies in the plane y = `plane`, a side wall's in z = `plane`.
 struct BumpAtoms {
     const BumpLayer& layer;
     AtomType type;
-    double y;
+    double plane;
     double vx;
+    bool side = false;
+    double y(std::size_t k) const { return side ? layer.across[k] : plane; }
+    double z(std::size_t k) const { return side ? plane : layer.across[k]; }
 };
 // The data file's box below the floor and above the box top: room for the bumps' halves.
 DataBounds bump_bounds(DataBounds b, const Settings& s);

@@ -129,6 +129,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     }
     st.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", st.box);
     st.bumps_top = wall_bumps(c, p, p.top, "top", st.box);
+    st.bumps_side = side_bumps(c, p, st.box, st.box_top());
     // fix impulse/solve moves every atom it solves (its pseudo-velocities shift positions), but the
     // bumps are atoms no fix integrates: the iterated solve would shift them; not served.
     if (st.iterated && st.bumps())

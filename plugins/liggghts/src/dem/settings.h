@@ -72,9 +72,10 @@ struct Settings : ServoSettings {
 
     double box_top() const { return load ? gap_max : box.gap; }
     // rough walls ([walls] surface = "bumps", core wall_bumps.h): atoms of the wall's type that the
-    // deck does not integrate; the floor's move with it, the top's with the plate
-    std::optional<BumpLayer> bumps_bottom, bumps_top;
-    bool bumps() const { return bumps_bottom || bumps_top; }
+    // deck does not integrate; the floor's and the side walls' move with the floor, the top's with
+    // the plate. bumps_side: the layer of each side wall ([walls] sides = "as_bottom")
+    std::optional<BumpLayer> bumps_bottom, bumps_top, bumps_side;
+    bool bumps() const { return bumps_bottom || bumps_top || bumps_side; }
     // the group of the integrated grains: "all" without bumps (the deck as it always was)
     std::string grains_group() const { return bumps() ? "grains" : "all"; }
 

@@ -46,7 +46,7 @@ struct Settings {
     double plate_mass = 1.0;
     // rough walls ([walls] surface = "bumps", core wall_bumps.h): fixed spheres in the driver, the
     // floor's moving with it, the top's with the window servo's plate
-    std::optional<BumpLayer> bumps_bottom, bumps_top;
+    std::optional<BumpLayer> bumps_bottom, bumps_top, bumps_side;  // bumps_side: each side wall's
 };
 
 
