@@ -1,5 +1,5 @@
 // The steady-state detector (granlub/statistics/steady_state.h) on series measured on cases/sawyer2001
-// (tests/core/data): U = 2.0 m/s, which MSER-5 alone called a transient over a 0.4 % bump of the
+// (tests/core/statistics/data): U = 2.0 m/s, which MSER-5 alone called a transient over a 0.4 % bump of the
 // gap, and U = 2.8 m/s, which it called steady from 0.055 s while the gap still compacted.
 #include <boost/test/unit_test.hpp>
 
