@@ -121,6 +121,14 @@ void final_state_block(const Settings& s, const DeckLine& line) {
     if (s.load) line(fmt::format("print \"${{hplate}}\" file {}", kFinalPlateFile));
 }
 
+bool fixed_top_ending(const Settings& s, const DeckLine& line) {
+    if (s.load) return false;
+    line(fmt::format("run             {}", s.steps));
+    persistence_block(s, line);
+    final_state_block(s, line);
+    return true;
+}
+
 ModelText model_text(const Settings& s) {
     if (s.model != Model::Impulse) return {"model hertz tangential history", ""};
     return {"model impulse tangential impulse",
@@ -330,12 +338,7 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line("");
     line("# particle snapshots for coarse-graining across the gap");
     output_block(s, line);
-    if (!s.load) {
-        line(fmt::format("run             {}", s.steps));
-        persistence_block(s, line);
-        final_state_block(s, line);
-        return d;
-    }
+    if (fixed_top_ending(s, line)) return d;
     // Load control (README "Load control"): a plate servo in the deck. Every servo_every steps the
     // plate moves by gain d clamp((P_top - P)/P, -1, max_error), P_top the top-wall stress averaged
     // over those steps (summed every step: the impulsive force is integrated, not sampled), then

@@ -94,5 +94,8 @@ void servo_rule_block(const Settings& s, const DeckLine& line, const std::string
                       double A, double d);
 // the final state at 17 digits (and the plate position under load)
 void final_state_block(const Settings& s, const DeckLine& line);
+// Both decks' ending without load control (a fixed top): the run, then the persistence snapshots
+// and the final state. Returns false, writing nothing, under load control (the servo loop ends it).
+bool fixed_top_ending(const Settings& s, const DeckLine& line);
 
 }  // namespace granlub::dem

@@ -75,12 +75,7 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
     line("");
     line("# particle snapshots for coarse-graining (granlub maps them onto the slice's frame, granlub/particles/annulus.h)");
     output_block(s, line);
-    if (!s.load) {
-        line(fmt::format("run             {}", s.steps));
-        persistence_block(s, line);
-        final_state_block(s, line);
-        return d;
-    }
+    if (fixed_top_ending(s, line)) return d;
     // The slice's servo rule (deck.cpp) with the plate moved, not re-made: re-making the top mesh
     // at each window left 14 % of the grains' weight out of the walls' recorded forces (plugin
     // README, "The whole ring"); a mesh moving at a steady speed keeps the books.
