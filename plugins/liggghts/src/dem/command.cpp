@@ -257,7 +257,10 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
                 set_regime(r.summary.run, RegimeStatus::Transient,
                            "the full-step run the half-step run checks against did not reach a steady state: "
                            "run longer (--full)");
-            r.line += " [dt/2] no verdict on dt (a run is not steady)";  // its stresses are no answer to compare
+            // its stresses are no answer to compare; the line says which run and what the point is then
+            r.line += coarse_steady ? " [dt/2] no verdict on dt (this run is not steady)"
+                                    : " [dt/2] TRANSIENT: the full-step run it checks against is not steady (no verdict "
+                                      "on dt; run longer: --full)";
         } else {
             const std::string why = dt_unconverged_reason(rec);
             if (!why.empty()) set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
