@@ -108,6 +108,15 @@ Regime read_regime(const nlohmann::json& run) {
                           ? run.at("status_reason").get<std::string>()
                           : std::string()};
     if (r.status == RegimeStatus::Steady && run.contains("dt_refinement")) {
+        // a check against a run that never reached a steady state is no check: the point is a
+        // transient (summaries written before the solver said so itself read the same way)
+        const auto& rec = run.at("dt_refinement");
+        if (rec.is_object() && rec.contains("full_step_run") && rec.at("full_step_run").is_object()) {
+            const auto& check = rec.at("full_step_run");
+            if (check.contains("status") && check.at("status") != "steady")
+                return {RegimeStatus::Transient, "the full-step run the half-step run checks against did not reach a "
+                                                 "steady state: run longer (--full)"};
+        }
         try {
             if (auto why = dt_unconverged_reason(run.at("dt_refinement")); !why.empty())
                 r = {RegimeStatus::DtUnconverged, why};

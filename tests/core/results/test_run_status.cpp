@@ -62,6 +62,18 @@ BOOST_AUTO_TEST_CASE(dt_refinement_thresholds) {
     // A transient stays transient whatever the refinement says.
     set_regime(run, RegimeStatus::Transient, "short");
     BOOST_TEST((read_regime(run).status == RegimeStatus::Transient));
+    // A steady answer checked against a full-step run that was not steady is a transient too,
+    // whether or not the two differ by more than the rule allows.
+    set_regime(run, RegimeStatus::Steady);
+    for (const auto& [dnu, dtau] : {std::pair{0.0, 0.0}, std::pair{-0.006, 0.0}}) {
+        run["dt_refinement"] = refinement(dnu, dtau, 0.0);
+        run["dt_refinement"]["full_step_run"] = {{"status", "transient"}};
+        const Regime t = read_regime(run);
+        BOOST_TEST((t.status == RegimeStatus::Transient));
+        BOOST_TEST(t.reason.find("full-step run") != std::string::npos, t.reason);
+        run["dt_refinement"]["full_step_run"]["status"] = "steady";
+        BOOST_TEST((read_regime(run).status == (dnu == 0.0 ? RegimeStatus::Steady : RegimeStatus::DtUnconverged)));
+    }
 }
 
 BOOST_AUTO_TEST_CASE(failure_record_round_trip) {

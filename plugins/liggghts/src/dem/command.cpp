@@ -251,9 +251,12 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     if (refined) {
         const nlohmann::json rec = refinement_record(*refined, s, r.summary.outputs);
         r.summary.run["dt_refinement"] = rec;
+        // each run's own steady-state verdict (out.run holds no dt_refinement, so read_regime does not
+        // apply the Delta-t rule to it): a check against a transient is no check
         const bool coarse_steady = read_regime(refined->coarse.out.run).steady();
-        if (read_regime(r.summary.run).status == RegimeStatus::Transient || !coarse_steady) {
-            if (!coarse_steady && read_regime(r.summary.run).steady())
+        const bool fine_steady = read_regime(out.run).steady();
+        if (!fine_steady || !coarse_steady) {
+            if (fine_steady)
                 set_regime(r.summary.run, RegimeStatus::Transient,
                            "the full-step run the half-step run checks against did not reach a steady state: "
                            "run longer (--full)");
