@@ -527,12 +527,21 @@ bool feeds(const Case& c, const std::string& section, std::string_view solver_se
 }
 }  // namespace
 
+namespace {
+// Whether a key of a section is one of a solver's inputs: given, or defaulted, unless it sits at a
+// neutral default (KeySpec::neutral_default).
+bool is_input(const Section& s, const KeySpec& k) {
+    if (!s.has(k.name)) return false;
+    return !(k.neutral_default && k.default_value && s.values().at(k.name) == *k.default_value);
+}
+}  // namespace
+
 std::map<std::string, std::string> Case::inputs(std::string_view solver_section) const {
     std::map<std::string, std::string> out;
     for (const auto& [sname, s] : sections) {
         if (!feeds(*this, sname, solver_section)) continue;
         for (const auto& k : s.spec().keys)
-            if (s.has(k.name)) out[fmt::format("[{}] {}", sname, k.name)] = value_text(s.values().at(k.name));
+            if (is_input(s, k)) out[fmt::format("[{}] {}", sname, k.name)] = value_text(s.values().at(k.name));
     }
     return out;
 }
@@ -545,7 +554,7 @@ std::string Case::inputs_hash(std::string_view solver_section) const {
         if (!feeds(*this, sname, solver_section)) continue;
         os << '[' << sname << "]\n";
         for (const auto& k : s.spec().keys)
-            if (s.has(k.name)) os << k.name << '=' << value_text(s.values().at(k.name)) << '\n';
+            if (is_input(s, k)) os << k.name << '=' << value_text(s.values().at(k.name)) << '\n';
     }
     return hash_hex(os.str());
 }

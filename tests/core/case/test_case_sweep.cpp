@@ -79,6 +79,21 @@ BOOST_AUTO_TEST_CASE(hashes_track_what_results_depend_on) {
     BOOST_TEST(a.inputs_hash("toy") != toy_changed.inputs_hash("toy"));    // own section matters
     BOOST_TEST(a.inputs_hash("other") == toy_changed.inputs_hash("other")); // others' sections do not
     BOOST_TEST(a.inputs_hash("other") != physics_changed.inputs_hash("other"));
+    // a key with a neutral default ([walls] sides = "plane", added after results existed) is no
+    // input at its default, whether defaulted or written out; any other value is
+    toy.keys.push_back({.name = "added", .type = KeyType::Choice, .default_value = Value(std::string("off")),
+                        .choices = {"off", "on"}, .doc = "added later", .neutral_default = true});
+    Schema later = Schema::common();
+    later.add(toy);
+    const Case at_default = parse_case(kValidCase + "\n[toy]\nadded = \"off\"\n", "t.toml", later);
+    const Case set = parse_case(kValidCase + "\n[toy]\nadded = \"on\"\n", "t.toml", later);
+    BOOST_TEST(parse_case(kValidCase, "t.toml", later).inputs_hash("toy") == a.inputs_hash("toy"));
+    BOOST_TEST(at_default.inputs_hash("toy") == a.inputs_hash("toy"));
+    BOOST_TEST(!at_default.inputs("toy").count("[toy] added"));
+    BOOST_TEST(set.inputs_hash("toy") != a.inputs_hash("toy"));
+    BOOST_TEST(set.inputs("toy").at("[toy] added") == "\"on\"");
+    const Case sides = parse_case(with("roughness = 0.5", "roughness = 0.5\nsides = \"plane\""), "t.toml", schema);
+    BOOST_TEST(sides.inputs_hash("toy") == a.inputs_hash("toy"));
 }
 
 BOOST_AUTO_TEST_CASE(describe_marks_defaults_and_lists_points) {

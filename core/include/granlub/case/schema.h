@@ -62,6 +62,9 @@ struct KeySpec {
     std::vector<std::pair<std::string, std::string>> old_spellings;
     std::string unit;                    // SI unit, "" = dimensionless
     std::string doc;
+    // The default does what was computed before the key existed: at its default the key is left
+    // out of the inputs hash (Case::inputs_hash), so adding it made no earlier result stale.
+    bool neutral_default = false;
 
     std::string allowed_text() const;    // "a real number in (0, 1]", "one of "a", "b"", ...
     std::string type_name() const;
