@@ -100,14 +100,17 @@ BOOST_AUTO_TEST_CASE(weight_plate_carries_the_target_load, *boost::unit_test::pr
 }
 
 namespace {
-// The rough, spread case below; `sides` adds [walls] lines (the side walls' surface).
+// The rough, spread case below; `sides` adds [walls] lines (the side walls' surface). Bumps on the
+// side walls narrow the tiny cell's insertion box by a bump diameter: the plate then starts at 2.2 H
+// so that the grains fit.
 Case rough_case(const std::string& sides = "") {
     return tiny_case_edits({{"control = \"fill\"", "control = \"load\"\nnormal_stress = 200"},
                             {"time = 1.5e-3", "time = 0.08"},
                             {"snapshots = 30", "snapshots = 20"},
                             {"friction = 0.5\n\n[walls]", "friction = 0.5\nsize_spread = 0.1\n\n[walls]"},
                             {"roughness = 0.5", "roughness = 0.5\nsurface = \"bumps\"" + sides}},
-                           "contact_time = 5e-5\nservo_every = 100\nstations = 6\nservo_max_gap = 1.75\n");
+                           "contact_time = 5e-5\nservo_every = 100\nstations = 6\nservo_max_gap = " +
+                               std::string(sides.empty() ? "1.75" : "2.2") + "\n");
 }
 const std::pair<int, fs::path>& rough_run(const std::string& sides = "") {
     static std::map<std::string, std::pair<int, fs::path>> cache;
@@ -146,7 +149,8 @@ BOOST_AUTO_TEST_CASE(rough_walls_and_a_size_spread, *boost::unit_test::precondit
 
 // [walls] sides = "as_bottom": the floor's bumps on both side walls, moving with the floor, their
 // force counted with the side walls' (as in `granlub dem`); they drag the bed's edges harder than
-// the planes of the same rough cell.
+// the planes of the same rough cell. Both 0.08 s runs are transients (the plate is still settling);
+// measured 28 Pa with planes against 42 Pa with bumps, a margin far beyond their difference in start.
 BOOST_AUTO_TEST_CASE(rough_side_walls, *boost::unit_test::precondition(YadeInstalled())) {
     const auto& [code, dir] = rough_run("\nsides = \"as_bottom\"");
     BOOST_TEST_REQUIRE(code == 0);
