@@ -116,7 +116,8 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
                                 {"snapshots_used", in.cg.snapshots() - first}});
     set_regime(o.run, win.steady ? RegimeStatus::Steady : RegimeStatus::Transient,
                win.steady ? ""
-                          : fmt::format("no steady state detected in {:.3g} s of simulated time: run longer (--full)",
+                          : fmt::format("no steady state detected in {:.3g} s of simulated time: run longer (--full, "
+                                        "or a longer `time`)",
                                         in.simulated_s));
     o.line = fmt::format("nu={:.3f} P_bot={:.4g} P_top={:.4g} tau_bot={:.4g} tau_top={:.4g} Pa "
                          "slip={:.3f}/{:.3f} U{}{}",

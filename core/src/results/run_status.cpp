@@ -115,7 +115,7 @@ Regime read_regime(const nlohmann::json& run) {
             const auto& check = rec.at("full_step_run");
             if (check.contains("status") && check.at("status") != "steady")
                 return {RegimeStatus::Transient, "the full-step run the half-step run checks against did not reach a "
-                                                 "steady state: run longer (--full)"};
+                                                 "steady state: run longer (--full, or a longer `time`)"};
         }
         try {
             if (auto why = dt_unconverged_reason(run.at("dt_refinement")); !why.empty())

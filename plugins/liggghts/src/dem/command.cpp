@@ -259,11 +259,11 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
             if (fine_steady)
                 set_regime(r.summary.run, RegimeStatus::Transient,
                            "the full-step run the half-step run checks against did not reach a steady state: "
-                           "run longer (--full)");
+                           "run longer (--full, or a longer `time`)");
             // its stresses are no answer to compare; the line says which run and what the point is then
             r.line += coarse_steady ? " [dt/2] no verdict on dt (this run is not steady)"
                                     : " [dt/2] TRANSIENT: the full-step run it checks against is not steady (no verdict "
-                                      "on dt; run longer: --full)";
+                                      "on dt; run longer: --full, or a longer `time`)";
         } else {
             const std::string why = dt_unconverged_reason(rec);
             if (!why.empty()) set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
