@@ -249,26 +249,18 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
                          init.particles.size(), rs.steps, r.summary.run["atom_steps_per_s"].get<double>(),
                          verdict.label(), verdict.criterion);
     if (refined) {
-        const nlohmann::json rec = refinement_record(*refined, s, r.summary.outputs);
-        r.summary.run["dt_refinement"] = rec;
-        // each run's own steady-state verdict (out.run holds no dt_refinement, so read_regime does not
-        // apply the Delta-t rule to it): a check against a transient is no check
-        const bool coarse_steady = read_regime(refined->coarse.out.run).steady();
-        const bool fine_steady = read_regime(out.run).steady();
-        if (!fine_steady || !coarse_steady) {
-            if (fine_steady)
-                set_regime(r.summary.run, RegimeStatus::Transient,
-                           "the full-step run the half-step run checks against did not reach a steady state: "
-                           "run longer (--full, or a longer `time`)");
-            // its stresses are no answer to compare; the line says which run and what the point is then
-            r.line += coarse_steady ? " [dt/2] no verdict on dt (this run is not steady)"
-                                    : " [dt/2] TRANSIENT: the full-step run it checks against is not steady (no verdict "
-                                      "on dt; run longer: --full, or a longer `time`)";
-        } else {
-            const std::string why = dt_unconverged_reason(rec);
-            if (!why.empty()) set_regime(r.summary.run, RegimeStatus::DtUnconverged, why);
-            r.line += why.empty() ? " [dt/2] converged in dt" : " [dt/2] NOT CONVERGED in dt (" + why + ")";
-        }
+        r.summary.run["dt_refinement"] = refinement_record(*refined, s, r.summary.outputs);
+        // the point's status is read as the report reads it (read_regime): its own run's, then the
+        // check's verdict on it; written out so that summary.json says it too
+        const Regime point = read_regime(r.summary.run);
+        if (point.status == RegimeStatus::Unknown) throw Error("internal: " + point.reason);
+        set_regime(r.summary.run, point.status, point.reason);
+        if (!read_regime(out.run).steady())
+            r.line += " [dt/2] no verdict on dt (this run is not steady)";  // no answer to compare
+        else if (point.status == RegimeStatus::Transient)
+            r.line += " [dt/2] TRANSIENT: " + point.reason + " (no verdict on dt)";
+        else
+            r.line += point.steady() ? " [dt/2] converged in dt" : " [dt/2] NOT CONVERGED in dt (" + point.reason + ")";
     }
     return r;
 }
