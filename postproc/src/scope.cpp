@@ -106,16 +106,24 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
     std::vector<double> simulated, steady_from, steps, iterations;
     std::vector<double> check_simulated, check_steady_from;  // the full-step runs of a Delta-t check
     std::string check_start;                                  // how the first checked run's half-step run began
+    double cap = 0;                                           // [dem] time_max: runs continued until steady
+    int continued = 0;
     for (const Run* r : runs) {
         if (auto v = run_number(*r, "simulated_time_s")) simulated.push_back(*v);
         if (auto v = run_number(*r, "steady_state_start_s")) steady_from.push_back(*v);
         if (auto v = run_number(*r, "steps")) steps.push_back(*v);
         if (auto v = run_number(*r, "iterations")) iterations.push_back(*v);
         const auto& run = r->summary->run;
+        if (run.is_object() && run.contains("continuation")) {
+            cap = run["continuation"].value("time_max_s", 0.0);
+            if (run["continuation"].value("pieces", 1) > 1) ++continued;
+        }
         if (run.is_object() && run.contains("dt_refinement") && run["dt_refinement"].contains("full_step_run")) {
             const auto& f = run["dt_refinement"]["full_step_run"];
             if (check_start.empty()) check_start = run["dt_refinement"].value("start", std::string("not recorded"));
-            if (f.contains("steps") && f.contains("time_step_s"))
+            if (f.contains("continuation"))  // continued until steady ([dem] time_max): all its pieces
+                check_simulated.push_back(f["continuation"].value("simulated_s", 0.0));
+            else if (f.contains("steps") && f.contains("time_step_s"))
                 check_simulated.push_back(f["steps"].get<double>() * f["time_step_s"].get<double>());
             if (f.contains("steady_state_start_s") && f["steady_state_start_s"].is_number())
                 check_steady_from.push_back(f["steady_state_start_s"].get<double>());
@@ -169,6 +177,10 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
         s.run_length = range_text(simulated, "s") + " simulated" + (check_simulated.empty() ? "" : " at half the time step");
         if (!steady_from.empty()) s.run_length += ", averaged from " + range_text(steady_from, "s");
         if (!steps.empty()) s.run_length += " (" + range_text(steps, "steps", 0) + ")";
+        if (cap > 0)
+            s.run_length += fmt::format("; runs not steady at their length continued from where they ended, doubling, "
+                                        "up to {} s in all, the last piece averaged ({} of {} points continued)",
+                                        num(cap, 3), continued, runs.size());
         if (!check_simulated.empty()) {  // what the numbers are: the half-step run, checked (refine_dt)
             s.run_length += "; checked against a run of " + range_text(check_simulated, "s") + " at the full step";
             if (!check_steady_from.empty()) s.run_length += " (steady from " + range_text(check_steady_from, "s") + ")";

@@ -15,6 +15,7 @@
 #include "granlub/particles/particles.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
+#include "granlub/run/until_steady.h"
 #include "granlub/statistics/flow_regime.h"
 #include "outputs.h"
 #include "pvd.h"
@@ -130,6 +131,65 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     return r;
 }
 
+// [dem] time_max: until steady, with a cap (the policy and the record: granlub/run/until_steady.h).
+// A piece starts from the run's own final state (grains, spins, plate) at the same step: one longer
+// run, cut (not a warm start at another step, whose memory of the first step's packing was measured
+// to bias a check). The single pass keeps no contact history a piece could lose; `iterate on` loses
+// its warm-start impulses for one step.
+struct Continued {
+    OneRun last;
+    Continuation record;
+    double loop_s = 0, wall_s = 0;   // all pieces
+    double engine_steps = 0;         // all pieces, with their persistence runs
+};
+
+// The run s, `times` times as long: whole servo windows, the same snapshots per run.
+Settings lengthened(const Settings& s, std::int64_t times) {
+    Settings l = s;
+    l.steps = s.steps * times;
+    l.time = s.time * static_cast<double>(times);
+    l.snapshot_every = std::max<std::int64_t>(1, l.steps / std::max<std::int64_t>(1, s.snapshots));
+    return l;
+}
+
+Continued run_until_steady(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
+                           const fs::path& dir, const std::string& prov) {
+    Continued r;
+    r.record.time_max_s = s.time_max;
+    r.record.cap_key = s.time_max_key;
+    // the cap in the run's nominal lengths (its steps are rounded up to whole servo windows)
+    const auto cap = static_cast<std::int64_t>(std::floor(s.time_max / s.time + 1e-9));
+    Settings piece = s;
+    InitialParticles start = init;
+    std::int64_t done = 0;  // in run lengths
+    for (;;) {
+        r.last = run_once(c, p, piece, start, dir, prov);
+        r.record.last_s = static_cast<double>(piece.steps) * piece.time_step;
+        r.loop_s += r.last.er.loop_time_s > 0 ? r.last.er.loop_time_s : r.last.er.wall_clock_s;
+        r.wall_s += r.last.er.wall_clock_s;
+        r.engine_steps += static_cast<double>(piece.steps + piece.persistence_run_steps());
+        done += piece.steps / s.steps;
+        const std::int64_t next = next_piece(r.last.out.run.at("steady_state_detected").get<bool>(), done, cap);
+        if (next == 0) break;
+        const ParticleState st = read_particle_state(dir / kFinalState);
+        start.particles = st.particles;
+        start.file = dir / kFinalState;
+        start.reused = true;
+        piece = lengthened(s, next);
+        if (s.load) piece.plate_start = st.gap;
+        r.record.earlier_s += r.record.last_s;
+        ++r.record.pieces;
+        fmt::print(stderr, "dem {}: not steady after {:.3g} s; continuing from its end for {:.3g} s ({} {:g} s)\n",
+                   p.id, r.record.earlier_s, piece.time, r.record.cap_key, s.time_max);
+    }
+    if (s.time_max <= 0) return r;
+    record_continuation(r.last.out.run, r.record);
+    if (r.record.pieces > 1)
+        r.last.out.line += fmt::format(" [continued: the last {:.3g} s of {:.3g} s]", r.record.last_s,
+                                       r.record.earlier_s + r.record.last_s);
+    return r;
+}
+
 // The run of the point at half the time step is its answer, checked against the full step
 // ([dem] refine_dt): the full-step run goes into <dir>/dt_full (cold, from the initial grains, the
 // whole `time`); the half-step run into <dir> itself, warm-started from dt_full's final state for
@@ -137,7 +197,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
 // file of the point folder is then the half-step run's, and each output carries dt_error =
 // |value(dt) - value(dt/2)|, the error estimate of a first-order method at dt/2.
 struct Refined {
-    OneRun coarse, fine;
+    Continued coarse, fine;
     Settings h;  // the half-step run's settings
     bool warm = false;
 };
@@ -147,9 +207,9 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
     Refined r;
     const fs::path full = dir / kDtCheckDir;
     fs::create_directories(full);
-    r.coarse = run_once(c, p, s, init, full, prov);
+    r.coarse = run_until_steady(c, p, s, init, full, prov);
     write_file_atomic(full / "profile.csv",
-                      profile_csv(r.coarse.out.profile,
+                      profile_csv(r.coarse.last.out.profile,
                                   {fmt::format("case {} point {}: the run at the full time step ({:g} s), the check of "
                                                "the point's result ../profile.csv (at half the step)",
                                                c.name, p.id, s.time_step),
@@ -164,18 +224,19 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
         start.reused = true;
         if (s.load) r.h.plate_start = st.gap;
     }
-    r.fine = run_once(c, p, r.h, start, dir, prov);
+    r.fine = run_until_steady(c, p, r.h, start, dir, prov);
     return r;
 }
 
 // run.dt_refinement: the full-step run against the half-step run; dt_error on every output both have.
 nlohmann::json refinement_record(const Refined& r, const Settings& s, std::map<std::string, Scalar>& outputs) {
-    nlohmann::json rec = dt_refinement_record(r.h.time_step, r.coarse.out.outputs, r.fine.out.outputs);
+    const DemOutputs& full = r.coarse.last.out;
+    nlohmann::json rec = dt_refinement_record(r.h.time_step, full.outputs, r.fine.last.out.outputs);
     for (auto& [name, v] : outputs)
-        if (const auto it = r.coarse.out.outputs.find(name); it != r.coarse.out.outputs.end())
+        if (const auto it = full.outputs.find(name); it != full.outputs.end())
             v.dt_error = std::abs(it->second.value - v.value);
     nlohmann::json coarse;
-    for (const auto& [name, v] : r.coarse.out.outputs)
+    for (const auto& [name, v] : full.outputs)
         coarse[name] = v.stderr_ ? nlohmann::json{{"value", v.value}, {"stderr", *v.stderr_}}
                                  : nlohmann::json{{"value", v.value}};
     rec["reported"] = "the run at half the time step (this folder); dt_error = |value(dt) - value(dt/2)|";
@@ -184,12 +245,13 @@ nlohmann::json refinement_record(const Refined& r, const Settings& s, std::map<s
     rec["full_step_run"] = {{"folder", kDtCheckDir},
                             {"time_step_s", s.time_step},
                             {"steps", s.steps},
-                            {"status", r.coarse.out.run.at("status")},
-                            {"status_reason", r.coarse.out.run.at("status_reason")},
-                            {"steady_state_start_s", r.coarse.out.run.at("steady_state_start_s")},
-                            {"wall_clock_s", r.coarse.er.wall_clock_s},
-                            {"flow_regime", r.coarse.out.run.at("flow_regime")},
+                            {"status", full.run.at("status")},
+                            {"status_reason", full.run.at("status_reason")},
+                            {"steady_state_start_s", full.run.at("steady_state_start_s")},
+                            {"wall_clock_s", r.coarse.wall_s},
+                            {"flow_regime", full.run.at("flow_regime")},
                             {"outputs", coarse}};
+    if (full.run.contains("continuation")) rec["full_step_run"]["continuation"] = full.run.at("continuation");
     return rec;
 }
 
@@ -206,14 +268,14 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     fs::remove_all(dir / kDtCheckDir);  // a check of an older result is not this one's
     fs::remove_all(dir / "dt_half");   // where earlier versions put the half-step rerun
     std::optional<Refined> refined;
-    OneRun single;
+    Continued single;
     if (s.refine_dt)
         refined = refine_dt(c, p, s, init, dir, prov);
     else
-        single = run_once(c, p, s, init, dir, prov);
-    const OneRun& reported = refined ? refined->fine : single;
+        single = run_until_steady(c, p, s, init, dir, prov);
+    const Continued& reported = refined ? refined->fine : single;
     const Settings& rs = refined ? refined->h : s;
-    const DemOutputs& out = reported.out;
+    const DemOutputs& out = reported.last.out;
 
     PointResult r;
     r.profile = out.profile;
@@ -221,32 +283,27 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     r.summary.outputs = out.outputs;
     r.summary.provenance.settings["resolved"] = s.to_json();
     const double atoms = static_cast<double>(init.particles.size());
-    // the loop time covers the run and its persistence snapshots, of both runs when checked
-    double loop = 0, wall = 0, engine_steps = 0;
-    auto count = [&](const OneRun& run, const Settings& x) {
-        loop += run.er.loop_time_s > 0 ? run.er.loop_time_s : run.er.wall_clock_s;
-        wall += run.er.wall_clock_s;
-        engine_steps += static_cast<double>(x.steps + x.persistence_run_steps());
-    };
-    if (refined) count(refined->coarse, s);
-    count(reported, rs);
+    // the loop time covers the run and its persistence snapshots, of both runs when checked, and
+    // of every piece of a continued run
+    double loop = reported.loop_s, wall = reported.wall_s, engine_steps = reported.engine_steps;
+    if (refined) loop += refined->coarse.loop_s, wall += refined->coarse.wall_s, engine_steps += refined->coarse.engine_steps;
     r.summary.run = out.run;
     r.summary.run["model"] = s.model == Model::Impulse ? "impulse" : "hertz";
     if (s.model == Model::Impulse) r.summary.run["contact_solve"] = s.iterated ? "iterated" : "single_pass";
     r.summary.run["atoms"] = init.particles.size();
-    r.summary.run["steps"] = rs.steps;
+    r.summary.run["steps"] = static_cast<std::int64_t>(std::llround(reported.record.last_s / rs.time_step));
     r.summary.run["time_step_s"] = rs.time_step;
-    r.summary.run["simulated_time_s"] = static_cast<double>(rs.steps) * rs.time_step;
+    r.summary.run["simulated_time_s"] = reported.record.last_s + reported.record.earlier_s;
     r.summary.run["wall_clock_s"] = wall;
     r.summary.run["loop_time_s"] = loop;
     r.summary.run["atom_steps_per_s"] = atoms * engine_steps / loop;
-    r.summary.run["ranks"] = reported.er.ranks;
+    r.summary.run["ranks"] = reported.last.er.ranks;
     r.summary.run["initial_configuration"] = init.file.string();
     r.summary.run["initial_configuration_reused"] = init.reused;
     const auto& fr = out.run.at("flow_regime");
     const FlowVerdict verdict = read_flow_verdict(fr);
     r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s] regime: {} ({})", out.line,
-                         init.particles.size(), rs.steps, r.summary.run["atom_steps_per_s"].get<double>(),
+                         init.particles.size(), r.summary.run["steps"].get<std::int64_t>(), r.summary.run["atom_steps_per_s"].get<double>(),
                          verdict.label(), verdict.criterion);
     if (refined) {
         r.summary.run["dt_refinement"] = refinement_record(*refined, s, r.summary.outputs);

@@ -1,0 +1,34 @@
+// Until steady, with a cap (until_steady.h).
+#include "granlub/run/until_steady.h"
+
+#include <fmt/format.h>
+
+#include "granlub/results/run_status.h"
+
+namespace granlub {
+
+std::int64_t next_piece(bool steady, std::int64_t done, std::int64_t cap) {
+    if (steady || done < 1 || cap - done < done) return 0;
+    return done;
+}
+
+void record_continuation(nlohmann::json& run, const Continuation& k) {
+    const double total = k.earlier_s + k.last_s;
+    run["continuation"] = {{"pieces", k.pieces},
+                           {"last_piece_s", k.last_s},
+                           {"earlier_s", k.earlier_s},
+                           {"simulated_s", total},
+                           {"time_max_s", k.time_max_s},
+                           {"rule", "not steady: continued from its end by a piece as long as the run so far, until a "
+                                    "piece is steady or the next would pass time_max"},
+                           {"reported", "the last piece (this folder's files); the earlier ones are the transient"}};
+    if (run.contains("steady_state_start_s") && run["steady_state_start_s"].is_number())
+        run["steady_state_start_s"] = run["steady_state_start_s"].get<double>() + k.earlier_s;
+    if (!run.value("steady_state_detected", false))
+        set_regime(run, RegimeStatus::Transient,
+                   fmt::format("no steady state detected in {:.3g} s of simulated time (the last {:.3g} s judged; the "
+                               "next piece would pass {} = {:g} s): raise {}",
+                               total, k.last_s, k.cap_key, k.time_max_s, k.cap_key));
+}
+
+}  // namespace granlub
