@@ -269,7 +269,7 @@ ParticleSet read_particles_csv(const std::filesystem::path& path) {
 
 std::filesystem::path final_state_path(const std::filesystem::path& root, const std::string& solver,
                                        const std::string& point) {
-    return root / solver / point / "final_state.csv";
+    return root / solver / point / kFinalStateFile;
 }
 
 void write_particle_state(const std::filesystem::path& path, const ParticleState& s, std::vector<std::string> comments) {

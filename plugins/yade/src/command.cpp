@@ -91,6 +91,34 @@ InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingP
     return init;
 }
 
+// The run s, `times` times as long: the same sampling, the same number of snapshots.
+Settings lengthened(const Settings& s, std::int64_t times) {
+    Settings l = s;
+    l.steps = s.steps * times;
+    l.snapshot_every = s.snapshot_every * times;
+    return l;
+}
+
+// One YADE process: the run `s` from the grains in `from`, in the cell `start`, with its progress line.
+void run_piece(const DriverPaths& paths, const Case& c, const OperatingPoint& p, const Settings& s,
+               const ParticleBox& start, const fs::path& from, const fs::path& dir, std::size_t grains,
+               double overlap) {
+    const auto steps = static_cast<double>(s.steps);
+    // a guard against hangs (docs/yade-notes.md §5), not a performance limit: a 2-core machine shared
+    // by several jobs ran YADE 6x slower than a quiet one
+    const double timeout = s.timeout > 0 ? s.timeout : 600.0 + 1e-4 * static_cast<double>(grains) * steps;
+    Progress progress(fmt::format("yade {}", p.id), static_cast<std::uint64_t>(steps));
+    const fs::path progress_file = dir / "progress";
+    auto poll = [&] {
+        if (!progress.due()) return;  // the driver's file is read only when a line will be written
+        std::ifstream in(progress_file);
+        std::uint64_t done = 0, total = 0;
+        if (in >> done >> total) progress.update(done, fmt::format("{} grains", grains));
+    };
+    fs::remove(dir / "driver_summary.json");  // a stale marker must not pass for this run's
+    run_driver(paths, dir, couette_params(c, p, s, start, from, overlap), p.id, timeout, poll);
+}
+
 PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint& p0, const fs::path& dir) {
     // Everything that can be wrong with the inputs is checked before YADE starts.
     const Settings s = resolve_settings(c, p0, o);
@@ -106,27 +134,53 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
     if (!s.warm_start) start.gap = s.servo.plate_start;
     const DriverPaths paths = locate_driver();
 
-    const auto steps = static_cast<double>(s.steps);
-    // a guard against hangs (docs/yade-notes.md §5), not a performance limit: a 2-core machine shared
-    // by several jobs ran YADE 6x slower than a quiet one
-    const double timeout = s.timeout > 0 ? s.timeout : 600.0 + 1e-4 * static_cast<double>(init.particles.size()) * steps;
-    Progress progress(fmt::format("yade {}", p.id), static_cast<std::uint64_t>(steps));
-    const fs::path progress_file = dir / "progress";
-    auto poll = [&] {
-        if (!progress.due()) return;  // the driver's file is read only when a line will be written
-        std::ifstream in(progress_file);
-        std::uint64_t done = 0, total = 0;
-        if (in >> done >> total) progress.update(done, fmt::format("{} grains", init.particles.size()));
-    };
-    fs::remove(dir / "driver_summary.json");  // a stale marker must not pass for this run's
-    run_driver(paths, dir, couette_params(c, p, s, start, init.file), p.id, timeout, poll);
-
     Summary base = make_summary(c, p0, "yade", s.insertion.seed);
     base.provenance.settings = settings_json(s);
     base.provenance.settings["initial_file"] = init.file.string();
     base.provenance.settings["initial_file_reused"] = init.reused;
     if (s.warm_start) base.provenance.settings["warm_start"] = warm;
-    PointResult r = reduce_point(c, p, s, init.box, init.particles.radius, dir, std::move(base));
+
+    // until steady, with a cap ([yade] time_max; granlub/particles/until_steady.h): a piece starts
+    // from the last one's final state. YADE's contacts start afresh there (their tangential
+    // springs and a weight plate's velocity are not carried over), a small kick in the piece's
+    // own transient, which the steady-state search cuts off.
+    Continuation k{.time_max_s = s.until_steady.time_max, .cap_key = s.until_steady.key};
+    const std::int64_t cap = s.until_steady.lengths(s.time);  // in the key's lengths (steps are rounded)
+    Settings piece = s;
+    fs::path from = init.file;
+    std::int64_t done = 0;
+    double wall_s = 0;
+    PointResult r;
+    for (;;) {
+        run_piece(paths, c, p, piece, start, from, dir, init.particles.size(),
+                  k.pieces > 1 ? kContinuedOverlap : kStartOverlap);
+        r = reduce_point(c, p, piece, init.box, init.particles.radius, dir, base);
+        const ParticleState st = read_particle_state(dir / "final_raw.csv");
+        write_particle_state(dir / kFinalStateFile, st,
+                             {fmt::format("final state of granlub yade, case {} point {}", c.name, p.id),
+                              "grains after the run, with spins; gap = top wall"});
+        fs::remove(dir / "final_raw.csv");
+        k.last_s = static_cast<double>(piece.steps) * piece.dt;
+        wall_s += r.summary.run.value("yade_wall_clock_s", 0.0);
+        done += piece.steps / s.steps;
+        const std::int64_t next = next_piece(r.summary.run.value("steady_state_detected", false), done, cap);
+        if (next == 0) break;
+        from = dir / "continued_from.csv";
+        fs::copy_file(dir / kFinalStateFile, from, fs::copy_options::overwrite_existing);
+        start.gap = st.gap;
+        piece = lengthened(s, next);
+        k.earlier_s += k.last_s;
+        ++k.pieces;
+        fmt::print(stderr, "yade {}: not steady after {:.3g} s; continuing from its end for {:.3g} s ({} {:g} s)\n",
+                   p.id, k.earlier_s, static_cast<double>(piece.steps) * piece.dt, k.cap_key, k.time_max_s);
+    }
+    if (k.time_max_s > 0) {
+        record_continuation(r.summary.run, k);
+        r.summary.run["simulated_time_s"] = k.earlier_s + k.last_s;
+        r.summary.run["yade_wall_clock_s"] = wall_s;  // every piece's
+        r.line += continuation_note(k);
+    }
+    fs::remove(dir / "continued_from.csv");
     // how the result was obtained, in words the report shows
     r.summary.run["start"] =
         s.warm_start ? fmt::format("warm, from granlub dem's final state of the point (t = {:g} s)",

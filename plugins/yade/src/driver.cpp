@@ -68,7 +68,7 @@ json common_params(const Case& c, const OperatingPoint& p, const Settings& s, co
 }  // namespace
 
 json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
-                    const fs::path& initial_file) {
+                    const fs::path& initial_file, double overlap) {
     json j = common_params(c, p, s, "couette");
     j["cell"] = {{"gap", box.gap}, {"length", box.length}, {"width", box.width}, {"periodic_z", box.periodic_z}};
     j["wall_speed"] = p.speed;
@@ -79,6 +79,7 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
                 {"snapshot_every", s.snapshot_every},
                 {"body_force_every", s.body_force_every}};
     j["initial_file"] = fs::absolute(initial_file).string();
+    j["initial_overlap"] = overlap;
     // rough walls: the bumps' centres in the wall's plane (granlub y = 0, and the top's start; the
     // side walls' at z = -W/2 and W/2, their heights in "y")
     auto layer = [](const BumpLayer& b, const char* across) {

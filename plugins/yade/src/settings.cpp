@@ -53,6 +53,8 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
 
     const std::string time_key = o.full ? "time_full" : "time";
     const double time = s.real(time_key);
+    r.time = time;
+    r.until_steady = until_steady_cap(s, o.full, time);
     const double steps = time / r.dt;
     if (!(steps <= kMaxSteps))
         s.fail(time_key, fmt::format("{:g} s is {:.3g} steps of {:g} s; at most {:g} steps are allowed", time, steps,

@@ -106,6 +106,9 @@ struct ParticleState {
     double gap = 0;   // m, top wall position
     double time = 0;  // s, simulated time at which the state was taken
 };
+// A particle engine's state at the end of a point's run, in its point folder: another run's warm
+// start (granlub yade from granlub dem's), and the start of a continued run (until_steady.h).
+inline constexpr const char* kFinalStateFile = "final_state.csv";
 std::filesystem::path final_state_path(const std::filesystem::path& results_root, const std::string& solver,
                                        const std::string& point);
 void write_particle_state(const std::filesystem::path& path, const ParticleState& s,

@@ -15,7 +15,7 @@
 #include "granlub/particles/particles.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
-#include "granlub/run/until_steady.h"
+#include "granlub/particles/until_steady.h"
 #include "granlub/statistics/flow_regime.h"
 #include "outputs.h"
 #include "pvd.h"
@@ -131,7 +131,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     return r;
 }
 
-// [dem] time_max: until steady, with a cap (the policy and the record: granlub/run/until_steady.h).
+// [dem] time_max: until steady, with a cap (the policy and the record: granlub/particles/until_steady.h).
 // A piece starts from the run's own final state (grains, spins, plate) at the same step: one longer
 // run, cut (not a warm start at another step, whose memory of the first step's packing was measured
 // to bias a check). The single pass keeps no contact history a piece could lose; `iterate on` loses
@@ -155,10 +155,10 @@ Settings lengthened(const Settings& s, std::int64_t times) {
 Continued run_until_steady(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
                            const fs::path& dir, const std::string& prov) {
     Continued r;
-    r.record.time_max_s = s.time_max;
-    r.record.cap_key = s.time_max_key;
+    r.record.time_max_s = s.until_steady.time_max;
+    r.record.cap_key = s.until_steady.key;
     // the cap in the run's nominal lengths (its steps are rounded up to whole servo windows)
-    const auto cap = static_cast<std::int64_t>(std::floor(s.time_max / s.time + 1e-9));
+    const std::int64_t cap = s.until_steady.lengths(s.time);
     Settings piece = s;
     InitialParticles start = init;
     std::int64_t done = 0;  // in run lengths
@@ -180,13 +180,11 @@ Continued run_until_steady(const Case& c, const OperatingPoint& p, const Setting
         r.record.earlier_s += r.record.last_s;
         ++r.record.pieces;
         fmt::print(stderr, "dem {}: not steady after {:.3g} s; continuing from its end for {:.3g} s ({} {:g} s)\n",
-                   p.id, r.record.earlier_s, piece.time, r.record.cap_key, s.time_max);
+                   p.id, r.record.earlier_s, piece.time, r.record.cap_key, r.record.time_max_s);
     }
-    if (s.time_max <= 0) return r;
+    if (r.record.time_max_s <= 0) return r;
     record_continuation(r.last.out.run, r.record);
-    if (r.record.pieces > 1)
-        r.last.out.line += fmt::format(" [continued: the last {:.3g} s of {:.3g} s]", r.record.last_s,
-                                       r.record.earlier_s + r.record.last_s);
+    r.last.out.line += continuation_note(r.record);
     return r;
 }
 

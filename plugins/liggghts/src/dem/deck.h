@@ -26,7 +26,7 @@ inline constexpr const char* kPvdFile = "post/particles.pvd";  // --vtk: ParaVie
 inline constexpr const char* kFinalDump = "final.txt";
 inline constexpr const char* kFinalColumns = "id x y z vx vy vz radius omegax omegay omegaz";
 inline constexpr const char* kFinalPlateFile = "final_plate.txt";
-inline constexpr const char* kFinalState = "final_state.csv";  // final_state_path() of core particles.h
+inline constexpr const char* kFinalState = kFinalStateFile;  // core particles.h
 
 // Atom types: grains, bottom wall, top wall, side walls (restitution and friction per pair).
 enum AtomType { kGrain = 1, kBottom = 2, kTop = 3, kSide = 4 };

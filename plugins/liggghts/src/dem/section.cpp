@@ -3,6 +3,7 @@
 #include "granlub/dem/command.h"
 #include "granlub/particles/particle_section.h"
 #include "granlub/particles/servo.h"
+#include "granlub/particles/until_steady.h"
 #include "settings.h"
 
 namespace granlub::dem {
@@ -38,13 +39,7 @@ SectionSpec section() {
            "step's state: on sawyer2001 it missed the cold run's answer by 3-6 standard errors at 1.4 and 2 m/s)");
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
-    s.real("time_max", 0.0, Range::non_negative(), "s",
-           "until steady, with a cap: a run not steady at its length is continued from where it ended, at the same "
-           "step, by a piece as long as the run so far, until a piece is steady (the answer) or the next would pass "
-           "this much simulated time in all; 0 = one run, a transient labelled as one");
-    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
-    s.real("time_max_full", 0.0, Range::non_negative(), "s", "time_max with --full (the run doubles from the --full length)");
-    s.keys.back().neutral_default = true;
+    add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/until_steady.h)
     s.real("strain", 0.0, Range::closed(0, 1e6), "",
            "run length in shear strain U t / H (H the case's gap) instead of a time: each point runs max(time, "
            "min(strain H / U, strain_time_max)) (time_full with --full), so slow points run as many strains as fast "

@@ -62,13 +62,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     if (const double strain = s.real("strain"); strain > 0 && p.speed > 0)  // [dem] strain: a run length in U t / H
         st.time = std::max(st.time, std::min(strain * c.cell.gap / p.speed, s.real("strain_time_max")));
 
-    const char* cap_key = o.full ? "time_max_full" : "time_max";
-    st.time_max = s.real(cap_key);
-    st.time_max_key = o.full ? "[dem] time_max_full" : "[dem] time_max";
-    if (const double length = s.real(o.full ? "time_full" : "time"); st.time_max > 0 && st.time_max < 2 * length)
-        s.fail(cap_key, fmt::format("{:g} s leaves no room to continue a run of {:g} s ({}): 0 (off) or at least "
-                                    "twice the run's length",
-                                    st.time_max, length, o.full ? "time_full" : "time"));
+    st.until_steady = until_steady_cap(s, o.full, s.real(o.full ? "time_full" : "time"));
 
     if (c.cell.annulus_radius > 0 && c.cell.annulus_radius <= 0.5 * st.box.width)
         s.fail("annulus_radius", fmt::format("the annulus radius {:g} m must exceed half the cell width {:g} m "
@@ -189,7 +183,7 @@ nlohmann::json Settings::to_json() const {
                             {"contact_solve", iterated ? "iterated" : "single_pass"},
                             {"time_step_s", time_step},
                             {"time_s", time},
-                            {"time_max_s", time_max},
+                            {"time_max_s", until_steady.time_max},
                             {"steps", steps},
                             {"sample_every", sample_every},
                             {"snapshot_every", snapshot_every},

@@ -11,6 +11,7 @@
 #include "granlub/case/case.h"
 #include "granlub/particles/particles.h"
 #include "granlub/particles/servo.h"
+#include "granlub/particles/until_steady.h"
 #include "granlub/case/wall_bumps.h"
 #include "granlub/run/sweep.h"
 
@@ -31,8 +32,7 @@ struct Settings : ServoSettings {
     double time_step = 0;         // s
     double time = 0;              // simulated time, s
     std::int64_t steps = 0;       // ceil(time / time_step)
-    double time_max = 0;          // s: until steady, continued up to this in all (run/until_steady.h); 0 = off
-    const char* time_max_key = "[dem] time_max";  // or time_max_full (--full): named in a transient's hint
+    UntilSteadyCap until_steady;  // time_max: continued until steady up to this in all; 0 = off
     std::int64_t sample_every = 0;    // wall-force block length, steps (forces summed every step)
     std::int64_t snapshot_every = 0;  // particle snapshots for coarse-graining, steps
     std::size_t stations = 0;     // coarse-graining slabs across the gap

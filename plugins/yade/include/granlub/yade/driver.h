@@ -26,8 +26,13 @@ DriverPaths locate_driver();
 // every steps, step m per unit relative error, max_error, gap_min and gap_max m). Materials: "grain" (grain-grain), "bottom", "top" (the point's walls) and
 // "side" (the side walls, which slide with the bottom wall and take its restitution and friction,
 // as in `granlub dem`).
+// `overlap`: how far (a fraction of its radius) a starting grain may reach into a wall: 0.01 for
+// a start from the shared grains or granlub dem's rigid grains; a continued run starts from YADE's
+// own soft contacts, pressed by the load (until_steady.h), and passes kContinuedOverlap.
+inline constexpr double kStartOverlap = 0.01;
+inline constexpr double kContinuedOverlap = 0.1;
 nlohmann::json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
-                              const std::filesystem::path& initial_file);
+                              const std::filesystem::path& initial_file, double overlap = kStartOverlap);
 nlohmann::json collision_params(const Case& c, const OperatingPoint& p, const Settings& s, double impact_speed);
 
 // Writes `params` to dir/params.json, copies the driver into dir (the folder can be rerun by

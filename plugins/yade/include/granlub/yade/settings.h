@@ -10,6 +10,7 @@
 #include "granlub/case/case.h"
 #include "granlub/particles/particles.h"
 #include "granlub/particles/servo.h"
+#include "granlub/particles/until_steady.h"
 #include "granlub/run/sweep.h"
 #include "granlub/case/wall_bumps.h"
 
@@ -25,6 +26,7 @@ struct Settings {
     double wall_mass = 1e3;                // viscel: kg
     bool calibrate_restitution = true;     // viscel: e_n such that a binary collision gives e
     double dt = 0;                         // s, resolved (never 0)
+    double time = 0;                       // s, the run length the case asks for (time or time_full)
     std::int64_t steps = 0;                // multiple of sample_every and of snapshot_every
     std::int64_t sample_every = 100;       // steps per wall-force mean
     std::int64_t snapshot_every = 0;       // steps between particle snapshots
@@ -32,6 +34,7 @@ struct Settings {
     std::int64_t stations = 20;
     std::int64_t blocks = 10;
     double timeout = 0;                    // s; 0 = from the run size
+    UntilSteadyCap until_steady;           // time_max: continued until steady up to this in all; 0 = off
     // The initial configuration, shared with `granlub dem`: [particles] seed, velocity_noise and
     // periodic_depth (granlub/particles/particle_section.h); --seed overrides.
     InsertionOptions insertion;

@@ -1,10 +1,10 @@
-// Until steady, with a cap (granlub/run/until_steady.h): the run doubles until a piece is steady or
+// Until steady, with a cap (granlub/particles/until_steady.h): the run doubles until a piece is steady or
 // the next piece would pass the cap, and the record says what was continued, counts the steady
 // start from the run's start and names the cap in a transient's hint.
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/results/run_status.h"
-#include "granlub/run/until_steady.h"
+#include "granlub/particles/until_steady.h"
 
 using namespace granlub;
 
@@ -34,6 +34,9 @@ BOOST_AUTO_TEST_CASE(a_steady_last_piece_keeps_its_status_and_counts_from_the_ru
     BOOST_TEST(run.at("continuation").at("simulated_s").get<double>() == 0.2, boost::test_tools::tolerance(1e-12));
     BOOST_TEST(run.at("continuation").at("pieces").get<int>() == 2);
     BOOST_TEST(read_regime(run).steady());
+    const std::string note = continuation_note({.pieces = 2, .earlier_s = 0.1, .last_s = 0.1});
+    BOOST_TEST(note.find("the last 0.1 s of 0.2 s") != std::string::npos, note);
+    BOOST_TEST(continuation_note({}).empty());  // one piece: nothing to add
 }
 
 BOOST_AUTO_TEST_CASE(a_capped_transient_names_the_cap) {

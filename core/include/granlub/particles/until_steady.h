@@ -12,10 +12,28 @@
 // piece alone are our choices.
 #pragma once
 #include <cstdint>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "granlub/case/case.h"
+#include "granlub/case/schema.h"
+
 namespace granlub {
+
+// time_max and time_max_full (with --full) in an engine's own section, as add_sampling_keys does:
+// both particle engines continue their runs by one rule.
+void add_until_steady_keys(SectionSpec& s);
+
+// The cap of a run of `length` s (the section's `time` or `time_full`): 0 = off. Fails naming the
+// key when it leaves no room for a continuation (neither 0 nor at least twice the length).
+struct UntilSteadyCap {
+    double time_max = 0;   // s
+    std::string key;       // "[<section>] time_max" or "... time_max_full": a transient's hint names it
+    // the cap in run lengths (floor(time_max / length)), for next_piece
+    std::int64_t lengths(double length) const;
+};
+UntilSteadyCap until_steady_cap(const Section& s, bool full, double length);
 
 // The next piece in run lengths, or 0 to stop: `done` run lengths simulated so far, the last piece
 // steady or not, and the cap in run lengths (floor(time_max / run length); 0 = no continuation).
@@ -27,12 +45,16 @@ struct Continuation {
     double earlier_s = 0;   // simulated time before the last piece
     double last_s = 0;      // the last piece's
     double time_max_s = 0;  // the cap
-    const char* cap_key = "time_max";  // the key that sets it, for the transient's hint
+    std::string cap_key = "time_max";  // the key that sets it, for the transient's hint
 };
 
 // Writes run.continuation, counts run.steady_state_start_s from the run's start (the piece's
 // pipeline counted it from the piece's), and, when the last piece is still not steady, the
 // transient's reason with the cap that stopped it. `run` is the last piece's run record.
 void record_continuation(nlohmann::json& run, const Continuation& k);
+
+// What the console line of a continued run adds ("" for one piece): the line's times are the last
+// piece's.
+std::string continuation_note(const Continuation& k);
 
 }  // namespace granlub
