@@ -113,9 +113,13 @@ Regime read_regime(const nlohmann::json& run) {
         const auto& rec = run.at("dt_refinement");
         if (rec.is_object() && rec.contains("full_step_run") && rec.at("full_step_run").is_object()) {
             const auto& check = rec.at("full_step_run");
-            if (check.contains("status") && check.at("status") != "steady")
-                return {RegimeStatus::Transient, "the full-step run the half-step run checks against did not reach a "
-                                                 "steady state: run longer (--full, or a longer `time`)"};
+            if (check.contains("status") && check.at("status") != "steady") {
+                // its own reason, when it gives one, says how to run it longer (e.g. the cap that stopped it)
+                const auto own = check.value("status_reason", std::string());
+                return {RegimeStatus::Transient,
+                        "the full-step run the half-step run checks against did not reach a steady state: " +
+                            (own.empty() ? std::string("run longer (--full, or a longer `time`)") : own)};
+            }
         }
         try {
             if (auto why = dt_unconverged_reason(run.at("dt_refinement")); !why.empty())

@@ -74,6 +74,13 @@ BOOST_AUTO_TEST_CASE(dt_refinement_thresholds) {
         run["dt_refinement"]["full_step_run"]["status"] = "steady";
         BOOST_TEST((read_regime(run).status == (dnu == 0.0 ? RegimeStatus::Steady : RegimeStatus::DtUnconverged)));
     }
+    // ... and says how to run that check longer in its own words (here: the cap that stopped it)
+    run["dt_refinement"] = refinement(0.0, 0.0, 0.0);
+    run["dt_refinement"]["full_step_run"] = {{"status", "transient"},
+                                             {"status_reason", "no steady state in 2 s: raise [dem] time_max_full"}};
+    const Regime capped = read_regime(run);
+    BOOST_TEST((capped.status == RegimeStatus::Transient));
+    BOOST_TEST(capped.reason.find("raise [dem] time_max_full") != std::string::npos, capped.reason);
 }
 
 BOOST_AUTO_TEST_CASE(failure_record_round_trip) {
