@@ -9,16 +9,6 @@
 
 namespace granlub {
 
-void add_until_steady_keys(SectionSpec& s) {
-    s.real("time_max", 0.0, Range::non_negative(), "s",
-           "until steady, with a cap: a run not steady at its length is continued from where it ended, at the same "
-           "step, by a piece as long as the run so far, until a piece is steady (the answer) or the next would pass "
-           "this much simulated time in all; 0 = one run, a transient labelled as one");
-    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
-    s.real("time_max_full", 0.0, Range::non_negative(), "s", "time_max with --full (the run doubles from the --full length)");
-    s.keys.back().neutral_default = true;
-}
-
 std::int64_t UntilSteadyCap::lengths(double length) const {
     return length > 0 ? static_cast<std::int64_t>(std::floor(time_max / length + 1e-9)) : 0;
 }

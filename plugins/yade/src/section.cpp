@@ -3,7 +3,6 @@
 
 #include "granlub/particles/particle_section.h"
 #include "granlub/particles/servo.h"
-#include "granlub/particles/until_steady.h"
 
 namespace granlub::yade {
 
@@ -24,7 +23,7 @@ SectionSpec section() {
     s.real("time", 1.5e-3, Range::positive(), "s",
            "simulated time of a quick run (3000 steps, ~45 s of YADE per sawyer2001 point with viscel)");
     s.real("time_full", 0.2, Range::positive(), "s", "simulated time with --full");
-    add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/until_steady.h)
+    add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)
     s.integer("body_force_every", 50, Range::closed(1, 1e8),
               "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");
     s.real("timeout", 0.0, Range::non_negative(), "s",

@@ -2,8 +2,9 @@
 //  - the [particles] section: the initial grains both engines start from (seed, velocity noise)
 //    and the periodic depth of a cell without side walls. One section, not a key per engine, so
 //    that the engines cannot start from different grains by a forgotten key;
-//  - the sampling keys (sample_every, snapshots, stations, blocks), added to each engine's own
-//    section because their steps differ (as add_servo_keys does for the servo);
+//  - the sampling keys (sample_every, snapshots, stations, blocks) and the until-steady keys
+//    (time_max, time_max_full), added to each engine's own section because their steps and run
+//    lengths differ (as add_servo_keys does for the servo);
 //  - the Hertz time-step rule both engines apply to the same grains.
 #pragma once
 #include <cstdint>
@@ -23,6 +24,10 @@ inline constexpr double kHertzMaxStepFraction = 0.3;
 
 // sample_every, snapshots, stations, blocks, in an engine's own section.
 void add_sampling_keys(SectionSpec& s);
+
+// time_max and time_max_full (with --full) in an engine's own section: both particle engines
+// continue a run that is not steady by one rule (until_steady.h).
+void add_until_steady_keys(SectionSpec& s);
 
 struct ParticleStart {
     InsertionOptions insertion;  // seed (--seed overrides), velocity noise, wall speed = the point's U

@@ -21,9 +21,7 @@
 
 namespace granlub {
 
-// time_max and time_max_full (with --full) in an engine's own section, as add_sampling_keys does:
-// both particle engines continue their runs by one rule.
-void add_until_steady_keys(SectionSpec& s);
+// The keys (time_max, time_max_full) are declared by add_until_steady_keys (particle_section.h).
 
 // The cap of a run of `length` s (the section's `time` or `time_full`): 0 = off. Fails naming the
 // key when it leaves no room for a continuation (neither 0 nor at least twice the length).

@@ -3,7 +3,6 @@
 #include "granlub/dem/command.h"
 #include "granlub/particles/particle_section.h"
 #include "granlub/particles/servo.h"
-#include "granlub/particles/until_steady.h"
 #include "settings.h"
 
 namespace granlub::dem {
@@ -39,7 +38,7 @@ SectionSpec section() {
            "step's state: on sawyer2001 it missed the cold run's answer by 3-6 standard errors at 1.4 and 2 m/s)");
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
-    add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/until_steady.h)
+    add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)
     s.real("strain", 0.0, Range::closed(0, 1e6), "",
            "run length in shear strain U t / H (H the case's gap) instead of a time: each point runs max(time, "
            "min(strain H / U, strain_time_max)) (time_full with --full), so slow points run as many strains as fast "
