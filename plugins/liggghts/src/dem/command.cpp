@@ -13,9 +13,9 @@
 #include "granlub/error.h"
 #include "granlub/particles/particle_pipeline.h"
 #include "granlub/particles/particles.h"
+#include "granlub/particles/until_steady.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
-#include "granlub/particles/until_steady.h"
 #include "granlub/statistics/flow_regime.h"
 #include "outputs.h"
 #include "pvd.h"
@@ -190,7 +190,7 @@ Continued run_until_steady(const Case& c, const OperatingPoint& p, const Setting
 
 // The run of the point at half the time step is its answer, checked against the full step
 // ([dem] refine_dt): the full-step run goes into <dir>/dt_full (cold, from the initial grains, the
-// whole `time`); the half-step run into <dir> itself, warm-started from dt_full's final state for
+// whole `time`, continued until steady under time_max); the half-step run into <dir> itself, warm-started from dt_full's final state for
 // refine_time (or, with refine_time = 0, cold from the initial grains for the whole `time`). Every
 // file of the point folder is then the half-step run's, and each output carries dt_error =
 // |value(dt) - value(dt/2)|, the error estimate of a first-order method at dt/2.
