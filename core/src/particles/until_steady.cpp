@@ -28,6 +28,24 @@ std::int64_t next_piece(bool steady, std::int64_t done, std::int64_t cap) {
     return done;
 }
 
+Continuation continue_until_steady(const UntilSteadyCap& cap, double length, const std::string& label,
+                                   const std::function<PieceRun(std::int64_t times, int index)>& piece) {
+    Continuation k{.time_max_s = cap.time_max, .cap_key = cap.key};
+    const std::int64_t lengths = cap.lengths(length);
+    std::int64_t times = 1, done = 0;
+    for (;;) {
+        const PieceRun run = piece(times, k.pieces - 1);
+        k.last_s = run.simulated_s;
+        done += times;
+        times = next_piece(run.steady, done, lengths);
+        if (times == 0) return k;
+        k.earlier_s += k.last_s;
+        ++k.pieces;
+        fmt::print(stderr, "{}: not steady after {:.3g} s; continuing from its end for {:.3g} s ({} {:g} s)\n", label,
+                   k.earlier_s, static_cast<double>(times) * length, k.cap_key, k.time_max_s);
+    }
+}
+
 void record_continuation(nlohmann::json& run, const Continuation& k) {
     const double total = k.earlier_s + k.last_s;
     run["continuation"] = {{"pieces", k.pieces},

@@ -144,36 +144,30 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
     // from the last one's final state. YADE's contacts start afresh there (their tangential
     // springs and a weight plate's velocity are not carried over), a small kick in the piece's
     // own transient, which the steady-state search cuts off.
-    Continuation k{.time_max_s = s.until_steady.time_max, .cap_key = s.until_steady.key};
-    const std::int64_t cap = s.until_steady.lengths(s.time);  // in the key's lengths (steps are rounded)
-    Settings piece = s;
     fs::path from = init.file;
-    std::int64_t done = 0;
-    double wall_s = 0;
+    double wall_s = 0, end_gap = start.gap;  // the last piece's plate at its end
     PointResult r;
-    for (;;) {
+    const Continuation k = continue_until_steady(s.until_steady, s.time, "yade " + p.id, [&](std::int64_t times,
+                                                                                              int index) {
+        const Settings piece = index > 0 ? lengthened(s, times) : s;
+        if (index > 0) {  // from where the last piece ended
+            from = dir / "continued_from.csv";
+            fs::copy_file(dir / kFinalStateFile, from, fs::copy_options::overwrite_existing);
+            start.gap = end_gap;
+        }
         run_piece(paths, c, p, piece, start, from, dir, init.particles.size(),
-                  k.pieces > 1 ? kContinuedOverlap : kStartOverlap);
+                  index > 0 ? kContinuedOverlap : kStartOverlap);
         r = reduce_point(c, p, piece, init.box, init.particles.radius, dir, base);
-        const ParticleState st = read_particle_state(dir / "final_raw.csv");
-        write_particle_state(dir / kFinalStateFile, st,
+        const ParticleState end = read_particle_state(dir / "final_raw.csv");
+        end_gap = end.gap;
+        write_particle_state(dir / kFinalStateFile, end,
                              {fmt::format("final state of granlub yade, case {} point {}", c.name, p.id),
                               "grains after the run, with spins; gap = top wall"});
         fs::remove(dir / "final_raw.csv");
-        k.last_s = static_cast<double>(piece.steps) * piece.dt;
         wall_s += r.summary.run.value("yade_wall_clock_s", 0.0);
-        done += piece.steps / s.steps;
-        const std::int64_t next = next_piece(r.summary.run.value("steady_state_detected", false), done, cap);
-        if (next == 0) break;
-        from = dir / "continued_from.csv";
-        fs::copy_file(dir / kFinalStateFile, from, fs::copy_options::overwrite_existing);
-        start.gap = st.gap;
-        piece = lengthened(s, next);
-        k.earlier_s += k.last_s;
-        ++k.pieces;
-        fmt::print(stderr, "yade {}: not steady after {:.3g} s; continuing from its end for {:.3g} s ({} {:g} s)\n",
-                   p.id, k.earlier_s, static_cast<double>(piece.steps) * piece.dt, k.cap_key, k.time_max_s);
-    }
+        return PieceRun{r.summary.run.value("steady_state_detected", false),
+                        static_cast<double>(piece.steps) * piece.dt};
+    });
     if (k.time_max_s > 0) {
         record_continuation(r.summary.run, k);
         r.summary.run["simulated_time_s"] = k.earlier_s + k.last_s;

@@ -1,6 +1,8 @@
 // Until steady, with a cap (granlub/particles/until_steady.h): the run doubles until a piece is steady or
 // the next piece would pass the cap, and the record says what was continued, counts the steady
 // start from the run's start and names the cap in a transient's hint.
+#include <vector>
+
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/results/run_status.h"
@@ -24,6 +26,36 @@ BOOST_AUTO_TEST_CASE(the_run_doubles_until_steady_or_the_cap) {
     while (const std::int64_t next = next_piece(false, done, 8)) done += next, ++pieces;
     BOOST_TEST(done == 8);
     BOOST_TEST(pieces == 4);
+}
+
+// The loop both engines run, with pieces that report what a fake engine decides.
+BOOST_AUTO_TEST_CASE(the_loop_runs_doubling_pieces_until_steady) {
+    const UntilSteadyCap cap{.time_max = 0.8, .key = "[dem] time_max"};
+    std::vector<std::int64_t> asked;
+    std::vector<int> indices;
+    const Continuation k = continue_until_steady(cap, 0.1, "test", [&](std::int64_t times, int index) {
+        asked.push_back(times), indices.push_back(index);
+        return PieceRun{index == 2, 0.1 * static_cast<double>(times)};  // steady in the third piece
+    });
+    BOOST_TEST(asked == (std::vector<std::int64_t>{1, 1, 2}), boost::test_tools::per_element());
+    BOOST_TEST(indices == (std::vector<int>{0, 1, 2}), boost::test_tools::per_element());
+    BOOST_TEST(k.pieces == 3);
+    BOOST_TEST(k.earlier_s == 0.2, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(k.last_s == 0.2, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(k.cap_key == "[dem] time_max");
+    // never steady: stops at the cap (1 + 1 + 2 + 4 = 8 lengths), and without a cap after one run
+    const Continuation capped = continue_until_steady(cap, 0.1, "test", [](std::int64_t times, int) {
+        return PieceRun{false, 0.1 * static_cast<double>(times)};
+    });
+    BOOST_TEST(capped.pieces == 4);
+    BOOST_TEST(capped.earlier_s + capped.last_s == 0.8, boost::test_tools::tolerance(1e-12));
+    int runs = 0;
+    const Continuation off = continue_until_steady({}, 0.1, "test", [&](std::int64_t, int) {
+        ++runs;
+        return PieceRun{false, 0.1};
+    });
+    BOOST_TEST(runs == 1);
+    BOOST_TEST(off.pieces == 1);
 }
 
 BOOST_AUTO_TEST_CASE(a_steady_last_piece_keeps_its_status_and_counts_from_the_run_start) {

@@ -12,6 +12,7 @@
 // piece alone are our choices.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -45,6 +46,19 @@ struct Continuation {
     double time_max_s = 0;  // the cap
     std::string cap_key = "time_max";  // the key that sets it, for the transient's hint
 };
+
+// One piece of a run, as the engine reports it: steady or not, and its simulated time.
+struct PieceRun {
+    bool steady = false;
+    double simulated_s = 0;
+};
+
+// The loop both engines run: piece(times, index) runs a piece `times` run lengths long (index 0:
+// the run itself; after that, from the previous piece's final state), until a piece is steady or
+// the next would pass the cap (`length`: the run's nominal length, s). Says on stderr when it
+// continues (`label`: "dem U2.0"); returns the record for record_continuation().
+Continuation continue_until_steady(const UntilSteadyCap& cap, double length, const std::string& label,
+                                   const std::function<PieceRun(std::int64_t times, int index)>& piece);
 
 // Writes run.continuation, counts run.steady_state_start_s from the run's start (the piece's
 // pipeline counted it from the piece's), and, when the last piece is still not steady, the

@@ -152,36 +152,27 @@ Settings lengthened(const Settings& s, std::int64_t times) {
     return l;
 }
 
-Continued run_until_steady(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
-                           const fs::path& dir, const std::string& prov) {
+Continued run_continued(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
+                        const fs::path& dir, const std::string& prov) {
     Continued r;
-    r.record.time_max_s = s.until_steady.time_max;
-    r.record.cap_key = s.until_steady.key;
-    // the cap in the run's nominal lengths (its steps are rounded up to whole servo windows)
-    const std::int64_t cap = s.until_steady.lengths(s.time);
-    Settings piece = s;
     InitialParticles start = init;
-    std::int64_t done = 0;  // in run lengths
-    for (;;) {
+    r.record = continue_until_steady(s.until_steady, s.time, "dem " + p.id, [&](std::int64_t times, int index) {
+        Settings piece = s;
+        if (index > 0) {  // from where the last piece ended: its grains, spins and plate
+            const ParticleState st = read_particle_state(dir / kFinalState);
+            start.particles = st.particles;
+            start.file = dir / kFinalState;
+            start.reused = true;
+            piece = lengthened(s, times);
+            if (s.load) piece.plate_start = st.gap;
+        }
         r.last = run_once(c, p, piece, start, dir, prov);
-        r.record.last_s = static_cast<double>(piece.steps) * piece.time_step;
         r.loop_s += r.last.er.loop_time_s > 0 ? r.last.er.loop_time_s : r.last.er.wall_clock_s;
         r.wall_s += r.last.er.wall_clock_s;
         r.engine_steps += static_cast<double>(piece.steps + piece.persistence_run_steps());
-        done += piece.steps / s.steps;
-        const std::int64_t next = next_piece(r.last.out.run.at("steady_state_detected").get<bool>(), done, cap);
-        if (next == 0) break;
-        const ParticleState st = read_particle_state(dir / kFinalState);
-        start.particles = st.particles;
-        start.file = dir / kFinalState;
-        start.reused = true;
-        piece = lengthened(s, next);
-        if (s.load) piece.plate_start = st.gap;
-        r.record.earlier_s += r.record.last_s;
-        ++r.record.pieces;
-        fmt::print(stderr, "dem {}: not steady after {:.3g} s; continuing from its end for {:.3g} s ({} {:g} s)\n",
-                   p.id, r.record.earlier_s, piece.time, r.record.cap_key, r.record.time_max_s);
-    }
+        return PieceRun{r.last.out.run.at("steady_state_detected").get<bool>(),
+                        static_cast<double>(piece.steps) * piece.time_step};
+    });
     if (r.record.time_max_s <= 0) return r;
     record_continuation(r.last.out.run, r.record);
     r.last.out.line += continuation_note(r.record);
@@ -190,8 +181,8 @@ Continued run_until_steady(const Case& c, const OperatingPoint& p, const Setting
 
 // The run of the point at half the time step is its answer, checked against the full step
 // ([dem] refine_dt): the full-step run goes into <dir>/dt_full (cold, from the initial grains, the
-// whole `time`, continued until steady under time_max); the half-step run into <dir> itself, warm-started from dt_full's final state for
-// refine_time (or, with refine_time = 0, cold from the initial grains for the whole `time`). Every
+// whole `time`, continued until steady under time_max); the half-step run into <dir> itself,
+// warm-started from dt_full's final state for refine_time (or, with refine_time = 0, cold from the initial grains for the whole `time`). Every
 // file of the point folder is then the half-step run's, and each output carries dt_error =
 // |value(dt) - value(dt/2)|, the error estimate of a first-order method at dt/2.
 struct Refined {
@@ -205,7 +196,7 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
     Refined r;
     const fs::path full = dir / kDtCheckDir;
     fs::create_directories(full);
-    r.coarse = run_until_steady(c, p, s, init, full, prov);
+    r.coarse = run_continued(c, p, s, init, full, prov);
     write_file_atomic(full / "profile.csv",
                       profile_csv(r.coarse.last.out.profile,
                                   {fmt::format("case {} point {}: the run at the full time step ({:g} s), the check of "
@@ -222,7 +213,7 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
         start.reused = true;
         if (s.load) r.h.plate_start = st.gap;
     }
-    r.fine = run_until_steady(c, p, r.h, start, dir, prov);
+    r.fine = run_continued(c, p, r.h, start, dir, prov);
     return r;
 }
 
@@ -270,7 +261,7 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     if (s.refine_dt)
         refined = refine_dt(c, p, s, init, dir, prov);
     else
-        single = run_until_steady(c, p, s, init, dir, prov);
+        single = run_continued(c, p, s, init, dir, prov);
     const Continued& reported = refined ? refined->fine : single;
     const Settings& rs = refined ? refined->h : s;
     const DemOutputs& out = reported.last.out;
