@@ -4,10 +4,12 @@
 #include <cctype>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "figures.h"
 #include "granlub/statistics/flow_regime.h"
 #include "mu_of_i.h"
+#include "scope.h"
 #include "state_series.h"
 #include "text.h"
 
@@ -108,31 +110,44 @@ std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, con
     return figs;
 }
 
+// One figure per solver and quantity, the loads told apart by colour, dash and marker: with every
+// solver in one figure the loads could only be told apart by open markers, which the report keeps
+// for results that are not steady. A lattice solver (the automaton) runs a fixed fill at every load
+// and cannot lift off; its occupancy is not a solid fraction, so it is named, not drawn.
 std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const SpeedLoadGrid& grid) {
+    std::vector<std::string> lattice;
+    for (const auto& s : col.solvers)
+        if (lattice_stresses(s) && col.any_usable(s)) lattice.push_back(s);
     std::vector<Figure> figs;
-    for (const bool gap : {true, false}) {
-        Figure f;
-        f.name = gap ? "regime_liftoff_gap" : "regime_liftoff_nu";
-        f.title = gap ? "Lift-off: the gap against speed, per load" : "Lift-off: mean solid fraction against speed, per load";
-        f.caption = gap ? fmt::format("The mean gap between the walls (the loaded plate's mean height) against U at "
-                                      "each load; solvers with a fixed gap are not drawn. Sky blue: the case's "
-                                      "gap H = {} mm. Markers open on every other load.",
-                                      num(c.cell.gap * 1e3))
-                        : std::string("The mean solid fraction ν̄ over the gap against U at each load: a bed that "
-                                      "lifts off dilates. Markers open on every other load.");
-        f.x.label = "wall speed U (m/s)";
-        f.y.label = gap ? "gap (mm)" : "ν̄ (mean solid fraction)";
-        for (std::size_t g = 0; g < grid.per_load.size(); ++g)
-            for (const auto& s : col.solvers) {
-                auto series = series_by_state(col, s, grid.per_load[g].points,
-                                              fmt::format("{}, {}", s, grid.per_load[g].label), solver_style(col, s),
+    for (const bool gap : {true, false})
+        for (const auto& s : col.solvers) {
+            if (lattice_stresses(s)) continue;
+            Figure f;
+            f.name = fmt::format("regime_liftoff_{}_{}", gap ? "gap" : "nu", slug(s));
+            f.title = fmt::format("Lift-off: {} against speed, per load: {}", gap ? "the gap" : "mean solid fraction", s);
+            f.caption = gap ? fmt::format("{}'s mean gap between the walls (the loaded plate's mean height) against U at "
+                                          "each load (colour, dash and marker per load). Sky blue: the case's gap "
+                                          "H = {} mm.",
+                                          s, num(c.cell.gap * 1e3))
+                            : fmt::format("{}'s mean solid fraction ν̄ over the gap against U at each load (colour, "
+                                          "dash and marker per load): a bed that lifts off dilates.",
+                                          s);
+            if (!lattice.empty())
+                f.caption += fmt::format(" Not drawn: {} (a lattice of fixed fill at every load: it cannot lift off, "
+                                         "and its occupancy is not a solid fraction).",
+                                         fmt::join(lattice, ", "));
+            f.x.label = "wall speed U (m/s)";
+            f.y.label = gap ? "gap (mm)" : "ν̄ (mean solid fraction)";
+            for (std::size_t g = 0; g < grid.per_load.size(); ++g) {
+                // styles 5 (sky blue) and 6 (black) are the case's gap and the critical rate
+                const int style = static_cast<int>(g % 5);
+                auto series = series_by_state(col, s, grid.per_load[g].points, grid.per_load[g].label, style,
                                               [&](const Run& r, const OperatingPoint& p) {
                                                   const auto v = r.scalar(gap ? "gap" : "mean_solid_fraction");
                                                   if (!v) return std::optional<std::pair<double, double>>();
                                                   return std::optional(std::pair(p.speed, gap ? *v * 1e3 : *v));
                                               });
                 for (auto& ser : series) {
-                    ser.open = ser.open || g % 2 == 1;
                     if (!ser.unsteady && ser.x.size() > 1) {  // a line through the steady points
                         Series line;
                         line.style = ser.style;
@@ -143,20 +158,20 @@ std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const 
                     f.series.push_back(std::move(ser));
                 }
             }
-        if (f.series.empty()) continue;  // no solver reports a gap
-        if (gap) {
-            Series h;
-            h.label = "case gap H";
-            h.style = 5;  // sky blue, its own dash: not the black dashed critical rate
-            h.x = {grid.speeds.front(), grid.speeds.back()};
-            h.y = {c.cell.gap * 1e3, c.cell.gap * 1e3};
-            f.series.push_back(std::move(h));
+            if (f.series.empty()) continue;  // this solver does not report the quantity (e.g. a fixed gap)
+            if (gap) {
+                Series h;
+                h.label = "case gap H";
+                h.style = 5;  // sky blue, its own dash: not the black dashed critical rate
+                h.x = {grid.speeds.front(), grid.speeds.back()};
+                h.y = {c.cell.gap * 1e3, c.cell.gap * 1e3};
+                f.series.push_back(std::move(h));
+            }
+            const auto [lo, hi] = y_span(f, false);
+            add_critical_rate(c, f, lo, hi);
+            say_unsteady(f);
+            figs.push_back(std::move(f));
         }
-        const auto [lo, hi] = y_span(f, false);
-        add_critical_rate(c, f, lo, hi);
-        say_unsteady(f);
-        figs.push_back(std::move(f));
-    }
     return figs;
 }
 

@@ -21,7 +21,8 @@ inline constexpr double kSawyerCriticalShearRate = 100.0;  // 1/s, Sawyer & Tich
 
 // One map per solver that recorded a verdict (run.flow_regime): U across, P up.
 std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, const SpeedLoadGrid& grid);
-// The gap (load-controlled solvers that report one) and the mean solid fraction against U, per load.
+// The gap (load-controlled solvers that report one) and the mean solid fraction against U, per load:
+// one figure per solver and quantity (not the lattice solvers, named in the caption).
 std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const SpeedLoadGrid& grid);
 // Per solver and point: U, P, state, verdict, the criterion that decided, I (U/H), I (mid-gap), gap.
 Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& grid);

@@ -37,10 +37,11 @@ test::SyntheticCase grid_case(const std::string& name, const std::string& operat
 
 // dem: tau = 0.4 P (n = 0 at every load), a linear u(y); the grains lift off (Z = 3) at 500 Pa
 // above 1 m/s; the point U2 at 2000 Pa is transient. continuum: tau = 50 U^2 (n = 2), no contacts.
+// automaton: as the continuum, with a lattice occupancy of 0.9 (not a solid fraction).
 void write_results(const test::SyntheticCase& s) {
     for (const OperatingPoint& p : s.c.points)
-        for (const char* solver : {"dem", "continuum"}) {
-            const bool dem = solver == std::string("dem");
+        for (const char* solver : {"dem", "continuum", "automaton"}) {
+            const bool dem = solver == std::string("dem"), lattice = solver == std::string("automaton");
             const double P = p.normal_stress, U = p.speed;
             Summary sum = make_summary(s.c, p, solver, dem ? std::optional<std::uint64_t>(7) : std::nullopt);
             const double tau = dem ? 0.4 * P : 50 * U * U;
@@ -48,7 +49,7 @@ void write_results(const test::SyntheticCase& s) {
             sum.set("shear_stress_bottom", tau, "Pa").set("shear_stress_top", tau, "Pa");
             sum.set("slip_bottom", 0.1 * U, "m/s").set("slip_top", 0.1 * U, "m/s");
             const bool lifted = dem && P < 1000 && U > 1.0;
-            sum.set("mean_solid_fraction", lifted ? 0.42 : 0.58, "").set("max_solid_fraction", 0.65, "");
+            sum.set("mean_solid_fraction", lifted ? 0.42 : lattice ? 0.9 : 0.58, "").set("max_solid_fraction", 0.65, "");
             if (dem) sum.set("gap", lifted ? 6.5e-3 : 5.0e-3, "m");
             std::vector<double> y, u, nu, T;
             for (int k = 0; k < 20; ++k) y.push_back((k + 0.5) / 20.0);
@@ -84,7 +85,8 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const fs::path rep = s.o.results_root / "report";
     const std::string sec = section(test::slurp(rep / "index.html"));
-    for (const char* f : {"regime_map_dem", "regime_liftoff_gap", "regime_liftoff_nu", "regime_mu_of_i_mid_gap",
+    for (const char* f : {"regime_map_dem", "regime_liftoff_gap_dem", "regime_liftoff_nu_dem", "regime_liftoff_nu_continuum",
+                          "regime_mu_of_i_mid_gap",
                           "regime_mu_of_i_nominal", "regime_nu_of_i", "regime_tau_of_u_bottom", "regime_tau_of_u_top"}) {
         BOOST_TEST(fs::exists(rep / "plots" / (std::string(f) + ".svg")), f);
         if (fs::exists(rep / "plots" / (std::string(f) + ".svg"))) {
@@ -93,6 +95,10 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
         }
     }
     BOOST_TEST(!fs::exists(rep / "plots" / "regime_map_continuum.svg"));  // no contacts, no verdict
+    // lift-off: one figure per solver; none for a solver without a gap, nor for the lattice (named)
+    BOOST_TEST(!fs::exists(rep / "plots" / "regime_liftoff_gap_continuum.svg"));
+    BOOST_TEST(!fs::exists(rep / "plots" / "regime_liftoff_nu_automaton.svg"));
+    BOOST_TEST(sec.find("Not drawn: automaton") != std::string::npos);
     // every verdict with the criterion that decided it; no contradictory label anywhere
     BOOST_TEST(sec.find("collision lubrication") != std::string::npos);
     BOOST_TEST(sec.find("contact lubrication") != std::string::npos);
