@@ -102,6 +102,12 @@ std::string point_slug(const OperatingPoint& p) {
     return s;
 }
 
+std::string name_slug(const std::string& s) {
+    std::string out;
+    for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::tolower(ch)) : '-';
+    return out;
+}
+
 std::vector<Figure> profile_figures(const Collection& col, std::size_t point_index) {
     const OperatingPoint& p = *col.points.at(point_index);
     const auto runs = col.usable(p.id);

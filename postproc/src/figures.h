@@ -25,5 +25,6 @@ std::vector<Figure> slip_figures(const Collection& col);
 Figure solid_fraction_figure(const Collection& col, double case_nu_max);
 
 std::string point_slug(const OperatingPoint& p);  // "U2.0_R0.25" -> "u2-0_r0-25"
+std::string name_slug(const std::string& s);      // a file-name part: "my Solver" -> "my-solver"
 
 }  // namespace granlub::postproc

@@ -26,12 +26,6 @@ bool has_verdict(const Run& r) {
     return r.usable() && r.summary->run.is_object() && r.summary->run.contains("flow_regime");
 }
 
-std::string slug(const std::string& s) {
-    std::string out;
-    for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::tolower(ch)) : '-';
-    return out;
-}
-
 // The experiment's critical shear rate as a vertical black dotted line at U = 100 1/s x H over [lo, hi].
 void add_critical_rate(const Case& c, Figure& f, double lo, double hi) {
     Series line;
@@ -69,7 +63,7 @@ std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, con
         if (std::none_of(points.begin(), points.end(), [&](const OperatingPoint* p) { return has_verdict(col.run(s, p->id)); }))
             continue;
         Figure f;
-        f.name = "regime_map_" + slug(s);
+        f.name = "regime_map_" + name_slug(s);
         f.title = fmt::format("Regime map over speed and load: {}", s);
         f.caption = fmt::format(
             "{}'s verdict at each point (core flow_regime.h): contact lubrication where the contacts endure (Z ≥ {} "
@@ -123,7 +117,7 @@ std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const 
         for (const auto& s : col.solvers) {
             if (lattice_stresses(s)) continue;
             Figure f;
-            f.name = fmt::format("regime_liftoff_{}_{}", gap ? "gap" : "nu", slug(s));
+            f.name = fmt::format("regime_liftoff_{}_{}", gap ? "gap" : "nu", name_slug(s));
             f.title = fmt::format("Lift-off: {} against speed, per load: {}", gap ? "the gap" : "mean solid fraction", s);
             f.caption = gap ? fmt::format("{}'s mean gap between the walls (the loaded plate's mean height) against U at "
                                           "each load (colour, dash and marker per load). Sky blue: the case's gap "
@@ -139,8 +133,7 @@ std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const 
             f.x.label = "wall speed U (m/s)";
             f.y.label = gap ? "gap (mm)" : "ν̄ (mean solid fraction)";
             for (std::size_t g = 0; g < grid.per_load.size(); ++g) {
-                // styles 5 (sky blue) and 6 (black) are the case's gap and the critical rate
-                const int style = static_cast<int>(g % 5);
+                const int style = load_style(g);
                 auto series = series_by_state(col, s, grid.per_load[g].points, grid.per_load[g].label, style,
                                               [&](const Run& r, const OperatingPoint& p) {
                                                   const auto v = r.scalar(gap ? "gap" : "mean_solid_fraction");

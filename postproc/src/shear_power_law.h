@@ -23,8 +23,8 @@ inline constexpr double kBagnoldMinExponent = 1.5;
 inline constexpr double kQuasiStaticMaxExponent = 0.5;
 std::string exponent_reading(const PowerFit& fit);
 
-// One figure per wall: tau against U on log-log axes, every solver and load (not the automaton:
-// lattice stresses, one fill at every load); the fits dashed, and
+// One figure per solver and wall: tau against U on log-log axes, a style per load (not the
+// automaton: lattice stresses, one fill at every load); the fits dashed, and
 // the slopes n = 2 and n = 0 as black dotted guides through the geometric mean of the data.
 std::vector<Figure> shear_power_law_figures(const Collection& col, const SpeedLoadGrid& grid);
 // solver, load, wall, n +- se (steady points), reading; or why there is no fit.

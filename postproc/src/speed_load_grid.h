@@ -22,4 +22,9 @@ struct SpeedLoadGrid {
 // a point a solver could not run is a hole, drawn as one.
 SpeedLoadGrid speed_load_grid(const std::vector<const OperatingPoint*>& points);
 
+// The style (colour, dash, marker) of the g-th load in a figure of one solver's points per load:
+// styles 5 (sky blue) and 6 (black) stay for the figures' reference lines. Open markers are not
+// used for loads: they mean a result that is not steady.
+inline int load_style(std::size_t g) { return static_cast<int>(g % 5); }
+
 }  // namespace granlub::postproc

@@ -67,6 +67,18 @@ void write_results(const test::SyntheticCase& s) {
         }
 }
 
+// Markers drawn open (white fill) that are not results marked unsteady: the per-load figures keep
+// open markers for results that are not steady (svg_plot.cpp draws those with class "unsteady").
+int open_steady_markers(const std::string& svg) {
+    int n = 0;
+    for (auto at = svg.find("fill=\"#ffffff\" stroke"); at != std::string::npos;
+         at = svg.find("fill=\"#ffffff\" stroke", at + 1)) {
+        const auto end = svg.find('>', at);
+        if (svg.substr(at, end - at).find("class=\"unsteady\"") == std::string::npos) ++n;
+    }
+    return n;
+}
+
 std::string section(const std::string& html) {
     const auto start = html.find("Regimes over speed and load</h2>");
     BOOST_TEST_REQUIRE(start != std::string::npos);
@@ -87,7 +99,8 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     const std::string sec = section(test::slurp(rep / "index.html"));
     for (const char* f : {"regime_map_dem", "regime_liftoff_gap_dem", "regime_liftoff_nu_dem", "regime_liftoff_nu_continuum",
                           "regime_mu_of_i_mid_gap",
-                          "regime_mu_of_i_nominal", "regime_nu_of_i", "regime_tau_of_u_bottom", "regime_tau_of_u_top"}) {
+                          "regime_mu_of_i_nominal", "regime_nu_of_i", "regime_tau_of_u_bottom_dem", "regime_tau_of_u_top_dem",
+                          "regime_tau_of_u_top_continuum"}) {
         BOOST_TEST(fs::exists(rep / "plots" / (std::string(f) + ".svg")), f);
         if (fs::exists(rep / "plots" / (std::string(f) + ".svg"))) {
             const std::string err = test::xml_error(test::slurp(rep / "plots" / (std::string(f) + ".svg")));
@@ -98,6 +111,12 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     // lift-off: one figure per solver; none for a solver without a gap, nor for the lattice (named)
     BOOST_TEST(!fs::exists(rep / "plots" / "regime_liftoff_gap_continuum.svg"));
     BOOST_TEST(!fs::exists(rep / "plots" / "regime_liftoff_nu_automaton.svg"));
+    BOOST_TEST(!fs::exists(rep / "plots" / "regime_tau_of_u_top_automaton.svg"));
+    for (const char* f : {"regime_liftoff_gap_dem", "regime_liftoff_nu_dem", "regime_tau_of_u_top_dem",
+                          "regime_tau_of_u_bottom_continuum"}) {
+        const fs::path svg = rep / "plots" / (std::string(f) + ".svg");
+        if (fs::exists(svg)) BOOST_TEST(open_steady_markers(test::slurp(svg)) == 0, f);
+    }
     BOOST_TEST(sec.find("Not drawn: automaton") != std::string::npos);
     // every verdict with the criterion that decided it; no contradictory label anywhere
     BOOST_TEST(sec.find("collision lubrication") != std::string::npos);
