@@ -1,7 +1,6 @@
 #include "regime_map.h"
 
 #include <algorithm>
-#include <cctype>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
