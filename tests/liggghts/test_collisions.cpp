@@ -88,7 +88,9 @@ BOOST_AUTO_TEST_CASE(one_and_two_mpi_ranks_give_identical_results) {
 }
 
 BOOST_AUTO_TEST_CASE(separate_on_removes_overlaps_exactly) {
-    const auto r = results(run_driver(std::string(GRANLUB_SOURCE_DIR) + "/tests/liggghts/in.separate", ""));
+    // the single pass; the solver's version (the default) leaves its slop: test_impulse_solve.cpp
+    const auto r = results(run_driver(std::string(GRANLUB_SOURCE_DIR) + "/tests/liggghts/in.separate",
+                                      " -var settings 'iterate off'"));
     BOOST_TEST_REQUIRE(r.count("z1") == 1u);
     close(r.at("z1"), 0.005);    // touching the wall
     close(r.at("x2"), 0.0495);   // equal masses: each moves half of the 1 mm overlap

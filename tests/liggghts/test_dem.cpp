@@ -84,6 +84,12 @@ BOOST_AUTO_TEST_CASE(short_shear_cell_writes_complete_finite_results) {
     std::stringstream ss;
     ss << deck.rdbuf();
     BOOST_TEST(ss.str().find("pair_style      gran model impulse tangential impulse") != std::string::npos);
+    // the case's single pass is written out on the pair style and every wall (the models' default is
+    // iterate on), and no solver
+    const std::string text = ss.str();
+    const std::regex iterate_off(" iterate off\n");
+    BOOST_TEST(std::distance(std::sregex_iterator(text.begin(), text.end(), iterate_off), std::sregex_iterator()) == 5);
+    BOOST_TEST(text.find("impulse/solve") == std::string::npos);
     BOOST_TEST(fs::exists(r.dir.parent_path().parent_path() / "initial" / "U1.0" / "particles.csv"));
     BOOST_TEST(!fs::exists(r.dir / "snapshots.txt"));
 }

@@ -159,17 +159,26 @@ BOOST_AUTO_TEST_CASE(values_out_of_range_stop_with_the_plugins_error) {
 
 BOOST_AUTO_TEST_CASE(what_it_cannot_serve_stops_with_the_plugins_error) {
     const std::string fix = "fix solve all impulse/solve\n";
-    // iterate on and no solver; a solver and a model without iterate on (pair, then a wall)
-    expect_error(iterated("", "in.nofix"), "ERROR: model impulse iterate on (pair_style gran): no fix impulse/solve");
-    expect_error(deck(kPair, kWall, fix, "in.pairoff"),
-                 "ERROR: model impulse (pair_style gran): fix impulse/solve solves every impulse contact of the run, so "
-                 "every pair gran and fix wall/gran with model impulse needs 'iterate on'");
-    expect_error(deck(kPair + " iterate on", kWall, fix, "in.walloff"), "ERROR: model impulse (fix wall/gran wall): fix "
-                                                                          "impulse/solve solves every impulse contact");
+    // iterate on (the default) with no solver on the pair: made there (test below); on a wall alone, with the
+    // pair at iterate off, nothing makes one; a solver and a model with iterate off (pair, then a wall)
+    expect_error(deck(kPair + " iterate off", kWall, "", "in.nofix"),
+                 "ERROR: model impulse (fix wall/gran wall) iterates ('iterate on', the default) but the run has no fix "
+                 "impulse/solve");
+    expect_error(deck(kPair + " iterate off", kWall + " iterate off", fix, "in.pairoff"),
+                 "ERROR: model impulse (pair_style gran) has 'iterate off', but fix impulse/solve solves every impulse "
+                 "contact of the run");
+    expect_error(deck(kPair, kWall + " iterate off", fix, "in.walloff"),
+                 "ERROR: model impulse (fix wall/gran wall) has 'iterate off', but fix impulse/solve solves every");
     // a wall with another contact model
     expect_error(deck(kPair + " iterate on", "fix wall all wall/gran model hertz tangential history primitive type 2 zplane 0.0",
                       fix, "in.hertzwall"),
                  "ERROR: fix impulse/solve: fix wall/gran wall uses another contact model");
+    // the same with the solver the pair made: the message says how to do without it
+    expect_error(deck(kPair, "fix wall all wall/gran model hertz tangential history primitive type 2 zplane 0.0", "",
+                      "in.hertzwall_made"),
+                 "uses another contact model; with fix impulse/solve every granular wall must be 'model impulse ... "
+                 "iterate on' (this fix was made by model impulse, whose default is 'iterate on'; 'iterate off' on the "
+                 "pair style and every impulse wall gives Sawyer & Tichy's single pass");
     // the group, a second solver, per-contact force output
     expect_error(iterated("group one id 1\nfix solve one impulse/solve\n", "in.group"),
                  "ERROR: fix impulse/solve: acts on every contact of the impulse models: its group must be 'all'; got 'one'");
@@ -183,4 +192,26 @@ BOOST_AUTO_TEST_CASE(what_it_cannot_serve_stops_with_the_plugins_error) {
     d = std::regex_replace(d, std::regex("newton off"), "newton on");
     std::ofstream(fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder / "in.newton") << d;
     expect_error(fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder / "in.newton", "requires newton pair off");
+}
+
+// The models' default is iterate on: a deck that names neither the setting nor the solver gets the
+// solver with its defaults from pair_style gran, says so, and gives the numbers of the deck that
+// writes both out.
+BOOST_AUTO_TEST_CASE(the_default_iterates_with_the_solver_the_pair_style_makes) {
+    const auto made = run_driver(deck(kPair, kWall, "", "in.default").string(), "", 1, kFolder);
+    BOOST_TEST_REQUIRE(made.exit_code == 0, made.output);
+    BOOST_TEST(made.output.find("model impulse: iterate on (the default): made 'fix granlub_impulse_solve all "
+                                "impulse/solve' with its defaults") != std::string::npos, made.output);
+    const auto written = run_driver(iterated("fix solve all impulse/solve\n", "in.written").string(), "", 1, kFolder);
+    BOOST_TEST_REQUIRE(written.exit_code == 0, written.output);
+    BOOST_TEST(written.output.find("granlub_impulse_solve") == std::string::npos);
+    const auto a = results(made.output), b = results(written.output);
+    BOOST_TEST_REQUIRE(a.size() >= 3u);
+    BOOST_TEST_REQUIRE(a.size() == b.size());
+    for (const auto& [key, value] : a) BOOST_TEST_CONTEXT(key) { close(value, b.at(key)); }
+    // and the single pass, written out, makes none
+    const auto single = run_driver(deck(kPair + " iterate off", kWall + " iterate off", "", "in.single").string(), "", 1,
+                                   kFolder);
+    BOOST_TEST_REQUIRE(single.exit_code == 0, single.output);
+    BOOST_TEST(single.output.find("granlub_impulse_solve") == std::string::npos);
 }

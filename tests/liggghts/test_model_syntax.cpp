@@ -26,16 +26,15 @@ const fs::path kTinyDeck = fs::path(GRANLUB_SOURCE_DIR) / "tests" / "liggghts" /
 const std::string kFolder = "liggghts_syntax";
 
 // in.separate with its pair_style line or its wall line replaced by `line`; y fixed too, so
-// yplane walls are allowed. A line with `iterate on` gets the other impulse model set to iterate
-// on too and a fix impulse/solve, as that setting requires.
+// yplane walls are allowed. A line with `iterate off` gets the other impulse model set to iterate
+// off too, as that setting requires; otherwise both iterate (the default) with the fix impulse/solve
+// that pair_style gran makes.
 fs::path deck_with(const std::string& line, const std::string& name) {
     std::string deck = read_text(kTinyDeck);
     deck = std::regex_replace(deck, std::regex("boundary p p f"), "boundary p f f");
     const bool pair = line.rfind("pair_style", 0) == 0;
-    if (line.find("iterate on") != std::string::npos) {
-        deck = std::regex_replace(deck, std::regex(pair ? "(fix wall [^\n]*)" : "(pair_style [^\n]*)"), "$1 iterate on");
-        deck = std::regex_replace(deck, std::regex("pair_coeff \\* \\*\n"), "pair_coeff * *\nfix solve all impulse/solve\n");
-    }
+    if (line.find("iterate off") != std::string::npos)
+        deck = std::regex_replace(deck, std::regex(pair ? "(fix wall [^\n]*)" : "(pair_style [^\n]*)"), "$1 iterate off");
     deck = std::regex_replace(deck, std::regex(pair ? "pair_style [^\n]*" : "fix wall [^\n]*"), line);
     const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder;
     fs::create_directories(dir);
@@ -58,8 +57,9 @@ void check_examples(const fs::path& page) {
             const auto r = results(run.output);
             BOOST_TEST_REQUIRE(r.count("x2") == 1u);
             const bool separate = line.find("separate off") == std::string::npos;  // on by default
-            // iterate on corrects the overlaps to fix impulse/solve's slop: 1e-4 of r_i + r_j (wall: r)
-            const double slop = line.find("iterate on") == std::string::npos ? 0.0 : 1e-4;
+            // iterate on (the default) corrects the overlaps to fix impulse/solve's slop: 1e-4 of r_i + r_j
+            // (wall: r); the single pass removes them
+            const double slop = line.find("iterate off") == std::string::npos ? 1e-4 : 0.0;
             if (pair) {
                 close(r.at("x2"), separate ? 0.0495 + 0.5 * slop * 0.01 : 0.05);  // the pair overlapping by 1 mm, at rest
             } else if (line.find("zplane 0.0") != std::string::npos) {

@@ -52,20 +52,28 @@
     resting contacts. It neither changes the answer nor speeds up its
     convergence in dt (measured: the same page), so it is off by default.
 
-    iterate on|off (default off = Sawyer & Tichy's single pass above; ours).
-    With iterate on this model computes no force: it hands every contact it
-    finds (geometry, e, bounce_speed, separate, where its history and the
-    wall's stored force live; impulse_contacts.h) to fix impulse/solve, which
-    solves all contacts of the step together by projected Gauss-Seidel with
-    accumulated, clamped impulses and corrects overlaps with pseudo-velocities
-    (Moreau 1988; Jean 1999; Catto 2005; doc/fix_impulse_solve.txt). The
-    contact history then keeps each contact's impulses (warm start). A pair
-    style and every wall with model impulse must agree: all iterate on with a
-    fix impulse/solve, or all off without one (checked at each run).
+    iterate on|off (default on; ours). With iterate on this model computes no
+    force: it hands every contact it finds (geometry, e, bounce_speed,
+    separate, where its history and the wall's stored force live;
+    impulse_contacts.h) to fix impulse/solve, which solves all contacts of
+    the step together by projected Gauss-Seidel with accumulated, clamped
+    impulses and corrects overlaps with pseudo-velocities (Moreau 1988; Jean
+    1999; Catto 2005; doc/fix_impulse_solve.txt). The contact history then
+    keeps each contact's impulses (warm start). iterate off is Sawyer &
+    Tichy's single pass above. The default is on because only the solved
+    contacts let a pile, a hopper or a packing come to rest (the single pass
+    keeps grains under gravity jittering: docs/measurements/liggghts.md and
+    the plugin README, "Piles at rest"); the single pass is about 9x cheaper
+    and gives the same stresses in sheared cells, so granlub's cases choose
+    it there (`[dem] contact_solve`). Without a fix impulse/solve in the
+    deck, pair_style gran makes one with its defaults (id
+    granlub_impulse_solve) when a run starts. A pair style and every wall
+    with model impulse must agree: all iterate on with one fix
+    impulse/solve, or all off without one (checked at each run).
 
     Contributing author: granlub (plugins/liggghts), GPL-2.0-or-later like
     LIGGGHTS. Drops unchanged into a LIGGGHTS 3.8 source tree (with
-    impulse_contacts.h, and fix_impulse_solve.* for iterate on).
+    impulse_contacts.h, and fix_impulse_solve.* for iterate on, the default).
 ------------------------------------------------------------------------- */
 
 #ifdef NORMAL_MODEL
@@ -84,6 +92,8 @@ NORMAL_MODEL(IMPULSE,impulse,50)
 #include "modify.h"
 #include "fix.h"
 #include "fix_wall_gran.h"
+#include "comm.h"
+#include <cstdio>
 #include "impulse_contacts.h"
 #include <string>
 
@@ -99,7 +109,7 @@ namespace ContactModels
       coeffRest(NULL),
       separate(true),
       bounceSpeed(0.0),
-      iterate(false),
+      iterate(true),
       historyOffset(-1),
       wall(dynamic_cast<LAMMPS_NS::FixWallGran *>(hsetup)),
       sink(NULL)
@@ -107,12 +117,12 @@ namespace ContactModels
 
     // separate on (default): also remove the overlap (see above); off: velocities only.
     // bounce_speed V: restitution only for approach speeds above V (below, e = 0)
-    // iterate on: hand the contacts to fix impulse/solve (above); off (default): single pass
+    // iterate on (default): hand the contacts to fix impulse/solve (above); off: single pass
     inline void registerSettings(Settings & settings)
     {
       settings.registerOnOff("separate", separate, true);
       settings.registerDoubleSetting("bounce_speed", bounceSpeed, 0.0);
-      settings.registerOnOff("iterate", iterate, false);
+      settings.registerOnOff("iterate", iterate, true);
     }
     inline void postSettings(IContactHistorySetup * hsetup, ContactModelBase * cmb)
     {
@@ -136,14 +146,20 @@ namespace ContactModels
       // the operator works on the real grains' masses; coarse-graining would rescale them
       if (force->cg_active())
         error->cg(FLERR, "model impulse");
-      // every run: the solver fix may have been made or removed since the last one
+      // every run: the solver fix may have been made or removed since the last one. The pair
+      // style (its init runs before the fixes' init) makes one with the defaults if the deck has
+      // none; a wall model's init comes later and finds it.
       sink = find_sink();
+      if (iterate && !sink && !wall) sink = make_sink();
       if (iterate && !sink)
-        error->all(FLERR, ("model impulse iterate on (" + where() + "): no fix impulse/solve to solve the contacts; "
-                           "add one, e.g. 'fix solve all impulse/solve' (a granlub-liggghts style)").c_str());
+        error->all(FLERR, ("model impulse (" + where() + ") iterates ('iterate on', the default) but the run has no "
+                           "fix impulse/solve: pair_style gran model impulse makes one, or add 'fix solve all "
+                           "impulse/solve'; a pair style and every wall with model impulse must agree ('iterate "
+                           "off' on all of them: Sawyer & Tichy's single pass)").c_str());
       if (!iterate && sink)
-        error->all(FLERR, ("model impulse (" + where() + "): fix impulse/solve solves every impulse contact of the "
-                           "run, so every pair gran and fix wall/gran with model impulse needs 'iterate on'").c_str());
+        error->all(FLERR, ("model impulse (" + where() + ") has 'iterate off', but fix impulse/solve solves every "
+                           "impulse contact of the run: every pair gran and fix wall/gran with model impulse needs "
+                           "'iterate on' (the default), or none of them and no fix impulse/solve").c_str());
     }
 
     // no elastic law; only fix heat/gran/conduction asks for this
@@ -269,6 +285,23 @@ namespace ContactModels
     {
       LAMMPS_NS::Fix * f = modify->find_fix_style("impulse/solve", 0);
       return f ? dynamic_cast<ImpulseContactSink *>(f) : NULL;
+    }
+
+    // iterate on without a fix impulse/solve in the deck: the solver with its defaults. Made from
+    // the pair style's init (before the fixes' init, as LIGGGHTS' pair gran makes its contact
+    // history fix), so the run's fix lists include it; it stays for later runs.
+    inline ImpulseContactSink * make_sink()
+    {
+      char id[] = "granlub_impulse_solve", group[] = "all", style[] = "impulse/solve";
+      char * args[] = {id, group, style};
+      modify->add_fix(3, args);
+      if (comm->me == 0) {
+        const char * msg = "model impulse: iterate on (the default): made 'fix granlub_impulse_solve all "
+                           "impulse/solve' with its defaults; 'iterate off' is Sawyer & Tichy's single pass\n";
+        if (screen) fputs(msg, screen);
+        if (logfile) fputs(msg, logfile);
+      }
+      return find_sink();
     }
 
     // the command this model belongs to, for messages

@@ -25,7 +25,7 @@
 
     Setting:  beta0 value  (keyword after the model names, default 0)
 
-    With `iterate on` (a setting of model impulse, shared by both models) this
+    With `iterate on` (the default; a setting of model impulse, shared by both) this
     model computes no force either: it gives the contact that model impulse has
     just handed to fix impulse/solve its mu and beta0, and the solver applies
     the same law to accumulated impulses (doc/fix_impulse_solve.txt).
@@ -64,7 +64,7 @@ namespace ContactModels
       TangentialModelBase(lmp, hsetup, cmb),
       coeffFrict(NULL),
       beta0(0.0),
-      iterate(false),
+      iterate(true),
       sink(NULL)
     {}
 
@@ -72,7 +72,7 @@ namespace ContactModels
     inline void registerSettings(Settings & settings)
     {
       settings.registerDoubleSetting("beta0", beta0, 0.0);
-      settings.registerOnOff("iterate", iterate, false);
+      settings.registerOnOff("iterate", iterate, true);
     }
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)

@@ -174,15 +174,25 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
 
 int FixImpulseSolve::setmask() { return PRE_INITIAL_INTEGRATE | PRE_FINAL_INTEGRATE; }
 
+// A deck that never asked for this fix (model impulse made it: iterate on is the default) is told
+// how to do without it.
+void FixImpulseSolve::refuse(const std::string& msg) const {
+    const bool made = std::strcmp(id, "granlub_impulse_solve") == 0;
+    fail(error, msg + (made ? " (this fix was made by model impulse, whose default is 'iterate on'; 'iterate off' on "
+                              "the pair style and every impulse wall gives Sawyer & Tichy's single pass, which needs "
+                              "no fix)"
+                            : ""));
+}
+
 void FixImpulseSolve::init() {
-    if (modify->n_fixes_style("impulse/solve") > 1) fail(error, "only one fix impulse/solve is allowed");
-    if (std::strstr(update->integrate_style, "respa")) fail(error, "does not support run_style respa");
+    if (modify->n_fixes_style("impulse/solve") > 1) refuse("only one fix impulse/solve is allowed");
+    if (std::strstr(update->integrate_style, "respa")) refuse("does not support run_style respa");
     if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
-        fail(error, "needs spheres with per-atom radius, mass, spin and torque (atom_style granular or sphere)");
+        refuse("needs spheres with per-atom radius, mass, spin and torque (atom_style granular or sphere)");
     if (force->newton_pair)
-        fail(error, "needs newton off (a pair across a periodic or processor boundary is resolved by both "
+        refuse("needs newton off (a pair across a periodic or processor boundary is resolved by both "
                     "owners; plugins/liggghts/doc/fix_impulse_solve.txt)");
-    if (!comm->ghost_velocity) fail(error, "needs 'communicate single vel yes'");
+    if (!comm->ghost_velocity) refuse("needs 'communicate single vel yes'");
 }
 
 // What this solver can serve: every granular contact of the run is model impulse with iterate on
@@ -191,22 +201,22 @@ void FixImpulseSolve::init() {
 void FixImpulseSolve::check_styles() {
     PairGranProxy* pair = dynamic_cast<PairGranProxy*>(force->pair);
     if (!pair || !pair->contact_match("normal", "impulse") || pair->get_history_offset("impulse") < 0)
-        fail(error, "needs 'pair_style gran model impulse ... iterate on' (the solver resolves the contacts that "
+        refuse("needs 'pair_style gran model impulse ... iterate on' (the solver resolves the contacts that "
                     "model collects)");
     if (pair->cpl() || pair->storeContactForces() || pair->storeContactForcesStress() || pair->store_sum_normal_force())
-        fail(error, "per-contact pair forces (compute pair/gran/local, contact force storage) are not available: the "
+        refuse("per-contact pair forces (compute pair/gran/local, contact force storage) are not available: the "
                     "contact models hand their contacts to the solver and compute no force");
     if (pair->fr_pair() || modify->n_fixes_style("rigid") > 0 || modify->n_fixes_style("multisphere") > 0)
-        fail(error, "rigid bodies (fix rigid, multisphere) are not supported");
+        refuse("rigid bodies (fix rigid, multisphere) are not supported");
     for (int k = 0; k < modify->nfix; k++) {
         FixWallGran* wall = dynamic_cast<FixWallGran*>(modify->fix[k]);
         if (!wall) continue;
         if (!wall->contact_match("normal", "impulse"))
-            fail(error, std::string("fix wall/gran ") + wall->id + " uses another contact model; with fix "
+            refuse(std::string("fix wall/gran ") + wall->id + " uses another contact model; with fix "
                         "impulse/solve every granular wall must be 'model impulse ... iterate on'");
         if (wall->compute_wall_gran_local() || wall->store_force_contact() || wall->store_force_contact_stress() ||
             wall->store_sum_normal_force())
-            fail(error, std::string("fix wall/gran ") + wall->id + ": per-contact wall forces (compute wall/gran/local, "
+            refuse(std::string("fix wall/gran ") + wall->id + ": per-contact wall forces (compute wall/gran/local, "
                         "contact force storage) are not available; store_force yes is");
     }
 }

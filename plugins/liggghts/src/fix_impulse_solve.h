@@ -12,6 +12,7 @@ FixStyle(impulse/solve,FixImpulseSolve)
 #ifndef GRANLUB_FIX_IMPULSE_SOLVE_H
 #define GRANLUB_FIX_IMPULSE_SOLVE_H
 
+#include <string>
 #include <vector>
 
 #include "fix.h"
@@ -36,6 +37,7 @@ private:
     typedef LIGGGHTS::ContactModels::ImpulseContact Contact;
 
     void check_styles();
+    [[noreturn]] void refuse(const std::string& msg) const;
     void grow(int nall);
     void prepare(double dt, int nlocal);
     int solve_velocities(int nlocal);
