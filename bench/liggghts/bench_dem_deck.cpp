@@ -146,7 +146,7 @@ std::string hertz_deck(const std::string& dir) {
     std::string hertz = std::regex_replace(impulse, std::regex(R"(model impulse tangential impulse[^\n]*?(primitive|\n))"),
                                            "model hertz tangential history $1");
     // wall lines carry their keywords after the primitive; drop the impulse model's own
-    hertz = std::regex_replace(hertz, std::regex(R"( beta0 \S+ separate \S+)"), "");
+    hertz = std::regex_replace(hertz, std::regex(R"( beta0 \S+ separate \S+( bounce_speed \S+)?( iterate \S+)?)"), "");
     std::smatch e;  // youngsModulus peratomtype E1 E2 ...: every type at kHertzModulus
     if (std::regex_search(hertz, e, std::regex(R"(youngsModulus peratomtype(( \S+)+))"))) {
         std::istringstream values(e[1].str());
