@@ -89,9 +89,9 @@ std::string contact_text(const Run& r) {
     if (run_text(r, "contact_solve") == "iterated")
         return "contacts: rigid grains, the impulse operator's contacts of each step solved together to convergence "
                "(contact dynamics)" + dt_error;
-    return "contacts: rigid grains, Sawyer & Tichy's impulse operator, one pass over the contacts per step (in "
-           "sheared cells it gives the wall stresses of the contacts solved to convergence at about a ninth of the "
-           "cost; piles at rest need the solved contacts)" + dt_error;
+    return "contacts: rigid grains, Sawyer & Tichy's impulse operator, one pass over the contacts per step, which in "
+           "a sheared cell gives the wall stresses of the contacts solved to convergence at about a ninth of the cost" +
+           dt_error;
 }
 
 }  // namespace
