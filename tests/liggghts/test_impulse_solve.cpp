@@ -164,6 +164,10 @@ BOOST_AUTO_TEST_CASE(what_it_cannot_serve_stops_with_the_plugins_error) {
     expect_error(deck(kPair + " iterate off", kWall, "", "in.nofix"),
                  "ERROR: model impulse (fix wall/gran wall) iterates ('iterate on', the default) but the run has no fix "
                  "impulse/solve");
+    // the same under a pair style with another model
+    expect_error(deck("pair_style gran model hertz tangential history", kWall, "", "in.hertzpair"),
+                 "with another pair model, or the pair style at 'iterate off', give every impulse wall 'iterate off' "
+                 "too");
     expect_error(deck(kPair + " iterate off", kWall + " iterate off", fix, "in.pairoff"),
                  "ERROR: model impulse (pair_style gran) has 'iterate off', but fix impulse/solve solves every impulse "
                  "contact of the run");

@@ -153,9 +153,9 @@ namespace ContactModels
       if (iterate && !sink && !wall) sink = make_sink();
       if (iterate && !sink)
         error->all(FLERR, ("model impulse (" + where() + ") iterates ('iterate on', the default) but the run has no "
-                           "fix impulse/solve: pair_style gran model impulse makes one, or add 'fix solve all "
-                           "impulse/solve'; a pair style and every wall with model impulse must agree ('iterate "
-                           "off' on all of them: Sawyer & Tichy's single pass)").c_str());
+                           "fix impulse/solve: the solver needs pair_style gran model impulse at iterate on, which "
+                           "makes one; with another pair model, or the pair style at 'iterate off', give every "
+                           "impulse wall 'iterate off' too (Sawyer & Tichy's single pass)").c_str());
       if (!iterate && sink)
         error->all(FLERR, ("model impulse (" + where() + ") has 'iterate off', but fix impulse/solve solves every "
                            "impulse contact of the run: every pair gran and fix wall/gran with model impulse needs "
