@@ -126,6 +126,8 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
       correction_(1.0),
       comm_mode_(kCommStart),
       any_boundary_(false),
+      kinematic_bits_(0),
+      dynamic_bits_(0),
       setup_pending_(false),
       setup_step_(0),
       last_sweeps_(0),
@@ -223,6 +225,17 @@ void FixImpulseSolve::check_styles() {
 
 void FixImpulseSolve::setup(int) {
     check_styles();  // here, not in init: computes register with pair gran and the walls in their own init
+    // Which atoms the impulses may move: those a time-integrating fix moves by its forces. An atom
+    // whose motion is prescribed (fix move, fix freeze) or that no fix integrates (a wall made of
+    // atoms) is kinematic: infinite mass, as a wall (contact dynamics' prescribed bodies; Jean 1999).
+    kinematic_bits_ = dynamic_bits_ = 0;
+    for (int k = 0; k < modify->nfix; k++) {
+        const Fix* fix = modify->fix[k];
+        if (std::strcmp(fix->style, "move") == 0 || std::strcmp(fix->style, "freeze") == 0)
+            kinematic_bits_ |= fix->groupbit;
+        else if (fix->time_integrate)
+            dynamic_bits_ |= fix->groupbit;
+    }
     // The forces of this setup: the models have collected the contacts (pair now, the walls in
     // their own setup, some after this one); their impulses of the last step are applied before
     // the first half kick (pre_initial_integrate), so a run continues the previous one.
@@ -287,8 +300,10 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
     double* const im = &im_[0];
     double* const ii = &ii_[0];
     double* const split = &split_[0];
+    const int* const mask = atom->mask;
     for (int k = 0; k < nall; k++) {
-        im[k] = 1.0 / rmass[k];
+        const bool kinematic = (mask[k] & kinematic_bits_) || !(mask[k] & dynamic_bits_);
+        im[k] = kinematic ? 0.0 : 1.0 / rmass[k];
         ii[k] = 2.5 * im[k] / (radius[k] * radius[k]);  // I = 2/5 m r^2, as the single pass
         split[k] = 0.0;
     }
@@ -348,11 +363,16 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
         // masses: a boundary pair sees each grain's mass split among its boundary pairs
         const double ai = c.boundary ? im[i] * split[i] : im[i];
         const double aj = wall ? 0.0 : (c.boundary ? im[j] * split[j] : im[j]);
-        c.mn = 1.0 / (ai + aj);
-        c.kt = 1.0 / (3.5 * (ai + aj));  // 1/m + r^2/I per grain, I = 2/5 m r^2
         c.pn = 0.0;
         c.pt[0] = c.pt[1] = c.pt[2] = 0.0;
         c.q = 0.0;
+        if (ai + aj == 0.0) {  // two kinematic atoms (or one against a wall): nothing to solve
+            c.mn = c.kt = c.tn = c.mu = 0.0;
+            c.separate = false;
+            continue;
+        }
+        c.mn = 1.0 / (ai + aj);
+        c.kt = 1.0 / (3.5 * (ai + aj));  // 1/m + r^2/I per grain, I = 2/5 m r^2
         if (!(warm_start_ && c.history && c.history[kHistStep] == previous)) continue;
         // warm start: last step's impulses, the tangential one in the present tangent plane and cone
         const double* const h = c.history;

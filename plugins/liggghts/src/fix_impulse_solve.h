@@ -61,6 +61,8 @@ private:
     std::vector<int> boundary_;  // indices of the boundary contacts of this step
     int comm_mode_;
     bool any_boundary_;          // on any rank: then ghosts are refreshed after every sweep
+    int kinematic_bits_;         // groups of fix move / freeze: atoms whose motion is prescribed
+    int dynamic_bits_;           // groups of the other time-integrating fixes
     bool setup_pending_;         // a run's setup collected contacts: apply their stored impulses
     bigint setup_step_;          // the step of that setup
 
