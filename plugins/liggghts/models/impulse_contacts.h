@@ -31,6 +31,10 @@ namespace ContactModels {
 // normal impulse of the last step the contact was pressed without restitution (its load).
 enum ImpulseHistory { kHistPn = 0, kHistPt = 1, kHistStep = 4, kHistLoad = 5, kImpulseHistoryValues = 6 };
 
+// The id of the fix impulse/solve that pair_style gran makes when a deck iterates (the default)
+// without one; the fix's messages name the way back to the single pass when they refuse a deck.
+static const char* const kMadeSolverId = "granlub_impulse_solve";
+
 struct ImpulseContact {
   // --- filled by the contact models when the contact is found ---
   int i;               // the grain (owned by this rank)

@@ -292,14 +292,14 @@ namespace ContactModels
     // history fix), so the run's fix lists include it; it stays for later runs.
     inline ImpulseContactSink * make_sink()
     {
-      char id[] = "granlub_impulse_solve", group[] = "all", style[] = "impulse/solve";
-      char * args[] = {id, group, style};
+      std::string id(kMadeSolverId), group("all"), style("impulse/solve");
+      char * args[] = {&id[0], &group[0], &style[0]};
       modify->add_fix(3, args);
       if (comm->me == 0) {
-        const char * msg = "model impulse: iterate on (the default): made 'fix granlub_impulse_solve all "
-                           "impulse/solve' with its defaults; 'iterate off' is Sawyer & Tichy's single pass\n";
-        if (screen) fputs(msg, screen);
-        if (logfile) fputs(msg, logfile);
+        const std::string msg = "model impulse: iterate on (the default): made 'fix " + id + " all impulse/solve' "
+                                "with its defaults; 'iterate off' is Sawyer & Tichy's single pass\n";
+        if (screen) fputs(msg.c_str(), screen);
+        if (logfile) fputs(msg.c_str(), logfile);
       }
       return find_sink();
     }

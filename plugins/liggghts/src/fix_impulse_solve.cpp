@@ -179,7 +179,7 @@ int FixImpulseSolve::setmask() { return PRE_INITIAL_INTEGRATE | PRE_FINAL_INTEGR
 // A deck that never asked for this fix (model impulse made it: iterate on is the default) is told
 // how to do without it.
 void FixImpulseSolve::refuse(const std::string& msg) const {
-    const bool made = std::strcmp(id, "granlub_impulse_solve") == 0;
+    const bool made = std::strcmp(id, LIGGGHTS::ContactModels::kMadeSolverId) == 0;
     fail(error, msg + (made ? " (this fix was made by model impulse, whose default is 'iterate on'; 'iterate off' on "
                               "the pair style and every impulse wall gives Sawyer & Tichy's single pass, which needs "
                               "no fix)"
