@@ -29,16 +29,21 @@ const std::string kFolder = "liggghts_impulse_solve";
 const std::string kPair = "pair_style gran model impulse tangential impulse separate on";
 const std::string kWall = "fix wall all wall/gran model impulse tangential impulse primitive type 2 zplane 0.0 separate on";
 
+// `text` as the deck `name` in this test's folder
+fs::path write_deck(const std::string& text, const std::string& name) {
+    const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder;
+    fs::create_directories(dir);
+    std::ofstream(dir / name) << text;
+    return dir / name;
+}
+
 // in.separate with its pair_style and wall lines replaced and `fix_lines` after pair_coeff
 fs::path deck(const std::string& pair, const std::string& wall, const std::string& fix_lines, const std::string& name) {
     std::string d = read_text(kTinyDeck);
     d = std::regex_replace(d, std::regex("pair_style [^\n]*"), pair);
     d = std::regex_replace(d, std::regex("fix wall [^\n]*"), wall);
     d = std::regex_replace(d, std::regex("pair_coeff \\* \\*\n"), "pair_coeff * *\n" + fix_lines);
-    const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder;
-    fs::create_directories(dir);
-    std::ofstream(dir / name) << d;
-    return dir / name;
+    return write_deck(d, name);
 }
 
 fs::path iterated(const std::string& fix_lines, const std::string& name) {
@@ -194,8 +199,7 @@ BOOST_AUTO_TEST_CASE(what_it_cannot_serve_stops_with_the_plugins_error) {
     // newton on: LIGGGHTS refuses the contact history the iterated models keep, before the fix says so
     std::string d = read_text(iterated(fix, "in.newton"));
     d = std::regex_replace(d, std::regex("newton off"), "newton on");
-    std::ofstream(fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder / "in.newton") << d;
-    expect_error(fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder / "in.newton", "requires newton pair off");
+    expect_error(write_deck(d, "in.newton"), "requires newton pair off");
 }
 
 // The models' default is iterate on: a deck that names neither the setting nor the solver gets the
@@ -233,10 +237,7 @@ BOOST_AUTO_TEST_CASE(prescribed_and_unintegrated_atoms_are_kinematic) {
         d = std::regex_replace(d, std::regex("run 1\n"), "run 2\n");
         d = std::regex_replace(d, std::regex("print \"RESULT ([^\"]*)\""),
                                "variable v2 equal vx[2]\nvariable v3 equal vx[3]\nprint \"RESULT $1 v2=${v2} v3=${v3}\"");
-        const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder;
-        fs::create_directories(dir);
-        std::ofstream(dir / name) << d;
-        const auto run = run_driver((dir / name).string(), "", 1, kFolder);
+        const auto run = run_driver(write_deck(d, name).string(), "", 1, kFolder);
         BOOST_TEST_REQUIRE(run.exit_code == 0, run.output);
         return results(run.output);
     };
