@@ -4,10 +4,14 @@
 // one pass over the grains and one MPI_Allreduce for every wall, instead of a pass and an
 // Allreduce per component through compute reduce's per-value dispatch. Impulse forces last one
 // step, so wall stresses must be summed every step (granlub's decks do): this is that sum.
+// With `torque`, each wall's torque on the grains about an axis, summed at the contact points: a
+// primitive wall's contact point is where its own contact geometry puts it (x_i + delta, on the
+// wall's surface), as fix mesh/surface/stress takes it for a mesh.
 #include "compute_wall_gran_force.h"
 
 #include <mpi.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "atom.h"
@@ -15,21 +19,34 @@
 #include "fix.h"
 #include "fix_property_atom.h"
 #include "fix_wall_gran.h"
+#include "force.h"
 #include "modify.h"
+#include "primitive_wall.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 
 ComputeWallGranForce::ComputeWallGranForce(LAMMPS* lmp, int& iarg, int narg, char** arg)
     : Compute(lmp, iarg, narg, arg) {
-    if (iarg >= narg)
-        error->all(FLERR, "Illegal compute wall/gran/force command: expected "
-                          "compute ID group wall/gran/force wallID1 [wallID2 ...]");
-    for (; iarg < narg; iarg++) walls_.push_back(arg[iarg]);
+    const char* usage = "Illegal compute wall/gran/force command: expected compute ID group wall/gran/force "
+                        "wallID1 [wallID2 ...] [torque ox oy oz ax ay az]";
+    for (; iarg < narg && std::strcmp(arg[iarg], "torque") != 0; iarg++) walls_.push_back(arg[iarg]);
+    if (walls_.empty()) error->all(FLERR, usage);
+    if (iarg < narg) {  // torque ox oy oz ax ay az
+        if (narg - iarg != 7) error->all(FLERR, usage);
+        for (int c = 0; c < 3; c++) {
+            origin_[c] = force->numeric(FLERR, arg[iarg + 1 + c]);
+            axis_[c] = force->numeric(FLERR, arg[iarg + 4 + c]);
+        }
+        const double norm = std::sqrt(axis_[0] * axis_[0] + axis_[1] * axis_[1] + axis_[2] * axis_[2]);
+        if (!(norm > 0)) error->all(FLERR, "Compute wall/gran/force: the torque axis must not be the zero vector");
+        for (int c = 0; c < 3; c++) axis_[c] /= norm;
+        per_wall_ = 4;
+    }
     for (const std::string& id : walls_) fixes_.push_back(find_wall(id));  // say so at the command
-    local_.assign(3 * walls_.size(), 0.0);
+    local_.assign(per_wall_ * walls_.size(), 0.0);
     vector_flag = 1;
-    size_vector = 3 * static_cast<int>(walls_.size());
+    size_vector = per_wall_ * static_cast<int>(walls_.size());
     extvector = 1;  // a sum over grains: extensive
     vector = new double[size_vector];
 }
@@ -50,6 +67,11 @@ FixWallGran* ComputeWallGranForce::find_wall(const std::string& id) {
     }
     if (!wall->store_force() || !wall->fix_wallforce()) {
         const std::string msg = "Compute wall/gran/force: wall " + id + " does not store its forces (add store_force yes)";
+        error->all(FLERR, msg.c_str());
+    }
+    if (per_wall_ == 4 && !wall->primitiveWall()) {
+        const std::string msg = "Compute wall/gran/force: wall " + id + " is a mesh; torque needs primitive walls "
+                                "(fix mesh/surface/stress gives a mesh's torque)";
         error->all(FLERR, msg.c_str());
     }
     return wall;
@@ -75,9 +97,33 @@ void ComputeWallGranForce::compute_vector() {
                 sy += f[i][1];
                 sz += f[i][2];
             }
-        local_[3 * w] = sx;
-        local_[3 * w + 1] = sy;
-        local_[3 * w + 2] = sz;
+        double* out = &local_[per_wall_ * w];
+        out[0] = sx;
+        out[1] = sy;
+        out[2] = sz;
+        if (per_wall_ == 4) out[3] = torque(fixes_[w], f);
     }
     MPI_Allreduce(local_.data(), vector, size_vector, MPI_DOUBLE, MPI_SUM, world);
+}
+
+// a . sum_i (p_i - o) x F_i over the group's grains that the wall pushes this step, with p_i the
+// contact point x_i + delta_i on the wall's surface
+double ComputeWallGranForce::torque(FixWallGran* wall, double** f) const {
+    double** x = atom->x;
+    const double* radius = atom->radius;
+    const int* mask = atom->mask;
+    const int nlocal = atom->nlocal;
+    PrimitiveWall* prim = wall->primitiveWall();
+    double sum = 0.0;
+    for (int i = 0; i < nlocal; i++) {
+        if (!(mask[i] & groupbit) || (f[i][0] == 0.0 && f[i][1] == 0.0 && f[i][2] == 0.0)) continue;
+        double delta[3] = {0.0, 0.0, 0.0};
+        prim->resolveContact(x[i], radius[i], delta);
+        const double r0 = x[i][0] + delta[0] - origin_[0];
+        const double r1 = x[i][1] + delta[1] - origin_[1];
+        const double r2 = x[i][2] + delta[2] - origin_[2];
+        sum += axis_[0] * (r1 * f[i][2] - r2 * f[i][1]) + axis_[1] * (r2 * f[i][0] - r0 * f[i][2]) +
+               axis_[2] * (r0 * f[i][1] - r1 * f[i][0]);
+    }
+    return sum;
 }
