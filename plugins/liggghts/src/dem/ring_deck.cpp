@@ -6,6 +6,90 @@
 
 namespace granlub::dem {
 
+namespace {
+
+struct WallText {
+    std::string columns;  // the wall file's kRingWallColumns values, in RingWallLoads' order
+};
+
+// Under load control the top mesh moves along the axis at v_vtop, which the servo loop sets.
+void top_motion(const Settings& s, const DeckLine& line) {
+    if (!s.load) return;
+    line(fmt::format("# the top moves along the axis at v_vtop, set by the servo loop at the end (box top {} m)",
+                     s.gap_max));
+    line(fmt::format("variable hplate equal {}", s.plate_start));
+    line("variable zero equal 0");
+    line("variable vtop equal 0");
+    line("fix lift all move/mesh mesh top linear/variable v_zero v_vtop v_zero");
+}
+
+// The four walls as STL meshes (ring_meshes.h) turning by LIGGGHTS' surface_ang_vel; loads from
+// fix mesh/surface/stress (of the grains on each mesh; torque about its reference point, the origin).
+WallText mesh_walls(const Settings& s, const ModelText& m, const std::string& turn, const DeckLine& line) {
+    line("# walls: meshes; the floor (type 2) and the side walls (type 4) turn about the axis; the top is type 3");
+    line(fmt::format("fix floor all mesh/surface/stress file {} type 2 {}", kRingMeshes[0], turn));
+    line(fmt::format("fix top all mesh/surface/stress file {} type 3", kRingMeshes[1]));
+    line(fmt::format("fix outer all mesh/surface/stress file {} type 4 {}", kRingMeshes[2], turn));
+    line(fmt::format("fix inner all mesh/surface/stress file {} type 4 {}", kRingMeshes[3], turn));
+    line(fmt::format("fix wgran all wall/gran {} mesh n_meshes 4 meshes floor top outer inner{}", m.model, m.settings));
+    top_motion(s, line);
+    return {"f_floor[2] f_floor[5] f_top[2] f_top[5] f_outer[2] f_outer[5] f_inner[2] f_inner[5]"};
+}
+
+// The floor and both cylinders as exact primitives turning in place (plugins/liggghts/doc/
+// fix_wall_gran_turning.txt); their loads from compute wall/gran/force with the torque about the
+// axis taken at the contact points (the walls' on the grains: negated here, so that the wall file
+// means what the meshes' does). The top stays the mesh moved by the servo at a steady speed, as
+// with mesh walls: a primitive plane can only be re-made where the servo puts it, and those jumps
+// left a fifth of the grains' weight out of the walls' forces in a small ring at 1 kPa (2026-11-26).
+WallText primitive_walls(const Settings& s, const ModelText& m, const std::string& turn, const DeckLine& line) {
+    const Annulus& an = s.annulus;
+    line("# walls: the floor (type 2) and the cylinders (type 4) exact primitives turning about the axis; the top");
+    line(fmt::format("# (type 3) the mesh {}; store_force gives each primitive's force on each grain", kRingMeshes[1]));
+    line(fmt::format("fix floor all wall/gran/turning {} primitive type 2 yplane 0.0 store_force yes{} {}", m.model,
+                     m.settings, turn));
+    line(fmt::format("fix outer all wall/gran/turning {} primitive type 4 ycylinder {} 0 0 store_force yes{} {}", m.model,
+                     an.outer(), m.settings, turn));
+    line(fmt::format("fix inner all wall/gran/turning {} primitive type 4 ycylinder {} 0 0 store_force yes{} {}", m.model,
+                     an.inner(), m.settings, turn));
+    line(fmt::format("fix top all mesh/surface/stress file {} type 3", kRingMeshes[1]));
+    line(fmt::format("fix wgran all wall/gran {} mesh n_meshes 1 meshes top{}", m.model, m.settings));
+    top_motion(s, line);
+    line("# the primitives' force on the grains and torque about the axis: fx fy fz torque of floor, outer, inner");
+    line("compute fwall all wall/gran/force floor outer inner torque 0 0 0 0 1 0");
+    std::string cols;
+    const char* names[] = {"floor", "outer", "inner"};
+    for (int w = 0; w < 3; ++w) {
+        line(fmt::format("variable {0}_fy equal -c_fwall[{1}]", names[w], 4 * w + 2));
+        line(fmt::format("variable {0}_torque equal -c_fwall[{1}]", names[w], 4 * w + 4));
+    }
+    return {"v_floor_fy v_floor_torque f_top[2] f_top[5] v_outer_fy v_outer_torque v_inner_fy v_inner_torque"};
+}
+
+// The slice's servo rule (deck.cpp) with the plate moved, not re-made: re-making the top mesh at
+// each window left 14 % of the grains' weight out of the walls' recorded forces (plugin README,
+// "The whole ring"); a mesh moving at a steady speed keeps the books.
+void servo(const Settings& s, const DeckLine& line, double A, double d_g) {
+    line(fmt::format("# every {} steps: the next position hplate + {} * err, err = clamp((P_top - P)/P, -1, {}),",
+                     s.servo_every, s.plate_gain * d_g, s.servo_max_error));
+    line(fmt::format("# kept in [{}, {}] m and reached at a steady speed over the next {} steps; positions in {}",
+                     s.gap_min, s.gap_max, s.servo_every, kPlateFile));
+    servo_rule_block(s, line, "f_top[2]", "", A, d_g);
+    line("label servo");
+    line(fmt::format("run             {} post no", s.servo_every));
+    line("next update");
+    line("jump SELF move  # skipped after the last window");
+    line("jump SELF done");
+    line("label move");
+    line(fmt::format("variable vtop equal (${{hnew}}-${{hplate}})/({}*dt)", s.servo_every));
+    line("variable hplate equal ${hnew}");
+    line("jump SELF servo");
+    line("label done");
+    line("variable vtop equal 0  # the plate stays where the last window took it");
+}
+
+}  // namespace
+
 DataBounds ring_bounds(const Settings& s, double d) {
     const double half = s.annulus.outer() + 2.0 * d;
     return {-half, half, -d, ring_wall_height(s, d) + 2.0 * d, -half, half};
@@ -35,40 +119,30 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
                      grains, d_g,
                      s.model == Model::Impulse ? "Sawyer & Tichy 2001 impulse operator (granlub plugin)"
                                                : "Hertz-Mindlin (LIGGGHTS built-in), soft-sphere reference"));
-    line(fmt::format("# Meshes ({} facets per circle): {}, {}, {}, {}. Rerun by hand in this folder: "
-                     "granlub-liggghts -in in.granlub",
-                     s.ring_facets, kRingMeshes[0], kRingMeshes[1], kRingMeshes[2], kRingMeshes[3]));
+    if (s.ring_mesh)
+        line(fmt::format("# Meshes ({} facets per circle): {}, {}, {}, {}. Rerun by hand in this folder: "
+                         "granlub-liggghts -in in.granlub",
+                         s.ring_facets, kRingMeshes[0], kRingMeshes[1], kRingMeshes[2], kRingMeshes[3]));
+    else
+        line(fmt::format("# Walls: exact primitives, the top a mesh ({} facets per circle): {}. Rerun by hand in this "
+                         "folder: granlub-liggghts -in in.granlub",
+                         s.ring_facets, kRingMeshes[1]));
     line("");
     engine_block(s, line, "f f f", "* 1 *   # split across the ring's plane, never along its axis");
     line("");
     contact_block(c, p, s, line);
     line("");
-    line("# walls: meshes; the floor (type 2) and the side walls (type 4) turn about the axis; the top is type 3");
     const std::string turn = fmt::format("surface_ang_vel origin 0 0 0 axis 0 1 0 omega {}", omega);
-    line(fmt::format("fix floor all mesh/surface/stress file {} type 2 {}", kRingMeshes[0], turn));
-    line(fmt::format("fix top all mesh/surface/stress file {} type 3", kRingMeshes[1]));
-    line(fmt::format("fix outer all mesh/surface/stress file {} type 4 {}", kRingMeshes[2], turn));
-    line(fmt::format("fix inner all mesh/surface/stress file {} type 4 {}", kRingMeshes[3], turn));
-    line(fmt::format("fix wgran all wall/gran {} mesh n_meshes 4 meshes floor top outer inner{}", m.model, m.settings));
-    if (s.load) {
-        line(fmt::format("# the top moves along the axis at v_vtop, set by the servo loop at the end (box top {} m)",
-                         s.gap_max));
-        line(fmt::format("variable hplate equal {}", s.plate_start));
-        line("variable zero equal 0");
-        line("variable vtop equal 0");
-        line("fix lift all move/mesh mesh top linear/variable v_zero v_vtop v_zero");
-    }
+    const WallText walls = s.ring_mesh ? mesh_walls(s, m, turn, line) : primitive_walls(s, m, turn, line);
     line("");
     line("# body forces: gravity along -y (the axis)");
     if (c.gravity > 0) line(fmt::format("fix grav all gravity {} vector 0 -1 0", c.gravity));
     line("fix integr all nve/sphere");
     line("");
-    line("# wall loads (of the grains on each mesh), averaged over blocks of sample_every steps, sampled every step");
+    line("# wall loads (of the grains on each wall), averaged over blocks of sample_every steps, sampled every step");
     line("# (impulse forces last one step). Columns: step, then for floor, top, outer, inner: force along y (N) and");
     line("# torque about y (N m)");
-    line(fmt::format("fix walls all ave/time 1 {0} {0} f_floor[2] f_floor[5] f_top[2] f_top[5] f_outer[2] f_outer[5] "
-                     "f_inner[2] f_inner[5] file {1}",
-                     s.sample_every, kWallFile));
+    line(fmt::format("fix walls all ave/time 1 {0} {0} {1} file {2}", s.sample_every, walls.columns, kWallFile));
     line(fmt::format("# floor area A = pi (r_o^2 - r_i^2) = {} m^2: normal stress on the top = f_y(top)/A; shear stress "
                      "= torque / {} m^3",
                      A, an.polar_moment()));
@@ -76,27 +150,9 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
     line("# particle snapshots for coarse-graining (granlub maps them onto the slice's frame, granlub/particles/annulus.h)");
     output_block(s, line);
     if (fixed_top_ending(s, line)) return d;
-    // The slice's servo rule (deck.cpp) with the plate moved, not re-made: re-making the top mesh
-    // at each window left 14 % of the grains' weight out of the walls' recorded forces (plugin
-    // README, "The whole ring"); a mesh moving at a steady speed keeps the books.
     line("");
     line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress, A));
-    line(fmt::format("# every {} steps: the next position hplate + {} * err, err = clamp((P_top - P)/P, -1, {}),",
-                     s.servo_every, s.plate_gain * d_g, s.servo_max_error));
-    line(fmt::format("# kept in [{}, {}] m and reached at a steady speed over the next {} steps; positions in {}",
-                     s.gap_min, s.gap_max, s.servo_every, kPlateFile));
-    servo_rule_block(s, line, "f_top[2]", "", A, d_g);
-    line("label servo");
-    line(fmt::format("run             {} post no", s.servo_every));
-    line("next update");
-    line("jump SELF move  # skipped after the last window");
-    line("jump SELF done");
-    line("label move");
-    line(fmt::format("variable vtop equal (${{hnew}}-${{hplate}})/({}*dt)", s.servo_every));
-    line("variable hplate equal ${hnew}");
-    line("jump SELF servo");
-    line("label done");
-    line("variable vtop equal 0  # the plate stays where the last window took it");
+    servo(s, line, A, d_g);
     persistence_block(s, line);
     final_state_block(s, line);
     return d;

@@ -124,9 +124,11 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
         }
     if (st.ring) {
         st.annulus = annulus(c);
+        st.ring_mesh = s.string("ring_walls") == "mesh";
         const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
         st.ring_facets = static_cast<std::size_t>(std::max(64.0, std::ceil(2.0 * std::numbers::pi * ro / chord)));
-        st.wall_sag = ro * (1.0 - std::cos(std::numbers::pi / static_cast<double>(st.ring_facets)));
+        // how far inside the outer circle the mesh's chords lie (the insertion keeps clear of them)
+        if (st.ring_mesh) st.wall_sag = ro * (1.0 - std::cos(std::numbers::pi / static_cast<double>(st.ring_facets)));
         st.contact_box = ring_contact_box(st.annulus, st.box_top(), c.grains.diameter);
     }
     st.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", st.box);
@@ -200,9 +202,11 @@ nlohmann::json Settings::to_json() const {
         j.update(nlohmann::json{{"solve_tolerance", solve_tolerance}, {"solve_iterations", solve_iterations}});
     if (load) j.update(nlohmann::json{{"servo_gain_used", plate_gain}, {"plate_overlap_m", plate_overlap}});
     if (ring)
-        j.update(nlohmann::json{{"annulus_radius_m", annulus.R},
-                                {"ring_facets_per_circle", ring_facets},
-                                {"ring_wall_sag_m", wall_sag}});
+        j.update(ring_mesh ? nlohmann::json{{"annulus_radius_m", annulus.R},
+                                            {"ring_walls", "mesh"},
+                                            {"ring_facets_per_circle", ring_facets},
+                                            {"ring_wall_sag_m", wall_sag}}
+                           : nlohmann::json{{"annulus_radius_m", annulus.R}, {"ring_walls", "primitive"}});
     return j;
 }
 

@@ -66,6 +66,7 @@ struct Settings : ServoSettings {
     // (granlub/particles/annulus.h): 2 pi R x H x W, the frame the results are written in.
     bool ring = false;
     Annulus annulus;
+    bool ring_mesh = false;       // the ring's walls as STL meshes (else primitives, ring_deck.h)
     std::size_t ring_facets = 0;  // facets per circle of the ring's meshes
     double wall_sag = 0;          // m: how far the outer wall's facets lie inside its circle at most
     ParticleBox contact_box;      // what core's contact search (contacts.h) is given for the grains
