@@ -57,8 +57,9 @@ SectionSpec section() {
              "wall/gran/turning), the top a flat mesh; 'mesh' = all four as STL meshes (ring_facet), the cylinders "
              "polygons. Either way the servo moves the top mesh at a steady speed over each window");
     s.real("ring_facet", 0.7, Range::closed(0.05, 5), "",
-           "[cell] geometry = annulus, ring_walls = 'mesh': longest facet edge along the ring's circles, in grain "
-           "diameters (the meshes' facets per circle follow from the outer wall's circumference)");
+           "[cell] geometry = annulus: longest facet edge along the ring's circles, in grain diameters (the "
+           "meshes' facets per circle follow from the outer wall's circumference; the top's, and with ring_walls = "
+           "'mesh' all four walls')");
     add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
     add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/particles/servo.h)
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with yade
