@@ -68,8 +68,7 @@ ring_walls = "{6}"
 // 0.2 s). With the exact cylinders it takes longer: at 0.15 s the floor's shear stress still rose
 // by 10 % between the halves (z 4.5) under 5.5 kPa, and under 1 kPa the top's 5 % drift was not
 // resolvable (z 0.5); neither run was called steady (2026-11-26), so they run 0.25 s. The walls are
-// the default exact primitives (the top a mesh); with "mesh" all four are turning STL meshes
-// (cached under the negated load).
+// the default exact primitives; with "mesh" STL meshes (cached under the negated load).
 const test::LoadRun& run_ring(double load, const std::string& walls = "primitive") {
     const double key = walls == "mesh" ? -load : load;
     return test::cached_load_run(key, [walls, load](double) {
@@ -113,10 +112,9 @@ void check_ring(double load, const std::string& walls = "primitive") {
     test::check_target_reached(r.summary, load, kH, 0.4);
     test::check_load_results(r.summary, r.dir, kGrains, kD, kArea, 20,
                              r.summary.run.at("load_control").at("servo_updates").get<std::size_t>());
-    for (const char* f :
-         {"in.granlub", "grains.data", "top.stl", "walls.txt", "section.csv", "width_profile.csv", "final_state.csv"})
+    for (const char* f : {"in.granlub", "grains.data", "walls.txt", "section.csv", "width_profile.csv", "final_state.csv"})
         BOOST_TEST(fs::exists(r.dir / f), f);
-    for (const char* f : {"floor.stl", "outer.stl", "inner.stl"})  // meshes only where they are used
+    for (const char* f : {"floor.stl", "top.stl", "outer.stl", "inner.stl"})  // meshes only where they are used
         BOOST_TEST(fs::exists(r.dir / f) == (walls == "mesh"), f);
     BOOST_TEST(r.summary.provenance.settings.at("resolved").at("ring_walls").get<std::string>() == walls);
     // the deck has no body force but gravity: the curvature makes the centripetal one

@@ -6,7 +6,8 @@
 // step, so wall stresses must be summed every step (granlub's decks do): this is that sum.
 // With `torque`, each wall's torque on the grains about an axis, summed at the contact points: a
 // primitive wall's contact point is where its own contact geometry puts it (x_i + delta, on the
-// wall's surface), as fix mesh/surface/stress takes it for a mesh.
+// wall's surface; a fix wall/gran/moving plane's where the plane is now), as fix
+// mesh/surface/stress takes it for a mesh.
 #include "compute_wall_gran_force.h"
 
 #include <mpi.h>
@@ -19,6 +20,7 @@
 #include "fix.h"
 #include "fix_property_atom.h"
 #include "fix_wall_gran.h"
+#include "fix_wall_gran_moving.h"
 #include "force.h"
 #include "modify.h"
 #include "primitive_wall.h"
@@ -113,12 +115,17 @@ double ComputeWallGranForce::torque(FixWallGran* wall, double** f) const {
     const double* radius = atom->radius;
     const int* mask = atom->mask;
     const int nlocal = atom->nlocal;
+    // a moving wall knows where it is now; another primitive is where it was made
+    const FixWallGranMoving* moving = dynamic_cast<const FixWallGranMoving*>(wall);
     PrimitiveWall* prim = wall->primitiveWall();
     double sum = 0.0;
     for (int i = 0; i < nlocal; i++) {
         if (!(mask[i] & groupbit) || (f[i][0] == 0.0 && f[i][1] == 0.0 && f[i][2] == 0.0)) continue;
         double delta[3] = {0.0, 0.0, 0.0};
-        prim->resolveContact(x[i], radius[i], delta);
+        if (moving)
+            moving->resolve(x[i], radius[i], delta);
+        else
+            prim->resolveContact(x[i], radius[i], delta);
         const double r0 = x[i][0] + delta[0] - origin_[0];
         const double r1 = x[i][1] + delta[1] - origin_[1];
         const double r2 = x[i][2] + delta[2] - origin_[2];

@@ -13,7 +13,7 @@
 #include "compute_wall_gran_force.h"
 #include "fix_centripetal_annulus.h"
 #include "fix_impulse_solve.h"
-#include "fix_wall_gran_turning.h"
+#include "fix_wall_gran_moving.h"
 #include "granlub_liggghts.h"
 
 using namespace LAMMPS_NS;
@@ -62,7 +62,7 @@ extern "C" int granlub_liggghts_register_styles(void* lammps) {
     std::map<std::string, ComputeCreator>* computes = lmp->modify->*compute_map_member(ComputeMapTag());
     (*fixes)["centripetal/annulus"] = &create_fix<FixCentripetalAnnulus>;
     (*fixes)["impulse/solve"] = &create_fix<FixImpulseSolve>;
-    (*fixes)["wall/gran/turning"] = &create_fix<FixWallGranTurning>;
+    (*fixes)["wall/gran/moving"] = &create_fix<FixWallGranMoving>;
     (*computes)["wall/gran/force"] = &create_compute<ComputeWallGranForce>;
     return 4;
 }

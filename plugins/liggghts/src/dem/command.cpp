@@ -76,7 +76,9 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
             bumps.push_back({*s.bumps_side, kSide, z, p.speed, true});
     write_file_atomic(dir / kData, data_file(init.particles, bounds, c.grains.density,
                                              fmt::format("case {} point {} ({})", c.name, p.id, prov), bumps));
-    if (s.ring) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facets, !s.ring_mesh);
+    if (s.ring && s.ring_mesh) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facets);
+    else
+        for (const char* mesh : kRingMeshes) fs::remove(dir / mesh);  // an earlier run's, not this deck's
     write_file_atomic(dir / kDeck, s.ring ? ring_deck(c, p, s, init.particles.size(), prov)
                                           : deck(c, p, s, init.particles.size(), prov));
     for (const char* f :

@@ -10,6 +10,7 @@ namespace {
 
 struct WallText {
     std::string columns;  // the wall file's kRingWallColumns values, in RingWallLoads' order
+    std::string top;      // the grains' force on the top along the axis (the servo's input)
 };
 
 // Under load control the top mesh moves along the axis at v_vtop, which the servo loop sets.
@@ -33,48 +34,57 @@ WallText mesh_walls(const Settings& s, const ModelText& m, const std::string& tu
     line(fmt::format("fix inner all mesh/surface/stress file {} type 4 {}", kRingMeshes[3], turn));
     line(fmt::format("fix wgran all wall/gran {} mesh n_meshes 4 meshes floor top outer inner{}", m.model, m.settings));
     top_motion(s, line);
-    return {"f_floor[2] f_floor[5] f_top[2] f_top[5] f_outer[2] f_outer[5] f_inner[2] f_inner[5]"};
+    return {"f_floor[2] f_floor[5] f_top[2] f_top[5] f_outer[2] f_outer[5] f_inner[2] f_inner[5]", "f_top[2]"};
 }
 
-// The floor and both cylinders as exact primitives turning in place (plugins/liggghts/doc/
-// fix_wall_gran_turning.txt); their loads from compute wall/gran/force with the torque about the
-// axis taken at the contact points (the walls' on the grains: negated here, so that the wall file
-// means what the meshes' does). The top stays the mesh moved by the servo at a steady speed, as
-// with mesh walls: a primitive plane can only be re-made where the servo puts it, and those jumps
-// left a fifth of the grains' weight out of the walls' forces in a small ring at 1 kPa (2026-11-26).
+// All four walls as exact primitives (plugins/liggghts/doc/fix_wall_gran_moving.txt): the floor and
+// both cylinders turning in place, the top a plane that the servo moves along the axis at v_vtop,
+// as the mesh top. Their loads from compute wall/gran/force, the torque about the axis taken at the
+// contact points (the walls' on the grains: negated here, so that the wall file means what the
+// meshes' does). A plain primitive top could only be re-made where the servo puts it: in a small
+// ring at 1 kPa those jumps left a fifth of the grains' weight out of the walls' forces (2026-11-26).
 WallText primitive_walls(const Settings& s, const ModelText& m, const std::string& turn, const DeckLine& line) {
     const Annulus& an = s.annulus;
-    line("# walls: the floor (type 2) and the cylinders (type 4) exact primitives turning about the axis; the top");
-    line(fmt::format("# (type 3) the mesh {}; store_force gives each primitive's force on each grain", kRingMeshes[1]));
-    line(fmt::format("fix floor all wall/gran/turning {} primitive type 2 yplane 0.0 store_force yes{} {}", m.model,
+    line("# walls: exact primitives; the floor (type 2) and the cylinders (type 4) turn about the axis, the top");
+    line("# (type 3) is a plane over the trough; store_force gives each wall's force on each grain");
+    line(fmt::format("fix floor all wall/gran/moving {} primitive type 2 yplane 0.0 store_force yes{} {}", m.model,
                      m.settings, turn));
-    line(fmt::format("fix outer all wall/gran/turning {} primitive type 4 ycylinder {} 0 0 store_force yes{} {}", m.model,
+    line(fmt::format("fix outer all wall/gran/moving {} primitive type 4 ycylinder {} 0 0 store_force yes{} {}", m.model,
                      an.outer(), m.settings, turn));
-    line(fmt::format("fix inner all wall/gran/turning {} primitive type 4 ycylinder {} 0 0 store_force yes{} {}", m.model,
+    line(fmt::format("fix inner all wall/gran/moving {} primitive type 4 ycylinder {} 0 0 store_force yes{} {}", m.model,
                      an.inner(), m.settings, turn));
-    line(fmt::format("fix top all mesh/surface/stress file {} type 3", kRingMeshes[1]));
-    line(fmt::format("fix wgran all wall/gran {} mesh n_meshes 1 meshes top{}", m.model, m.settings));
-    top_motion(s, line);
-    line("# the primitives' force on the grains and torque about the axis: fx fy fz torque of floor, outer, inner");
-    line("compute fwall all wall/gran/force floor outer inner torque 0 0 0 0 1 0");
+    if (s.load) {
+        line(fmt::format("# the top moves along the axis at v_vtop, set by the servo loop at the end (box top {} m)",
+                         s.gap_max));
+        line(fmt::format("variable hplate equal {}", s.plate_start));
+        line("variable vtop equal 0");
+        line(fmt::format("fix top all wall/gran/moving {} primitive type 3 yplane {} store_force yes{} normal_velocity v_vtop",
+                         m.model, s.plate_start, m.settings));
+    } else {
+        line(fmt::format("fix top all wall/gran {} primitive type 3 yplane {} store_force yes{}", m.model, s.plate_start,
+                         m.settings));
+    }
+    line("# each wall's force on the grains and torque about the axis: fx fy fz torque of floor, top, outer, inner");
+    line("compute fwall all wall/gran/force floor top outer inner torque 0 0 0 0 1 0");
     std::string cols;
-    const char* names[] = {"floor", "outer", "inner"};
-    for (int w = 0; w < 3; ++w) {
+    const char* names[] = {"floor", "top", "outer", "inner"};
+    for (int w = 0; w < 4; ++w) {
         line(fmt::format("variable {0}_fy equal -c_fwall[{1}]", names[w], 4 * w + 2));
         line(fmt::format("variable {0}_torque equal -c_fwall[{1}]", names[w], 4 * w + 4));
+        cols += fmt::format("{0}v_{1}_fy v_{1}_torque", w ? " " : "", names[w]);
     }
-    return {"v_floor_fy v_floor_torque f_top[2] f_top[5] v_outer_fy v_outer_torque v_inner_fy v_inner_torque"};
+    return {cols, "v_top_fy"};
 }
 
 // The slice's servo rule (deck.cpp) with the plate moved, not re-made: re-making the top mesh at
 // each window left 14 % of the grains' weight out of the walls' recorded forces (plugin README,
-// "The whole ring"); a mesh moving at a steady speed keeps the books.
-void servo(const Settings& s, const DeckLine& line, double A, double d_g) {
+// "The whole ring"); a top moving at a steady speed keeps the books. `top`: the grains' force on it.
+void servo(const Settings& s, const DeckLine& line, double A, double d_g, const std::string& top) {
     line(fmt::format("# every {} steps: the next position hplate + {} * err, err = clamp((P_top - P)/P, -1, {}),",
                      s.servo_every, s.plate_gain * d_g, s.servo_max_error));
     line(fmt::format("# kept in [{}, {}] m and reached at a steady speed over the next {} steps; positions in {}",
                      s.gap_min, s.gap_max, s.servo_every, kPlateFile));
-    servo_rule_block(s, line, "f_top[2]", "", A, d_g);
+    servo_rule_block(s, line, top, "", A, d_g);
     line("label servo");
     line(fmt::format("run             {} post no", s.servo_every));
     line("next update");
@@ -124,9 +134,8 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
                          "granlub-liggghts -in in.granlub",
                          s.ring_facets, kRingMeshes[0], kRingMeshes[1], kRingMeshes[2], kRingMeshes[3]));
     else
-        line(fmt::format("# Walls: exact primitives, the top a mesh ({} facets per circle): {}. Rerun by hand in this "
-                         "folder: granlub-liggghts -in in.granlub",
-                         s.ring_facets, kRingMeshes[1]));
+        line("# Walls: exact primitives (planes and cylinders). Rerun by hand in this folder: granlub-liggghts -in "
+             "in.granlub");
     line("");
     engine_block(s, line, "f f f", "* 1 *   # split across the ring's plane, never along its axis");
     line("");
@@ -152,7 +161,7 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
     if (fixed_top_ending(s, line)) return d;
     line("");
     line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress, A));
-    servo(s, line, A, d_g);
+    servo(s, line, A, d_g, walls.top);
     persistence_block(s, line);
     final_state_block(s, line);
     return d;

@@ -1,11 +1,11 @@
 // The LIGGGHTS deck of the whole ring ([cell] geometry = "annulus"; granlub/particles/annulus.h): the
-// trough's floor and both cylinders turn at Omega = U / R about the y axis, in place. By default
-// ([dem] ring_walls = "primitive") they are exact primitives (fix wall/gran/turning); with "mesh"
-// STL meshes (ring_meshes.h; LIGGGHTS' surface_ang_vel). The flat annular top is a mesh either way,
-// moved along the axis by the slice's servo rule at a steady speed over each window (fix
-// move/mesh). Gravity along -y and no centripetal body force: the curvature makes it. Readable and
-// rerunnable by hand like the slice's deck (deck.h), with the same result files; only the wall
-// file's columns differ.
+// trough's floor and both cylinders turn at Omega = U / R about the y axis, in place, and the flat
+// annular top is still and, under load control, moved along the axis by the slice's servo rule at
+// a steady speed over each window. By default ([dem] ring_walls = "primitive") all four are exact
+// primitives (fix wall/gran/moving); with "mesh" STL meshes (ring_meshes.h; LIGGGHTS'
+// surface_ang_vel and fix move/mesh). Gravity along -y and no centripetal body force: the
+// curvature makes it. Readable and rerunnable by hand like the slice's deck (deck.h), with the
+// same result files; only the wall file's columns differ.
 #pragma once
 #include <string>
 

@@ -55,13 +55,9 @@ std::string cylinder(const char* name, double r, double height, std::size_t n) {
 }  // namespace
 
 void write_ring_meshes(const std::filesystem::path& dir, const Annulus& a, double top, double height,
-                       std::size_t facets, bool top_only) {
-    write_file_atomic(dir / kRingMeshes[1], annulus_disc("top", a.inner(), a.outer(), top, facets));
-    if (top_only) {
-        for (int w : {0, 2, 3}) std::filesystem::remove(dir / kRingMeshes[w]);  // an earlier run's
-        return;
-    }
+                       std::size_t facets) {
     write_file_atomic(dir / kRingMeshes[0], annulus_disc("floor", a.inner(), a.outer(), 0.0, facets));
+    write_file_atomic(dir / kRingMeshes[1], annulus_disc("top", a.inner(), a.outer(), top, facets));
     write_file_atomic(dir / kRingMeshes[2], cylinder("outer", a.outer(), height, facets));
     write_file_atomic(dir / kRingMeshes[3], cylinder("inner", a.inner(), height, facets));
 }

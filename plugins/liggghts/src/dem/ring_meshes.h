@@ -10,8 +10,8 @@
 namespace granlub::dem {
 
 // Writes kRingMeshes into dir (atomically each): floor at y = 0, top at y = top, the cylinders
-// from y = 0 to y = height; with top_only the top alone (the others are primitives) and no other.
+// from y = 0 to y = height.
 void write_ring_meshes(const std::filesystem::path& dir, const Annulus& a, double top, double height,
-                       std::size_t facets, bool top_only);
+                       std::size_t facets);
 
 }  // namespace granlub::dem

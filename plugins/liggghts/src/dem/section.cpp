@@ -53,13 +53,12 @@ SectionSpec section() {
            "hertz model: time step as a fraction of the Rayleigh time");
     s.real("skin", 0.25, Range::positive(), "", "neighbour-list skin in grain diameters");
     s.choice("ring_walls", "primitive", {"primitive", "mesh"},
-             "[cell] geometry = annulus: 'primitive' = the floor and both cylinders exact, turning in place (fix "
-             "wall/gran/turning), the top a flat mesh; 'mesh' = all four as STL meshes (ring_facet), the cylinders "
-             "polygons. Either way the servo moves the top mesh at a steady speed over each window");
+             "[cell] geometry = annulus: 'primitive' = all four walls exact (fix wall/gran/moving: the floor and "
+             "both cylinders turning in place, the top a plane the servo moves); 'mesh' = STL meshes (ring_facet), "
+             "the cylinders polygons. Either way the servo moves the top at a steady speed over each window");
     s.real("ring_facet", 0.7, Range::closed(0.05, 5), "",
            "[cell] geometry = annulus: longest facet edge along the ring's circles, in grain diameters (the "
-           "meshes' facets per circle follow from the outer wall's circumference; the top's, and with ring_walls = "
-           "'mesh' all four walls')");
+           "meshes' facets per circle follow from the outer wall's circumference; ring_walls = 'mesh' only)");
     add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
     add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/particles/servo.h)
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with yade

@@ -1,10 +1,11 @@
-// fix wall/gran/turning and the torque of compute wall/gran/force (plugins/liggghts/doc) through the
-// driver and tests/liggghts/in.turning: a turning primitive floor moves two grains exactly as
-// LIGGGHTS' turning mesh of the same plane does, and its torque is the mesh's; a grain started at
+// fix wall/gran/moving and the torque of compute wall/gran/force (plugins/liggghts/doc) through the
+// driver and tests/liggghts/in.moving: a turning primitive floor moves two grains exactly as
+// LIGGGHTS' turning mesh of the same plane does, and its torque is the mesh's; a floor moved along
+// its normal moves them as the mesh moved by fix move/mesh; a grain started at
 // rest on it rolls at 2/7 of the floor's speed; a turning cylinder drags along its surface and its
 // torque is taken at the contact points on the cylinder, not at the grains' centres; bad input
 // stops with a message. Single pass and the iterated solve.
-#define BOOST_TEST_MODULE liggghts_turning_wall
+#define BOOST_TEST_MODULE liggghts_moving_wall
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -25,15 +26,18 @@ using granlub::test::run_driver;
 
 namespace {
 
-const fs::path kDeck = fs::path(GRANLUB_SOURCE_DIR) / "tests" / "liggghts" / "in.turning";
-const std::string kFolder = "liggghts_turning_wall";
+const fs::path kDeck = fs::path(GRANLUB_SOURCE_DIR) / "tests" / "liggghts" / "in.moving";
+const std::string kFolder = "liggghts_moving_wall";
 
-std::map<std::string, double> run(const std::string& wall, int iterate) {
+std::map<std::string, double> run(const std::string& wall, int iterate, int lift = 0) {
     const fs::path dir = fs::path(GRANLUB_BINARY_DIR) / "tests" / kFolder;
     fs::create_directories(dir);
     fs::copy_file(fs::path(GRANLUB_SOURCE_DIR) / "tests" / "liggghts" / "floor.stl", dir / "floor.stl",
                   fs::copy_options::overwrite_existing);
-    const auto r = run_driver(kDeck.string(), "-var wall " + wall + " -var iterate " + std::to_string(iterate), 1, kFolder);
+    const auto r = run_driver(kDeck.string(),
+                              "-var wall " + wall + " -var iterate " + std::to_string(iterate) + " -var lift " +
+                                  std::to_string(lift),
+                              1, kFolder);
     BOOST_TEST_REQUIRE(r.exit_code == 0, r.output);
     const auto v = results(r.output);
     BOOST_TEST_REQUIRE(v.count("tqref1") == 1u, r.output);
@@ -56,6 +60,21 @@ BOOST_AUTO_TEST_CASE(a_turning_floor_moves_the_grains_as_the_turning_mesh) {
         // grain 1 (at rest, 30 mm from the axis, after its bounces) rolls without slipping at 2/7 of
         // the floor's speed there, Omega r = 0.3 m/s along -y
         BOOST_TEST(close(plane.at("vy1"), -2.0 / 7.0 * 10.0 * 0.03, 1e-6), "vy1 " << plane.at("vy1"));
+    }
+}
+
+// The floor rises at 0.05 m/s, then sinks at 0.02 m/s (normal_velocity, a variable changed between
+// two runs) as LIGGGHTS' fix move/mesh moves the mesh: the resting grain is thrown up by the
+// restitution and lands again on the sinking floor, to the last digits of the mesh's motion.
+BOOST_AUTO_TEST_CASE(a_plane_moving_along_its_normal_moves_as_the_moved_mesh) {
+    for (int iterate : {0, 1}) {
+        const auto plane = run("plane", iterate, 1), mesh = run("mesh", iterate, 1);
+        for (const auto& [key, value] : mesh)
+            BOOST_TEST(close(plane.at(key), value, 1e-12), "iterate " << iterate << " " << key << ": " << plane.at(key)
+                                                                        << " vs the mesh's " << value);
+        // the floor moved: grain 2, resting on it at z = 4.9 mm, ends 0.3 mm higher and sinking with it
+        BOOST_TEST(plane.at("z2") > 0.0052);
+        BOOST_TEST(close(plane.at("vz2"), -0.02, 0.01), "vz2 " << plane.at("vz2"));
     }
 }
 
@@ -84,7 +103,12 @@ BOOST_AUTO_TEST_CASE(bad_input_stops_with_a_message) {
          "'surface_ang_vel origin ox oy oz axis ax ay az omega w'"},
         {plane, "zplane 0.0 store_force yes iterate ${it} surface_ang_vel origin 0 0 0 axis 0 0 0 omega 1",
          "the axis must not be the zero vector"},
-        {plane, "zplane 0.0 shear x 1 store_force yes iterate ${it} ${turn}", "'shear' and 'surface_ang_vel' exclude"},
+        {plane, "zplane 0.0 shear x 1 store_force yes iterate ${it} ${turn}", "'shear' and this fix's motions exclude each other"},
+        {plane, "zplane 0.0 store_force yes iterate ${it} normal_velocity vz", "normal_velocity takes one equal-style"},
+        {plane, "zplane 0.0 store_force yes iterate ${it} normal_velocity v_nosuch",
+         "normal_velocity needs an equal-style variable nosuch"},
+        {"zcylinder 0.04 0.05 0.05 store_force yes ${turn}", "zcylinder 0.04 0.05 0.05 store_force yes normal_velocity v_vz",
+         "normal_velocity moves a plane (xplane, yplane, zplane) only"},
         {"torque 0.05 0.05 0 0 0 1", "torque 0.05 0.05 0 0 1", "[torque ox oy oz ax ay az]"},
         {"torque 0.05 0.05 0 0 0 1", "torque 0 0 0 0 0 0", "the torque axis must not be the zero vector"},
     };
@@ -96,7 +120,8 @@ BOOST_AUTO_TEST_CASE(bad_input_stops_with_a_message) {
         BOOST_TEST_REQUIRE(at != std::string::npos, c.from);
         d.replace(at, c.from.size(), c.to);
         std::ofstream(dir / "in.bad") << d;
-        const auto r = run_driver((dir / "in.bad").string(), "-var wall plane", 1, kFolder);
+        const bool cylinder = c.from.find("zcylinder") != std::string::npos;
+        const auto r = run_driver((dir / "in.bad").string(), cylinder ? "-var wall cylinder" : "-var wall plane", 1, kFolder);
         BOOST_TEST(r.exit_code != 0, c.to);
         BOOST_TEST(r.output.find(c.message) != std::string::npos, c.to << "\n" << r.output);
         BOOST_TEST(r.output.find("RESULT") == std::string::npos, c.to);
@@ -112,7 +137,7 @@ BOOST_AUTO_TEST_CASE(bad_input_stops_with_a_message) {
     BOOST_TEST(r.exit_code != 0);
     BOOST_TEST(r.output.find("wall floor is a mesh; torque needs primitive walls") != std::string::npos, r.output);
     d = std::regex_replace(read_text(kDeck), std::regex("wall/gran \\$\\{model\\} mesh n_meshes 1 meshes floormesh"),
-                           "wall/gran/turning ${model} mesh n_meshes 1 meshes floormesh ${turn}");
+                           "wall/gran/moving ${model} mesh n_meshes 1 meshes floormesh ${turn}");
     std::ofstream(dir / "in.bad") << d;
     r = run_driver((dir / "in.bad").string(), "-var wall mesh", 1, kFolder);
     BOOST_TEST(r.exit_code != 0);
