@@ -65,9 +65,9 @@ ring_walls = "{6}"
 }
 
 // The settled bed in ~0.07 s with mesh walls (measured 2026-11-24, 5.5 kPa: steady from 0.066 s of
-// 0.2 s). With the exact cylinders it takes longer: at 0.15 s the floor's shear stress still rose
-// by 10 % between the halves (z 4.5) under 5.5 kPa, and under 1 kPa the top's 5 % drift was not
-// resolvable (z 0.5); neither run was called steady (2026-11-26), so they run 0.25 s. The walls are
+// 0.2 s). With exact cylinders 0.15 s was not always enough (2026-11-26): under 5.5 kPa, with the
+// mesh top, the floor's shear stress still rose by 10 % between the halves (z 4.5), and under
+// 1 kPa the top's 5 % drift was not resolvable (z 0.5); so the primitive walls run 0.25 s. The walls are
 // the default exact primitives; with "mesh" STL meshes (cached under the negated load).
 const test::LoadRun& run_ring(double load, const std::string& walls = "primitive") {
     const double key = walls == "mesh" ? -load : load;
