@@ -13,15 +13,13 @@ struct WallText {
     std::string top;      // the grains' force on the top along the axis (the servo's input)
 };
 
-// Under load control the top mesh moves along the axis at v_vtop, which the servo loop sets.
-void top_motion(const Settings& s, const DeckLine& line) {
-    if (!s.load) return;
+// Under load control the top moves along the axis at v_vtop, which the servo loop sets after each
+// window (servo() below); hplate is where the window takes it.
+void top_velocity(const Settings& s, const DeckLine& line) {
     line(fmt::format("# the top moves along the axis at v_vtop, set by the servo loop at the end (box top {} m)",
                      s.gap_max));
     line(fmt::format("variable hplate equal {}", s.plate_start));
-    line("variable zero equal 0");
     line("variable vtop equal 0");
-    line("fix lift all move/mesh mesh top linear/variable v_zero v_vtop v_zero");
 }
 
 // The four walls as STL meshes (ring_meshes.h) turning by LIGGGHTS' surface_ang_vel; loads from
@@ -33,7 +31,11 @@ WallText mesh_walls(const Settings& s, const ModelText& m, const std::string& tu
     line(fmt::format("fix outer all mesh/surface/stress file {} type 4 {}", kRingMeshes[2], turn));
     line(fmt::format("fix inner all mesh/surface/stress file {} type 4 {}", kRingMeshes[3], turn));
     line(fmt::format("fix wgran all wall/gran {} mesh n_meshes 4 meshes floor top outer inner{}", m.model, m.settings));
-    top_motion(s, line);
+    if (s.load) {
+        top_velocity(s, line);
+        line("variable zero equal 0");
+        line("fix lift all move/mesh mesh top linear/variable v_zero v_vtop v_zero");
+    }
     return {"f_floor[2] f_floor[5] f_top[2] f_top[5] f_outer[2] f_outer[5] f_inner[2] f_inner[5]", "f_top[2]"};
 }
 
@@ -54,10 +56,7 @@ WallText primitive_walls(const Settings& s, const ModelText& m, const std::strin
     line(fmt::format("fix inner all wall/gran/moving {} primitive type 4 ycylinder {} 0 0 store_force yes{} {}", m.model,
                      an.inner(), m.settings, turn));
     if (s.load) {
-        line(fmt::format("# the top moves along the axis at v_vtop, set by the servo loop at the end (box top {} m)",
-                         s.gap_max));
-        line(fmt::format("variable hplate equal {}", s.plate_start));
-        line("variable vtop equal 0");
+        top_velocity(s, line);
         line(fmt::format("fix top all wall/gran/moving {} primitive type 3 yplane {} store_force yes{} normal_velocity v_vtop",
                          m.model, s.plate_start, m.settings));
     } else {
