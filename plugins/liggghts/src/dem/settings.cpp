@@ -125,10 +125,11 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     if (st.ring) {
         st.annulus = annulus(c);
         st.ring_mesh = s.string("ring_walls") == "mesh";
-        const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
-        st.ring_facets = static_cast<std::size_t>(std::max(64.0, std::ceil(2.0 * std::numbers::pi * ro / chord)));
-        // how far inside the outer circle the mesh's chords lie (the insertion keeps clear of them)
-        if (st.ring_mesh) st.wall_sag = ro * (1.0 - std::cos(std::numbers::pi / static_cast<double>(st.ring_facets)));
+        if (st.ring_mesh) {  // the meshes' facets, and how far inside the outer circle their chords lie
+            const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
+            st.ring_facets = static_cast<std::size_t>(std::max(64.0, std::ceil(2.0 * std::numbers::pi * ro / chord)));
+            st.wall_sag = ro * (1.0 - std::cos(std::numbers::pi / static_cast<double>(st.ring_facets)));
+        }
         st.contact_box = ring_contact_box(st.annulus, st.box_top(), c.grains.diameter);
     }
     st.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", st.box);

@@ -67,7 +67,7 @@ struct Settings : ServoSettings {
     bool ring = false;
     Annulus annulus;
     bool ring_mesh = false;       // the ring's walls as STL meshes (else primitives, ring_deck.h)
-    std::size_t ring_facets = 0;  // facets per circle of the ring's meshes
+    std::size_t ring_facets = 0;  // facets per circle of the ring's meshes (ring_mesh only)
     double wall_sag = 0;          // m: how far the outer wall's facets lie inside its circle at most
     ParticleBox contact_box;      // what core's contact search (contacts.h) is given for the grains
     double plate_overlap = 0;     // m, Hertz grain-plate overlap under the load's share of one grain
