@@ -87,50 +87,48 @@ void ComputeWallGranForce::init() {
 
 void ComputeWallGranForce::compute_vector() {
     invoked_vector = update->ntimestep;
+    double** x = atom->x;
+    const double* radius = atom->radius;
     const int* mask = atom->mask;
     const int nlocal = atom->nlocal;
     for (std::size_t w = 0; w < walls_.size(); w++) {
         // the wall's store_force array (f_force_<wall>), read here: it moves when the atom arrays grow
         double** f = fixes_[w]->fix_wallforce()->array_atom;
-        double sx = 0.0, sy = 0.0, sz = 0.0;
-        for (int i = 0; i < nlocal; i++)
-            if (mask[i] & groupbit) {
-                sx += f[i][0];
-                sy += f[i][1];
-                sz += f[i][2];
-            }
+        // a moving wall knows where it is now; another primitive is where it was made
+        const FixWallGranMoving* moving = dynamic_cast<const FixWallGranMoving*>(fixes_[w]);
+        PrimitiveWall* prim = per_wall_ == 4 ? fixes_[w]->primitiveWall() : NULL;
+        // One pass: most grains do not touch the wall this step, and skipping their exact zeros
+        // leaves every sum as compute reduce's, to the bit (x + 0.0 == x).
+        double sx = 0.0, sy = 0.0, sz = 0.0, tq = 0.0;
+        for (int i = 0; i < nlocal; i++) {
+            const double* fi = f[i];
+            if (!(mask[i] & groupbit) || (fi[0] == 0.0 && fi[1] == 0.0 && fi[2] == 0.0)) continue;
+            sx += fi[0];
+            sy += fi[1];
+            sz += fi[2];
+            if (per_wall_ == 4) tq += torque(moving, prim, x[i], radius[i], fi);
+        }
         double* out = &local_[per_wall_ * w];
         out[0] = sx;
         out[1] = sy;
         out[2] = sz;
-        if (per_wall_ == 4) out[3] = torque(fixes_[w], f);
+        if (per_wall_ == 4) out[3] = tq;
     }
     MPI_Allreduce(local_.data(), vector, size_vector, MPI_DOUBLE, MPI_SUM, world);
 }
 
-// a . sum_i (p_i - o) x F_i over the group's grains that the wall pushes this step, with p_i the
-// contact point x_i + delta_i on the wall's surface
-double ComputeWallGranForce::torque(FixWallGran* wall, double** f) const {
-    double** x = atom->x;
-    const double* radius = atom->radius;
-    const int* mask = atom->mask;
-    const int nlocal = atom->nlocal;
-    // a moving wall knows where it is now; another primitive is where it was made
-    const FixWallGranMoving* moving = dynamic_cast<const FixWallGranMoving*>(wall);
-    PrimitiveWall* prim = wall->primitiveWall();
-    double sum = 0.0;
-    for (int i = 0; i < nlocal; i++) {
-        if (!(mask[i] & groupbit) || (f[i][0] == 0.0 && f[i][1] == 0.0 && f[i][2] == 0.0)) continue;
-        double delta[3] = {0.0, 0.0, 0.0};
-        if (moving)
-            moving->resolve(x[i], radius[i], delta);
-        else
-            prim->resolveContact(x[i], radius[i], delta);
-        const double r0 = x[i][0] + delta[0] - origin_[0];
-        const double r1 = x[i][1] + delta[1] - origin_[1];
-        const double r2 = x[i][2] + delta[2] - origin_[2];
-        sum += axis_[0] * (r1 * f[i][2] - r2 * f[i][1]) + axis_[1] * (r2 * f[i][0] - r0 * f[i][2]) +
-               axis_[2] * (r0 * f[i][1] - r1 * f[i][0]);
-    }
-    return sum;
+// a . (p - o) x F for a grain at x that the wall pushes with F, p = x + delta its contact point
+// on the wall's surface
+double ComputeWallGranForce::torque(const FixWallGranMoving* moving, PrimitiveWall* prim, double* x,
+                                    double r, const double* F) const {
+    double delta[3] = {0.0, 0.0, 0.0};
+    if (moving)
+        moving->resolve(x, r, delta);
+    else
+        prim->resolveContact(x, r, delta);
+    const double r0 = x[0] + delta[0] - origin_[0];
+    const double r1 = x[1] + delta[1] - origin_[1];
+    const double r2 = x[2] + delta[2] - origin_[2];
+    return axis_[0] * (r1 * F[2] - r2 * F[1]) + axis_[1] * (r2 * F[0] - r0 * F[2]) +
+           axis_[2] * (r0 * F[1] - r1 * F[0]);
 }

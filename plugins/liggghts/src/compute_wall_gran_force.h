@@ -21,7 +21,8 @@ public:
 
 private:
     class FixWallGran* find_wall(const std::string& id);
-    double torque(class FixWallGran* wall, double** f) const;
+    double torque(const class FixWallGranMoving* moving, class PrimitiveWall* prim, double* x, double r,
+                  const double* F) const;
 
     std::vector<std::string> walls_;         // the wall fixes' IDs, in output order
     std::vector<class FixWallGran*> fixes_;  // found again by every init (a wall may be re-made)
