@@ -135,6 +135,21 @@ BOOST_AUTO_TEST_CASE(weight_plate_and_warm_start_settings) {
     BOOST_TEST(has(error_of([] { tiny_case("", "", "start = \"hot\"\n"); }), "start"));
 }
 
+// verlet_distance reaches the driver's collider; outside (0, 5] it is refused by name.
+BOOST_AUTO_TEST_CASE(collider_verlet_distance) {
+    const ParticleBox box{0.03, 0.004, 0.019, false};
+    const Case d = tiny_case();
+    const Settings sd = resolve_settings(d, d.points.at(0), RunOptions{});
+    BOOST_TEST(couette_params(d, d.points.at(0), sd, box, "/tmp/p.csv").at("run").at("verlet_distance").get<double>() ==
+               0.2);
+    const Case c = tiny_case("", "", "verlet_distance = 0.5\n");
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    BOOST_TEST(couette_params(c, c.points.at(0), s, box, "/tmp/p.csv").at("run").at("verlet_distance").get<double>() ==
+               0.5);
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "verlet_distance = 0\n"); }), "verlet_distance"));
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "verlet_distance = 6\n"); }), "verlet_distance"));
+}
+
 BOOST_AUTO_TEST_CASE(load_control_runs_whole_servo_windows_and_snapshot_intervals) {
     // 1.52e-3 s: 61 blocks of 50 steps = 3050 steps, rounded up to 31 windows of 100
     const Case c = tiny_case_edits({{kFill, kLoad}, {"time = 1.5e-3", "time = 1.52e-3"}}, "servo_every = 100\n");

@@ -77,7 +77,8 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
     j["run"] = {{"steps", s.steps},
                 {"sample_every", s.sample_every},
                 {"snapshot_every", s.snapshot_every},
-                {"body_force_every", s.body_force_every}};
+                {"body_force_every", s.body_force_every},
+                {"verlet_distance", s.verlet_distance}};
     j["initial_file"] = fs::absolute(initial_file).string();
     j["initial_overlap"] = overlap;
     // rough walls: the bumps' centres in the wall's plane (granlub y = 0, and the top's start; the

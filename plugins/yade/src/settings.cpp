@@ -27,6 +27,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     r.calibrate_restitution = s.boolean("calibrate_restitution");
     r.sample_every = s.integer("sample_every");
     r.body_force_every = s.integer("body_force_every");
+    r.verlet_distance = s.real("verlet_distance");
     r.stations = s.integer("stations");
     r.blocks = s.integer("blocks");
     r.timeout = s.real("timeout");

@@ -31,6 +31,7 @@ struct Settings {
     std::int64_t sample_every = 100;       // steps per wall-force mean
     std::int64_t snapshot_every = 0;       // steps between particle snapshots
     std::int64_t body_force_every = 50;    // steps between centripetal-force refreshes
+    double verlet_distance = 0.2;          // collider's Verlet distance, smallest grain radii
     std::int64_t stations = 20;
     std::int64_t blocks = 10;
     double timeout = 0;                    // s; 0 = from the run size
