@@ -171,8 +171,12 @@ BOOST_AUTO_TEST_CASE(rough_side_walls, *boost::unit_test::precondition(YadeInsta
 
 // Until steady, with a cap ([yade] time_max; granlub/particles/until_steady.h), as granlub dem
 // does it: at 5.5 kPa a 0.02 s run is a transient (the plate still settling); with time_max =
-// 0.08 s it is continued from its own final state (0.02, 0.02, 0.04 s) and its last piece is
-// steady (measured 2026-11-26: steady from 0.016 s of the last 0.04 s, every drift check passed).
+// 0.08 s it is continued from its own final state (0.02, 0.02, 0.04 s) until a piece is steady or
+// the next would pass the cap. Which of the two ends it reaches is a coin flip in this 291-grain
+// cell: its wall shear stresses swing by 10-35 % between the halves of a piece, too noisy for the
+// drift check to resolve (measured 2026-11-26 with time_max = 0.16 s: of seven runs whose steps
+// differed by 1e-5 of themselves or whose collider's Verlet distance differed, three ended steady
+// and four at the cap). Both ends follow the rule; the test holds the run to the one it reached.
 BOOST_AUTO_TEST_CASE(a_run_not_steady_is_continued_until_steady, *boost::unit_test::precondition(YadeInstalled())) {
     const auto one = run_case(load_case(5500.0, "0.02"), "one-run", 5500.0);
     BOOST_TEST_REQUIRE(one.first == 0);
@@ -181,11 +185,19 @@ BOOST_AUTO_TEST_CASE(a_run_not_steady_is_continued_until_steady, *boost::unit_te
     const auto [code, dir] = run_case(load_case(5500.0, "0.02", "time_max = 0.08\n"), "continued", 5500.0);
     BOOST_TEST_REQUIRE(code == 0);
     const Summary s = read_summary(dir / "summary.json");
-    BOOST_TEST(s.run.at("status").get<std::string>() == "steady");
     const auto& k = s.run.at("continuation");
     BOOST_TEST(k.at("pieces").get<int>() >= 2);
     BOOST_TEST(s.run.at("simulated_time_s").get<double>() == k.at("simulated_s").get<double>());
-    BOOST_TEST(s.run.at("steady_state_start_s").get<double>() >= k.at("earlier_s").get<double>());
+    const std::string status = s.run.at("status").get<std::string>();
+    BOOST_TEST_MESSAGE("continued run: " << status << " after " << k.at("simulated_s").get<double>() << " s in "
+                                         << k.at("pieces").get<int>() << " pieces");
+    if (status == "steady") {
+        BOOST_TEST(s.run.at("steady_state_start_s").get<double>() >= k.at("earlier_s").get<double>());
+    } else {  // every piece a transient: continued to the cap, and the reason says which key to raise
+        BOOST_TEST(status == "transient");
+        BOOST_TEST(k.at("simulated_s").get<double>() == 0.08, boost::test_tools::tolerance(1e-4));
+        BOOST_TEST(s.run.at("status_reason").get<std::string>().find("time_max") != std::string::npos);
+    }
     checks::check_target_reached(s, 5500.0, 4e-3, 0.5);
     // the state a piece starts from: every grain, the plate inside its limits, no file left over
     const ParticleState st = read_particle_state(dir / kFinalStateFile);
