@@ -50,7 +50,7 @@ steps = 3000
 t_avg_start = 1000
 block = 500
 replicas = 2
-vtk_every = 500
+snapshot_every = 500
 )" + automaton;
 }
 
@@ -121,6 +121,43 @@ BOOST_AUTO_TEST_CASE(writes_results_for_every_point) {
         const std::string vti = slurp(dir / "vtk" / "lattice_00003000.vti");
         BOOST_TEST(vti.find("<ImageData WholeExtent=\"0 40 0 12 0 1\"") != std::string::npos);
         BOOST_TEST(fs::exists(dir / "timeseries.csv"));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(keys_set_their_fields_and_an_old_name_still_reads) {
+    RunOptions o;
+    o.vtk = true;
+    // the key's default when the case does not set it; the case's value when it does
+    std::string t = case_text();
+    t.replace(t.find("snapshot_every = 500\n"), 21, "");
+    const Case plain = parse_case(t, "test.toml", schema());
+    BOOST_TEST(automaton::map_point(plain, plain.points[0], o).params.run.snapshot_every == 100);
+    const Case c = parse_case(case_text(), "test.toml", schema());
+    BOOST_TEST(c.warnings.empty());
+    automaton::Params p = automaton::map_point(c, c.points[0], o).params;
+    BOOST_TEST(p.run.snapshot_every == 500);
+    BOOST_TEST(p.run.steps == 3000);
+    BOOST_TEST(p.run.replicas == 2);
+    BOOST_TEST(automaton::map_point(c, c.points[0], RunOptions{}).params.run.snapshot_every == 0);  // no --vtk
+    o.full = true;
+    p = automaton::map_point(c, c.points[0], o).params;
+    BOOST_TEST(p.run.steps == 50000);  // steps_full's default
+    BOOST_TEST(p.run.replicas == 16);
+    // the old name vtk_every: read as snapshot_every, with a warning naming both
+    t = case_text();
+    t.replace(t.find("snapshot_every"), 14, "vtk_every");
+    const Case old = parse_case(t, "test.toml", schema());
+    BOOST_TEST_REQUIRE(old.warnings.size() == 1u);
+    BOOST_TEST(old.warnings[0].find("vtk_every is the old name of snapshot_every") != std::string::npos, old.warnings[0]);
+    BOOST_TEST(old.warnings[0].find("test.toml:") != std::string::npos, old.warnings[0]);
+    BOOST_TEST(automaton::map_point(old, old.points[0], o).params.run.snapshot_every == 500);
+    // both names: refused, naming both
+    try {
+        parse_case(case_text("", "vtk_every = 200\n"), "test.toml", schema());
+        BOOST_FAIL("both names accepted");
+    } catch (const CaseError& e) {
+        const std::string m = e.what();
+        BOOST_TEST(m.find("vtk_every is the old name of snapshot_every, which is also given") != std::string::npos, m);
     }
 }
 

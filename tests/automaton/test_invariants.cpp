@@ -119,7 +119,7 @@ BOOST_AUTO_TEST_CASE(same_seed_same_numbers_any_thread_count) {
 
 BOOST_AUTO_TEST_CASE(steady_state_block_test) {
     // A synthetic block sequence: a transient block, then agreement -> steady from block 1.
-    RunSpec run;
+    RunSpec run = Params().run;  // the keys' defaults
     run.block = 500;
     run.t_avg_start = 2000;
     std::vector<Block> blocks(6);

@@ -17,7 +17,7 @@ using Eng = Engine<ScriptedRng>;
 namespace {
 
 // §7.1 defaults: U = 1, e_p = 0.85, e_w = 0.65, R = 0.65, L = H = 10.
-Eng make(const Rules& r = Rules{}) { return Eng(10, 10, r, ScriptedRng{}, ScriptedRng{}); }
+Eng make(const Rules& r = Params().rules) { return Eng(10, 10, r, ScriptedRng{}, ScriptedRng{}); }
 
 // Clock one short of the time factor, so the next update attempts a move.
 void arm(Eng& e, int i) { e.set_clock(i, e.tf(e.up(i)) - 1); }
@@ -62,12 +62,12 @@ BOOST_AUTO_TEST_CASE(time_factor_gates_moves) {
 }
 
 BOOST_AUTO_TEST_CASE(time_factor_ceil_and_accumulate) {
-    Rules rc;
+    Rules rc = Params().rules;
     rc.tf_rounding = TfRounding::Ceil;
     Eng c = make(rc);
     BOOST_TEST(c.tf(0.3) == 4);
     BOOST_TEST(c.tf(0.5) == 2);
-    Rules ra;
+    Rules ra = Params().rules;
     ra.tf_rounding = TfRounding::Accumulate;
     Eng a = make(ra);
     const int i = a.add(2, 2, E, 0.25, 0.0);  // progress 0.25, 0.5, 0.75, 1.0 -> moves on the 4th
@@ -130,7 +130,7 @@ BOOST_AUTO_TEST_CASE(bottom_wall_drags_with_probability_p_drag) {
 }
 
 BOOST_AUTO_TEST_CASE(wall_speed_by_incidence) {
-    Rules r;
+    Rules r = Params().rules;  // the keys' defaults
     r.wall_speed = WallSpeed::ByIncidence;
     Eng e = make(r);
     const int a = e.add(2, 9, N, 0.5);  // normal impact: Eq. 7 alone, u = 0 - 0.65 (0 - 0.5)
@@ -166,7 +166,7 @@ BOOST_AUTO_TEST_CASE(grain_grain_billiard_rule) {
 }
 
 BOOST_AUTO_TEST_CASE(grain_grain_switches) {
-    Rules r;
+    Rules r = Params().rules;  // the keys' defaults
     r.pp_deflect = 45;
     r.struck_dir = StruckDir::Keep;
     Eng e = make(r);
@@ -272,7 +272,7 @@ BOOST_AUTO_TEST_CASE(eq8_9_algebra) {
 }
 
 BOOST_AUTO_TEST_CASE(vector_mode_wall) {
-    Rules r;
+    Rules r = Params().rules;  // the keys' defaults
     r.mode = Mode::Vector;
     Eng e = make(r);
     const int i = e.add(4, 0, S, 0.5);
@@ -289,7 +289,7 @@ BOOST_AUTO_TEST_CASE(vector_mode_wall) {
 }
 
 BOOST_AUTO_TEST_CASE(vector_mode_head_on_and_blocked) {
-    Rules r;
+    Rules r = Params().rules;  // the keys' defaults
     r.mode = Mode::Vector;
     {
         Eng e = make(r);

@@ -176,6 +176,14 @@ void read_section(const std::string& file, const SectionSpec& spec, const toml::
             const std::string name(key.str());
             if (std::find(spec.subtables.begin(), spec.subtables.end(), name) != spec.subtables.end()) continue;
             const KeySpec* k = spec.find(name);
+            if (!k && (k = spec.renamed(name))) {
+                if (t->contains(k->name) || out.has(k->name))
+                    throw CaseError(fmt::format("{}: [{}] {} is the old name of {}, which is also given: write only {}",
+                                                where(file, node.source()), spec.name, name, k->name, k->name));
+                notes.push_back(fmt::format("{}: [{}] {} is the old name of {}, read as that; write {} (the old "
+                                            "names will go)",
+                                            where(file, node.source()), spec.name, name, k->name, k->name));
+            }
             if (!k) {
                 std::vector<std::string> all = names;
                 all.insert(all.end(), spec.subtables.begin(), spec.subtables.end());
@@ -184,8 +192,8 @@ void read_section(const std::string& file, const SectionSpec& spec, const toml::
                                             fmt::join(all, ", ")));
             }
             Value v = parse_value(file, spec.name, *k, node, notes);
-            if (k->sweepable && node.is_array()) given_as_list.insert(name);
-            out.set(name, std::move(v),
+            if (k->sweepable && node.is_array()) given_as_list.insert(k->name);
+            out.set(k->name, std::move(v),
                     SourcePos{static_cast<int>(node.source().begin.line), static_cast<int>(node.source().begin.column)},
                     false);
         }

@@ -131,6 +131,22 @@ SectionSpec& SectionSpec::old_spellings(std::vector<std::pair<std::string, std::
     return *this;
 }
 
+SectionSpec& SectionSpec::old_names(std::vector<std::string> names) {
+    if (keys.empty()) throw Error(fmt::format("internal: [{}] old_names() follows a key", name));
+    for (const auto& old : names)
+        if (find(old) || renamed(old))
+            throw Error(fmt::format("internal: [{}] {}: old name \"{}\" is a key, or an old name already", name,
+                                    keys.back().name, old));
+    keys.back().old_names = std::move(names);
+    return *this;
+}
+
+const KeySpec* SectionSpec::renamed(const std::string& old) const {
+    for (const auto& k : keys)
+        if (std::find(k.old_names.begin(), k.old_names.end(), old) != k.old_names.end()) return &k;
+    return nullptr;
+}
+
 const KeySpec* SectionSpec::find(const std::string& key) const {
     for (const auto& k : keys)
         if (k.name == key) return &k;
@@ -175,6 +191,8 @@ std::string key_table(const SectionSpec& spec) {
         for (std::size_t i = 0; i < k.old_spellings.size(); ++i)
             allowed += fmt::format("{}{} = {}", i ? ", " : "; old spellings still read: ", k.old_spellings[i].first,
                                    k.old_spellings[i].second);
+        for (std::size_t i = 0; i < k.old_names.size(); ++i)
+            allowed += fmt::format("{}{}", i ? ", " : "; old name still read: ", k.old_names[i]);
         out += fmt::format("| `{}` | {} | {} | {} | {} |\n", k.name, cell(def), cell(allowed), k.unit, cell(k.doc));
     }
     return out;

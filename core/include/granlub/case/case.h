@@ -104,7 +104,7 @@ struct Case {
     std::vector<OperatingPoint> points;
     std::map<std::string, Section> sections;  // every declared section, resolved
     std::string file_hash;                    // hash of the file's bytes (provenance)
-    std::vector<std::string> warnings;        // accepted but to be changed: old spellings of values
+    std::vector<std::string> warnings;        // accepted but to be changed: old spellings of values, old key names
 
     const Section& section(std::string_view name) const;
     // Points selected by --point (all when `id` is empty); throws naming the valid ids.

@@ -60,6 +60,8 @@ struct KeySpec {
     std::vector<std::string> choices;    // for Choice
     // Choice: old spellings still read, each with the choice it now is (SectionSpec::old_spellings).
     std::vector<std::pair<std::string, std::string>> old_spellings;
+    // Old names of the key itself, still read (SectionSpec::old_names).
+    std::vector<std::string> old_names;
     std::string unit;                    // SI unit, "" = dimensionless
     std::string doc;
     // The default does what was computed before the key existed: at its default the key is left
@@ -103,8 +105,13 @@ struct SectionSpec {
     // Renamed values of the choice key declared last, as {old, new} pairs: a case that writes an old
     // spelling still parses, as the new value, with a warning naming it (Case::warnings).
     SectionSpec& old_spellings(std::vector<std::pair<std::string, std::string>> old_to_new);
+    // Old names of the key declared last: a case that writes an old name still parses, as this key,
+    // with a warning naming it (Case::warnings), as old spellings of values do.
+    SectionSpec& old_names(std::vector<std::string> names);
 
     const KeySpec* find(const std::string& key) const;
+    // The key that `old` is an old name of, or null.
+    const KeySpec* renamed(const std::string& old) const;
 };
 
 // Where a value came from, for error messages.
