@@ -133,3 +133,39 @@ BOOST_AUTO_TEST_CASE(shipped_cases) {
     BOOST_TEST(j.points[2].bottom.restitution == 0.65);
     BOOST_TEST(j.section("automaton").real("fill") == 0.85);
 }
+
+BOOST_AUTO_TEST_CASE(old_key_names_read_with_a_warning) {
+    // A renamed key (SectionSpec::old_names): the old name still sets it, with a warning naming the
+    // file, both names and what to write; both names at once are refused; the key table says so.
+    SectionSpec x("extra", "stand-in solver");
+    x.integer("snapshot_every", 100, Range::at_least(1), "interval").old_names({"vtk_every"});
+    x.real("tolerance", 0.1, Range::positive(), "", "a key declared after the renamed one");
+    Schema schema = Schema::common();
+    schema.add(x);
+    const std::string base = kValidCase + "\n[extra]\n";
+    const Case now = parse_case(base + "snapshot_every = 7\n", "t.toml", schema);
+    BOOST_TEST(now.warnings.empty());
+    BOOST_TEST(now.section("extra").integer("snapshot_every") == 7);
+    const Case old = parse_case(base + "vtk_every = 7\n", "t.toml", schema);
+    BOOST_TEST(old.section("extra").integer("snapshot_every") == 7);
+    BOOST_TEST(!old.section("extra").is_default("snapshot_every"));
+    BOOST_TEST(old.inputs_hash("extra") == now.inputs_hash("extra"));  // the same input, however spelled
+    BOOST_REQUIRE_EQUAL(old.warnings.size(), 1u);
+    BOOST_TEST(old.warnings[0].find("t.toml:") != std::string::npos, old.warnings[0]);
+    BOOST_TEST(old.warnings[0].find("[extra] vtk_every is the old name of snapshot_every") != std::string::npos,
+               old.warnings[0]);
+    for (const std::string both : {"vtk_every = 7\nsnapshot_every = 7\n", "snapshot_every = 7\nvtk_every = 7\n"}) {
+        try {
+            parse_case(base + both, "t.toml", schema);
+            BOOST_FAIL("both names accepted");
+        } catch (const CaseError& e) {
+            BOOST_TEST(std::string(e.what()).find("which is also given") != std::string::npos, e.what());
+        }
+    }
+    // an old value of the renamed key is range-checked as the key
+    BOOST_CHECK_THROW(parse_case(base + "vtk_every = 0\n", "t.toml", schema), CaseError);
+    BOOST_TEST(key_table(x).find("old name still read: vtk_every") != std::string::npos);
+    // an old name that is a key, or an old name twice, is a declaration error
+    BOOST_CHECK_THROW(SectionSpec(x).old_names({"tolerance"}), Error);
+    BOOST_CHECK_THROW(SectionSpec(x).old_names({"vtk_every"}), Error);
+}
