@@ -111,7 +111,7 @@ BOOST_AUTO_TEST_CASE(tiny_deck_runs_and_is_deterministic, *boost::unit_test::pre
     }
     BOOST_TEST(sum.run.at("steps").get<long long>() == 3000);
     BOOST_TEST(sum.run.at("max_overlap_over_d").get<double>() < 0.02);  // stiff contacts
-    // the inertial numbers (core/flow_regime.h), the coordination number and the order (the
+    // the inertial numbers (core granlub/statistics/flow_regime.h), the coordination number and the order (the
     // snapshots hold x, y, z); no contact persistence (no snapshots after the run)
     BOOST_TEST(std::isfinite(sum.run.at("flow_regime").at("inertial_number_mid_gap").get<double>()));
     BOOST_TEST(sum.run.at("flow_regime").at("regime").is_string());
