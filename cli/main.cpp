@@ -91,6 +91,102 @@ void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
             ->check(integer_in(1, 4096, "a rank count"));
 }
 
+// `granlub keys [SECTION] [--check FILE...] [--update FILE...]`.
+struct KeysCommand {
+    CLI::App* sub = nullptr;
+    std::string section;
+    std::vector<std::string> check, update;
+
+    void add(CLI::App& app) {
+        sub = app.add_subcommand("keys", "print every case key (type, default, range, unit, meaning) as Markdown");
+        auto* section_opt =
+            sub->add_option("SECTION", section, "only this section, e.g. continuum (default: every section)")
+                ->type_name("NAME");
+        auto* check_opt = sub->add_option("--check", check,
+                                          "check the key tables between <!-- keys:SECTION --> and <!-- /keys --> in these "
+                                          "Markdown files against the declarations; exit 1 naming each that differs (default: none; print the "
+                                          "tables)")
+            ->type_name("FILE...")
+            ->excludes(section_opt);
+        sub->add_option("--update", update, "rewrite those tables from the declarations (default: none)")
+            ->type_name("FILE...")
+            ->excludes(section_opt)
+            ->excludes(check_opt);
+    }
+
+    int run() const {
+        const granlub::Schema schema = granlub::cli::full_schema();
+        if (!check.empty() || !update.empty()) {
+            try {
+                const bool updating = !update.empty();
+                return granlub::cli::check_key_tables(updating ? update : check, updating, schema);
+            } catch (const granlub::Error& e) {  // a file that cannot be read or written
+                fmt::print(stderr, "error: {}\n", e.what());
+                return 2;
+            }
+        }
+        bool any = false;
+        for (const auto& spec : schema.sections()) {
+            if (!section.empty() && spec.name != section) continue;
+            fmt::print("{}\n", granlub::key_table_markdown(spec));
+            any = true;
+        }
+        if (!any) {
+            fmt::print(stderr, "error: no section [{}]\n", section);
+            return 2;
+        }
+        return 0;
+    }
+};
+
+// The subcommands that read a case: check, each solver, compare, run.
+struct CaseCommands {
+    CLI::App* check = nullptr;
+    std::vector<std::pair<CLI::App*, const granlub::cli::SolverModule*>> solvers;
+    CLI::App* compare = nullptr;
+    CLI::App* run = nullptr;
+};
+
+// Runs the parsed case subcommand; the exit code, errors printed.
+int run_case_command(const CaseCommands& cmd, const Args& a) {
+    try {
+        const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
+        for (const auto& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
+        if (cmd.check->parsed()) {
+            fmt::print("{}", granlub::describe(c));
+            std::fflush(stdout);
+            for (const auto& w : granlub::plausibility_warnings(c)) fmt::print(stderr, "warning: {}\n", w);
+            return granlub::cli::check_solvers(c, a.opt);
+        }
+        for (const auto& [sub, m] : cmd.solvers)
+            if (sub->parsed()) {
+                try {
+                    m->check(c, a.opt);  // bad input fails here, exit 2, before any point runs
+                } catch (const granlub::CaseError&) {
+                    throw;
+                } catch (const granlub::Error&) {
+                    // a point this solver cannot run: the sweep reports it and runs the others
+                }
+                return m->run(c, a.opt);
+            }
+        if (cmd.compare && cmd.compare->parsed()) return granlub::cli::compare(c, a.opt);
+        if (cmd.run->parsed()) return granlub::cli::run_all(c, a.opt, a.solvers);
+    } catch (const granlub::CaseError& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 2;
+    } catch (const granlub::ResultsInUse& e) {  // --no-wait: like bad input, nothing was run
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 2;
+    } catch (const granlub::Error& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,49 +195,35 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", granlub::version());
     Args a;
+    CaseCommands cmd;
 
-    auto* check = app.add_subcommand("check", "validate a case and print it resolved, with its operating points");
-    add_case(check, a);
+    cmd.check = app.add_subcommand("check", "validate a case and print it resolved, with its operating points");
+    add_case(cmd.check, a);
 
-    auto* keys = app.add_subcommand("keys", "print every case key (type, default, range, unit, meaning) as Markdown");
-    std::string keys_section;
-    std::vector<std::string> keys_check, keys_update;
-    auto* section_opt = keys->add_option("SECTION", keys_section, "only this section, e.g. continuum (default: every section)")
-        ->type_name("NAME");
-    auto* check_opt = keys->add_option("--check", keys_check,
-                                       "check the key tables between <!-- keys:SECTION --> and <!-- /keys --> in these "
-                                       "Markdown files against the declarations; exit 1 naming each that differs (default: none; print the "
-                                       "tables)")
-        ->type_name("FILE...")
-        ->excludes(section_opt);
-    keys->add_option("--update", keys_update, "rewrite those tables from the declarations (default: none)")
-        ->type_name("FILE...")
-        ->excludes(section_opt)
-        ->excludes(check_opt);
+    KeysCommand keys;
+    keys.add(app);
 
-    std::vector<std::pair<CLI::App*, const granlub::cli::SolverModule*>> solver_cmds;
     for (const auto& m : granlub::cli::solver_modules()) {
         auto* sub = app.add_subcommand(m.name, m.description);
         add_case(sub, a);
         add_run_options(sub, a, m.name != "continuum", m.name == "dem");
-        solver_cmds.emplace_back(sub, &m);
+        cmd.solvers.emplace_back(sub, &m);
     }
 
-    CLI::App* compare = nullptr;
     if (granlub::cli::have_compare()) {
-        compare = app.add_subcommand("compare", "compare every solver's results for a case: results/report/");
-        add_case(compare, a);
-        add_point(compare, a);  // the report of one point (README: compare cases/jasti2006 --point U2.0_R0.25)
-        add_wait(compare, a);
+        cmd.compare = app.add_subcommand("compare", "compare every solver's results for a case: results/report/");
+        add_case(cmd.compare, a);
+        add_point(cmd.compare, a);  // the report of one point (README: compare cases/jasti2006 --point U2.0_R0.25)
+        add_wait(cmd.compare, a);
     }
 
-    auto* run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");
-    add_case(run, a);
-    add_run_options(run, a, true, true);
+    cmd.run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");
+    add_case(cmd.run, a);
+    add_run_options(cmd.run, a, true, true);
     std::vector<std::string> names;
     for (const auto& m : granlub::cli::solver_modules()) names.push_back(m.name);
-    run->add_option("--solvers", a.solvers,
-                    fmt::format("solvers to run, comma-separated (default: all: {})", fmt::join(names, ",")))
+    cmd.run->add_option("--solvers", a.solvers,
+                        fmt::format("solvers to run, comma-separated (default: all: {})", fmt::join(names, ",")))
         ->type_name("LIST")
         ->delimiter(',')
         ->check(CLI::IsMember(names));
@@ -162,64 +244,6 @@ int main(int argc, char** argv) {
     a.opt.results_root = a.results;
     if (a.seed >= 0) a.opt.seed = static_cast<std::uint64_t>(a.seed);
 
-    if (keys->parsed()) {
-        const granlub::Schema schema = granlub::cli::full_schema();
-        if (!keys_check.empty() || !keys_update.empty()) {
-            try {
-                const bool update = !keys_update.empty();
-                return granlub::cli::check_key_tables(update ? keys_update : keys_check, update, schema);
-            } catch (const granlub::Error& e) {  // a file that cannot be read or written
-                fmt::print(stderr, "error: {}\n", e.what());
-                return 2;
-            }
-        }
-        bool any = false;
-        for (const auto& spec : schema.sections()) {
-            if (!keys_section.empty() && spec.name != keys_section) continue;
-            fmt::print("{}\n", granlub::key_table_markdown(spec));
-            any = true;
-        }
-        if (!any) {
-            fmt::print(stderr, "error: no section [{}]\n", keys_section);
-            return 2;
-        }
-        return 0;
-    }
-
-    try {
-        const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
-        for (const auto& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
-        if (check->parsed()) {
-            fmt::print("{}", granlub::describe(c));
-            std::fflush(stdout);
-            for (const auto& w : granlub::plausibility_warnings(c)) fmt::print(stderr, "warning: {}\n", w);
-            return granlub::cli::check_solvers(c, a.opt);
-        }
-        for (const auto& [sub, m] : solver_cmds)
-            if (sub->parsed()) {
-                try {
-                    m->check(c, a.opt);  // bad input fails here, exit 2, before any point runs
-                } catch (const granlub::CaseError&) {
-                    throw;
-                } catch (const granlub::Error&) {
-                    // a point this solver cannot run: the sweep reports it and runs the others
-                }
-                return m->run(c, a.opt);
-            }
-        if (compare && compare->parsed()) return granlub::cli::compare(c, a.opt);
-        if (run->parsed()) return granlub::cli::run_all(c, a.opt, a.solvers);
-    } catch (const granlub::CaseError& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
-        return 2;
-    } catch (const granlub::ResultsInUse& e) {  // --no-wait: like bad input, nothing was run
-        fmt::print(stderr, "error: {}\n", e.what());
-        return 2;
-    } catch (const granlub::Error& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
-        return 1;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
-        return 1;
-    }
-    return 0;
+    if (keys.sub->parsed()) return keys.run();
+    return run_case_command(cmd, a);
 }
