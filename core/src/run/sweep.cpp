@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <new>
 #include <thread>
@@ -32,6 +33,38 @@ std::string run_options_differ(const Summary& s, const RunOptions& o) {
         return s.provenance.seed ? fmt::format("it used seed {}", *s.provenance.seed) : "it used no seed";
     return "";
 }
+
+// Runs `one` on every point, up to `workers` at a time. An exception escaping `one` (bad input)
+// lets no further point start and is rethrown once the running ones have finished.
+void run_side_by_side(const std::vector<const OperatingPoint*>& points, std::size_t workers,
+                      const std::function<void(const OperatingPoint*)>& one) {
+    workers = std::min(workers, points.size());
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr case_error;
+    std::mutex error_lock;
+    const auto work = [&] {
+        for (std::size_t i; (i = next++) < points.size();) {
+            {
+                std::lock_guard lock(error_lock);
+                if (case_error) return;
+            }
+            try {
+                one(points[i]);
+            } catch (...) {
+                std::lock_guard lock(error_lock);
+                if (!case_error) case_error = std::current_exception();
+            }
+        }
+    };
+    if (workers <= 1) {
+        work();
+    } else {
+        std::vector<std::jthread> pool;
+        for (std::size_t k = 0; k < workers; ++k) pool.emplace_back(work);
+    }
+    if (case_error) std::rethrow_exception(case_error);
+}
+
 }  // namespace
 
 void for_each_run(const Case& c, const RunOptions& o,
@@ -115,31 +148,7 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
 
     // Points are independent (own folder, own seed): up to points_at_once of them run side by
     // side, each exactly as it would alone, so the results do not depend on the count.
-    const std::size_t workers = std::min<std::size_t>(std::max(1, points_at_once), points.size());
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr case_error;
-    std::mutex error_lock;
-    const auto work = [&] {
-        for (std::size_t i; (i = next++) < points.size();) {
-            {
-                std::lock_guard lock(error_lock);
-                if (case_error) return;
-            }
-            try {
-                run_point(points[i]);
-            } catch (...) {
-                std::lock_guard lock(error_lock);
-                if (!case_error) case_error = std::current_exception();
-            }
-        }
-    };
-    if (workers <= 1) {
-        work();
-    } else {
-        std::vector<std::jthread> pool;
-        for (std::size_t k = 0; k < workers; ++k) pool.emplace_back(work);
-    }
-    if (case_error) std::rethrow_exception(case_error);
+    run_side_by_side(points, static_cast<std::size_t>(std::max(1, points_at_once)), run_point);
     if (failed)
         fmt::print(stderr, "{}: {} of {} point(s) failed; their results were not written\n", solver, failed.load(),
                    points.size());
