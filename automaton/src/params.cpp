@@ -78,7 +78,8 @@ std::optional<KeyProblem> broken_key_rule(const Params& p) {
 void validate(const Params& p) {
     const auto& l = p.lattice;
     const auto& r = p.rules;
-    if (l.rows < kMinCells) bad("rows", l.rows, "at least 3 particle rows between the walls (gap >= 2.5 grain diameters)");
+    if (l.rows < kMinCells)
+        bad("rows", l.rows, "at least 3 particle rows between the walls (gap >= 2.5 grain diameters)");
     if (l.columns < kMinCells) bad("columns", l.columns, "at least 3 columns (length >= 2.5 grain diameters)");
     const double cells = static_cast<double>(l.rows) * l.columns;
     if (cells > kMaxLatticeCells) bad("rows x columns", cells, fmt::format("at most {:g} cells", kMaxLatticeCells));

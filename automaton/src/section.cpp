@@ -168,7 +168,8 @@ AutomatonKeys declare() {
         for (const bool full : {false, true}) {
             Params p;
             read_keys(p, sec, {full, false});
-            if (const auto bad = broken_key_rule(p)) sec.fail(key_name(bad->key, {full, false}), "allowed: " + bad->allowed);
+            if (const auto bad = broken_key_rule(p))
+                sec.fail(key_name(bad->key, {full, false}), "allowed: " + bad->allowed);
         }
     };
     return keys;
