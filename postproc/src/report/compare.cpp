@@ -7,8 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "figures/figures.h"
-#include "figures/section_map.h"
+#include "figures/registry.h"
 #include "formats/gnuplot.h"
 #include "formats/svg_plot.h"
 #include "formats/text.h"
@@ -36,6 +35,27 @@ std::vector<FigureRef> emit(const std::vector<Figure>& figs, const std::filesyst
         refs.push_back(std::move(r));
     }
     return refs;
+}
+
+// Every row of the figure registry: per point (with usable results) or once for the case.
+ReportFigures draw_figures(const Case& c, const Collection& col, const std::filesystem::path& plots) {
+    ReportFigures figs;
+    for (const FigureRow& row : figure_registry()) {
+        auto draw = [&](std::size_t point, const std::string& id) {
+            const FigureInput in{c, col, point, plots};
+            FigureGroup g{row.heading, id, row.model ? emit(row.model(in), plots) : std::vector<FigureRef>{}};
+            if (row.drawn)
+                for (auto& f : row.drawn(in)) g.refs.push_back(std::move(f));
+            if (!g.refs.empty()) figs.groups.push_back(std::move(g));
+        };
+        if (!row.per_point) {
+            draw(0, "");
+            continue;
+        }
+        for (std::size_t i = 0; i < col.points.size(); ++i)
+            if (!col.usable(col.points[i]->id).empty()) draw(i, col.points[i]->id);
+    }
+    return figs;
 }
 
 void replace_dir(const std::filesystem::path& staging, const std::filesystem::path& target) {
@@ -115,15 +135,7 @@ int compare(const Case& c, const RunOptions& o) {
         const auto plots = staging / "plots";
         std::filesystem::create_directories(plots);
         const auto metrics = compute_metrics(col);
-        ReportFigures figs;
-        for (std::size_t i = 0; i < col.points.size(); ++i)
-            if (!col.usable(col.points[i]->id).empty()) {
-                figs.profiles[col.points[i]->id] = emit(profile_figures(col, i), plots);
-                for (auto& f : section_figures(col, i, plots)) figs.profiles[col.points[i]->id].push_back(std::move(f));
-            }
-        figs.stress = emit(stress_figures(col), plots);
-        figs.slip = emit(slip_figures(col), plots);
-        figs.solid_fraction = emit({solid_fraction_figure(col, c.cell.max_solid_fraction)}, plots);
+        ReportFigures figs = draw_figures(c, col, plots);
         const RingSliceSection ring = ring_slice_section(c, col);
         figs.ring_slice = emit(ring.figures, plots);
         const RegimeSection regime = regime_section(c, col);

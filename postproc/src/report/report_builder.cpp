@@ -1,312 +1,25 @@
 #include "report/report_builder.h"
 
 #include <algorithm>
-#include <map>
-#include <set>
 
 #include <fmt/format.h>
 
+#include "figures/registry.h"
 #include "formats/text.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
-#include "granlub/statistics/flow_regime.h"
 #include "report/regime_section.h"
 #include "report/ring_slice.h"
-#include "results/scope.h"
+#include "tables/differences.h"
+#include "tables/exponents.h"
+#include "tables/provenance.h"
+#include "tables/run_tables.h"
 
 namespace granlub::postproc {
 namespace {
 
-std::optional<double> scaled(const std::optional<double>& v, double factor) {
-    return v ? std::optional(*v * factor) : std::nullopt;
-}
-
-const MetricRow* find_row(const std::vector<MetricRow>& rows, const std::string& kind, const std::string& point,
-                          const std::string& quantity, const std::string& a, const std::string& b) {
-    for (const auto& r : rows)
-        if (r.kind == kind && r.point == point && r.quantity == quantity && r.solver_a == a && r.solver_b == b) return &r;
-    return nullptr;
-}
-
-const char* short_label(const std::string& key) {
-    for (const auto& q : kScalarQuantities)
-        if (key == q.key) return q.short_label;
-    for (const auto& q : kProfileQuantities)
-        if (key == q.key) return q.short_label;
-    return "";
-}
-
-void difference_tables(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
-    bool first_fold = true;  // the first point unfolded, the others one click away
-    for (const OperatingPoint* p : col.points) {
-        const auto runs = col.usable(p->id);
-        if (runs.size() < 2) continue;
-        rep.fold(fmt::format("Point {}", p->id), first_fold);
-        first_fold = false;
-        Table prof;
-        prof.header = {"solvers (a − b)"};
-        for (const auto& q : kProfileQuantities) prof.header.push_back(std::string(q.short_label) + ": RMS (max at y/H; noise)");
-        Table sc;
-        sc.header = {"solvers (a − b)"};
-        for (const auto& q : kScalarQuantities) sc.header.push_back(q.short_label);
-        for (std::size_t i = 0; i < runs.size(); ++i) {
-            for (std::size_t j = i + 1; j < runs.size(); ++j) {
-                const auto& a = runs[i]->solver;
-                const auto& b = runs[j]->solver;
-                // A pair with a result that is not steady: no number, the reason instead.
-                std::string pair = a + " − " + b, unsteady;
-                for (const Run* r : {runs[i], runs[j]})
-                    if (!r->steady()) {
-                        pair += fmt::format(" ({}: {})", r->solver, r->state_name());
-                        if (unsteady.empty()) unsteady = "—, " + r->state_name();
-                    }
-                std::vector<Cell> prow{{pair, ""}}, srow{{pair, ""}};
-                for (const auto& q : kProfileQuantities) {
-                    const MetricRow* r = find_row(metrics, "profile", p->id, q.key, a, b);
-                    if (!r) {
-                        prow.push_back({});
-                        continue;
-                    }
-                    if (!unsteady.empty()) {
-                        prow.push_back({unsteady, "transient"});
-                        continue;
-                    }
-                    std::string t = fmt::format("{} (max {} at {}", num(*r->rms, 3), num(*r->max, 3), num(*r->y_at_max, 2));
-                    t += r->noise_rms ? fmt::format("; noise {})", num(*r->noise_rms, 2)) : ")";
-                    prow.push_back({t, r->noise_rms && *r->rms > 2 * *r->noise_rms ? "significant" : ""});
-                }
-                for (const auto& q : kScalarQuantities) {
-                    const MetricRow* r = find_row(metrics, "scalar", p->id, q.key, a, b);
-                    if (!r) {
-                        srow.push_back({});
-                        continue;
-                    }
-                    if (!unsteady.empty()) {
-                        srow.push_back({unsteady, "transient"});
-                        continue;
-                    }
-                    std::string t = value_pm(r->difference, r->combined_stderr, 3);
-                    if (r->z) t += fmt::format(" (z = {:.1f})", *r->z);
-                    srow.push_back({t, r->significant() ? "significant" : ""});
-                }
-                prof.rows.push_back(std::move(prow));
-                sc.rows.push_back(std::move(srow));
-            }
-        }
-        rep.text("Normalised profiles: RMS and max |a − b| over the y/H range both solvers cover; noise = RMS of the "
-                 "combined standard error (bold: RMS > 2 × noise).");
-        rep.table(std::move(prof));
-        rep.text("Scalars: a − b ± combined standard error, stresses in Pa (bold: |z| > 2). A pair with a result "
-                 "that is not steady is not compared (“—, transient”): a transient's difference is not a model "
-                 "difference.");
-        rep.table(std::move(sc));
-        rep.end_fold();
-    }
-}
-
-// "key" -> text of every leaf of a JSON object, nested keys joined by '.'.
-void flatten(const nlohmann::json& j, const std::string& prefix, std::map<std::string, std::string>& out) {
-    if (j.is_object()) {
-        for (const auto& [k, v] : j.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, out);
-        return;
-    }
-    out[prefix] = j.is_string() ? j.get<std::string>() : j.dump();
-}
-
-// Who computed what: one row per run (version, time, seed, hashes), then each solver's settings
-// as a key-value table (folded), a value that differs between points given per point.
-void provenance_section(Report& rep, const Collection& col) {
-    Table prov;
-    prov.header = {"solver", "point", "granlub", "written (UTC)", "seed", "case hash", "inputs hash"};
-    for (const OperatingPoint* p : col.points)
-        for (const auto& s : col.solvers) {
-            const Run& r = col.run(s, p->id);
-            if (!r.usable()) continue;
-            const Provenance& pv = r.summary->provenance;
-            prov.rows.push_back({{s, ""},
-                                 {p->id, ""},
-                                 {pv.version, ""},
-                                 {pv.utc_time, ""},
-                                 {pv.seed ? std::to_string(*pv.seed) : "—", ""},
-                                 {pv.case_hash, "code"},
-                                 {pv.inputs_hash, "code"}});
-        }
-    rep.table(std::move(prov));
-    rep.text("Each run's full record (inputs, settings, run diagnostics) is its summary.json: "
-             "results/<solver>/<point>/summary.json.");
-    for (const auto& s : col.solvers) {
-        std::vector<std::pair<std::string, std::map<std::string, std::string>>> per_point;
-        for (const OperatingPoint* p : col.points)
-            if (const Run& r = col.run(s, p->id); r.usable()) {
-                std::map<std::string, std::string> kv;
-                flatten(r.summary->provenance.settings, "", kv);
-                per_point.emplace_back(p->id, std::move(kv));
-            }
-        if (per_point.empty()) continue;
-        std::set<std::string> keys;
-        for (const auto& [id, kv] : per_point)
-            for (const auto& [k, v] : kv) keys.insert(k);
-        Table t;
-        t.header = {"setting", "value"};
-        for (const auto& k : keys) {
-            auto value = [&](const std::map<std::string, std::string>& kv) {
-                const auto it = kv.find(k);
-                return it == kv.end() ? std::string("—") : it->second;
-            };
-            const std::string v0 = value(per_point.front().second);
-            const bool same = std::all_of(per_point.begin(), per_point.end(),
-                                          [&](const auto& pp) { return value(pp.second) == v0; });
-            std::string v = v0;
-            if (!same) {
-                v.clear();
-                for (const auto& [id, kv] : per_point) v += (v.empty() ? "" : "; ") + id + ": " + value(kv);
-            }
-            t.rows.push_back({{k, "code"}, {v, ""}});
-        }
-        rep.fold(fmt::format("Settings of {} ({} keys)", s, keys.size()));
-        rep.table(std::move(t));
-        rep.end_fold();
-    }
-}
-
-}  // namespace
-
-std::string state_name(ResultState s) {
-    switch (s) {
-        case ResultState::Complete: return "complete";
-        case ResultState::Missing: return "missing";
-        case ResultState::Stale: return "stale";
-        case ResultState::Corrupt: return "corrupt";
-    }
-    return "";
-}
-
-Table status_table(const Collection& col) {
-    Table t;
-    t.header = {"solver"};
-    for (const OperatingPoint* p : col.points) t.header.push_back(p->id);
-    for (const auto& s : col.solvers) {
-        std::vector<Cell> row{{s, ""}};
-        for (const OperatingPoint* p : col.points) {
-            const Run& r = col.run(s, p->id);
-            row.push_back({r.state_name(), r.state_class()});
-        }
-        t.rows.push_back(std::move(row));
-    }
-    for (const auto& s : col.missing_solvers) {
-        std::vector<Cell> row{{s, ""}};
-        for (std::size_t i = 0; i < col.points.size(); ++i) row.push_back({"no results", "missing"});
-        t.rows.push_back(std::move(row));
-    }
-    return t;
-}
-
-// value ± standard error, and for a value checked at half the time step its time-step error
-std::string value_cell(const Run& r, const std::string& q, double scale = 1.0, int digits = 4) {
-    std::string v = value_pm(scaled(r.scalar(q), scale), scaled(r.scalar_stderr(q), scale), digits);
-    if (const auto e = r.scalar_dt_error(q); e && !v.empty()) v += " [Δt " + num(*e * scale, 2) + "]";
-    return v;
-}
-
-Table key_numbers(const Case& c, const Collection& col) {
-    // Under load control the gap and the solid fraction are results and P_top is held at the target: the
-    // table shows them (a bottom-wall σ_yy alone would read as if the fill were fixed).
-    const bool load = std::any_of(col.points.begin(), col.points.end(),
-                                  [](const OperatingPoint* p) { return p->control == Control::Load; });
-    Table t;
-    t.header = {"solver", "point", "status", "ν̄/ν_max"};
-    if (load) t.header.insert(t.header.end(), {"gap (mm)", "P_top / target"});
-    t.header.insert(t.header.end(), {"σ_yy bottom (Pa)", "τ_xy bottom (Pa)", "τ_xy top (Pa)", "slip bottom / U",
-                                     "slip top / U", "wall clock (s)"});
-    for (const OperatingPoint* p : col.points) {
-        for (const auto& s : col.solvers) {
-            const Run& r = col.run(s, p->id);
-            if (!r.usable()) continue;
-            // Values of a result that is not steady are shown greyed, never as results.
-            const std::string cls = r.steady() ? "" : r.state_class();
-            std::vector<Cell> row{{s, ""}, {p->id, ""}, {r.state_name(), r.state_class()}};
-            row.push_back({value_cell(r, "nu_bar_over_numax"), cls});
-            if (load) {
-                // A solver with a fixed gap (no "gap" output) solves for ν̄ at the case's gap.
-                const bool moving = r.scalar("gap").has_value();
-                row.push_back({moving ? value_cell(r, "gap", 1e3) : num(c.cell.gap * 1e3) + " (fixed)", cls});
-                const double per = p->control == Control::Load && p->normal_stress > 0 ? 1 / p->normal_stress : 0;
-                row.push_back({lattice_stresses(s) ? "— (lattice, fixed fill)"
-                               : per > 0 ? value_pm(scaled(r.scalar("normal_stress_top"), per),
-                                                  scaled(r.scalar_stderr("normal_stress_top"), per), 3)
-                                       : "",
-                               cls});
-            }
-            // The automaton's stresses are lattice analogues: marked in every cell, not only in a footnote.
-            const char* lattice = lattice_stresses(s) ? " (lattice)" : "";
-            for (const char* q : {"normal_stress_bottom", "shear_stress_bottom", "shear_stress_top"}) {
-                const std::string v = value_cell(r, q);
-                row.push_back({v.empty() ? v : v + lattice, cls});
-            }
-            for (const char* q : {"slip_bottom_over_U", "slip_top_over_U"}) row.push_back({value_cell(r, q), cls});
-            const auto& run = r.summary->run;
-            row.push_back({run.is_object() && run.contains("wall_clock_s") && run["wall_clock_s"].is_number()
-                               ? num(run["wall_clock_s"].get<double>(), 3)
-                               : "",
-                           ""});
-            t.rows.push_back(std::move(row));
-        }
-    }
-    return t;
-}
-
-bool any_dt_checked(const Collection& col) {
-    for (const OperatingPoint* p : col.points)
-        for (const auto& s : col.solvers)
-            if (col.run(s, p->id).scalar_dt_error("shear_stress_bottom")) return true;
-    return false;
-}
-
-Table scope_table(const Case& c, const Collection& col) {
-    Table t;
-    t.header = {"solver", "grains and walls", "body forces", "wall stresses", "run length and start"};
-    for (const auto& s : col.solvers) {
-        if (!col.any_usable(s)) continue;
-        const SolverScope sc = solver_scope(c, col, s);
-        t.rows.push_back({{s, ""}, {sc.grains_walls, ""}, {sc.body_forces, ""}, {sc.stresses, ""},
-                          {sc.run_length, ""}});
-    }
-    return t;
-}
-
-// The packing's order and contacts of the particle solvers (run.order, run.flow_regime): how far
-// the grains crystallised, which the continuum does not describe.
-Table order_table(const Collection& col) {
-    Table t;
-    t.header = {"solver", "point", "status", "q6", "Q6", "layer order Λ", "layering of ν(y)", "coordination Z", "regime"};
-    for (const OperatingPoint* p : col.points)
-        for (const auto& s : col.solvers) {
-            const Run& r = col.run(s, p->id);
-            if (!r.usable() || !r.summary->run.is_object() || !r.summary->run.contains("order")) continue;
-            const auto& run = r.summary->run;
-            const auto& o = run["order"];
-            const std::string cls = r.steady() ? "" : r.state_class();
-            auto number = [](const nlohmann::json& j, const char* k, int digits = 3) {
-                return j.contains(k) && j[k].is_number() ? num(j[k].get<double>(), digits) : std::string("—");
-            };
-            const nlohmann::json fr = run.value("flow_regime", nlohmann::json::object());
-            t.rows.push_back({{s, ""},
-                              {p->id, ""},
-                              {r.state_name(), r.state_class()},
-                              {value_pm(r.scalar("q6"), r.scalar_stderr("q6")), cls},
-                              {number(o, "Q6"), cls},
-                              {value_pm(r.scalar("layer_order"), r.scalar_stderr("layer_order")), cls},
-                              {number(o, "layering"), cls},
-                              {number(fr, "coordination_number"), cls},
-                              {fr.contains("regime") ? read_flow_verdict(fr).label() : "—", cls}});
-        }
-    return t;
-}
-
-Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
-                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
-                    const RingSliceSection* ring, const RegimeSection* regime) {
-    Report rep;
+// Title, case, solvers compared and missing.
+void opening(Report& rep, const Case& c, const Collection& col) {
     rep.title = fmt::format("Cross-code comparison: {}", c.title.empty() ? c.name : c.title);
     std::vector<std::string> with_results, without;
     for (const auto& s : col.solvers) (col.any_usable(s) ? with_results : without).push_back(s);
@@ -315,7 +28,11 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
                          col.points.size(), utc_now(), version()));
     rep.text(fmt::format("Solvers compared: {}.", with_results.empty() ? "none" : list_text(with_results)));
     if (!without.empty()) rep.text(fmt::format("Missing solvers (no usable results): {}.", list_text(without)));
+}
 
+// What was found: the states, their reasons, the key numbers, what each solver's numbers mean and
+// how ordered the particle packings are.
+void results_found(Report& rep, const Case& c, const Collection& col) {
     rep.heading("Results found");
     rep.table(status_table(col));
     rep.text("steady: a steady-state result, compared. transient: the run ended before a steady state was "
@@ -324,15 +41,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
              "compared or bold. failed: the solver failed on the point (its message below); no answer: the solver's model "
              "cannot answer the point's question (why below), not a failure; missing: no result; "
              "stale: computed for other inputs (rerun the solver); corrupt: cannot be read or fails the checks.");
-    Table problems;
-    problems.header = {"solver", "point", "state", "why"};
-    for (const OperatingPoint* p : col.points)
-        for (const auto& s : col.solvers) {
-            const Run& r = col.run(s, p->id);
-            if (const std::string why = r.state_reason(); !why.empty())
-                problems.rows.push_back({{r.solver, ""}, {p->id, ""}, {r.state_name(), r.state_class()}, {why, ""}});
-        }
-    if (!problems.rows.empty()) rep.table(std::move(problems));
+    if (Table reasons = state_reasons(col); !reasons.rows.empty()) rep.table(std::move(reasons));
     rep.heading("Key numbers", 3);
     rep.table(key_numbers(c, col));
     if (any_dt_checked(col))
@@ -358,7 +67,9 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
                  "shows the layering any flat wall imposes. The continuum describes a disordered "
                  "fluid: where the particle packings are ordered, its profiles are not expected to match.");
     }
+}
 
+void how_to_read(Report& rep) {
     rep.heading("How to read this report");
     rep.text("Geometry: y/H = 0 is the moving wall (speed U), y/H = 1 the stationary wall. Profiles are "
              "dimensionless: u/U, ν/ν_max with each model's own ν_max taken from its summary (the automaton "
@@ -370,55 +81,35 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
              "quasi-static flow n → 0. A difference between two solvers is significant when it exceeds twice the "
              "combined standard error (|z| > 2, shown bold); between deterministic results every difference is a "
              "model difference.");
+}
 
-    rep.heading("Profiles across the gap");
+// The figures the registry puts under `heading` (figures/registry.h): per point in folds, the first
+// point unfolded, or once for the case.
+void figure_section(Report& rep, const Collection& col, const ReportFigures& figs, const std::string& heading) {
+    rep.heading(heading);
     for (const OperatingPoint* p : col.points) {
-        const auto it = figs.profiles.find(p->id);
-        if (it == figs.profiles.end()) continue;
-        rep.fold(fmt::format("Point {}", p->id), it == figs.profiles.find(col.points.front()->id));
-        rep.figures(it->second);
+        const auto refs = figs.of(heading, p->id);
+        if (refs.empty()) continue;
+        rep.fold(fmt::format("Point {}", p->id), p == col.points.front());
+        rep.figures(refs);
         rep.end_fold();
     }
+    if (auto refs = figs.of(heading); !refs.empty()) rep.figures(std::move(refs));
+}
 
-    rep.heading("Wall stresses against speed");
-    rep.figures(figs.stress);
-    Table ex;
-    ex.header = {"solver", "speed group"};
-    for (const char* q : kStressOutputs) ex.header.push_back(std::string("n, ") + short_label(q));
-    for (const auto& group : speed_groups(col.points)) {
-        if (group.points.size() < static_cast<std::size_t>(kMinFitPoints)) continue;  // never fittable
-        const std::string g = group.label.empty() ? "all" : group.label;
-        for (const auto& s : col.solvers) {
-            std::vector<Cell> row{{s, ""}, {g, ""}};
-            bool any = false;
-            for (const char* q : kStressOutputs) {
-                const MetricRow* r = find_row(metrics, "exponent", g, q, s, "");
-                any = any || r;
-                if (!r)
-                    row.push_back({});
-                else if (!r->a)
-                    row.push_back({r->note, "transient"});
-                else
-                    row.push_back({fmt::format("{} ({} steady speeds)", value_pm(r->a, r->a_stderr, 3), *r->fit_points), ""});
-            }
-            if (any) ex.rows.push_back(std::move(row));
-        }
-    }
+void exponents(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
+    Table ex = exponent_table(col, metrics);
     if (ex.rows.empty())
         rep.text(fmt::format("No stress–speed exponent: it needs at least {} steady results from the same solver at "
                              "as many speeds, with everything else equal.",
                              kMinFitPoints));
     else
         rep.table(std::move(ex));
+}
 
-    if (regime) add_regime_section(rep, *regime, figs.regime);
-
-    rep.heading("Slip at the walls");  // against roughness or speed: the figure titles say which
-    rep.figures(figs.slip);
-    rep.heading("Mean solid fraction");
-    rep.figures(figs.solid_fraction);
-
-    if (ring && !ring->slice_case.empty()) {
+void ring_section(Report& rep, const RingSliceSection& ring_s, const ReportFigures& figs) {
+    const RingSliceSection* ring = &ring_s;
+    if (!ring->slice_case.empty()) {
         rep.heading("The whole ring against its slice");
         rep.text(fmt::format(
             "granlub dem ran this case as the whole ring ([cell] geometry = \"annulus\": turning floor and side "
@@ -435,16 +126,17 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
         if (!ring->table.rows.empty()) rep.table(ring->table);
         rep.figures(figs.ring_slice);
     }
+}
 
+void differences(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
     rep.heading("Differences between solvers");
     if (std::count_if(col.points.begin(), col.points.end(), [&](const OperatingPoint* p) { return col.usable(p->id).size() >= 2; }) == 0)
         rep.text("No point has results from two solvers: nothing to compare yet.");
     rep.text("Every number is also in metrics.csv (one row per pair, point and quantity).");
     difference_tables(rep, col, metrics);
+}
 
-    rep.heading("Provenance of every run");
-    provenance_section(rep, col);
-
+void files(Report& rep, const std::vector<std::filesystem::path>& paraview_files) {
     rep.heading("Files");
     std::vector<std::pair<std::string, std::string>> files = {
         {"metrics.csv: every metric, one row per pair, point and quantity", "metrics.csv"},
@@ -455,7 +147,38 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
                                        f.filename().string()),
                            "paraview/" + f.filename().string());
     rep.links(std::move(files));
+}
 
+}  // namespace
+
+std::vector<FigureRef> ReportFigures::of(const std::string& heading, const std::string& point) const {
+    std::vector<FigureRef> refs;
+    for (const auto& g : groups)
+        if (g.heading == heading && g.point == point) refs.insert(refs.end(), g.refs.begin(), g.refs.end());
+    return refs;
+}
+
+Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
+                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
+                    const RingSliceSection* ring, const RegimeSection* regime) {
+    Report rep;
+    opening(rep, c, col);
+    results_found(rep, c, col);
+    how_to_read(rep);
+    // The registry's sections in its order; the stress exponents after the stress figures, the
+    // regimes after them, the ring after the figures.
+    for (const auto& heading : figure_headings()) {
+        figure_section(rep, col, figs, heading);
+        if (heading == kStressHeading) {
+            exponents(rep, col, metrics);
+            if (regime) add_regime_section(rep, *regime, figs.regime);
+        }
+    }
+    if (ring) ring_section(rep, *ring, figs);
+    differences(rep, col, metrics);
+    rep.heading("Provenance of every run");
+    provenance_section(rep, col);
+    files(rep, paraview_files);
     rep.heading("The case");
     rep.pre(describe(c));
     return rep;

@@ -2,21 +2,27 @@
 // every run and the case itself.
 #pragma once
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "formats/report.h"
 #include "results/collect.h"
 #include "statistics/metrics.h"
+#include "tables/run_tables.h"
 
 namespace granlub::postproc {
 
+// The figures of one figure_registry() row under its heading, for one point ("" for the case).
+struct FigureGroup {
+    std::string heading, point;
+    std::vector<FigureRef> refs;
+};
+
 struct ReportFigures {
-    std::map<std::string, std::vector<FigureRef>> profiles;  // by point id
-    std::vector<FigureRef> stress, slip, solid_fraction;
+    std::vector<FigureGroup> groups;    // the registry's rows drawn, in its order (figures/registry.h)
     std::vector<FigureRef> ring_slice;  // ring_slice.h
     std::vector<FigureRef> regime;      // regime_section.h
+    std::vector<FigureRef> of(const std::string& heading, const std::string& point = "") const;
 };
 
 struct RingSliceSection;
@@ -25,15 +31,5 @@ struct RegimeSection;
 Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
                     const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
                     const RingSliceSection* ring = nullptr, const RegimeSection* regime = nullptr);
-
-// Key numbers per solver and point (nu_bar/nu_max, wall stresses, slip/U, wall clock; under load
-// control also the gap and P_top / target); used by the report and by summary_table().
-Table key_numbers(const Case& c, const Collection& col);
-// Per solver: the body forces it models, what its wall stresses are, how long it ran (scope.h).
-Table scope_table(const Case& c, const Collection& col);
-// Result state per solver (rows, missing solvers included) and point (columns).
-Table status_table(const Collection& col);
-
-std::string state_name(ResultState s);
 
 }  // namespace granlub::postproc

@@ -94,6 +94,108 @@ std::string contact_text(const Run& r) {
            dt_error;
 }
 
+// The lengths of a solver's runs, gathered over its usable points.
+struct RunLengths {
+    std::vector<double> simulated, steady_from, steps, iterations;
+    std::vector<double> check_simulated, check_steady_from;  // the full-step runs of a Delta-t check
+    std::string check_start;                                  // how the first checked run's half-step run began
+    double cap = 0;                                           // [dem] time_max: runs continued until steady
+    int continued = 0;
+};
+
+RunLengths run_lengths(const std::vector<const Run*>& runs) {
+    RunLengths l;
+    for (const Run* r : runs) {
+        if (auto v = run_number(*r, "simulated_time_s")) l.simulated.push_back(*v);
+        if (auto v = run_number(*r, "steady_state_start_s")) l.steady_from.push_back(*v);
+        if (auto v = run_number(*r, "steps")) l.steps.push_back(*v);
+        if (auto v = run_number(*r, "iterations")) l.iterations.push_back(*v);
+        const auto& run = r->summary->run;
+        if (run.is_object() && run.contains("continuation")) {
+            l.cap = run["continuation"].value("time_max_s", 0.0);
+            if (run["continuation"].value("pieces", 1) > 1) ++l.continued;
+        }
+        if (run.is_object() && run.contains("dt_refinement") && run["dt_refinement"].contains("full_step_run")) {
+            const auto& f = run["dt_refinement"]["full_step_run"];
+            if (l.check_start.empty()) l.check_start = run["dt_refinement"].value("start", std::string("not recorded"));
+            if (f.contains("continuation"))  // continued until steady ([dem] time_max): all its pieces
+                l.check_simulated.push_back(f["continuation"].value("simulated_s", 0.0));
+            else if (f.contains("steps") && f.contains("time_step_s"))
+                l.check_simulated.push_back(f["steps"].get<double>() * f["time_step_s"].get<double>());
+            if (f.contains("steady_state_start_s") && f["steady_state_start_s"].is_number())
+                l.check_steady_from.push_back(f["steady_state_start_s"].get<double>());
+        }
+    }
+    return l;
+}
+
+// The solvers that leave out body forces say so in their run block; the particle engines apply
+// the case's gravity.
+std::string body_forces(const Case& c, const std::vector<const Run*>& runs, bool particles) {
+    const Run& first = *runs.front();
+    if (std::string note = run_text(first, "body_forces"); !note.empty()) return "gravity " + note;
+    if (std::string note = run_text(first, "ignored"); !note.empty()) return "ignores " + note;
+    if (!particles) return "not stated in its summary";
+    if (c.gravity <= 0) return "no gravity ([body_forces] gravity = 0)";
+    const double nu = first.summary->value("mean_solid_fraction");
+    std::vector<double> difference, side;  // the measured P_bot − P_top of each run; side-wall support
+    for (const Run* r : runs) {
+        if (auto b = r->scalar("normal_stress_bottom"), t = r->scalar("normal_stress_top"); b && t)
+            difference.push_back(*b - *t);
+        if (auto v = r->scalar("side_wall_support")) side.push_back(*v);
+    }
+    std::string s = fmt::format("gravity g = {} m/s² acts on the grains: P_bot − P_top includes their weight, "
+                                "ρ ν̄ g H ≈ {} Pa",
+                                num(c.gravity, 3), num(c.grains.density * nu * c.gravity * c.cell.gap, 2));
+    if (!difference.empty()) {
+        s += " (measured P_bot − P_top: " + range_text(difference, "Pa");
+        // the vertical balance: P_bot − P_top = weight − what the side walls hold up
+        if (!side.empty()) s += "; upward force of the side walls per floor area: " + range_text(side, "Pa");
+        s += ")";
+    }
+    return s;
+}
+
+std::string stresses(const std::string& solver, const Run& first, bool particles, bool iterated) {
+    if (lattice_stresses(solver))
+        return "lattice analogues in Pa (wall momentum per lattice step × ρ_p ν_max U², ∝ U² by construction): "
+               "not measured stresses, not comparable with the others";
+    if (particles) {
+        std::string s = "time-averaged wall force / wall area (Pa) over the steady window";
+        if (std::string rule = steady_rule(first); !rule.empty()) s += "; " + rule;
+        if (std::string law = contact_text(first); !law.empty()) s += "; " + law;
+        return s;
+    }
+    return iterated ? "kinetic-theory wall stresses (Pa) of the steady solution" : "as its summary gives them";
+}
+
+std::string particle_run_length(const Run& first, const RunLengths& l, std::size_t runs) {
+    std::string s = range_text(l.simulated, "s") + " simulated" + (l.check_simulated.empty() ? "" : " at half the time step");
+    if (!l.steady_from.empty()) s += ", averaged from " + range_text(l.steady_from, "s");
+    if (!l.steps.empty()) s += " (" + range_text(l.steps, "steps", 0) + ")";
+    if (l.cap > 0)
+        s += fmt::format("; runs not steady at their length continued from where they ended, doubling, "
+                         "up to {} s in all, the last piece averaged ({} of {} points continued)",
+                         num(l.cap, 3), l.continued, runs);
+    if (!l.check_simulated.empty()) {  // what the numbers are: the half-step run, checked (refine_dt)
+        s += "; checked against a run of " + range_text(l.check_simulated, "s") + " at the full step";
+        if (!l.check_steady_from.empty()) s += " (steady from " + range_text(l.check_steady_from, "s") + ")";
+        s += "; the half-step run's start: " + l.check_start;
+    }
+    if (const std::string start = run_text(first, "start"); !start.empty()) s += "; start: " + start;
+    if (const std::string plate = run_text(first, "plate"); !plate.empty()) s += "; load: " + plate;
+    return s;
+}
+
+std::string run_length(const Run& first, const RunLengths& l, std::size_t runs) {
+    if (!l.simulated.empty()) return particle_run_length(first, l, runs);
+    if (!l.iterations.empty()) return "steady solution, " + range_text(l.iterations, "iterations", 0);
+    if (l.steps.empty()) return "";
+    std::string s = range_text(l.steps, "lattice steps", 0);
+    if (auto reps = run_number(first, "replicas")) s += fmt::format(" × {} replicas", num(*reps, 3));
+    return s;
+}
+
 }  // namespace
 
 bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }
@@ -105,97 +207,12 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
     SolverScope s;
     if (runs.empty()) return s;
     const Run& first = *runs.front();
-    std::vector<double> simulated, steady_from, steps, iterations;
-    std::vector<double> check_simulated, check_steady_from;  // the full-step runs of a Delta-t check
-    std::string check_start;                                  // how the first checked run's half-step run began
-    double cap = 0;                                           // [dem] time_max: runs continued until steady
-    int continued = 0;
-    for (const Run* r : runs) {
-        if (auto v = run_number(*r, "simulated_time_s")) simulated.push_back(*v);
-        if (auto v = run_number(*r, "steady_state_start_s")) steady_from.push_back(*v);
-        if (auto v = run_number(*r, "steps")) steps.push_back(*v);
-        if (auto v = run_number(*r, "iterations")) iterations.push_back(*v);
-        const auto& run = r->summary->run;
-        if (run.is_object() && run.contains("continuation")) {
-            cap = run["continuation"].value("time_max_s", 0.0);
-            if (run["continuation"].value("pieces", 1) > 1) ++continued;
-        }
-        if (run.is_object() && run.contains("dt_refinement") && run["dt_refinement"].contains("full_step_run")) {
-            const auto& f = run["dt_refinement"]["full_step_run"];
-            if (check_start.empty()) check_start = run["dt_refinement"].value("start", std::string("not recorded"));
-            if (f.contains("continuation"))  // continued until steady ([dem] time_max): all its pieces
-                check_simulated.push_back(f["continuation"].value("simulated_s", 0.0));
-            else if (f.contains("steps") && f.contains("time_step_s"))
-                check_simulated.push_back(f["steps"].get<double>() * f["time_step_s"].get<double>());
-            if (f.contains("steady_state_start_s") && f["steady_state_start_s"].is_number())
-                check_steady_from.push_back(f["steady_state_start_s"].get<double>());
-        }
-    }
-    const bool particles = !simulated.empty();
-
-    // The solvers that leave out body forces say so in their run block; the particle engines apply
-    // the case's gravity.
-    if (std::string note = run_text(first, "body_forces"); !note.empty())
-        s.body_forces = "gravity " + note;
-    else if (note = run_text(first, "ignored"); !note.empty())
-        s.body_forces = "ignores " + note;
-    else if (particles && c.gravity > 0) {
-        const double nu = first.summary->value("mean_solid_fraction");
-        std::vector<double> difference, side;  // the measured P_bot − P_top of each run; side-wall support
-        for (const Run* r : runs) {
-            if (auto b = r->scalar("normal_stress_bottom"), t = r->scalar("normal_stress_top"); b && t)
-                difference.push_back(*b - *t);
-            if (auto v = r->scalar("side_wall_support")) side.push_back(*v);
-        }
-        s.body_forces = fmt::format("gravity g = {} m/s² acts on the grains: P_bot − P_top includes their weight, "
-                                    "ρ ν̄ g H ≈ {} Pa",
-                                    num(c.gravity, 3), num(c.grains.density * nu * c.gravity * c.cell.gap, 2));
-        if (!difference.empty()) {
-            s.body_forces += " (measured P_bot − P_top: " + range_text(difference, "Pa");
-            // the vertical balance: P_bot − P_top = weight − what the side walls hold up
-            if (!side.empty()) s.body_forces += "; upward force of the side walls per floor area: " + range_text(side, "Pa");
-            s.body_forces += ")";
-        }
-    } else if (particles)
-        s.body_forces = "no gravity ([body_forces] gravity = 0)";
-    else
-        s.body_forces = "not stated in its summary";
-
-    if (lattice_stresses(solver))
-        s.stresses = "lattice analogues in Pa (wall momentum per lattice step × ρ_p ν_max U², ∝ U² by construction): "
-                     "not measured stresses, not comparable with the others";
-    else if (particles) {
-        s.stresses = "time-averaged wall force / wall area (Pa) over the steady window";
-        if (std::string rule = steady_rule(first); !rule.empty()) s.stresses += "; " + rule;
-        if (std::string law = contact_text(first); !law.empty()) s.stresses += "; " + law;
-    }
-    else if (!iterations.empty())
-        s.stresses = "kinetic-theory wall stresses (Pa) of the steady solution";
-    else
-        s.stresses = "as its summary gives them";
-
+    const RunLengths l = run_lengths(runs);
+    const bool particles = !l.simulated.empty();
+    s.body_forces = body_forces(c, runs, particles);
+    s.stresses = stresses(solver, first, particles, !l.iterations.empty());
     s.grains_walls = grains_and_walls(c, first, particles);
-    if (particles) {
-        s.run_length = range_text(simulated, "s") + " simulated" + (check_simulated.empty() ? "" : " at half the time step");
-        if (!steady_from.empty()) s.run_length += ", averaged from " + range_text(steady_from, "s");
-        if (!steps.empty()) s.run_length += " (" + range_text(steps, "steps", 0) + ")";
-        if (cap > 0)
-            s.run_length += fmt::format("; runs not steady at their length continued from where they ended, doubling, "
-                                        "up to {} s in all, the last piece averaged ({} of {} points continued)",
-                                        num(cap, 3), continued, runs.size());
-        if (!check_simulated.empty()) {  // what the numbers are: the half-step run, checked (refine_dt)
-            s.run_length += "; checked against a run of " + range_text(check_simulated, "s") + " at the full step";
-            if (!check_steady_from.empty()) s.run_length += " (steady from " + range_text(check_steady_from, "s") + ")";
-            s.run_length += "; the half-step run's start: " + check_start;
-        }
-        if (const std::string start = run_text(first, "start"); !start.empty()) s.run_length += "; start: " + start;
-        if (const std::string plate = run_text(first, "plate"); !plate.empty()) s.run_length += "; load: " + plate;
-    } else if (!iterations.empty())
-        s.run_length = "steady solution, " + range_text(iterations, "iterations", 0);
-    else if (!steps.empty()) {
-        s.run_length = range_text(steps, "lattice steps", 0);
-        if (auto reps = run_number(first, "replicas")) s.run_length += fmt::format(" × {} replicas", num(*reps, 3));
-    }
+    s.run_length = run_length(first, l, runs.size());
     return s;
 }
 
