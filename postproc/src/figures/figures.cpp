@@ -56,14 +56,6 @@ std::vector<Series> points_by_state(const Collection& col, const std::string& so
     return out;
 }
 
-// Says in the caption what the hollow, faded series are, when the figure has any.
-void note_unsteady(Figure& f) {
-    if (std::any_of(f.series.begin(), f.series.end(), [](const Series& s) { return s.unsteady && !s.x.empty(); }))
-        f.caption += " Hollow faded markers and dotted lines are results that are NOT steady (the legend says "
-                     "which: transient, dt-unconverged or status unknown); shown for information only, left out of "
-                     "fits and differences.";
-}
-
 // Under load control the top plate is held at the target stress: drawn as a black dotted line at
 // the target over the speeds of the load-controlled points (one line per target value).
 void add_load_target(const Collection& col, Figure& f) {
@@ -120,7 +112,7 @@ std::vector<Figure> profile_figures(const Collection& col, std::size_t point_ind
         Figure f;
         f.name = fmt::format("{}_{}", stem, suffix[k]);
         f.title = fmt::format("{}, {} (U = {} m/s)", what[k], p.id, num(p.speed));
-        f.caption = fmt::format("{} across the gap at point {}; shaded bands are ±1 standard error.", q.label, p.id);
+        f.caption = fmt::format("{} across the gap at point {}.", q.label, p.id);
         f.x.label = "y/H (0: moving wall, 1: stationary wall)";
         f.x.lo = 0;
         f.x.hi = 1;
@@ -136,7 +128,6 @@ std::vector<Figure> profile_figures(const Collection& col, std::size_t point_ind
             s.style = solver_style(col, r->solver);
             f.series.push_back(std::move(s));
         }
-        note_unsteady(f);
         figs.push_back(std::move(f));
     }
     return figs;
@@ -217,7 +208,6 @@ std::vector<Figure> stress_figures(const Collection& col) {
             for (std::size_t i = 0; i < not_fitted.size(); ++i) f.caption += (i ? "; " : " ") + not_fitted[i];
             f.caption += ".";
         }
-        note_unsteady(f);
         figs.push_back(std::move(f));
     }
     return figs;
@@ -285,7 +275,6 @@ std::vector<Figure> slip_figures(const Collection& col) {
                     if (!s.x.empty()) f.series.push_back(std::move(s));
             }
         }
-        note_unsteady(f);
         figs.push_back(std::move(f));
     }
     return figs;
@@ -332,7 +321,6 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
     const auto load = [](const OperatingPoint* p) { return p->control == Control::Load; };
     if (std::any_of(col.points.begin(), col.points.end(), load))
         f.caption += " Under load control ν̄ is a result (the gap moves or the model solves for it), not a target.";
-    note_unsteady(f);
     return f;
 }
 

@@ -120,7 +120,6 @@ std::vector<Figure> mu_of_i_figures(const Case& c, const Collection& col, const 
                 for (auto& ser : series) ser.open = ser.open || !bottom, f.series.push_back(std::move(ser));
             }
         add_jop_line(f);
-        say_unsteady(f);
         figs.push_back(std::move(f));
     }
     Figure f;
@@ -146,7 +145,6 @@ std::vector<Figure> mu_of_i_figures(const Case& c, const Collection& col, const 
                                           });
             for (auto& ser : series) ser.open = ser.open || !mid, f.series.push_back(std::move(ser));
         }
-    say_unsteady(f);
     figs.push_back(std::move(f));
     return figs;
 }

@@ -97,7 +97,6 @@ std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, con
         if (!holes.x.empty()) f.series.push_back(std::move(holes));
         const auto [lo, hi] = y_span(f, true);
         add_critical_rate(c, f, lo, hi);
-        say_unsteady(f);
         figs.push_back(std::move(f));
     }
     return figs;
@@ -161,7 +160,6 @@ std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const 
             }
             const auto [lo, hi] = y_span(f, false);
             add_critical_rate(c, f, lo, hi);
-            say_unsteady(f);
             figs.push_back(std::move(f));
         }
     return figs;

@@ -46,7 +46,7 @@ std::optional<SectionMap> read_section(const Run& r) {
 }
 
 std::string render_section_svg(const SectionMap& m, const std::vector<double>& values, const std::string& title,
-                               const std::string& bar_label, bool unsteady) {
+                               const std::string& bar_label, const std::string& stamp) {
     constexpr double W = 540, H = 380, x0 = 70, x1 = 430, y0 = 40, y1 = 320, bx0 = 455, bx1 = 475;
     double lo = 0, hi = 0;
     for (double v : values) hi = std::max(hi, v), lo = std::min(lo, v);
@@ -64,7 +64,7 @@ std::string render_section_svg(const SectionMap& m, const std::vector<double>& v
         const auto j = static_cast<std::size_t>(std::floor((m.z[c] + 0.5) * static_cast<double>(m.nz)));
         out += fmt::format("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"{}/>\n",
                            x0 + cw * static_cast<double>(j), y1 - ch * static_cast<double>(k + 1), cw + 0.3, ch + 0.3,
-                           colour((values[c] - lo) / (hi - lo)), unsteady ? " fill-opacity=\"0.45\"" : "");
+                           colour((values[c] - lo) / (hi - lo)), !stamp.empty() ? " fill-opacity=\"0.45\"" : "");
     }
     out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#000\"/>\n", x0, y0,
                        x1 - x0, y1 - y0);
@@ -109,12 +109,21 @@ std::string render_section_svg(const SectionMap& m, const std::vector<double>& v
     out += fmt::format("<text transform=\"translate({},{}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">{}"
                        "</text>\n",
                        W - 12, 0.5 * (y0 + y1), xml_escape(bar_label));
-    if (unsteady)
+    if (!stamp.empty())
         out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"22\" fill=\"#b00000\" "
-                           "font-weight=\"bold\">TRANSIENT — not a result</text>\n",
-                           0.5 * (x0 + x1), 0.5 * (y0 + y1));
+                           "font-weight=\"bold\">{}</text>\n",
+                           0.5 * (x0 + x1), 0.5 * (y0 + y1), xml_escape(stamp));
     out += "</svg>\n";
     return out;
+}
+
+// What a map of a run that is not steady is stamped with: its state, named as what it is.
+std::string section_stamp(const Run& r) {
+    if (r.steady()) return "";
+    const std::string state = r.state_name();
+    if (state == "transient") return "TRANSIENT — not a result";
+    if (state == "dt-unconverged") return "DT-UNCONVERGED — Δt changes it";
+    return "STATUS UNKNOWN — not checked";
 }
 
 std::vector<FigureRef> section_figures(const Collection& col, std::size_t i, const std::filesystem::path& plots) {
@@ -138,8 +147,9 @@ std::vector<FigureRef> section_figures(const Collection& col, std::size_t i, con
             FigureRef f{name, title,
                         fmt::format("{} over the trough's cross-section (flow out of the page), averaged along the flow "
                                     "and over the steady window; cells of about one grain diameter{}.",
-                                    q.label, unsteady ? "; this run is not steady: for information only" : ""),
-                        render_section_svg(*m, q.v, title, q.bar, unsteady)};
+                                    q.label, unsteady ? "; the run is " + r->state_name() : std::string()),
+                        render_section_svg(*m, q.v, title, q.bar, section_stamp(*r)),
+                        {{"SVG", "plots/" + name + ".svg"}, {"data (CSV)", "plots/" + base + ".csv"}}};
             write_file_atomic(plots / (name + ".svg"), f.svg);
             std::filesystem::copy_file(r->dir / kSectionFile, plots / (base + ".csv"),
                                        std::filesystem::copy_options::overwrite_existing);

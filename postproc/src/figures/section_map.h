@@ -22,9 +22,13 @@ struct SectionMap {
 // A file that is there but malformed throws Error naming it.
 std::optional<SectionMap> read_section(const Run& r);
 
-// One heat map of `values` (nu or u/U) with a colour bar; `unsteady` labels it a transient.
+// One heat map of `values` (nu or u/U) with a colour bar; a non-empty `stamp` (section_stamp) is
+// written across a faded map.
 std::string render_section_svg(const SectionMap& m, const std::vector<double>& values, const std::string& title,
-                               const std::string& bar_label, bool unsteady);
+                               const std::string& bar_label, const std::string& stamp);
+// The stamp of a run that is not steady, naming its state ("TRANSIENT — not a result",
+// "DT-UNCONVERGED — Δt changes it", "STATUS UNKNOWN — not checked"); "" for a steady run.
+std::string section_stamp(const Run& r);
 
 // The maps of every usable particle run at a point that has a section.csv (nu and u/U each),
 // written into `plots` (<name>.svg and <name>.csv).

@@ -96,7 +96,6 @@ std::vector<Figure> shear_power_law_figures(const Collection& col, const SpeedLo
                 f.series.push_back(guide(2, x0, y0, lo, hi));
                 f.series.push_back(guide(0, x0, y0, lo, hi));
             }
-            say_unsteady(f);
             figs.push_back(std::move(f));
         }
     return figs;

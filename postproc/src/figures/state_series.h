@@ -54,14 +54,4 @@ std::vector<Series> series_by_state(const Collection& col, const std::string& so
     return kept;
 }
 
-// The caption's sentence for the hollow, faded series, when the figure has any.
-inline void say_unsteady(Figure& f) {
-    for (const Series& s : f.series)
-        if (s.unsteady && !s.x.empty()) {
-            f.caption += " Hollow faded markers are results that are NOT steady (the legend says which); shown for "
-                         "information only, left out of every fit.";
-            return;
-        }
-}
-
 }  // namespace granlub::postproc

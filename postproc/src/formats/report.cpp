@@ -87,8 +87,11 @@ td.significant { font-weight: bold; background: #fff3d6; }
 td.transient, td.unknown { color: #888; font-style: italic; background: #f3f3f3; }
 td.failed { background: #fbe0dc; } td.noanswer { background: #eef0f7; color: #555; }
 td.code { font-family: monospace; font-size: .85em; max-width: 40em; word-break: break-all; }
-.figs { display: flex; flex-wrap: wrap; gap: 1em; }
-figure { margin: 0; max-width: 540px; }
+td.uncertain { background: #fff3d6; font-style: italic; }
+.tw { max-width: 100%; overflow-x: auto; }
+.figs { display: grid; grid-template-columns: repeat(auto-fill, minmax(420px, 1fr)); gap: 1em; }
+figure { margin: 0; max-width: 540px; min-width: 0; }
+figcaption a { margin-right: .5em; }
 figure svg { width: 100%; height: auto; border: 1px solid #eee; }
 figcaption { font-size: .85em; color: #444; }
 pre { background: #f7f7f7; padding: .8em; overflow-x: auto; font-size: .85em; }
@@ -143,7 +146,7 @@ std::string render_html(const Report& r) {
             case Block::Kind::Text: out += fmt::format("<p>{}</p>\n", xml_escape(b.text)); break;
             case Block::Kind::Pre: out += fmt::format("<pre>{}</pre>\n", xml_escape(b.text)); break;
             case Block::Kind::Table:
-                out += "<table>\n<thead><tr>";
+                out += "<div class=\"tw\"><table>\n<thead><tr>";
                 for (const auto& h : b.table.header) out += html_cell({h, ""}, "th");
                 out += "</tr></thead>\n<tbody>\n";
                 for (const auto& row : b.table.rows) {
@@ -151,13 +154,17 @@ std::string render_html(const Report& r) {
                     for (const auto& c : row) out += html_cell(c, "td");
                     out += "</tr>\n";
                 }
-                out += "</tbody>\n</table>\n";
+                out += "</tbody>\n</table></div>\n";
                 break;
             case Block::Kind::Figures:
                 out += "<div class=\"figs\">\n";
-                for (const auto& f : b.figures)
-                    out += fmt::format("<figure id=\"{}\">\n{}<figcaption>{} <a href=\"plots/{}.gp\">gnuplot source</a></figcaption>\n</figure>\n",
-                                       f.name, f.svg, xml_escape(f.caption), f.name);
+                for (const auto& f : b.figures) {
+                    std::string links;
+                    for (const auto& [label, href] : f.files)
+                        links += fmt::format(" <a href=\"{}\">{}</a>", xml_escape(href), xml_escape(label));
+                    out += fmt::format("<figure id=\"{}\">\n{}<figcaption>{}{}</figcaption>\n</figure>\n", f.name, f.svg,
+                                       xml_escape(f.caption), links);
+                }
                 out += "</div>\n";
                 break;
             case Block::Kind::Links:
@@ -192,7 +199,7 @@ std::string render_markdown(const Report& r) {
                     for (const auto& c : row) {
                         const std::string t = md_escape(c.text);
                         // Not steady (transient, unknown): italic, never bold.
-                        const bool greyed = c.cls == "transient" || c.cls == "unknown";
+                        const bool greyed = c.cls == "transient" || c.cls == "unknown" || c.cls == "uncertain";
                         out += " " + (c.cls == "significant" && !t.empty() ? "**" + t + "**"
                                       : c.cls == "code" && !t.empty()      ? "`" + t + "`"
                                       : greyed && !t.empty()               ? "_" + t + "_"
@@ -204,9 +211,12 @@ std::string render_markdown(const Report& r) {
                 break;
             }
             case Block::Kind::Figures:
-                for (const auto& f : b.figures)
-                    out += fmt::format("![{}](plots/{}.svg)\n\n*{}* ([gnuplot source](plots/{}.gp))\n\n", f.title, f.name,
-                                       f.caption, f.name);
+                for (const auto& f : b.figures) {
+                    std::string links;
+                    for (const auto& [label, href] : f.files) links += fmt::format("{}[{}]({})", links.empty() ? "" : " · ", label, href);
+                    out += fmt::format("![{}](plots/{}.svg)\n\n*{}*{}\n\n", f.title, f.name, f.caption,
+                                       links.empty() ? "" : " (" + links + ")");
+                }
                 break;
             case Block::Kind::Links:
                 for (const auto& [label, href] : b.links) out += fmt::format("- [{}]({})\n", label, href);

@@ -9,7 +9,8 @@ namespace granlub::postproc {
 
 struct Cell {
     std::string text;
-    std::string cls;  // "", "ok", "missing", "stale", "corrupt", "failed", "noanswer", "transient", "unknown", "significant", "code"
+    std::string cls;  // "", "ok", "missing", "stale", "corrupt", "failed", "noanswer", "transient", "unknown",
+                      // "significant", "uncertain", "code"
 };
 
 struct Table {
@@ -20,8 +21,9 @@ struct Table {
 struct FigureRef {
     std::string name;     // plots/<name>.svg
     std::string title;
-    std::string caption;
+    std::string caption;  // what is particular to this figure (the report's legend says the rest)
     std::string svg;      // inlined into the HTML
+    std::vector<std::pair<std::string, std::string>> files;  // (label, href): SVG, PDF, data, gnuplot source
 };
 
 struct Block {

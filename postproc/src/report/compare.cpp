@@ -9,6 +9,7 @@
 
 #include "figures/registry.h"
 #include "formats/gnuplot.h"
+#include "formats/pdf.h"
 #include "formats/svg_plot.h"
 #include "formats/text.h"
 #include "granlub/error.h"
@@ -24,28 +25,43 @@
 namespace granlub::postproc {
 namespace {
 
-// Renders each figure to SVG, writes it with its gnuplot sources into plots/, and returns the
-// references the report inlines.
-std::vector<FigureRef> emit(const std::vector<Figure>& figs, const std::filesystem::path& plots) {
+// The figure's PDF beside its SVG (formats/pdf.h), linked second, when rsvg-convert is there.
+void add_pdf(FigureRef& r, const std::filesystem::path& plots, const std::optional<std::filesystem::path>& converter) {
+    if (!converter) return;
+    write_pdf(*converter, plots / (r.name + ".svg"));
+    r.files.insert(r.files.begin() + (r.files.empty() ? 0 : 1), {"PDF", "plots/" + r.name + ".pdf"});
+}
+
+// Renders each figure to SVG, writes it with its PDF, data and gnuplot source into plots/, and
+// returns the references the report inlines.
+std::vector<FigureRef> emit(const std::vector<Figure>& figs, const std::filesystem::path& plots,
+                            const std::optional<std::filesystem::path>& converter) {
     std::vector<FigureRef> refs;
     for (const auto& f : figs) {
-        FigureRef r{f.name, f.title, f.caption, render_svg(f)};
+        FigureRef r{f.name, f.title, f.caption, render_svg(f),
+                    {{"SVG", "plots/" + f.name + ".svg"}, {"data", "plots/" + f.name + ".dat"},
+                     {"gnuplot source", "plots/" + f.name + ".gp"}}};
         write_file_atomic(plots / (f.name + ".svg"), r.svg);
         write_gnuplot(f, plots);
+        add_pdf(r, plots, converter);
         refs.push_back(std::move(r));
     }
     return refs;
 }
 
 // Every row of the figure registry: per point (with usable results) or once for the case.
-ReportFigures draw_figures(const Case& c, const Collection& col, const std::filesystem::path& plots) {
+ReportFigures draw_figures(const Case& c, const Collection& col, const std::filesystem::path& plots,
+                           const std::optional<std::filesystem::path>& converter) {
     ReportFigures figs;
     for (const FigureRow& row : figure_registry()) {
         auto draw = [&](std::size_t point, const std::string& id) {
             const FigureInput in{c, col, point, plots};
-            FigureGroup g{row.heading, id, row.model ? emit(row.model(in), plots) : std::vector<FigureRef>{}};
+            FigureGroup g{row.heading, id, row.model ? emit(row.model(in), plots, converter) : std::vector<FigureRef>{}};
             if (row.drawn)
-                for (auto& f : row.drawn(in)) g.refs.push_back(std::move(f));
+                for (auto& f : row.drawn(in)) {
+                    add_pdf(f, plots, converter);
+                    g.refs.push_back(std::move(f));
+                }
             if (!g.refs.empty()) figs.groups.push_back(std::move(g));
         };
         if (!row.per_point) {
@@ -135,11 +151,16 @@ int compare(const Case& c, const RunOptions& o) {
         const auto plots = staging / "plots";
         std::filesystem::create_directories(plots);
         const auto metrics = compute_metrics(col);
-        ReportFigures figs = draw_figures(c, col, plots);
+        const auto converter = pdf_converter();
+        if (!converter)
+            fmt::print(stderr, "granlub compare: rsvg-convert not found (Debian package librsvg2-bin): the figures have "
+                               "no PDF\n");
+        ReportFigures figs = draw_figures(c, col, plots, converter);
+        figs.pdf = converter.has_value();
         const RingSliceSection ring = ring_slice_section(c, col);
-        figs.ring_slice = emit(ring.figures, plots);
+        figs.ring_slice = emit(ring.figures, plots, converter);
         const RegimeSection regime = regime_section(c, col);
-        figs.regime = emit(regime.figures, plots);
+        figs.regime = emit(regime.figures, plots, converter);
         const auto vtm = write_paraview(col, c.cell.gap, c.cell.width, staging / "paraview");
         const Report rep = build_report(c, col, metrics, figs, vtm, &ring, &regime);
         write_file_atomic(staging / "metrics.csv", metrics_csv(metrics));

@@ -48,7 +48,7 @@ void add_regime_section(Report& rep, const RegimeSection& s, const std::vector<F
         "collisions carrying the load) above a shear rate of about {} 1/s. This case sweeps {} speeds × {} loads "
         "({}–{} m/s, {}–{} Pa). Each particle point's verdict is decided by its contacts alone (the coordination "
         "number Z and the contact persistence); the inertial-number class stands beside it as a separate "
-        "measure. Steady points only are fitted; transients are drawn hollow and faded.",
+        "measure. Steady points only are fitted.",
         num(kSawyerCriticalShearRate), s.grid.speeds.size(), s.grid.loads.size(), num(s.grid.speeds.front()),
         num(s.grid.speeds.back()), num(s.grid.loads.front()), num(s.grid.loads.back())));
     for (const auto& n : s.notes) rep.text(n);
