@@ -4,9 +4,9 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "collect.h"
 #include "granlub/results/results.h"
-#include "metrics.h"
+#include "results/collect.h"
+#include "statistics/metrics.h"
 #include "synthetic.h"
 
 using namespace granlub;

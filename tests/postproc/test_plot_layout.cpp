@@ -4,7 +4,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "svg_plot.h"
+#include "formats/svg_plot.h"
 
 using namespace granlub::postproc;
 

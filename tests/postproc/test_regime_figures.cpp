@@ -4,10 +4,10 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "mu_of_i.h"
-#include "shear_power_law.h"
-#include "speed_load_grid.h"
-#include "stats.h"
+#include "figures/mu_of_i.h"
+#include "figures/shear_power_law.h"
+#include "statistics/speed_load_grid.h"
+#include "statistics/stats.h"
 
 using namespace granlub;
 using namespace granlub::postproc;

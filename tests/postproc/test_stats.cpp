@@ -3,8 +3,8 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "stats.h"
-#include "svg_plot.h"
+#include "formats/svg_plot.h"
+#include "statistics/stats.h"
 
 using namespace granlub::postproc;
 

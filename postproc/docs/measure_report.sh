@@ -1,0 +1,43 @@
+#!/bin/sh
+# Measures a report as a reader's browser lays it out: headless Chromium opens a copy of index.html
+# with a script that writes the measurements into the page, and --dump-dom prints them.
+# Usage: postproc/docs/measure_report.sh RESULTS/report WIDTH HEIGHT
+# Prints one JSON line: the viewport (clientWidth, innerHeight), the page's scrollWidth and
+# scrollHeight (folds as the report leaves them), the summary's top and bottom (px from the top;
+# -1 without a summary), images that did not load, and how often the legend's note appears.
+# Runs as root (CI) with --no-sandbox and a throw-away profile. Needs chromium.
+set -eu
+report=$(cd "$1" && pwd)
+width=$2
+height=$3
+work=$(mktemp -d)
+page="$report/.measure-$$.html"
+trap 'rm -rf "$work" "$page"' EXIT
+script='<script>
+(function () {
+  var d = document.documentElement, s = document.getElementById("s-summary"), top = -1, bottom = -1;
+  if (s) {
+    top = s.getBoundingClientRect().top + window.scrollY;
+    bottom = s.getBoundingClientRect().bottom + window.scrollY;
+    for (var e = s.nextElementSibling; e && e.tagName !== "H2"; e = e.nextElementSibling)
+      bottom = Math.max(bottom, e.getBoundingClientRect().bottom + window.scrollY);
+  }
+  var broken = 0, imgs = document.images;
+  for (var i = 0; i < imgs.length; ++i) if (!imgs[i].complete || imgs[i].naturalWidth === 0) ++broken;
+  var legend = document.body.textContent.split("Hollow faded").length - 1;
+  var m = {clientWidth: d.clientWidth, innerHeight: window.innerHeight, scrollWidth: d.scrollWidth,
+           scrollHeight: d.scrollHeight, summaryTop: Math.round(top), summaryBottom: Math.round(bottom),
+           images: imgs.length, brokenImages: broken, legendNotes: legend};
+  var p = document.createElement("pre");
+  p.id = "granlub-measure";
+  p.textContent = "MEASURE " + JSON.stringify(m) + " END";
+  document.body.appendChild(p);
+})();
+</script>'
+# The script goes in just before </body>, so it runs once the page is laid out.
+awk -v s="$script" '{ if ($0 == "</body>") print s; print }' "$report/index.html" > "$page"
+DBUS_SESSION_BUS_ADDRESS=disabled: chromium --headless --no-sandbox --disable-gpu --no-first-run --disable-extensions \
+--user-data-dir="$work/profile" --window-size="$width,$height" --dump-dom \
+  "file://$page" > "$work/dom.html" 2> "$work/chromium.log" || { cat "$work/chromium.log" >&2; exit 1; }
+sed -n 's/.*MEASURE \(.*\) END.*/\1/p' "$work/dom.html" | head -n 1 | grep . ||
+  { echo "measure_report.sh: no measurement in chromium's page (see its log below)" >&2; tail -n 5 "$work/chromium.log" >&2; exit 1; }

@@ -1,0 +1,162 @@
+// Cross-section heat maps (see section_map.h).
+#include "figures/section_map.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "figures/figures.h"
+#include "formats/svg_plot.h"
+#include "formats/text.h"
+#include "granlub/error.h"
+#include "granlub/particles/cross_section.h"
+
+namespace granlub::postproc {
+
+namespace {
+
+// The viridis colour map (van der Walt & Smith 2015, matplotlib), at five stops, interpolated:
+// perceptually uniform and readable in greyscale and by colour-blind readers.
+std::string colour(double t) {
+    static constexpr std::array<std::array<double, 3>, 5> stops{{{68, 1, 84}, {59, 82, 139}, {33, 145, 140},
+                                                                  {94, 201, 98}, {253, 231, 37}}};
+    t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * 4.0;
+    const auto k = std::min<std::size_t>(3, static_cast<std::size_t>(t));
+    const double f = t - static_cast<double>(k);
+    auto c = [&](std::size_t i) { return static_cast<int>(std::lround(stops[k][i] + f * (stops[k + 1][i] - stops[k][i]))); };
+    return fmt::format("#{:02x}{:02x}{:02x}", c(0), c(1), c(2));
+}
+
+}  // namespace
+
+std::optional<SectionMap> read_section(const Run& r) {
+    const auto file = r.dir / kSectionFile;
+    if (!std::filesystem::exists(file)) return std::nullopt;
+    const Profile t = read_table(file);
+    SectionMap m;
+    m.y = t.column("y_over_H"), m.z = t.column("z_over_W"), m.nu = t.column("solid_fraction"), m.u = t.column("u_over_U");
+    m.ny = std::set<double>(m.y.begin(), m.y.end()).size();
+    m.nz = std::set<double>(m.z.begin(), m.z.end()).size();
+    if (m.ny * m.nz != t.rows() || m.ny < 2 || m.nz < 2)
+        throw Error(fmt::format("{}: {} rows are not a grid of {} y x {} z cells", file.string(), t.rows(), m.ny, m.nz));
+    return m;
+}
+
+std::string render_section_svg(const SectionMap& m, const std::vector<double>& values, const std::string& title,
+                               const std::string& bar_label, const std::string& stamp) {
+    constexpr double W = 540, H = 380, x0 = 70, x1 = 430, y0 = 40, y1 = 320, bx0 = 455, bx1 = 475;
+    double lo = 0, hi = 0;
+    for (double v : values) hi = std::max(hi, v), lo = std::min(lo, v);
+    if (!(hi > lo)) hi = lo + 1;
+    const std::vector<Tick> bar = linear_ticks(lo, hi);
+    const double cw = (x1 - x0) / static_cast<double>(m.nz), ch = (y1 - y0) / static_cast<double>(m.ny);
+    std::string out = fmt::format(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
+        "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"13\">\n<title>{2}</title>\n"
+        "<rect width=\"{0}\" height=\"{1}\" fill=\"#ffffff\"/>\n",
+        W, H, xml_escape(title));
+    // cells: row k (y) from the floor up, column (z) from the outer wall (z/W = -1/2) to the right
+    for (std::size_t c = 0; c < values.size(); ++c) {
+        const auto k = static_cast<std::size_t>(std::floor(m.y[c] * static_cast<double>(m.ny)));
+        const auto j = static_cast<std::size_t>(std::floor((m.z[c] + 0.5) * static_cast<double>(m.nz)));
+        out += fmt::format("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"{}/>\n",
+                           x0 + cw * static_cast<double>(j), y1 - ch * static_cast<double>(k + 1), cw + 0.3, ch + 0.3,
+                           colour((values[c] - lo) / (hi - lo)), !stamp.empty() ? " fill-opacity=\"0.45\"" : "");
+    }
+    out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#000\"/>\n", x0, y0,
+                       x1 - x0, y1 - y0);
+    // axes: z/W along x, y/H up
+    for (double t : {-0.5, -0.25, 0.0, 0.25, 0.5}) {
+        const double x = x0 + (t + 0.5) * (x1 - x0);
+        out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" stroke=\"#000\"/>"
+                           "<text x=\"{0:.1f}\" y=\"{3}\" text-anchor=\"middle\">{4}</text>\n",
+                           x, y1, y1 + 5, y1 + 19, num(t, 3));
+    }
+    for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+        const double y = y1 - t * (y1 - y0);
+        out += fmt::format("<line x1=\"{1}\" y1=\"{0:.1f}\" x2=\"{2}\" y2=\"{0:.1f}\" stroke=\"#000\"/>"
+                           "<text x=\"{3}\" y=\"{4:.1f}\" text-anchor=\"end\">{5}</text>\n",
+                           y, x0 - 5, x0, x0 - 8, y + 4, num(t, 3));
+    }
+    out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"14\">z/W across the width "
+                       "(−½: outer wall)</text>\n",
+                       0.5 * (x0 + x1), y1 + 40);
+    out += fmt::format("<text transform=\"translate(22,{}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">"
+                       "y/H across the gap (0: moving floor)</text>\n",
+                       0.5 * (y0 + y1));
+    out += fmt::format("<text x=\"{}\" y=\"24\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
+                       0.5 * W, xml_escape(title));
+    // colour bar with its ticks
+    constexpr int kSteps = 32;
+    for (int s = 0; s < kSteps; ++s) {
+        const double t0 = static_cast<double>(s) / kSteps;
+        out += fmt::format("<rect x=\"{}\" y=\"{:.2f}\" width=\"{}\" height=\"{:.2f}\" fill=\"{}\"/>\n", bx0,
+                           y1 - (t0 + 1.0 / kSteps) * (y1 - y0), bx1 - bx0, (y1 - y0) / kSteps + 0.3,
+                           colour(t0 + 0.5 / kSteps));
+    }
+    out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#000\"/>\n", bx0, y0,
+                       bx1 - bx0, y1 - y0);
+    for (const Tick& t : bar) {
+        if (t.label.empty() || t.value < lo || t.value > hi) continue;
+        const double y = y1 - (t.value - lo) / (hi - lo) * (y1 - y0);
+        out += fmt::format("<line x1=\"{0}\" y1=\"{1:.1f}\" x2=\"{2}\" y2=\"{1:.1f}\" stroke=\"#000\"/>"
+                           "<text x=\"{3}\" y=\"{4:.1f}\">{5}</text>\n",
+                           bx1, y, bx1 + 4, bx1 + 7, y + 4, xml_escape(t.label));
+    }
+    out += fmt::format("<text transform=\"translate({},{}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">{}"
+                       "</text>\n",
+                       W - 12, 0.5 * (y0 + y1), xml_escape(bar_label));
+    if (!stamp.empty())
+        out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"22\" fill=\"#b00000\" "
+                           "font-weight=\"bold\">{}</text>\n",
+                           0.5 * (x0 + x1), 0.5 * (y0 + y1), xml_escape(stamp));
+    out += "</svg>\n";
+    return out;
+}
+
+// What a map of a run that is not steady is stamped with: its state, named as what it is.
+std::string section_stamp(const Run& r) {
+    if (r.steady()) return "";
+    const std::string state = r.state_name();
+    if (state == "transient") return "TRANSIENT — not a result";
+    if (state == "dt-unconverged") return "DT-UNCONVERGED — Δt changes it";
+    return "STATUS UNKNOWN — not checked";
+}
+
+std::vector<FigureRef> section_figures(const Collection& col, std::size_t i, const std::filesystem::path& plots) {
+    std::vector<FigureRef> refs;
+    const OperatingPoint& p = *col.points[i];
+    for (const Run* r : col.usable(p.id)) {
+        const auto m = read_section(*r);
+        if (!m) continue;
+        const bool unsteady = !r->steady();
+        const std::string state = unsteady ? fmt::format(" ({})", r->state_name()) : "";
+        const std::string base = fmt::format("section_{}_{}", r->solver, point_slug(p));
+        struct Q {
+            const char* key;
+            const std::vector<double>& v;
+            const char* label;
+            const char* bar;
+        };
+        for (const Q& q : {Q{"nu", m->nu, "solid fraction ν", "ν"}, Q{"u", m->u, "streamwise velocity u/U", "u/U"}}) {
+            const std::string name = base + "_" + q.key;
+            const std::string title = fmt::format("{} {}: {}{}", r->solver, p.id, q.label, state);
+            FigureRef f{name, title,
+                        fmt::format("{} over the trough's cross-section (flow out of the page), averaged along the flow "
+                                    "and over the steady window; cells of about one grain diameter{}.",
+                                    q.label, unsteady ? "; the run is " + r->state_name() : std::string()),
+                        render_section_svg(*m, q.v, title, q.bar, section_stamp(*r)),
+                        {{"SVG", "plots/" + name + ".svg"}, {"data (CSV)", "plots/" + base + ".csv"}}};
+            write_file_atomic(plots / (name + ".svg"), f.svg);
+            std::filesystem::copy_file(r->dir / kSectionFile, plots / (base + ".csv"),
+                                       std::filesystem::copy_options::overwrite_existing);
+            refs.push_back(std::move(f));
+        }
+    }
+    return refs;
+}
+
+}  // namespace granlub::postproc

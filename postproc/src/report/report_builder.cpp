@@ -1,0 +1,224 @@
+#include "report/report_builder.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "figures/registry.h"
+#include "formats/text.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_status.h"
+#include "report/regime_section.h"
+#include "report/summary.h"
+#include "report/ring_slice.h"
+#include "tables/differences.h"
+#include "tables/exponents.h"
+#include "tables/provenance.h"
+#include "tables/run_tables.h"
+
+namespace granlub::postproc {
+namespace {
+
+// Title, case, solvers compared and missing.
+void opening(Report& rep, const Case& c, const Collection& col) {
+    rep.title = fmt::format("Cross-code comparison: {}", c.title.empty() ? c.name : c.title);
+    std::vector<std::string> with_results, without;
+    for (const auto& s : col.solvers) (col.any_usable(s) ? with_results : without).push_back(s);
+    for (const auto& s : col.missing_solvers) without.push_back(s);
+    rep.text(fmt::format("Case {} ({}), {} operating point(s); solvers compared: {}{}. Written {} by granlub {}.",
+                         c.name, c.file.string(), col.points.size(),
+                         with_results.empty() ? "none" : list_text(with_results),
+                         without.empty() ? "" : fmt::format("; missing (no usable results): {}", list_text(without)),
+                         utc_now(), version()));
+}
+
+// The answer first (summary.h): who agrees on what, the largest disagreement, what is not an answer.
+void summary_section(Report& rep, const Collection& col) {
+    rep.heading("Summary");
+    const CaseSummary s = case_summary(col);
+    std::vector<std::string> with;
+    for (const auto& solver : col.solvers)
+        if (col.any_usable(solver)) with.push_back(solver);
+    if (s.all_agree) {
+        rep.text(fmt::format("All {} solvers ({}) agree within their combined errors on every quantity at every point.",
+                             with.size(), list_text(with)));
+        return;
+    }
+    rep.text("Who agrees within the combined standard errors (|z| ≤ 2), per quantity and point; the others' "
+             "difference from the first of them (relative; slips in units of U), steady results only.");
+    rep.table(s.table);
+    for (const auto& t : s.sentences) rep.text(t);
+}
+
+// The one legend: what every figure's markers, lines and bands mean, the statuses and the table
+// cells; the captions say only what is particular to their figure.
+void how_to_read(Report& rep) {
+    rep.heading("How to read this report");
+    rep.text("Figures: one colour, dash and marker per solver, the same in every figure (Okabe–Ito colours, "
+             "distinguishable in greyscale). y/H = 0 is the moving wall (speed U), y/H = 1 the stationary wall; "
+             "profiles are dimensionless: u/U, ν/ν_max with each model's own ν_max from its summary (the automaton's "
+             "lattice occupancy has ν_max = 1), T/U². Shaded bands and error bars are ±1 standard error of the "
+             "statistical solvers (particle solvers, automaton); the continuum is deterministic and has none. "
+             "Hollow faded markers and dotted lines are results that are NOT steady (the legend entry says which: "
+             "“dem: transient”, “dem: dt-unconverged”); they are shown for information only and left out of every fit "
+             "and comparison. Under each figure: its SVG, PDF, data and gnuplot source.");
+    rep.text("Statuses: steady: a steady-state result, compared. transient: the run ended before a steady state "
+             "was detected. dt-unconverged: halving the time step changed the answer. status unknown: the summary "
+             "does not say (written before granlub recorded it). These three are greyed and italic in tables and "
+             "hollow in figures, never fitted, compared or bold. failed: the solver failed on the point. no answer: "
+             "the solver's model cannot answer the point's question (not a failure). missing: no result. stale: "
+             "computed for other inputs (rerun the solver). corrupt: cannot be read or fails the checks.");
+    rep.text("Tables: bold = a significant difference, more than twice the combined standard error (|z| > 2); "
+             "between deterministic results every difference is a model difference and has no z. [Δt x]: the "
+             "value's time-step error estimate. “(lattice)”: the automaton's stresses are lattice analogues, not "
+             "comparable in size. Wall stresses are fitted against U as σ = c Uⁿ over a solver's steady points (at "
+             "least three) that differ only in speed: rapid (Bagnold) flow at fixed solid fraction gives n = 2, "
+             "quasi-static flow n → 0.");
+}
+
+// What was found: the states, their reasons, the key numbers, what each solver's numbers mean and
+// how ordered the particle packings are.
+void results_found(Report& rep, const Case& c, const Collection& col) {
+    rep.heading("Results found");
+    rep.table(status_table(col));
+    if (Table reasons = state_reasons(col); !reasons.rows.empty()) rep.table(std::move(reasons));
+    rep.heading("Key numbers", 3);
+    rep.table(key_numbers(c, col));
+    if (any_dt_checked(col))
+        rep.text(fmt::format("[Δt x]: the value comes from the run at half the time step, checked against a run at the "
+                             "full step; x = |value(Δt) − value(Δt/2)| is its time-step error estimate (the methods "
+                             "converge at first order). A point whose mean solid fraction moves by more than {} or "
+                             "whose wall shear stress moves by more than {} % and {} standard errors is "
+                             "dt-unconverged, and says so above.",
+                             num(kDtMaxSolidFractionChange), num(100 * kDtMaxRelativeStressChange),
+                             num(kDtMaxStressZ)));
+    rep.fold("What each solver's numbers mean: body forces, wall stresses, contacts, run length");
+    rep.table(scope_table(c, col));
+    rep.end_fold();
+    if (Table order = order_table(col); !order.rows.empty()) {
+        rep.fold("How ordered the particle packings are: q6, Q6, layer order, coordination, regime");
+        rep.table(std::move(order));
+        rep.text("q6: the mean local bond-orientational order of the grains (Steinhardt, Nelson & Ronchetti 1983; "
+                 "neighbours within 1.2 (r_i + r_j), grains with at least 4): 0.575 for FCC, 0.485 for HCP, about 0.35–0.45 "
+                 "for a dense disordered packing. Q6: the same over all bonds at once, near 0 without long-range "
+                 "order. Layer order Λ: how sharply the grain centres stack in layers parallel to the walls (the peak of "
+                 "|⟨exp(2πi y/λ)⟩| over λ = 0.6–1.0 d, grains a diameter clear of the walls): 1 for flat layers, "
+                 "small without. Layering of ν(y): the relative spread std(ν)/mean(ν) of the solid-fraction profile "
+                 "the report draws, half a diameter from the walls; it smears each grain over its diameter and also "
+                 "shows the layering any flat wall imposes. The continuum describes a disordered "
+                 "fluid: where the particle packings are ordered, its profiles are not expected to match.");
+        rep.end_fold();
+    }
+}
+
+
+// The figures the registry puts under `heading` (figures/registry.h): per point in folds, the first
+// point unfolded, or once for the case.
+void figure_section(Report& rep, const Collection& col, const ReportFigures& figs, const std::string& heading) {
+    rep.heading(heading);
+    for (const OperatingPoint* p : col.points) {
+        const auto refs = figs.of(heading, p->id);
+        if (refs.empty()) continue;
+        rep.fold(fmt::format("Point {}", p->id), p == col.points.front());
+        rep.figures(refs);
+        rep.end_fold();
+    }
+    if (auto refs = figs.of(heading); !refs.empty()) rep.figures(std::move(refs));
+}
+
+void exponents(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
+    Table ex = exponent_table(col, metrics);
+    if (ex.rows.empty())
+        rep.text(fmt::format("No stress–speed exponent: it needs at least {} steady results from the same solver at "
+                             "as many speeds, with everything else equal.",
+                             kMinFitPoints));
+    else
+        rep.table(std::move(ex));
+}
+
+void ring_section(Report& rep, const RingSliceSection& ring_s, const ReportFigures& figs) {
+    const RingSliceSection* ring = &ring_s;
+    if (!ring->slice_case.empty()) {
+        rep.heading("The whole ring against its slice");
+        rep.text(fmt::format(
+            "granlub dem ran this case as the whole ring ([cell] geometry = \"annulus\": turning floor and side "
+            "walls, the curvature instead of a body force); [report] slice_case = \"{}\" ran the same points as a "
+            "periodic slice with the centripetal body force standing in for the curvature. Both are written in the "
+            "slice's frame (the ring by an equal-area map: z/W = −1/2 is the outer wall), so they compare quantity by "
+            "quantity. A difference is significant when it exceeds twice the combined standard error (|z| > 2, "
+            "shown bold). The standard errors are each run's own (block averages over one seed's steady window); runs "
+            "with other seeds can scatter by more than that (they do in a dense, layered bed), so a bold z says that "
+            "these two runs differ, and whether the geometries do needs more seeds (--seed). The side walls' shear "
+            "stresses are the ring's torques on the cylinders over their areas and radii.",
+            ring->slice_case));
+        for (const auto& n : ring->notes) rep.text(n);
+        if (!ring->table.rows.empty()) rep.table(ring->table);
+        rep.figures(figs.ring_slice);
+    }
+}
+
+void differences(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
+    rep.heading("Differences between solvers");
+    if (std::count_if(col.points.begin(), col.points.end(), [&](const OperatingPoint* p) { return col.usable(p->id).size() >= 2; }) == 0)
+        rep.text("No point has results from two solvers: nothing to compare yet.");
+    rep.text("Every number is also in metrics.csv (one row per pair, point and quantity).");
+    difference_tables(rep, col, metrics);
+}
+
+void files(Report& rep, const std::vector<std::filesystem::path>& paraview_files, bool pdf) {
+    rep.heading("Files");
+    std::vector<std::pair<std::string, std::string>> files = {
+        {"metrics.csv: every metric, one row per pair, point and quantity", "metrics.csv"},
+        {"report.md: this report in Markdown", "report.md"},
+        {pdf ? "plots/: every figure as SVG and PDF, with its data (.dat; the cross-sections .csv) and gnuplot script (.gp)"
+             : "plots/: every figure as SVG, with its data (.dat; the cross-sections .csv) and gnuplot script (.gp); no "
+               "PDF: rsvg-convert (librsvg2-bin) was not found",
+         "plots/"}};
+    for (const auto& f : paraview_files)
+        files.emplace_back(fmt::format("paraview/{}: profiles of every solver, one block per solver (ParaView)",
+                                       f.filename().string()),
+                           "paraview/" + f.filename().string());
+    rep.links(std::move(files));
+}
+
+}  // namespace
+
+std::vector<FigureRef> ReportFigures::of(const std::string& heading, const std::string& point) const {
+    std::vector<FigureRef> refs;
+    for (const auto& g : groups)
+        if (g.heading == heading && g.point == point) refs.insert(refs.end(), g.refs.begin(), g.refs.end());
+    return refs;
+}
+
+Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
+                    const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
+                    const RingSliceSection* ring, const RegimeSection* regime) {
+    Report rep;
+    opening(rep, c, col);
+    summary_section(rep, col);
+    how_to_read(rep);
+    results_found(rep, c, col);
+    // The registry's sections in its order; the stress exponents after the stress figures, the
+    // regimes after them, the ring after the figures.
+    for (const auto& heading : figure_headings()) {
+        figure_section(rep, col, figs, heading);
+        if (heading == kStressHeading) {
+            exponents(rep, col, metrics);
+            if (regime) add_regime_section(rep, *regime, figs.regime);
+        }
+    }
+    if (ring) ring_section(rep, *ring, figs);
+    differences(rep, col, metrics);
+    rep.heading("Provenance of every run");
+    rep.fold("Versions, seeds and hashes of every run; each solver's settings");
+    provenance_section(rep, col);
+    rep.end_fold();
+    files(rep, paraview_files, figs.pdf);
+    rep.heading("The case");
+    rep.fold("The case as granlub check resolves it (defaults marked)");
+    rep.pre(describe(c));
+    rep.end_fold();
+    return rep;
+}
+
+}  // namespace granlub::postproc

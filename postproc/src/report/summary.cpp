@@ -1,0 +1,233 @@
+#include "report/summary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "formats/text.h"
+#include "granlub/statistics/flow_regime.h"
+#include "results/scope.h"
+#include "statistics/stats.h"
+
+namespace granlub::postproc {
+namespace {
+
+// A quantity the summary asks about.
+struct Asked {
+    const char* key;
+    const char* label;
+    bool stress;    // lattice analogues for the automaton
+    bool absolute;  // a difference's size as it is (slips, already / U), else relative to the reference
+};
+constexpr Asked kQuantities[] = {
+    {"nu_bar_over_numax", "ν̄/ν_max", false, false},          {"gap", "gap", false, false},
+    {"shear_stress_bottom", "τ moving wall", true, false},     {"shear_stress_top", "τ stationary wall", true, false},
+    {"slip_bottom_over_U", "slip moving wall / U", false, true}, {"slip_top_over_U", "slip stationary wall / U", false, true}};
+
+struct Answer {
+    const Run* run;
+    double v, se, dt;  // value, standard error and time-step error (0 when none)
+};
+
+bool particle(const Run& r) { return r.summary->run.is_object() && r.summary->run.contains("simulated_time_s"); }
+std::string run_text(const Run& r, const char* key) {
+    const auto& j = r.summary->run;
+    return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
+}
+
+bool agree(const Answer& a, const Answer& b) {
+    const double se = std::hypot(a.se, b.se), d = std::abs(a.v - b.v);
+    return se > 0 ? d <= 2 * se : d <= 1e-12 * std::max(std::abs(a.v), std::abs(b.v));
+}
+
+// The largest set of answers that agree pairwise (the earlier solvers on a tie).
+std::vector<std::size_t> agreeing(const std::vector<Answer>& a) {
+    std::vector<std::size_t> best;
+    for (unsigned mask = 1; mask < (1u << a.size()); ++mask) {
+        std::vector<std::size_t> set;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (mask & (1u << i)) set.push_back(i);
+        bool ok = set.size() > best.size();
+        for (std::size_t i = 0; ok && i < set.size(); ++i)
+            for (std::size_t j = i + 1; ok && j < set.size(); ++j) ok = agree(a[set[i]], a[set[j]]);
+        if (ok) best = set;
+    }
+    return best;
+}
+
+// What the report knows about a difference b − a beyond the combined standard errors.
+std::string known_cause(const Asked& q, const Answer& a, const Answer& b) {
+    const double d = std::abs(b.v - a.v), rel = a.v != 0 ? d / std::abs(a.v) : 0;
+    if ((a.dt > 0 || b.dt > 0) && d <= 2 * std::sqrt(a.se * a.se + b.se * b.se + a.dt * a.dt + b.dt * b.dt))
+        return "within the time-step error ([Δt] in the key numbers)";
+    const bool impulse_a = run_text(*a.run, "model") == "impulse", impulse_b = run_text(*b.run, "model") == "impulse";
+    if (q.stress && particle(*a.run) && particle(*b.run) && impulse_a != impulse_b)
+        return rel <= 0.15 ? "the size of the impulse operator's time-step error (about 10 % at the default step; "
+                             "What each solver's numbers mean)"
+                           : "larger than the impulse operator's time-step error (about 10 %): no known cause";
+    if (particle(*a.run) != particle(*b.run))
+        return "a model difference: kinetic theory or lattice against grains (What each solver's numbers mean)";
+    return "no known cause";
+}
+
+struct Disagreement {
+    double size = 0;
+    std::string text;
+};
+
+std::string size_text(const Asked& q, const Answer& ref, const Answer& b) {
+    const double d = b.v - ref.v;
+    const double se = std::hypot(ref.se, b.se);
+    const std::string z = se > 0 ? fmt::format(" (z = {:.1f})", d / se) : "";
+    if (q.absolute || ref.v == 0) return fmt::format("{:+.3g}{}", d, z);
+    return fmt::format("{:+.0f} %{}", 100 * d / std::abs(ref.v), z);
+}
+
+// One cell: who agrees, and each other solver's difference from the first of them.
+Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::string& point, Disagreement& largest) {
+    if (a.empty()) return {"—", ""};
+    if (a.size() == 1) return {"only " + a[0].run->solver, ""};
+    const auto group = agreeing(a);
+    std::string names;
+    for (std::size_t i : group) names += (names.empty() ? "" : " = ") + a[i].run->solver;
+    if (group.size() == a.size()) return {names + " agree", "ok"};
+    const Answer& ref = a[group.front()];
+    std::string text = group.size() > 1 ? names + " agree" : "";
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::find(group.begin(), group.end(), i) != group.end()) continue;
+        text += fmt::format("{}{} {}", text.empty() ? "" : "; ", a[i].run->solver, size_text(q, ref, a[i]));
+        const double size = q.absolute ? std::abs(a[i].v - ref.v) : std::abs(a[i].v - ref.v) / std::abs(ref.v);
+        if (!q.absolute && size > largest.size)
+            largest = {size, fmt::format("Largest disagreement: {} at {}, {} − {} = {} ({} ± {}): {}.", q.label, point,
+                                         a[i].run->solver, ref.run->solver, size_text(q, ref, a[i]), num(a[i].v - ref.v, 3),
+                                         num(std::hypot(ref.se, a[i].se), 2), known_cause(q, ref, a[i]))};
+    }
+    if (group.size() == 1) text += " against " + ref.run->solver;
+    return {text, ""};
+}
+
+// Why a state's numbers are not answers, in a few words (Results found gives each run's reason).
+const char* why_not(const std::string& state) {
+    static const std::map<std::string, const char*> why = {
+        {"transient", "the run ended before a steady state; shown greyed and hollow"},
+        {"dt-unconverged", "halving the time step changed the answer; shown greyed and hollow"},
+        {"status unknown", "the summary does not say whether the run is steady"},
+        {"failed", "the solver failed"},
+        {"no answer", "the solver's model cannot answer the point"},
+        {"stale", "computed for other inputs: rerun the solver"},
+        {"corrupt", "the result cannot be read"}};
+    const auto it = why.find(state);
+    return it == why.end() ? "" : it->second;
+}
+
+// Which numbers are not answers and why: runs that are not steady results, and the automaton's
+// lattice stresses (and its fixed fill under load control).
+std::string not_answers(const Collection& col) {
+    std::vector<std::pair<std::string, std::vector<std::string>>> by;  // "solver: state" -> points
+    for (const auto& s : col.solvers)
+        for (const OperatingPoint* p : col.points) {
+            const Run& r = col.run(s, p->id);
+            if (r.steady() || (r.status.state == ResultState::Missing && !r.failure)) continue;
+            const std::string key = fmt::format("{}: {}", s, r.state_name());
+            auto it = std::find_if(by.begin(), by.end(), [&](const auto& b) { return b.first == key; });
+            if (it == by.end()) it = by.insert(by.end(), {key, {}});
+            it->second.push_back(p->id);
+        }
+    std::string out;
+    for (const auto& [key, points] : by) {
+        const std::string state = key.substr(key.find(": ") + 2);
+        const std::string where = points.size() == col.points.size() ? "every point" : list_text(points);
+        out += fmt::format("{}{} at {} ({})", out.empty() ? "" : "; ", key, where, why_not(state));
+    }
+    for (const auto& s : col.solvers) {
+        if (!lattice_stresses(s) || !col.any_usable(s)) continue;
+        const bool load = std::any_of(col.points.begin(), col.points.end(),
+                                      [](const OperatingPoint* p) { return p->control == Control::Load; });
+        out += fmt::format("{}{}'s wall stresses (lattice analogues, ∝ U² by construction){}", out.empty() ? "" : "; ", s,
+                           load ? " and its ν̄ (the lattice's fixed fill under load control)" : "");
+    }
+    return out.empty() ? "" : "Not answers: " + out + ".";
+}
+
+}  // namespace
+
+std::optional<RegimeReading> regime_reading(const Collection& col, const std::string& point) {
+    struct Engine {
+        std::string solver;
+        FlowVerdict v;
+        std::optional<double> z;
+    };
+    std::vector<Engine> e;
+    for (const Run* r : col.usable(point)) {
+        const auto& run = r->summary->run;
+        if (!r->steady() || !run.is_object() || !run.contains("flow_regime") || !run["flow_regime"].contains("regime"))
+            continue;
+        const auto& fr = run["flow_regime"];
+        const auto z = fr.contains("coordination_number") && fr["coordination_number"].is_number()
+                           ? std::optional(fr["coordination_number"].get<double>())
+                           : std::nullopt;
+        e.push_back({r->solver, read_flow_verdict(fr), z});
+    }
+    if (e.empty()) return std::nullopt;
+    auto z_text = [](const Engine& x) { return x.z ? fmt::format("Z = {}", num(*x.z, 3)) : std::string("Z unknown"); };
+    bool above = false, below = false, same = true;
+    for (const auto& x : e) {
+        if (x.z) (*x.z >= kEnduringMinCoordination ? above : below) = true;
+        same = same && x.v.lubrication == e.front().v.lubrication;
+    }
+    std::string names;
+    for (const auto& x : e) names += (names.empty() ? "" : ", ") + x.solver;
+    if (same && e.front().v.lubrication != Lubrication::Undetermined)
+        return RegimeReading{fmt::format("{} ({})", to_string(e.front().v.lubrication), names), false};
+    std::string each;
+    for (const auto& x : e) each += fmt::format("{}{} {} ({})", each.empty() ? "" : ", ", x.solver, z_text(x),
+                                                to_string(x.v.lubrication));
+    if (above && below)
+        return RegimeReading{fmt::format("at the transition (Z = {} decides): {}", num(kEnduringMinCoordination), each), true};
+    return RegimeReading{"uncertain: " + each, true};
+}
+
+CaseSummary case_summary(const Collection& col) {
+    CaseSummary s;
+    s.table.header = {"quantity"};
+    for (const OperatingPoint* p : col.points) s.table.header.push_back(p->id);
+    Disagreement largest;
+    bool all = true;
+    for (const Asked& q : kQuantities) {
+        std::vector<Cell> row{{q.label, ""}};
+        bool any = false;
+        for (const OperatingPoint* p : col.points) {
+            std::vector<Answer> a;
+            for (const Run* r : col.usable(p->id)) {
+                const auto v = r->scalar(q.key);
+                const bool fixed_fill = lattice_stresses(r->solver) && p->control == Control::Load;
+                if (!v || !r->steady() || (q.stress && lattice_stresses(r->solver)) ||
+                    (fixed_fill && std::string(q.key) == "nu_bar_over_numax"))
+                    continue;
+                a.push_back({r, *v, r->scalar_stderr(q.key).value_or(0), r->scalar_dt_error(q.key).value_or(0)});
+            }
+            any = any || !a.empty();
+            row.push_back(quantity_cell(q, a, p->id, largest));
+            all = all && (a.size() < 2 || row.back().cls == "ok");
+        }
+        if (any) s.table.rows.push_back(std::move(row));
+    }
+    std::vector<Cell> regime{{"regime", ""}};
+    bool any_regime = false;
+    for (const OperatingPoint* p : col.points) {
+        const auto r = regime_reading(col, p->id);
+        any_regime = any_regime || r;
+        regime.push_back(r ? Cell{r->text, r->uncertain ? "uncertain" : ""} : Cell{"—", ""});
+        all = all && !(r && r->uncertain);
+    }
+    if (any_regime) s.table.rows.push_back(std::move(regime));
+    if (!largest.text.empty()) s.sentences.push_back(largest.text);
+    s.sentences.push_back(not_answers(col));
+    s.all_agree = all && s.sentences.back().empty();
+    if (s.sentences.back().empty()) s.sentences.pop_back();
+    return s;
+}
+
+}  // namespace granlub::postproc

@@ -1,0 +1,219 @@
+#include "results/scope.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "formats/text.h"
+
+namespace granlub::postproc {
+namespace {
+
+std::optional<double> run_number(const Run& r, const char* key) {
+    const auto& run = r.summary->run;
+    if (run.is_object() && run.contains(key) && run[key].is_number()) return run[key].get<double>();
+    return std::nullopt;
+}
+
+std::string run_text(const Run& r, const char* key) {
+    const auto& run = r.summary->run;
+    return run.is_object() && run.contains(key) && run[key].is_string() ? run[key].get<std::string>() : "";
+}
+
+// How the run decided its steady window (run.steady_state of granlub/statistics/steady_state.h), or "".
+std::string steady_rule(const Run& r) {
+    const auto& run = r.summary->run;
+    if (!run.is_object() || !run.contains("steady_state") || !run["steady_state"].is_object()) return "";
+    const auto& s = run["steady_state"];
+    const auto allowed = s.value("allowed_relative_drift", nlohmann::json::object());
+    auto pct = [&](const char* k) {
+        return allowed.contains(k) && allowed[k].is_number() ? num(100.0 * allowed[k].get<double>(), 2) + " %" : std::string("?");
+    };
+    std::string rule = fmt::format("it starts where MSER-5 ends the initial transient and moves on until the two halves "
+                                   "of the window agree within {} combined standard errors or within {} (wall "
+                                   "stresses) and {} (gap)",
+                                   num(s.value("sigmas", 3.0), 2), pct("wall_stress"), pct("gap"));
+    if (s.contains("resolution") && s["resolution"].is_number())
+        rule += fmt::format("; a window too noisy to see a {} drift is not called steady",
+                            num(100.0 * s["resolution"].get<double>(), 2) + " %");
+    return rule;
+}
+
+// "0.1 s" or "0.0015–0.1 s" over the usable runs; counts (digits 0) as whole numbers.
+std::string range_text(const std::vector<double>& v, const char* unit, int digits = 3) {
+    if (v.empty()) return "";
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    auto f = [&](double x) { return digits == 0 ? fmt::format("{:.0f}", x) : num(x, digits); };
+    return f(*lo) == f(*hi) ? fmt::format("{} {}", f(*lo), unit) : fmt::format("{}–{} {}", f(*lo), f(*hi), unit);
+}
+
+// One wall as the solver had it: a particle solver's plane or bumps (run.walls), else R.
+std::string wall_text(const Run& r, bool bottom, bool particles) {
+    const char* side = bottom ? "bottom" : "top";
+    const Wall& w = bottom ? r.point->bottom : r.point->top;
+    const auto& run = r.summary->run;
+    if (!particles || !run.is_object() || !run.contains("walls") || !run["walls"].contains(side))
+        return fmt::format("{}: R = {}", side, num(w.roughness));
+    const auto& j = run["walls"][side];
+    if (j.value("surface", std::string()) != "bumps")
+        return fmt::format("{}: a frictional plane (μ_w = {}; R does not apply)", side, num(w.friction));
+    return fmt::format("{}: bumps of {} mm, {} mm apart (R = {} built, θ = {}°)", side,
+                       num(1e3 * j.value("bump_diameter_m", 0.0), 3), num(1e3 * j.value("bump_spacing_m", 0.0), 3),
+                       num(j.value("roughness_built", 0.0), 3), num(j.value("bump_angle_deg", 0.0), 3));
+}
+
+// The grains' sizes and both walls; the continuum and the automaton use the mean diameter.
+std::string grains_and_walls(const Case& c, const Run& first, bool particles) {
+    const GrainSizes g = c.grains.sizes();
+    std::string grains = !particles ? fmt::format("d = {} mm (the mean diameter)", num(1e3 * g.mean, 3))
+                         : g.equal() ? fmt::format("equal grains, d = {} mm", num(1e3 * g.mean, 3))
+                                     : fmt::format("d = {} mm ± {} % (uniform, {}–{} mm)", num(1e3 * g.mean, 3),
+                                                   num(100 * g.spread, 3), num(1e3 * g.min(), 3), num(1e3 * g.max(), 3));
+    return grains + "; " + wall_text(first, true, particles) + "; " + wall_text(first, false, particles);
+}
+
+// Which contact law made a particle solver's numbers (run.model, run.contact_solve), or "". Under
+// enduring contacts the rigid impulse operator, single pass (Sawyer & Tichy 2001) or solved to
+// convergence (Moreau 1988, Jean 1999), carries a first-order time-step error: on the loaded slice
+// ~10 % above Hertz at the default step, 5 % less per halving, Hertz's within 1.4 % extrapolated
+// (plugins/liggghts/README.md, "Contacts solved to convergence"). A DEM − soft-sphere difference of
+// that size is that error.
+std::string contact_text(const Run& r) {
+    const std::string model = run_text(r, "model");
+    if (model == "hertz") return "contacts: Hertz–Mindlin springs (soft spheres)";
+    if (model == "viscel") return "contacts: linear visco-elastic springs (soft spheres)";
+    if (model != "impulse") return "";
+    const std::string dt_error =
+        " (under enduring contacts its wall stresses carry a first-order time-step error: ~10 % above Hertz at the "
+        "default step, ~5 % less per halving of the step; a DEM − soft-sphere difference of that size is this error)";
+    if (run_text(r, "contact_solve") == "iterated")
+        return "contacts: rigid grains, the impulse operator's contacts of each step solved together to convergence "
+               "(contact dynamics)" + dt_error;
+    return "contacts: rigid grains, Sawyer & Tichy's impulse operator, one pass over the contacts per step, which in "
+           "a sheared cell gives the wall stresses of the contacts solved to convergence at about a ninth of the cost" +
+           dt_error;
+}
+
+// The lengths of a solver's runs, gathered over its usable points.
+struct RunLengths {
+    std::vector<double> simulated, steady_from, steps, iterations;
+    std::vector<double> check_simulated, check_steady_from;  // the full-step runs of a Delta-t check
+    std::string check_start;                                  // how the first checked run's half-step run began
+    double cap = 0;                                           // [dem] time_max: runs continued until steady
+    int continued = 0;
+};
+
+RunLengths run_lengths(const std::vector<const Run*>& runs) {
+    RunLengths l;
+    for (const Run* r : runs) {
+        if (auto v = run_number(*r, "simulated_time_s")) l.simulated.push_back(*v);
+        if (auto v = run_number(*r, "steady_state_start_s")) l.steady_from.push_back(*v);
+        if (auto v = run_number(*r, "steps")) l.steps.push_back(*v);
+        if (auto v = run_number(*r, "iterations")) l.iterations.push_back(*v);
+        const auto& run = r->summary->run;
+        if (run.is_object() && run.contains("continuation")) {
+            l.cap = run["continuation"].value("time_max_s", 0.0);
+            if (run["continuation"].value("pieces", 1) > 1) ++l.continued;
+        }
+        if (run.is_object() && run.contains("dt_refinement") && run["dt_refinement"].contains("full_step_run")) {
+            const auto& f = run["dt_refinement"]["full_step_run"];
+            if (l.check_start.empty()) l.check_start = run["dt_refinement"].value("start", std::string("not recorded"));
+            if (f.contains("continuation"))  // continued until steady ([dem] time_max): all its pieces
+                l.check_simulated.push_back(f["continuation"].value("simulated_s", 0.0));
+            else if (f.contains("steps") && f.contains("time_step_s"))
+                l.check_simulated.push_back(f["steps"].get<double>() * f["time_step_s"].get<double>());
+            if (f.contains("steady_state_start_s") && f["steady_state_start_s"].is_number())
+                l.check_steady_from.push_back(f["steady_state_start_s"].get<double>());
+        }
+    }
+    return l;
+}
+
+// The solvers that leave out body forces say so in their run block; the particle engines apply
+// the case's gravity.
+std::string body_forces(const Case& c, const std::vector<const Run*>& runs, bool particles) {
+    const Run& first = *runs.front();
+    if (std::string note = run_text(first, "body_forces"); !note.empty()) return "gravity " + note;
+    if (std::string note = run_text(first, "ignored"); !note.empty()) return "ignores " + note;
+    if (!particles) return "not stated in its summary";
+    if (c.gravity <= 0) return "no gravity ([body_forces] gravity = 0)";
+    const double nu = first.summary->value("mean_solid_fraction");
+    std::vector<double> difference, side;  // the measured P_bot − P_top of each run; side-wall support
+    for (const Run* r : runs) {
+        if (auto b = r->scalar("normal_stress_bottom"), t = r->scalar("normal_stress_top"); b && t)
+            difference.push_back(*b - *t);
+        if (auto v = r->scalar("side_wall_support")) side.push_back(*v);
+    }
+    std::string s = fmt::format("gravity g = {} m/s² acts on the grains: P_bot − P_top includes their weight, "
+                                "ρ ν̄ g H ≈ {} Pa",
+                                num(c.gravity, 3), num(c.grains.density * nu * c.gravity * c.cell.gap, 2));
+    if (!difference.empty()) {
+        s += " (measured P_bot − P_top: " + range_text(difference, "Pa");
+        // the vertical balance: P_bot − P_top = weight − what the side walls hold up
+        if (!side.empty()) s += "; upward force of the side walls per floor area: " + range_text(side, "Pa");
+        s += ")";
+    }
+    return s;
+}
+
+std::string stresses(const std::string& solver, const Run& first, bool particles, bool iterated) {
+    if (lattice_stresses(solver))
+        return "lattice analogues in Pa (wall momentum per lattice step × ρ_p ν_max U², ∝ U² by construction): "
+               "not measured stresses, not comparable with the others";
+    if (particles) {
+        std::string s = "time-averaged wall force / wall area (Pa) over the steady window";
+        if (std::string rule = steady_rule(first); !rule.empty()) s += "; " + rule;
+        if (std::string law = contact_text(first); !law.empty()) s += "; " + law;
+        return s;
+    }
+    return iterated ? "kinetic-theory wall stresses (Pa) of the steady solution" : "as its summary gives them";
+}
+
+std::string particle_run_length(const Run& first, const RunLengths& l, std::size_t runs) {
+    std::string s = range_text(l.simulated, "s") + " simulated" + (l.check_simulated.empty() ? "" : " at half the time step");
+    if (!l.steady_from.empty()) s += ", averaged from " + range_text(l.steady_from, "s");
+    if (!l.steps.empty()) s += " (" + range_text(l.steps, "steps", 0) + ")";
+    if (l.cap > 0)
+        s += fmt::format("; runs not steady at their length continued from where they ended, doubling, "
+                         "up to {} s in all, the last piece averaged ({} of {} points continued)",
+                         num(l.cap, 3), l.continued, runs);
+    if (!l.check_simulated.empty()) {  // what the numbers are: the half-step run, checked (refine_dt)
+        s += "; checked against a run of " + range_text(l.check_simulated, "s") + " at the full step";
+        if (!l.check_steady_from.empty()) s += " (steady from " + range_text(l.check_steady_from, "s") + ")";
+        s += "; the half-step run's start: " + l.check_start;
+    }
+    if (const std::string start = run_text(first, "start"); !start.empty()) s += "; start: " + start;
+    if (const std::string plate = run_text(first, "plate"); !plate.empty()) s += "; load: " + plate;
+    return s;
+}
+
+std::string run_length(const Run& first, const RunLengths& l, std::size_t runs) {
+    if (!l.simulated.empty()) return particle_run_length(first, l, runs);
+    if (!l.iterations.empty()) return "steady solution, " + range_text(l.iterations, "iterations", 0);
+    if (l.steps.empty()) return "";
+    std::string s = range_text(l.steps, "lattice steps", 0);
+    if (auto reps = run_number(first, "replicas")) s += fmt::format(" × {} replicas", num(*reps, 3));
+    return s;
+}
+
+}  // namespace
+
+bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }
+
+SolverScope solver_scope(const Case& c, const Collection& col, const std::string& solver) {
+    std::vector<const Run*> runs;
+    for (const OperatingPoint* p : col.points)
+        if (const Run& r = col.run(solver, p->id); r.usable()) runs.push_back(&r);
+    SolverScope s;
+    if (runs.empty()) return s;
+    const Run& first = *runs.front();
+    const RunLengths l = run_lengths(runs);
+    const bool particles = !l.simulated.empty();
+    s.body_forces = body_forces(c, runs, particles);
+    s.stresses = stresses(solver, first, particles, !l.iterations.empty());
+    s.grains_walls = grains_and_walls(c, first, particles);
+    s.run_length = run_length(first, l, runs.size());
+    return s;
+}
+
+}  // namespace granlub::postproc

@@ -1,0 +1,28 @@
+// What each solver's numbers mean: which body forces it models, what its "stresses" are and how
+// long it ran. Read from the summaries the solvers write (run block) and the case; shown beside
+// the numbers so that a continuum stress is not read as a DEM one.
+#pragma once
+#include <string>
+
+#include "results/collect.h"
+
+namespace granlub::postproc {
+
+struct SolverScope {
+    std::string body_forces;  // "gravity ... included", or the solver's own note on what it ignores
+    std::string stresses;     // what its wall stresses are
+    std::string run_length;   // simulated time, steps or iterations over the compared points
+    std::string grains_walls; // the grains' sizes and the walls this solver had
+};
+
+SolverScope solver_scope(const Case& c, const Collection& col, const std::string& solver);
+
+// The automaton's wall stresses are lattice analogues (wall momentum per lattice step scaled by
+// rho_p nu_max U^2, so proportional to U^2 by construction), not measured stresses.
+bool lattice_stresses(const std::string& solver);
+inline constexpr const char* kLatticeStressNote =
+    "the automaton's stresses are lattice analogues (wall momentum per lattice step × ρ_p ν_max U², so ∝ U² by "
+    "construction), drawn in Pa for scale only: not a measured stress, neither its magnitude nor its exponent "
+    "compares with the other solvers'";
+
+}  // namespace granlub::postproc

@@ -1,0 +1,70 @@
+// The summary first: per quantity and point who agrees within the combined errors, the largest
+// disagreement with its size, and the numbers that are not answers; one line when all agree. The
+// regime as one verdict, "at the transition" where the particle engines straddle Z = 4.
+#include <filesystem>
+
+#include <boost/test/unit_test.hpp>
+
+#include "granlub/postproc/command.h"
+#include "figures/section_map.h"
+#include "report/summary.h"
+#include "results/collect.h"
+#include "synthetic.h"
+
+using namespace granlub;
+namespace fs = std::filesystem;
+
+BOOST_AUTO_TEST_SUITE(summary)
+
+BOOST_AUTO_TEST_CASE(who_agrees_and_what_is_not_an_answer) {
+    auto s = test::make_case("summary");
+    for (const char* solver : {"continuum", "automaton", "dem"}) test::write_solver(s, solver);
+    test::patch_run(s, "dem", s.c.points.back().id, {{"status", "transient"}, {"status_reason", "not steady"}});
+    const auto col = postproc::collect(s.c, s.o);
+    const auto sum = postproc::case_summary(col);
+    BOOST_TEST(!sum.all_agree);
+    // U = 1 m/s: τ_bottom continuum 400 Pa, dem 450 ± 22.5 Pa: z = 2.2, they differ (+13 %).
+    const auto& header = sum.table.header;
+    BOOST_TEST_REQUIRE(header.size() == 4u);
+    const auto row = std::find_if(sum.table.rows.begin(), sum.table.rows.end(),
+                                  [](const auto& r) { return r[0].text == "τ moving wall"; });
+    BOOST_TEST_REQUIRE((row != sum.table.rows.end()));
+    BOOST_TEST((*row)[1].text == "dem +12 % (z = 2.2) against continuum", (*row)[1].text);
+    // The automaton's stresses are no answer (lattice analogues), and the transient dem point is named.
+    std::string all;
+    for (const auto& t : sum.sentences) all += t + "\n";
+    BOOST_TEST(all.find("automaton's wall stresses (lattice analogues") != std::string::npos, all);
+    BOOST_TEST(all.find("dem: transient at U4.0") != std::string::npos, all);
+    BOOST_TEST(all.find("Largest disagreement:") != std::string::npos, all);
+}
+
+BOOST_AUTO_TEST_CASE(one_line_when_everything_agrees) {
+    auto s = test::make_case("summary_agree");
+    test::write_solver(s, "continuum");
+    fs::copy(s.o.results_root / "continuum", s.o.results_root / "copy", fs::copy_options::recursive);
+    const auto sum = postproc::case_summary(postproc::collect(s.c, s.o));
+    BOOST_TEST(sum.all_agree);
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
+    BOOST_TEST(html.find("<p>All 2 solvers (continuum, copy) agree within their combined errors on every quantity at every point.</p>") !=
+               std::string::npos);
+}
+
+// Each state named as what it is: a dt-unconverged run's cross-section is not stamped "TRANSIENT".
+BOOST_AUTO_TEST_CASE(cross_section_stamps_name_the_state) {
+    auto s = test::make_case("stamps");
+    test::write_solver(s, "dem");
+    const auto& p = s.c.points;
+    test::patch_run(s, "dem", p[1].id, {{"status", "transient"}, {"status_reason", "not steady"}});
+    test::patch_run(s, "dem", p[2].id, {{"status", "dt-unconverged"}, {"status_reason", "halving dt moved tau by 9 %"}});
+    const auto col = postproc::collect(s.c, s.o);
+    BOOST_TEST(postproc::section_stamp(col.run("dem", p[0].id)) == "");
+    BOOST_TEST(postproc::section_stamp(col.run("dem", p[1].id)) == "TRANSIENT — not a result");
+    BOOST_TEST(postproc::section_stamp(col.run("dem", p[2].id)) == "DT-UNCONVERGED — Δt changes it");
+    const std::string svg = postproc::render_section_svg({1, 1, {0.5}, {0}, {0.6}, {0.5}}, {0.6}, "t", "ν",
+                                                         postproc::section_stamp(col.run("dem", p[2].id)));
+    BOOST_TEST(svg.find(">DT-UNCONVERGED — Δt changes it</text>") != std::string::npos);
+    BOOST_TEST(svg.find("TRANSIENT") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
