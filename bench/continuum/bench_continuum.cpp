@@ -16,7 +16,7 @@ namespace {
 
 Problem sawyer(double U, double P, Mode mode = Mode::Load, const char* wall = "kinetic") {
     Problem p;
-    p.closures = std::make_shared<Closures>(Lun84Params{0.9, 1.0, true},
+    p.closures = std::make_shared<Closures>(ClosureParams{0.9, 1.0, true},
                                             std::shared_ptr<const RadialDistribution>(make_g0("ogawa", 0.65)));
     p.Lambda = 4e-3 / 0.787e-3;
     p.Pi = 2550 * U * U / P;
