@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "granlub/case/case.h"
-#include "granlub/continuum/command.h"
+#include "full_schema.h"
 #include "granlub/continuum/map.h"
 #include "granlub/error.h"
 
@@ -21,9 +21,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        Schema schema = Schema::common();
-        schema.add(continuum::section());
-        const Case c = load_case(argv[1], schema);
+        const Case c = load_case(argv[1], cli::full_schema());
         continuum::MapGrid g;
         if (argc == 4) {
             g.speeds = std::stoi(argv[2]);
