@@ -241,7 +241,7 @@ BOOST_AUTO_TEST_CASE(every_registered_name_is_its_file) {
     BOOST_TEST(wall_old_names().size() == 2u);
 }
 
-// Extended kinetic theory (docs/continuum-model.md §2.5-2.7, §8.7).
+// Extended kinetic theory (docs/continuum-model.md §2.5-2.8, §8.6).
 namespace {
 std::shared_ptr<const Closures> extended(double e_eff, double numax = 0.636, const std::string& g0 = "torquato",
                                          CorrelationLength L = CorrelationLength::None) {
@@ -306,7 +306,7 @@ BOOST_AUTO_TEST_CASE(garzo_dufty_limits_and_shared_functions) {
 // (d gdot / T^{1/2})^2 = f_gamma/f_mu, so mu = s/p = sqrt(f_mu f_gamma)/f_p and
 // I = sqrt(f_gamma/f_mu)/sqrt(f_p). Garzo-Dufty, Torquato g0 with nu_c = 0.636, e = 0.9 and the
 // e_eff of each column (e, and CS13 and JZ02 at mu_p = 0.5); the table (to 3 digits) computed
-// independently from the formulas (§8.7).
+// independently from the formulas (§8.6).
 BOOST_AUTO_TEST_CASE(extended_homogeneous_shear_table) {
     struct R { double nu, mu09, I09, mu733, I733, mu663, I663; };
     const std::array<R, 7> t{{{0.30, 0.278, 0.841, 0.433, 1.313, 0.477, 1.444},

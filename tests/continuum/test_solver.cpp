@@ -292,7 +292,7 @@ BOOST_AUTO_TEST_CASE(newton_is_quadratic_from_the_uniform_guess) {
     }
 }
 
-// §5.3: the gap under a load from the grains' inventory (the particle solvers' question), with the
+// §5.1: the gap under a load from the grains' inventory (the particle solvers' question), with the
 // extended closures (Garzo-Dufty, Torquato g0 to nu_c = 0.636, friction through e_eff, Jenkins 2007 L*).
 namespace {
 Problem inventory_problem(double U, double P, double inventory) {

@@ -20,7 +20,7 @@ enum class Mode {
     Load,  // P_y given (Pi known), mean nu out (S&T)
     Fill,  // mean nu given, Pi (hence P_y) out: one extra unknown and the mass constraint
     // P_y given (Pi known) and the grains per wall area (inventory = integral of nu dy / sigma), the gap
-    // Lambda out: one extra unknown and the mass constraint (the particle solvers' question, §5.3)
+    // Lambda out: one extra unknown and the mass constraint (the particle solvers' question, §5.1)
     Inventory,
 };
 
