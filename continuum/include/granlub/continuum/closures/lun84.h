@@ -9,9 +9,9 @@
 
 namespace granlub::continuum {
 
-// Every function but G (formed by Closures once e_eff and L* are applied).
+// The functions LSJC share with Garzo & Dufty: pressure f_p, f_p' and the e_p-dissipation f_gamma.
 template <class S>
-ClosureState<S> lun84_state(const ClosureParams& p, S nu, S g, S dg) {
+ClosureState<S> lsjc_pressure_and_dissipation(const ClosureParams& p, S nu, S g, S dg) {
     namespace c = closures;
     const double eta = p.eta();
     ClosureState<S> s{};
@@ -20,10 +20,19 @@ ClosureState<S> lun84_state(const ClosureParams& p, S nu, S g, S dg) {
     s.dg = dg;
     s.fp = c::f_p(nu, g, eta);
     s.dfp = c::df_p(nu, g, dg, eta);
+    s.fgam = c::f_gamma(nu, g, eta);
+    return s;
+}
+
+// Every function but G (formed by Closures once e_eff and L* are applied).
+template <class S>
+ClosureState<S> lun84_state(const ClosureParams& p, S nu, S g, S dg) {
+    namespace c = closures;
+    const double eta = p.eta();
+    ClosureState<S> s = lsjc_pressure_and_dissipation(p, nu, g, dg);
     s.fmu = c::f_mu(nu, g, eta, p.alpha);
     s.fk = c::f_kappa(nu, g, eta);
     s.fphi = p.dufour ? c::f_phi(nu, g, dg, eta) : S(0.0);
-    s.fgam = c::f_gamma(nu, g, eta);
     return s;
 }
 
