@@ -113,12 +113,14 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
     const Section& sec = c.section("continuum");
     Problem q;
     q.closures = s.closures;
-    q.Lambda = (c.cell.gap - bump_offset(c, s, p)) / c.grains.diameter;
+    q.Lambda = (c.cell.gap - bump_offset(c, s, p)) / c.grains.diameter;  // the continuum's own domain
     q.mode = p.control == Control::Load ? (s.gap_from_inventory ? Mode::Inventory : Mode::Load) : Mode::Fill;
     // the grains the particle solvers insert: solid_fraction over the gap between the bumps' centres
     q.inventory = p.solid_fraction * c.cell.gap / c.grains.diameter;
     q.Pi = q.mode != Mode::Fill ? c.grains.density * p.speed * p.speed / p.normal_stress : 0.0;
-    q.nu_mean = p.solid_fraction;
+    // fill: the same grains in the continuum's domain (narrower than the gap with wall_plane = "bump_tops")
+    const double offset = bump_offset(c, s, p);
+    q.nu_mean = offset > 0 ? p.solid_fraction * c.cell.gap / (c.cell.gap - offset) : p.solid_fraction;
     const auto wall = [&](const Wall& w, const char* side) {
         WallBC bc;
         bc.family = s.family;
@@ -149,9 +151,11 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
             "0.9999, 0.99999)",
             c.grains.restitution));
     if (q.mode == Mode::Fill && !(q.nu_mean < s.closures->cap()))
-        throw SolverError(fmt::format("solid_fraction = {} is not below the closures' limit {} (g0 = {}); "
-                                      "lower [operating] solid_fraction or raise [cell] max_solid_fraction",
-                                      q.nu_mean, s.closures->cap(), s.g0_name));
+        throw SolverError(fmt::format("solid_fraction = {} in the continuum's domain{} is not below the closures' "
+                                      "limit {} (g0 = {}); lower [operating] solid_fraction or raise [continuum] "
+                                      "max_solid_fraction (default [cell] max_solid_fraction)",
+                                      q.nu_mean, offset > 0 ? " (narrowed to the bumps' tops)" : "",
+                                      s.closures->cap(), s.g0_name));
     return q;
 }
 
