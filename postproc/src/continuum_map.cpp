@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <utility>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -99,21 +101,29 @@ Series contour(const Grid& g, double level, F value) {
     return s;
 }
 
-// The particle solvers' points at their (U, P), in their styles.
-void add_points(Figure& f, const Collection& col) {
+// Each particle solver's points, in its style: xy(run, point) gives a point's (x, y) or nothing.
+template <class XY>
+void add_particle_points(Figure& f, const Collection& col, const std::string& what, XY xy) {
     for (const auto& s : col.solvers) {
         if (s == "continuum") continue;
         Series pts;
-        pts.label = s + " points";
+        pts.label = s + what;
         pts.mark = Mark::Points;
         pts.style = solver_style(col, s);
         for (const OperatingPoint* p : col.points)
-            if (col.run(s, p->id).usable()) {
-                pts.x.push_back(p->speed);
-                pts.y.push_back(p->normal_stress);
+            if (const auto v = xy(col.run(s, p->id), *p)) {
+                pts.x.push_back(v->first);
+                pts.y.push_back(v->second);
             }
         if (!pts.x.empty()) f.series.push_back(std::move(pts));
     }
+}
+
+// The particle solvers' points at their (U, P).
+void add_points(Figure& f, const Collection& col) {
+    add_particle_points(f, col, " points", [](const Run& r, const OperatingPoint& p) {
+        return r.usable() ? std::optional(std::pair(p.speed, p.normal_stress)) : std::nullopt;
+    });
 }
 
 Figure field_figure(const Grid& g, const Collection& col, const std::string& name, const std::string& what,
@@ -189,24 +199,14 @@ std::vector<Figure> continuum_map_figures(const Case& c, const Collection& col) 
             }
         if (!s.x.empty()) f.series.push_back(std::move(s));
     }
-    for (const auto& s : col.solvers) {
-        if (s == "continuum") continue;
-        Series pts;
-        pts.label = s + ", top wall";
-        pts.mark = Mark::Points;
-        pts.style = solver_style(col, s);
-        for (const OperatingPoint* p : col.points) {
-            const Run& r = col.run(s, p->id);
-            if (!r.steady()) continue;
-            const auto I = run_inertia(c, r).mid_gap;
-            const auto tau = r.scalar("shear_stress_top"), P = r.scalar("normal_stress_top");
-            if (I && *I > 0 && tau && P && *P > 0) {
-                pts.x.push_back(*I);
-                pts.y.push_back(*tau / *P);
-            }
-        }
-        if (!pts.x.empty()) f.series.push_back(std::move(pts));
-    }
+    add_particle_points(f, col, ", top wall", [&](const Run& r, const OperatingPoint&) {
+        std::optional<std::pair<double, double>> v;
+        if (!r.steady()) return v;
+        const auto I = run_inertia(c, r).mid_gap;
+        const auto tau = r.scalar("shear_stress_top"), P = r.scalar("normal_stress_top");
+        if (I && *I > 0 && tau && P && *P > 0) v = std::pair(*I, *tau / *P);
+        return v;
+    });
     Series jop;
     jop.label = "Jop et al. 2006";
     jop.style = 6;
