@@ -1,5 +1,6 @@
 // Throughput of the continuum solver (issue targets: < 2 ms per point, < 0.5 s per 100-point
-// sweep on one core). Reported, never asserted. The Time/CPU columns are per point, or per
+// sweep on one core; extended kinetic theory with the gap unknown: <= 5 ms per point; the 100 x 100
+// map of a case: build/bench/continuum_map). Reported, never asserted. The Time/CPU columns are per point, or per
 // 100-point sweep for BM_sweep_100 (items_per_second = points per second).
 #include <benchmark/benchmark.h>
 
@@ -16,7 +17,7 @@ namespace {
 
 Problem sawyer(double U, double P, Mode mode = Mode::Load, const char* wall = "kinetic") {
     Problem p;
-    p.closures = std::make_shared<Closures>(Lun84Params{0.9, 1.0, true},
+    p.closures = std::make_shared<Closures>(ClosureParams{0.9, 1.0, true},
                                             std::shared_ptr<const RadialDistribution>(make_g0("ogawa", 0.65)));
     p.Lambda = 4e-3 / 0.787e-3;
     p.Pi = 2550 * U * U / P;
@@ -56,6 +57,30 @@ void BM_point_shooting(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(solve_shooting(p, st).Pi);
 }
 BENCHMARK(BM_point_shooting)->Unit(benchmark::kMillisecond);
+
+// One rough-case point with extended kinetic theory and the gap solved from the grain inventory
+// (cases/sawyer2001_regimes_rough's [continuum] set): U = 1.4 m/s, P = 2250 Pa. Issue target: <= 5 ms.
+void BM_point_ekt_inventory(benchmark::State& state) {
+    Problem p = sawyer(1.4, 2250);
+    ClosureParams cp;
+    cp.restitution = 0.9;
+    cp.dissipation_restitution = 0.9 - 1.5 * 0.5 * std::exp(-1.5);  // Chialvo & Sundaresan 2013, mu_p = 0.5
+    cp.correlation_length = CorrelationLength::Jenkins2007;
+    p.closures = std::make_shared<Closures>(cp, std::shared_ptr<const RadialDistribution>(make_g0("chialvo_sundaresan", 0.587)),
+                                            make_closure_family("garzo_dufty"));
+    p.mode = Mode::Inventory;
+    p.inventory = 0.595 * 4e-3 / 0.787e-3;
+    p.Lambda = (4e-3 - 0.787e-3) / 0.787e-3;
+    SolverSettings st;
+    int its = 0;
+    for (auto _ : state) {
+        Solution s = solve_fv(p, st);
+        its = s.iterations;
+        benchmark::DoNotOptimize(s.Lambda);
+    }
+    state.counters["newton_iterations"] = its;
+}
+BENCHMARK(BM_point_ekt_inventory)->Unit(benchmark::kMillisecond);
 
 // 100 points: U in [0.5, 3] m/s x P_y in [1, 20] kPa (log-spaced), each solved from scratch
 // with N = 200, as `granlub continuum` does.

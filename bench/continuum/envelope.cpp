@@ -26,7 +26,7 @@ int main() {
                             for (int k = 0; k < 6; ++k) {
                                 Problem p;
                                 p.closures = std::make_shared<Closures>(
-                                    Lun84Params{ep, 1.0, true}, std::shared_ptr<const RadialDistribution>(make_g0(g0, 0.65)));
+                                    ClosureParams{ep, 1.0, true}, std::shared_ptr<const RadialDistribution>(make_g0(g0, 0.65)));
                                 p.Lambda = lambda;
                                 p.Pi = std::pow(10.0, -2.0 + 0.8 * k);  // 0.01 .. 100
                                 p.nu_mean = 0.05 + 0.11 * k;           // 0.05 .. 0.60

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "granlub/case/wall_bumps.h"
+#include "granlub/continuum/closures/effective_restitution.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
 #include "granlub/error.h"
@@ -22,23 +24,76 @@ Settings settings_from_case(const Case& c) {
     s.solver.tolerance = sec.real("tolerance");
     s.solver.max_iterations = static_cast<int>(sec.integer("max_iterations"));
     s.solver.max_continuation_steps = static_cast<int>(sec.integer("max_continuation_steps"));
-    Lun84Params lp;
+    s.closures_name = sec.string("closures");
+    ClosureParams lp;
     lp.restitution = c.grains.restitution;
     lp.alpha = sec.real("viscosity_alpha");
     lp.dufour = sec.boolean("dufour");
-    try {
-        s.closures = std::make_shared<Closures>(lp, make_g0(s.g0_name, c.cell.max_solid_fraction));
-        s.family = make_wall_family(s.wall_name);
-    } catch (const CaseError&) {
-        throw;
-    } catch (const Error& e) {
-        sec.fail("g0", e.what());
-    }
+    const std::string fr = sec.string("friction_restitution");
+    if (fr == "jenkins_zhang") lp.dissipation_restitution = closures::e_eff_jenkins_zhang(lp.restitution, c.grains.friction);
+    if (fr == "chialvo_sundaresan")
+        lp.dissipation_restitution = closures::e_eff_chialvo_sundaresan(lp.restitution, c.grains.friction);
+    if (fr != "none" && !(lp.dissipation_restitution >= 0 && lp.dissipation_restitution < 1))
+        sec.fail("friction_restitution", fmt::format("{} gives e_eff = {:.4f} for e_p = {} and [grains] friction = {}; "
+                                                     "it must lie in [0, 1)",
+                                                     fr, lp.dissipation_restitution, lp.restitution, c.grains.friction));
+    lp.correlation_length =
+        sec.string("correlation_length") == "jenkins2007" ? CorrelationLength::Jenkins2007 : CorrelationLength::None;
+    const double numax = sec.maybe_real("max_solid_fraction").value_or(c.cell.max_solid_fraction);
+    // Each registry's failure against its own key.
+    std::shared_ptr<const ClosureFamily> family;
+    std::shared_ptr<const RadialDistribution> g0;
+    const auto on_key = [&](const char* key, const auto& make) {
+        try {
+            make();
+        } catch (const CaseError&) {
+            throw;
+        } catch (const Error& e) {
+            sec.fail(key, e.what());
+        }
+    };
+    on_key("closures", [&] { family = make_closure_family(s.closures_name); });
+    on_key("g0", [&] { g0 = make_g0(s.g0_name, numax); });
+    on_key("wall_model", [&] { s.family = make_wall_family(s.wall_name); });
+    if (!family->uses_lsjc_knobs() && lp.alpha != 1.0)
+        sec.fail("viscosity_alpha", fmt::format("viscosity_alpha = {} is a factor of the Lun et al. 1984 viscosity; "
+                                                "closures = \"{}\" has none (allowed: 1, or closures = \"lun84\")",
+                                                lp.alpha, s.closures_name));
+    s.closures = std::make_shared<Closures>(lp, g0, family);
     s.slip_dissipation = sec.real("slip_dissipation");
+    s.gap_from_inventory = sec.string("gap") == "inventory";
+    if (s.gap_from_inventory) {
+        for (const OperatingPoint& p : c.points)
+            if (p.control != Control::Load)
+                sec.fail("gap", fmt::format("gap = \"inventory\" solves the gap under a given load, but point {} has "
+                                            "[operating] control = fill (allowed: control = \"load\", or gap = "
+                                            "\"fixed\")",
+                                            p.id));
+        if (s.method == Method::Shooting)
+            sec.fail("method", "method = \"shooting\" cannot solve for the gap (gap = \"inventory\"); allowed: \"fv\"");
+    }
+    s.wall_at_bump_tops = sec.string("wall_plane") == "bump_tops";
+    if (s.wall_at_bump_tops && c.bottom.surface != WallSurface::Bumps && c.top.surface != WallSurface::Bumps)
+        sec.fail("wall_plane", "wall_plane = \"bump_tops\" needs bumps on the walls ([walls] surface = \"bumps\"); "
+                               "with plane walls allowed: \"bump_centres\"");
+    s.ordering_fraction = sec.maybe_real("ordering_fraction").value_or(0.0);
     return s;
 }
 
 namespace {
+// The continuum's contact/collision criterion: Chialvo & Sundaresan 2013 (Phys. Fluids 25, 070603, Eq. 35 and
+// Table 2) blend their quasi-static and inertial stresses with chi = 1/[(I0/I_m)^{3/2} + 1], I_m = I/nu,
+// I0 = 0.2 [SRC: read in CFDEM-PRINCETON kineticTheoryModel.C]; the collisional part dominates (chi > 1/2)
+// for I/nu > I0. Here it only labels the point ("contact" below I0, "collision" above).
+constexpr double kTransitionIm = 0.2;
+nlohmann::json lubrication_record(double inertial, double nu_mean) {
+    const double Im = inertial / nu_mean;
+    return {{"verdict", Im > kTransitionIm ? "collision lubrication" : "contact lubrication"},
+            {"criterion", "I/nu against I0 = 0.2 (Chialvo & Sundaresan 2013, Eq. 35)"},
+            {"inertial_number", inertial},
+            {"inertial_number_over_solid_fraction", Im}};
+}
+
 // R_k at one wall: [continuum] r<k>_<side>, else r<k>, else the point's wall roughness.
 double roughness_factor(const Section& sec, const std::string& rk, const char* side, double wall_r) {
     if (auto v = sec.maybe_real(rk + "_" + side)) return *v;
@@ -47,14 +102,25 @@ double roughness_factor(const Section& sec, const std::string& rk, const char* s
 }
 }  // namespace
 
+namespace {
+// How much narrower the continuum's domain is than the gap between the bumps' centres, m.
+double bump_offset(const Case& c, const Settings& s, const OperatingPoint& p) {
+    return s.wall_at_bump_tops ? bump_protrusion(c, p.bottom) + bump_protrusion(c, p.top) : 0.0;
+}
+}  // namespace
+
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
     const Section& sec = c.section("continuum");
     Problem q;
     q.closures = s.closures;
-    q.Lambda = c.cell.gap / c.grains.diameter;
-    q.mode = p.control == Control::Load ? Mode::Load : Mode::Fill;
-    q.Pi = q.mode == Mode::Load ? c.grains.density * p.speed * p.speed / p.normal_stress : 0.0;
-    q.nu_mean = p.solid_fraction;
+    q.Lambda = (c.cell.gap - bump_offset(c, s, p)) / c.grains.diameter;  // the continuum's own domain
+    q.mode = p.control == Control::Load ? (s.gap_from_inventory ? Mode::Inventory : Mode::Load) : Mode::Fill;
+    // the grains the particle solvers insert: solid_fraction over the gap between the bumps' centres
+    q.inventory = p.solid_fraction * c.cell.gap / c.grains.diameter;
+    q.Pi = q.mode != Mode::Fill ? c.grains.density * p.speed * p.speed / p.normal_stress : 0.0;
+    // fill: the same grains in the continuum's domain (narrower than the gap with wall_plane = "bump_tops")
+    const double offset = bump_offset(c, s, p);
+    q.nu_mean = offset > 0 ? p.solid_fraction * c.cell.gap / (c.cell.gap - offset) : p.solid_fraction;
     const auto wall = [&](const Wall& w, const char* side) {
         WallBC bc;
         bc.family = s.family;
@@ -85,9 +151,11 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
             "0.9999, 0.99999)",
             c.grains.restitution));
     if (q.mode == Mode::Fill && !(q.nu_mean < s.closures->cap()))
-        throw SolverError(fmt::format("solid_fraction = {} is not below the closures' limit {} (g0 = {}); "
-                                      "lower [operating] solid_fraction or raise [cell] max_solid_fraction",
-                                      q.nu_mean, s.closures->cap(), s.g0_name));
+        throw SolverError(fmt::format("solid_fraction = {} in the continuum's domain{} is not below the closures' "
+                                      "limit {} (g0 = {}); lower [operating] solid_fraction or raise [continuum] "
+                                      "max_solid_fraction (default [cell] max_solid_fraction)",
+                                      q.nu_mean, offset > 0 ? " (narrowed to the bumps' tops)" : "",
+                                      s.closures->cap(), s.g0_name));
     return q;
 }
 
@@ -102,6 +170,16 @@ PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& 
     const double P = rho * U * U / sol.Pi;  // = normal_stress in Load mode
     const double T_scale = P / rho;         // T = (P/rho) / f_p
     const double tau_b = P * o.tau_bottom, tau_t = P * o.tau_top;
+    // Gap and mean nu between the planes through the bumps' centres, as the particle solvers report them
+    // (the continuum's own domain is narrower by the offset with wall_plane = "bump_tops").
+    const double offset = bump_offset(c, s, p), d = c.grains.diameter;
+    const double H_c = solved_problem(q, sol).Lambda * d, gap = H_c + offset;
+    const double nu_mean = offset > 0 ? o.nu_mean * H_c / gap : o.nu_mean;
+    // Inertial number at mid-gap, I = gamma_dot d / sqrt(P/rho_p) (GDR MiDi 2004, eq. 1), as the particle
+    // solvers report it.
+    const std::size_t n = sol.nodes(), ic = (n - 1) / 2;
+    const double du_c = std::abs(sol.u[ic + 1] - sol.u[ic - 1]) / (sol.y[ic + 1] - sol.y[ic - 1]);
+    const double inertial = (U * du_c / H_c) * d / std::sqrt(P / rho);
 
     PointResult r;
     std::vector<double> T_over_U2(sol.nodes());
@@ -114,12 +192,14 @@ PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& 
     m.set("normal_stress_bottom", P, "Pa").set("normal_stress_top", P, "Pa");
     m.set("shear_stress_bottom", tau_b, "Pa").set("shear_stress_top", tau_t, "Pa");
     m.set("slip_bottom", U * o.slip_bottom, "m/s").set("slip_top", U * o.slip_top, "m/s");
-    m.set("mean_solid_fraction", o.nu_mean, "").set("max_solid_fraction", s.closures->numax(), "");
+    m.set("mean_solid_fraction", nu_mean, "").set("max_solid_fraction", s.closures->numax(), "");
     m.set("solid_fraction_centre", o.nu_centre, "").set("solid_fraction_bottom", o.nu_bottom, "")
         .set("solid_fraction_top", o.nu_top, "");
     m.set("temperature_bottom", T_scale * o.T_bottom, "m^2/s^2").set("temperature_top", T_scale * o.T_top, "m^2/s^2")
         .set("temperature_centre", T_scale * o.T_centre, "m^2/s^2");
     m.set("stress_ratio", o.tau_bottom, "").set("pi_number", sol.Pi, "");
+    m.set("inertial_number", inertial, "");
+    if (s.gap_from_inventory) m.set("gap", gap, "m");
     m.run["iterations"] = sol.iterations;
     m.run["final_residual"] = sol.residual;
     m.run["continuation_steps"] = sol.continuation_steps;
@@ -127,6 +207,14 @@ PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& 
     m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
     m.run["g0"] = s.g0_name;
     m.run["wall_model"] = s.wall_name;
+    m.run["closures"] = s.closures_name;
+    m.run["dissipation_restitution"] = s.closures->params().e_eff();
+    m.run["lubrication"] = lubrication_record(inertial, nu_mean);
+    const EnergyBudget eb = energy_budget(q, sol);
+    m.run["energy_budget"] = {{"wall_work_W_m2", P * U * eb.wall_work},
+                              {"bulk_dissipation_W_m2", P * U * eb.bulk_dissipation},
+                              {"wall_dissipation_W_m2", P * U * eb.wall_dissipation},
+                              {"relative_defect", eb.relative_defect()}};
     m.run["cells"] = s.solver.cells;
     m.run["body_forces"] = "not modelled: GKL has p_yy uniform across the gap (S&T 2001 Eq. 6b)";
     nlohmann::json warnings = nlohmann::json::array();
@@ -137,14 +225,23 @@ PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& 
     // Steady by construction: the continuum solves the steady boundary-value problem (no time
     // derivatives), and only a converged Newton solve reaches this point; a failed one throws and
     // writes no result.
-    set_regime(m.run, RegimeStatus::Steady);
+    // A solution the theory itself calls ordered (the crystallization criterion) is labelled, not a number.
+    if (s.ordering_fraction > 0 && o.nu_max_node > s.ordering_fraction)
+        set_regime(m.run, RegimeStatus::Ordered,
+                   fmt::format("the largest solid fraction {:.4f} exceeds [continuum] ordering_fraction = {}: the "
+                               "grains would order (crystallization criterion), where kinetic theory does not hold",
+                               o.nu_max_node, s.ordering_fraction));
+    else
+        set_regime(m.run, RegimeStatus::Steady);
     for (const auto& [name, v] : m.outputs)
         if (!std::isfinite(v.value))
             throw SolverError(fmt::format("the solution has a non-finite {} (residual {:.3g}); try more cells", name,
                                           sol.residual));
 
-    r.line = fmt::format("nu={:.4f} P={:.4g} Pa tau={:.4g} Pa slip={:.3f}/{:.3f} m/s it={}", o.nu_mean, P, tau_b,
+    r.line = fmt::format("nu={:.4f} P={:.4g} Pa tau={:.4g} Pa slip={:.3f}/{:.3f} m/s it={}", nu_mean, P, tau_b,
                          U * o.slip_bottom, U * o.slip_top, sol.iterations);
+    if (s.gap_from_inventory) r.line += fmt::format(" gap={:.3f} mm mu={:.3f} I={:.3f}", 1e3 * gap, o.tau_top, inertial);
+    if (s.ordering_fraction > 0 && o.nu_max_node > s.ordering_fraction) r.line += " ORDERED";
     return r;
 }
 

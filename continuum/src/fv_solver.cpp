@@ -27,15 +27,16 @@ struct WallNode {
 // The values one node's residual needs.
 template <class S>
 struct Local {
-    S um, uc, up, nm, nc, np, Mm, Mc, Mp, Km, Kc, Kp, Cc, Pi, b5, b6, b7, b8;
+    S um, uc, up, nm, nc, np, Mm, Mc, Mp, Km, Kc, Kp, Cc, Pi, L, b5, b6, b7, b8;
 };
 
 enum class Kind { Interior, Bottom, Top };
 
 // Flux balance of node i's control volume (§6.1). Bottom/top are the wall half-cells.
 template <class S>
-void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, double L, S& Ru, S& Rn) {
-    const double L2 = L * L;
+void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, S& Ru, S& Rn) {
+    const S& L = l.L;
+    const S L2 = L * L;
     if (kind == Kind::Interior) {
         const S du = (l.up - l.um) / (2 * h);
         const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
@@ -62,18 +63,24 @@ class Fv {
 public:
     Fv(const Problem& p, int cells)
         : p_(p), N_(static_cast<std::size_t>(cells)), n_(N_ + 1), h_(1.0 / cells), cap_(p.closures->cap()),
-          fill_(p.mode == Mode::Fill), nodes_(n_), F_(n_), Fl_(n_), x_(n_), y_(n_), J_(n_) {}
+          fill_(p.mode == Mode::Fill), inventory_(p.mode == Mode::Inventory), nodes_(n_), F_(n_), Fl_(n_), x_(n_), y_(n_), J_(n_) {}
 
     std::size_t nodes() const { return n_; }
     double h() const { return h_; }
     double cap() const { return cap_; }
     bool fill() const { return fill_; }
+    bool inventory() const { return inventory_; }
+    bool bordered() const { return fill_ || inventory_; }
+    // The bordering unknown lambda: ln Pi (Fill), ln Lambda (Inventory), unused (Load).
+    double Pi_of(double lam) const { return fill_ ? std::exp(lam) : p_.Pi; }
+    double Lambda_of(double lam) const { return inventory_ ? std::exp(lam) : p_.Lambda; }
 
     double nu_of(double s) const { return cap_ / (1.0 + std::exp(-s)); }
 
     // Residual (and Jacobian when `jac`) at unknowns u, s, lambda; returns the max norm.
     double evaluate(const std::vector<double>& u, const std::vector<double>& s, double lam, bool jac) {
-        const double Pi = fill_ ? std::exp(lam) : p_.Pi;
+        const double Pi = Pi_of(lam), L = Lambda_of(lam);
+        L_ = L;
         for (std::size_t i = 0; i < n_; ++i) {
             const double nu = nu_of(s[i]);
             const double dnu = nu * (1.0 - nu / cap_);
@@ -91,9 +98,9 @@ public:
             if (!jac) {
                 Local<double> l{u[im], u[i], u[ip], nodes_[im].nu, nodes_[i].nu, nodes_[ip].nu,
                                 nodes_[im].M, nodes_[i].M, nodes_[ip].M, nodes_[im].K, nodes_[i].K, nodes_[ip].K,
-                                nodes_[i].C, Pi, wn.b5, wn.b6, wn.b7, wn.b8};
+                                nodes_[i].C, Pi, L, wn.b5, wn.b6, wn.b7, wn.b8};
                 double ru, rn;
-                node_residual(kind, l, w, h_, p_.Lambda, ru, rn);
+                node_residual(kind, l, w, h_, ru, rn);
                 F_[i] = {ru, rn};
             } else {
                 const Node& a = nodes_[im];
@@ -104,10 +111,11 @@ public:
                             D7::lifted(a.M, kSm, a.dM), D7::lifted(c.M, kSc, c.dM), D7::lifted(b.M, kSp, b.dM),
                             D7::lifted(a.K, kSm, a.dK), D7::lifted(c.K, kSc, c.dK), D7::lifted(b.K, kSp, b.dK),
                             D7::lifted(c.C, kSc, c.dC), D7::lifted(Pi, kLam, fill_ ? Pi : 0.0),
+                            D7::lifted(L, kLam, inventory_ ? L : 0.0),
                             D7::lifted(wn.b5, kSc, wn.db5), D7::lifted(wn.b6, kSc, wn.db6),
                             D7::lifted(wn.b7, kSc, wn.db7), D7::lifted(wn.b8, kSc, wn.db8)};
                 D7 ru, rn;
-                node_residual(kind, l, w, h_, p_.Lambda, ru, rn);
+                node_residual(kind, l, w, h_, ru, rn);
                 F_[i] = {ru.v, rn.v};
                 const auto blk = [&](int su, int ss) {
                     Eigen::Matrix2d m;
@@ -128,6 +136,9 @@ public:
         if (fill_) {
             g_ = mean_nu() - p_.nu_mean;
             norm = std::max(norm, std::abs(g_));
+        } else if (inventory_) {
+            g_ = L * mean_nu() - p_.inventory;
+            norm = std::max(norm, std::abs(g_));
         }
         return norm;
     }
@@ -145,18 +156,20 @@ public:
         for (std::size_t i = 0; i < n_; ++i) x_[i] = -F_[i];
         J_.solve(x_);
         dlam = 0;
-        if (fill_) {
-            // Bordered system [J c; r 0]: x = x1 - dlam x2, r.x = -g  (§6.1 "Fill mode")
+        if (bordered()) {
+            // Bordered system [J c; r k]: x = x1 - dlam x2, r.x + k dlam = -g  (§6.1 "Fill mode");
+            // Fill: g = mean nu - target, k = 0; Inventory: g = Lambda mean nu - inventory, k = Lambda mean nu.
             for (std::size_t i = 0; i < n_; ++i) y_[i] = Fl_[i];
             J_.solve(y_);
+            const double scale = inventory_ ? L_ : 1.0, k = inventory_ ? L_ * mean_nu() : 0.0;
             double rx1 = 0, rx2 = 0;
             for (std::size_t i = 0; i < n_; ++i) {
-                const double r = weight(i) * nodes_[i].dnu;
+                const double r = scale * weight(i) * nodes_[i].dnu;
                 rx1 += r * x_[i][1];
                 rx2 += r * y_[i][1];
             }
-            if (!(std::abs(rx2) > 0)) return false;
-            dlam = (rx1 + g_) / rx2;
+            if (!(std::abs(rx2 - k) > 0)) return false;
+            dlam = (rx1 + g_) / (rx2 - k);
             for (std::size_t i = 0; i < n_; ++i) x_[i] -= dlam * y_[i];
         }
         for (std::size_t i = 0; i < n_; ++i) {
@@ -176,7 +189,8 @@ private:
     const Problem& p_;
     std::size_t N_, n_;
     double h_, cap_;
-    bool fill_;
+    bool fill_, inventory_;
+    double L_ = 0;  // Lambda of the last evaluate()
     std::vector<Node> nodes_;
     WallNode wall_[2]{};
     std::vector<Eigen::Vector2d> F_, Fl_, x_, y_;
@@ -197,7 +211,8 @@ NewtonReport newton_fv(const Problem& p, const SolverSettings& st, Solution& sol
         const double nu = std::clamp(sol.nu[i], 1e-9 * cap, (1 - 1e-12) * cap);
         s[i] = std::log(nu / (cap - nu));
     }
-    double lam = std::log(sol.Pi > 0 ? sol.Pi : p.Pi);
+    double lam = fv.inventory() ? std::log(sol.Lambda > 0 ? sol.Lambda : p.Lambda)
+                                : std::log(sol.Pi > 0 ? sol.Pi : p.Pi);
     double norm = fv.evaluate(u, s, lam, true);
     for (int it = 0;; ++it) {
         rep.iterations = it;
@@ -266,7 +281,8 @@ NewtonReport newton_fv(const Problem& p, const SolverSettings& st, Solution& sol
         sol.u[i] = u[i];
         sol.nu[i] = fv.nu_of(s[i]);
     }
-    sol.Pi = fv.fill() ? std::exp(lam) : p.Pi;
+    sol.Pi = fv.Pi_of(lam);
+    sol.Lambda = fv.Lambda_of(lam);
     sol.residual = rep.residual;
     if (rep.converged) {
         // Guard against the spurious "empty channel" branch (§6.3).
@@ -284,21 +300,24 @@ double fv_residual_norm(const Problem& p, const Solution& s) {
     const double cap = fv.cap();
     std::vector<double> lg(s.nodes());
     for (std::size_t i = 0; i < s.nodes(); ++i) lg[i] = std::log(s.nu[i] / (cap - s.nu[i]));
-    return fv.evaluate(s.u, lg, std::log(s.Pi), false);
+    return fv.evaluate(s.u, lg, std::log(fv.inventory() ? s.Lambda : s.Pi), false);
 }
 
 namespace {
 
 Solution initial_guess(const Problem& p, int cells) {
-    const UniformShear h = p.mode == Mode::Load ? uniform_shear_load(p) : uniform_shear_fill(p);
+    const UniformShear h = p.mode == Mode::Load   ? uniform_shear_load(p)
+                           : p.mode == Mode::Fill ? uniform_shear_fill(p)
+                                                  : uniform_shear_inventory(p);
     return uniform_solution(h, cells);
 }
 
 std::string describe(const Problem& p) {
     std::ostringstream m;
-    if (p.mode == Mode::Load) m << "Pi = rho U^2/P = " << p.Pi;
-    else m << "mean nu = " << p.nu_mean;
-    m << ", Lambda = H/d = " << p.Lambda;
+    if (p.mode == Mode::Fill) m << "mean nu = " << p.nu_mean;
+    else m << "Pi = rho U^2/P = " << p.Pi;
+    if (p.mode == Mode::Inventory) m << ", grains per wall area / d = " << p.inventory;
+    else m << ", Lambda = H/d = " << p.Lambda;
     return m.str();
 }
 
@@ -325,13 +344,13 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
     // mean nu) to the target, in ln Lambda and ln Pi (Load) or mean nu (Fill), halving the step
     // when Newton fails (or after a step that needed many iterations).
     Problem start = p;
-    start.Lambda = std::min(p.Lambda, 5.0);
-    if (p.mode == Mode::Load) start.Pi = std::clamp(p.Pi, 0.3, 3.0);
+    start.Lambda = p.mode == Mode::Inventory ? p.Lambda : std::min(p.Lambda, 5.0);
+    if (p.mode != Mode::Fill) start.Pi = std::clamp(p.Pi, 0.3, 3.0);
     else start.nu_mean = std::clamp(p.nu_mean, 0.3 * p.closures->cap(), 0.9 * p.closures->cap());
     const auto at = [&](double t) {
         Problem q = p;
         q.Lambda = std::exp((1 - t) * std::log(start.Lambda) + t * std::log(p.Lambda));
-        if (p.mode == Mode::Load) q.Pi = std::exp((1 - t) * std::log(start.Pi) + t * std::log(p.Pi));
+        if (p.mode != Mode::Fill) q.Pi = std::exp((1 - t) * std::log(start.Pi) + t * std::log(p.Pi));
         else q.nu_mean = (1 - t) * start.nu_mean + t * p.nu_mean;
         return q;
     };

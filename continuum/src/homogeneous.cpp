@@ -21,6 +21,7 @@ UniformShear uniform_state(const Problem& p, double nu) {
     h.slip_bottom = h.shear / k0;
     h.slip_top = h.shear / k1;
     h.Pi = p.Pi;
+    h.Lambda = p.Lambda;
     return h;
 }
 
@@ -34,16 +35,28 @@ double excess(const Problem& p, double nu) {
 }
 }  // namespace
 
+namespace {
+// The problem at solid fraction nu: Load as given; Inventory with the gap that holds the grains.
+Problem at_nu(const Problem& p, double nu) {
+    Problem q = p;
+    if (p.mode == Mode::Inventory) q.Lambda = p.inventory / nu;
+    return q;
+}
+double excess_at(const Problem& p, double nu) { return excess(at_nu(p, nu), nu); }
+}  // namespace
+
+UniformShear uniform_shear_inventory(const Problem& p) { return uniform_shear_load(p); }
+
 UniformShear uniform_shear_load(const Problem& p) {
     // Scan down from the cap in logit space for the dense sign change (docs/continuum-model.md §6.1: the dense
-    // root; the dilute root is the spurious "empty channel" side, §6.3).
+    // root; the dilute root is the spurious "empty channel" side, §6.3). Inventory: the gap follows nu.
     const double cap = p.closures->cap();
     const auto nu_of = [cap](double s) { return cap / (1.0 + std::exp(-s)); };
-    double s_hi = 30.0, f_hi = excess(p, nu_of(s_hi));
+    double s_hi = 30.0, f_hi = excess_at(p, nu_of(s_hi));
     double s_lo = s_hi, f_lo = f_hi;
     bool bracket = false;
     for (double s = 30.0 - 0.1; s > -8.0; s -= 0.1) {
-        const double f = excess(p, nu_of(s));
+        const double f = excess_at(p, nu_of(s));
         if ((f > 0) != (f_hi > 0)) {
             s_lo = s;
             f_lo = f;
@@ -55,7 +68,9 @@ UniformShear uniform_shear_load(const Problem& p) {
     }
     if (!bracket) {
         std::ostringstream m;
-        m << "no uniform-shear state exists for Pi = rho U^2/P = " << p.Pi << " and Lambda = H/d = " << p.Lambda;
+        m << "no uniform-shear state exists for Pi = rho U^2/P = " << p.Pi;
+        if (p.mode == Mode::Inventory) m << " and grains per wall area / d = " << p.inventory;
+        else m << " and Lambda = H/d = " << p.Lambda;
         if (f_hi > 0)
             m << " below the solid-fraction cap " << cap << " (dissipation exceeds shear work even there)"
               << ": lower the normal stress or raise the speed";
@@ -71,7 +86,7 @@ UniformShear uniform_shear_load(const Problem& p) {
     gsl_function F;
     F.function = [](double s, void* v) {
         auto* c = static_cast<Ctx*>(v);
-        return excess(*c->p, c->cap / (1.0 + std::exp(-s)));
+        return excess_at(*c->p, c->cap / (1.0 + std::exp(-s)));
     };
     F.params = &ctx;
     gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
@@ -84,7 +99,8 @@ UniformShear uniform_shear_load(const Problem& p) {
         if (gsl_root_test_interval(a, b, 1e-15, 1e-14) == GSL_SUCCESS) break;
     }
     gsl_root_fsolver_free(solver);
-    return uniform_state(p, nu_of(root));
+    const double nu = nu_of(root);
+    return uniform_state(at_nu(p, nu), nu);
 }
 
 UniformShear uniform_shear_fill(const Problem& p) {
@@ -105,6 +121,7 @@ Solution uniform_solution(const UniformShear& h, int cells) {
         s.u[i] = 1.0 - h.slip_bottom - h.shear * s.y[i];
     }
     s.Pi = h.Pi;
+    s.Lambda = h.Lambda;
     return s;
 }
 

@@ -28,7 +28,16 @@ double wall_du(const Problem& p, bool top, double u, double nu) {
     return top ? -w.params.r5 * p.Lambda * b5 * u : -w.params.r5 * p.Lambda * b5 * (1.0 - u);
 }
 
-Observables observe(const Problem& p, const Solution& s) {
+Problem solved_problem(const Problem& p, const Solution& s) {
+    Problem q = p;
+    q.Pi = s.Pi;
+    if (s.Lambda > 0) q.Lambda = s.Lambda;
+    q.mode = Mode::Load;
+    return q;
+}
+
+Observables observe(const Problem& p0, const Solution& s) {
+    const Problem p = solved_problem(p0, s);
     Observables o;
     const std::size_t n = s.nodes();
     const double h = 1.0 / static_cast<double>(n - 1);
@@ -59,7 +68,8 @@ Observables observe(const Problem& p, const Solution& s) {
     return o;
 }
 
-double energy_balance_defect(const Problem& p, const Solution& s) {
+double energy_balance_defect(const Problem& p0, const Solution& s) {
+    const Problem p = solved_problem(p0, s);
     const std::size_t n = s.nodes();
     const double h = 1.0 / static_cast<double>(n - 1);
     const double L = p.Lambda, Pi = s.Pi;
@@ -88,6 +98,34 @@ double energy_balance_defect(const Problem& p, const Solution& s) {
     const double K0 = node_coefficients(*p.closures, s.nu.front()).K;
     const double KN = node_coefficients(*p.closures, s.nu.back()).K;
     return integral - (KN * dnu(true) - K0 * dnu(false));
+}
+
+EnergyBudget energy_budget(const Problem& p0, const Solution& s) {
+    const Problem p = solved_problem(p0, s);
+    const std::size_t n = s.nodes();
+    const double h = 1.0 / static_cast<double>(n - 1), L = p.Lambda, Pi = s.Pi;
+    // Dimensionless (§5): tau^ = M |u^'| is constant, tau/P = sqrt(Pi) tau^/Lambda; per P U the
+    // wall work is tau/P, the energy equation's terms carry the factor sqrt(Pi)/Lambda / Pi.
+    const double M0 = node_coefficients(*p.closures, s.nu.front()).M;
+    const double tau_hat = M0 * std::abs(wall_du(p, false, s.u.front(), s.nu.front()));
+    const double scale = 1.0 / (std::sqrt(Pi) * L);  // energy-equation units -> P U
+    EnergyBudget b;
+    b.wall_work = std::sqrt(Pi) / L * tau_hat;
+    double bulk = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        bulk += (i == 0 || i + 1 == n ? 0.5 : 1.0) * h * L * L * node_coefficients(*p.closures, s.nu[i]).C;
+    b.bulk_dissipation = scale * bulk;
+    for (bool top : {false, true}) {
+        const WallBC& w = top ? p.top : p.bottom;
+        const double nu = top ? s.nu.back() : s.nu.front();
+        const double us = top ? s.u.back() : 1.0 - s.u.front();
+        const auto c = wall_coefficients(p, w, nu);
+        const double K = node_coefficients(*p.closures, nu).K;
+        const auto& r = w.params;
+        b.wall_dissipation += scale * (K * (r.r6 * L * c.b6.v + r.r7 * L * Pi * c.b7.v * us * us) +
+                                       (1.0 - r.r8) * Pi * tau_hat * us);
+    }
+    return b;
 }
 
 }  // namespace granlub::continuum

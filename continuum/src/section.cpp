@@ -1,4 +1,5 @@
 // The [continuum] case section: one line per key (type, default, range, unit, doc).
+#include "granlub/continuum/closures/family.h"
 #include "granlub/continuum/command.h"
 #include "granlub/continuum/g0/radial_distribution.h"
 #include "granlub/continuum/walls/wall_family.h"
@@ -9,6 +10,26 @@ SectionSpec section() {
     SectionSpec s("continuum", "GKL continuum solver (Sawyer & Tichy 2001; closures of Lun et al. 1984)");
     s.choice("method", "fv", {"fv", "shooting"},
              "fv: finite volumes + Newton (default); shooting: GSL shooting cross-check (small gaps only)");
+    s.choice("closures", "lun84", closure_names(),
+             "closure family: lun84 (Lun et al. 1984) or garzo_dufty (Garzo & Dufty 1999 viscosity and "
+             "conductivity, as extended kinetic theory uses them)");
+    s.choice("friction_restitution", "none", {"none", "jenkins_zhang", "chialvo_sundaresan"},
+             "grain friction ([grains] friction) through an effective restitution in the dissipation: "
+             "Jenkins & Zhang 2002 or Chialvo & Sundaresan 2013; none = frictionless");
+    s.choice("correlation_length", "none", {"none", "jenkins2007"},
+             "correlation length L dividing the dissipation (extended kinetic theory, Jenkins 2007); none = L = d");
+    s.real_optional("max_solid_fraction", Range::closed(0.3, 0.75), "",
+                    "nu_max where g0 diverges (random close packing); default [cell] max_solid_fraction");
+    s.choice("gap", "fixed", {"fixed", "inventory"},
+             "fixed: the gap is [cell] gap; inventory (control = load): the gap is solved to hold the grains the "
+             "particle solvers insert ([operating] solid_fraction x [cell] gap per wall area)");
+    s.choice("wall_plane", "bump_centres", {"bump_centres", "bump_tops"},
+             "where the continuum meets a bumpy wall ([walls] surface = bumps): the plane through the bumps' "
+             "centres, or their tops (the room the bumps leave); gap and mean nu are reported between the "
+             "centres' planes either way");
+    s.real_optional("ordering_fraction", Range::closed(0.3, 0.75), "",
+                    "crystallization criterion: a solution whose largest nu exceeds it is labelled ordered, not "
+                    "drawn as a number; default: no criterion");
     // Values are named as their files (src/g0/lun_savage.cpp); the short names they had are still read.
     s.choice("g0", "ogawa", g0_names(), "radial distribution g0(nu); nu_max is [cell] max_solid_fraction")
         .old_spellings(g0_old_names());

@@ -20,7 +20,7 @@ struct Spec {
 
 inline std::shared_ptr<const Closures> make_closures(const std::string& g0, double ep, double numax = 0.65,
                                                 double alpha = 1.0, bool dufour = true) {
-    return std::make_shared<Closures>(Lun84Params{ep, alpha, dufour},
+    return std::make_shared<Closures>(ClosureParams{ep, alpha, dufour},
                                       std::shared_ptr<const RadialDistribution>(make_g0(g0, numax)));
 }
 

@@ -9,6 +9,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include "fixtures.h"
+#include "granlub/continuum/closures/effective_restitution.h"
+#include "granlub/continuum/closures/garzo_dufty.h"
 #include "granlub/error.h"
 
 using namespace granlub::continuum;
@@ -206,8 +208,8 @@ BOOST_AUTO_TEST_CASE(simple_shear_limits) {
 }
 
 BOOST_AUTO_TEST_CASE(registries_name_every_form_and_reject_unknown_names) {
-    BOOST_TEST(g0_names() ==
-                   (std::vector<std::string>{"ogawa", "lun_savage", "carnahan_starling", "ma_ahmadi", "torquato"}),
+    BOOST_TEST(g0_names() == (std::vector<std::string>{"ogawa", "lun_savage", "carnahan_starling", "ma_ahmadi",
+                                                        "torquato", "chialvo_sundaresan"}),
                boost::test_tools::per_element());
     BOOST_TEST(wall_names() == (std::vector<std::string>{"kinetic", "johnson_jackson"}),
                boost::test_tools::per_element());
@@ -215,9 +217,11 @@ BOOST_AUTO_TEST_CASE(registries_name_every_form_and_reject_unknown_names) {
         make_g0("bogus", 0.65);
         BOOST_FAIL("unknown g0 accepted");
     } catch (const granlub::Error& e) {
-        BOOST_TEST(std::string(e.what()).find("allowed: ogawa, lun_savage, carnahan_starling, ma_ahmadi, torquato") != std::string::npos);
+        BOOST_TEST(std::string(e.what()).find("allowed: ogawa, lun_savage, carnahan_starling, ma_ahmadi, torquato, chialvo_sundaresan") != std::string::npos);
     }
     BOOST_CHECK_THROW(make_wall_family("smooth"), granlub::Error);
+    BOOST_TEST(closure_names() == (std::vector<std::string>{"lun84", "garzo_dufty"}), boost::test_tools::per_element());
+    BOOST_CHECK_THROW(make_closure_family("enskog"), granlub::Error);
     // Torquato is continuous at the freezing point; CS caps the logit map at 0.95.
     const auto t = make_closures("torquato", 0.9);
     BOOST_CHECK_CLOSE_FRACTION(t->g0().g0(0.49 - 1e-12), t->g0().g0(0.49 + 1e-12), 1e-9);
@@ -231,6 +235,119 @@ BOOST_AUTO_TEST_CASE(every_registered_name_is_its_file) {
     const std::filesystem::path src = std::filesystem::path(GRANLUB_SOURCE_DIR) / "continuum" / "src";
     for (const auto& n : g0_names()) BOOST_TEST(std::filesystem::is_regular_file(src / "g0" / (n + ".cpp")), n);
     for (const auto& n : wall_names()) BOOST_TEST(std::filesystem::is_regular_file(src / "walls" / (n + ".cpp")), n);
+    for (const auto& n : closure_names())
+        BOOST_TEST(std::filesystem::is_regular_file(src / "closures" / (n + ".cpp")), n);
     BOOST_TEST(g0_old_names().size() == 3u);
     BOOST_TEST(wall_old_names().size() == 2u);
+}
+
+// Extended kinetic theory (docs/continuum-model.md §2.5-2.8, §8.6).
+namespace {
+std::shared_ptr<const Closures> extended(double e_eff, double numax = 0.636, const std::string& g0 = "torquato",
+                                         CorrelationLength L = CorrelationLength::None) {
+    ClosureParams p;
+    p.restitution = 0.9;
+    p.dissipation_restitution = e_eff;
+    p.correlation_length = L;
+    return std::make_shared<Closures>(p, std::shared_ptr<const RadialDistribution>(make_g0(g0, numax)),
+                                      make_closure_family("garzo_dufty"));
+}
+}  // namespace
+
+// Friction through an effective restitution at e = 0.9: the values of Jenkins & Zhang 2002 and
+// Chialvo & Sundaresan 2013 as tabulated (to 3 digits) beside their formulas in the specification
+// this implementation follows (§2.6).
+BOOST_AUTO_TEST_CASE(effective_restitution_tables) {
+    const std::array<std::array<double, 3>, 4> t{{{0.1, 0.783, 0.789}, {0.3, 0.688, 0.717}, {0.5, 0.663, 0.733},
+                                                 {1.0, 0.650, 0.825}}};
+    for (const auto& r : t) {
+        BOOST_TEST(closures::e_eff_jenkins_zhang(0.9, r[0]) == r[1], boost::test_tools::tolerance(1e-3));
+        BOOST_TEST(closures::e_eff_chialvo_sundaresan(0.9, r[0]) == r[2], boost::test_tools::tolerance(1e-3));
+    }
+    BOOST_TEST(closures::e_eff_jenkins_zhang(0.9, 0.0) == 0.9);  // frictionless: e itself
+    // e_eff scales the dissipation alone: (1 - e_eff^2)/(1 - e^2)
+    const auto a = extended(0.9)->state(0.45), b = extended(0.7)->state(0.45);
+    BOOST_CHECK_CLOSE_FRACTION(b.fgam.v / a.fgam.v, (1 - 0.49) / (1 - 0.81), 1e-12);
+    BOOST_TEST(b.fmu.v == a.fmu.v);
+    BOOST_TEST(b.fk.v == a.fk.v);
+    BOOST_TEST(b.fp.v == a.fp.v);
+}
+
+// Garzo-Dufty at e = 1, nu -> 0: the Chapman-Enskog values, as LSJC's (§8.2); and equal to LSJC's
+// pressure and dissipation everywhere.
+BOOST_AUTO_TEST_CASE(garzo_dufty_limits_and_shared_functions) {
+    const double g = 1.0, nu = 1e-12;
+    BOOST_CHECK_CLOSE_FRACTION(closures::f_mu_gd(nu, g, 1.0), 5 * std::sqrt(std::numbers::pi) / 96, 1e-9);
+    BOOST_CHECK_CLOSE_FRACTION(closures::f_kappa_gd(nu, g, 1.0), 75 * std::sqrt(std::numbers::pi) / 384, 1e-9);
+    const auto gd = extended(0.9, 0.65, "ogawa")->state(0.5);
+    const auto lun = make_closures("ogawa", 0.9, 0.65, 1.0, false)->state(0.5);
+    BOOST_CHECK_CLOSE_FRACTION(gd.fp.v, lun.fp.v, 1e-14);
+    BOOST_CHECK_CLOSE_FRACTION(gd.fgam.v, lun.fgam.v, 1e-14);
+    BOOST_TEST(gd.fphi.v == 0.0);
+    // the families differ in viscosity and conductivity (by ~1 % here), so the test can tell them apart
+    BOOST_TEST(std::abs(gd.fmu.v / lun.fmu.v - 1) > 0.005);
+    BOOST_TEST(std::abs(gd.fk.v / lun.fk.v - 1) > 0.005);
+    // exact derivatives for the new family and g0
+    for (const std::string g0 : {"torquato", "chialvo_sundaresan"})
+        for (double x : {0.2, 0.45, 0.55, 0.6}) {
+            BOOST_TEST_CONTEXT("g0 = " << g0 << ", nu = " << x) {
+                const auto c = extended(0.733, 0.636, g0, CorrelationLength::Jenkins2007);
+                const double h = 1e-6 * x;
+                const auto a = node_coefficients(*c, x - h), b = node_coefficients(*c, x + h);
+                const auto n = node_coefficients(*c, x);
+                BOOST_CHECK_CLOSE_FRACTION(n.dM, (b.M - a.M) / (2 * h), 1e-6);
+                BOOST_CHECK_CLOSE_FRACTION(n.dK, (b.K - a.K) / (2 * h), 1e-6);
+                BOOST_CHECK_CLOSE_FRACTION(n.dC, (b.C - a.C) / (2 * h), 1e-6);
+            }
+        }
+}
+
+// Homogeneous simple shear in extended kinetic theory: production = dissipation gives
+// (d gdot / T^{1/2})^2 = f_gamma/f_mu, so mu = s/p = sqrt(f_mu f_gamma)/f_p and
+// I = sqrt(f_gamma/f_mu)/sqrt(f_p). Garzo-Dufty, Torquato g0 with nu_c = 0.636, e = 0.9 and the
+// e_eff of each column (e, and CS13 and JZ02 at mu_p = 0.5); the table (to 3 digits) computed
+// independently from the formulas (§8.6).
+BOOST_AUTO_TEST_CASE(extended_homogeneous_shear_table) {
+    struct R { double nu, mu09, I09, mu733, I733, mu663, I663; };
+    const std::array<R, 7> t{{{0.30, 0.278, 0.841, 0.433, 1.313, 0.477, 1.444},
+                              {0.40, 0.286, 0.617, 0.447, 0.964, 0.491, 1.060},
+                              {0.47, 0.292, 0.478, 0.456, 0.747, 0.501, 0.821},
+                              {0.49, 0.293, 0.442, 0.458, 0.691, 0.504, 0.760},
+                              {0.55, 0.298, 0.317, 0.466, 0.494, 0.512, 0.544},
+                              {0.60, 0.303, 0.194, 0.472, 0.302, 0.519, 0.332},
+                              {0.62, 0.304, 0.126, 0.475, 0.197, 0.522, 0.217}}};
+    const auto check = [](double e_eff, double nu, double mu, double I) {
+        const auto s = extended(e_eff)->state(nu);
+        BOOST_TEST_CONTEXT("e_eff = " << e_eff << ", nu = " << nu) {
+            // the table's last digit, rounded: within 0.6 units of it
+            BOOST_TEST(std::abs(std::sqrt(s.fmu.v * s.fgam.v) / s.fp.v - mu) <= 6e-4);
+            BOOST_TEST(std::abs(std::sqrt(s.fgam.v / s.fmu.v / s.fp.v) - I) <= 6e-4);
+        }
+    };
+    for (const R& r : t) {
+        check(0.9, r.nu, r.mu09, r.I09);
+        check(closures::e_eff_chialvo_sundaresan(0.9, 0.5), r.nu, r.mu733, r.I733);  // 0.7327
+        check(closures::e_eff_jenkins_zhang(0.9, 0.5), r.nu, r.mu663, r.I663);        // 0.6632
+    }
+}
+
+// The Jenkins 2007 correlation length (§2.7): 1 below nu ~ 0.5, then growing; mu ~ L*^{-1/2}.
+BOOST_AUTO_TEST_CASE(correlation_length_values) {
+    const auto g = make_g0("torquato", 0.636);
+    const std::array<std::array<double, 2>, 5> t{{{0.45, 1.0}, {0.55, 1.324}, {0.58, 1.582}, {0.60, 1.875}, {0.62, 2.512}}};
+    for (const auto& r : t)
+        BOOST_TEST(closures::correlation_length_jenkins2007(r[0], g->g0(r[0]), 0.733) == r[1],
+                   boost::test_tools::tolerance(1e-3));
+    ClosureParams p;
+    p.restitution = 0.9;
+    const auto with = [&](CorrelationLength L) {
+        p.correlation_length = L;
+        return Closures(p, std::shared_ptr<const RadialDistribution>(make_g0("torquato", 0.636)),
+                        make_closure_family("garzo_dufty"))
+            .state(0.62);
+    };
+    const double L = closures::correlation_length_jenkins2007(0.62, g->g0(0.62), 0.9);
+    BOOST_TEST(L > 1.5);
+    BOOST_CHECK_CLOSE_FRACTION(with(CorrelationLength::None).fgam.v / with(CorrelationLength::Jenkins2007).fgam.v, L,
+                               1e-12);
 }

@@ -8,6 +8,8 @@
 
 #include <unistd.h>
 
+#include <fmt/format.h>
+
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/case/case.h"
@@ -241,4 +243,65 @@ BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
         BOOST_TEST(contains(e.what(), "residual"));
         BOOST_TEST(contains(e.what(), "try"));
     }
+}
+
+// Choices that cannot go together stop before anything runs (exit 2 from the command line), naming the key.
+BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
+    const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
+        try {
+            continuum::settings_from_case(parse(extra, base));
+        } catch (const CaseError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    std::string e = settings_error("[continuum]\nclosures = \"garzo_dufty\"\nviscosity_alpha = 1.6\n");
+    BOOST_TEST(contains(e, "viscosity_alpha"), e);
+    BOOST_TEST(contains(e, "lun84"), e);
+    e = settings_error("[continuum]\ngap = \"inventory\"\nmethod = \"shooting\"\n");
+    BOOST_TEST(contains(e, "method"), e);
+    e = settings_error("[continuum]\nwall_plane = \"bump_tops\"\n");
+    BOOST_TEST(contains(e, "wall_plane"), e);
+    BOOST_TEST(contains(e, "bumps"), e);
+    std::string fill(kCase);
+    fill = fill.substr(0, fill.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
+    e = settings_error("[continuum]\ngap = \"inventory\"\n", fill);
+    BOOST_TEST(contains(e, "gap"), e);
+    BOOST_TEST(contains(e, "control"), e);
+    // and the command's answer to them
+    TempDir tmp;
+    BOOST_CHECK_THROW(continuum::run(parse("[continuum]\nclosures = \"garzo_dufty\"\nviscosity_alpha = 1.6\n"), into(tmp)),
+                      CaseError);
+}
+
+// gap = "inventory": the gap under the load from the grains the particle solvers insert, with the gap
+// in the summary; a solution past the crystallization criterion is labelled ordered, not a steady number.
+BOOST_AUTO_TEST_CASE(inventory_gap_and_the_ordered_label) {
+    TempDir tmp;
+    const std::string ekt = "[continuum]\nclosures = \"garzo_dufty\"\ng0 = \"torquato\"\nmax_solid_fraction = 0.636\n"
+                            "correlation_length = \"jenkins2007\"\ngap = \"inventory\"\n";
+    const std::string base = std::string(kCase).substr(0, std::string(kCase).find("[operating]")) +
+                             "[operating]\nspeed = [0.4, 2.8]\ncontrol = \"load\"\nnormal_stress = 5.5e3\n"
+                             "solid_fraction = 0.5\n";
+    const Case c = parse(ekt, base);
+    BOOST_TEST(continuum::run(c, into(tmp)) == 0);
+    for (const char* id : {"U0.4", "U2.8"}) {
+        const auto s = read_summary(tmp.path / "continuum" / id / "summary.json");
+        const double gap = s.outputs.at("gap").value, nu = s.outputs.at("mean_solid_fraction").value;
+        BOOST_TEST(gap * nu == 0.5 * 4.0e-3, boost::test_tools::tolerance(1e-9));  // holds the grains
+        BOOST_TEST(s.run.at("status") == "steady");
+        BOOST_TEST(std::abs(s.run.at("energy_budget").at("relative_defect").get<double>()) < 1e-3);
+    }
+    // slower is denser: the criterion at 0.5 labels the slow point ordered and leaves the fast one
+    const auto slow = read_summary(tmp.path / "continuum" / "U0.4" / "summary.json");
+    const auto fast = read_summary(tmp.path / "continuum" / "U2.8" / "summary.json");
+    BOOST_TEST(slow.outputs.at("gap").value < fast.outputs.at("gap").value);
+    TempDir tmp2;
+    const double cut = 0.5 * (slow.outputs.at("solid_fraction_centre").value + fast.outputs.at("solid_fraction_centre").value);
+    const Case o = parse(ekt + fmt::format("ordering_fraction = {}\n", cut), base);
+    BOOST_TEST(continuum::run(o, into(tmp2)) == 0);
+    const auto so = read_summary(tmp2.path / "continuum" / "U0.4" / "summary.json");
+    BOOST_TEST(so.run.at("status") == "ordered");
+    BOOST_TEST(contains(so.run.at("status_reason").get<std::string>(), "ordering_fraction"));
+    BOOST_TEST(read_summary(tmp2.path / "continuum" / "U2.8" / "summary.json").run.at("status") == "steady");
 }

@@ -1,4 +1,4 @@
-// Regression numbers of docs/continuum-model.md §7 (§8.6), FV with N = 200 as in the reference.
+// Regression numbers of docs/continuum-model.md §7 (§8.7), FV with N = 200 as in the reference.
 // Tolerances follow the digits printed in the reference (about 1e-4 relative).
 #define BOOST_TEST_MODULE continuum_regression
 #include <array>

@@ -291,3 +291,67 @@ BOOST_AUTO_TEST_CASE(newton_is_quadratic_from_the_uniform_guess) {
         BOOST_TEST(fv_residual_norm(p, s) < 1e-10);
     }
 }
+
+// §5.1: the gap under a load from the grains' inventory (the particle solvers' question), with the
+// extended closures (Garzo-Dufty, Torquato g0 to nu_c = 0.636, friction through e_eff, Jenkins 2007 L*).
+namespace {
+Problem inventory_problem(double U, double P, double inventory) {
+    Spec sp = sawyer(U, P);
+    Problem p = problem(sp);
+    ClosureParams cp;
+    cp.restitution = 0.9;
+    cp.dissipation_restitution = 0.7326;
+    cp.correlation_length = CorrelationLength::Jenkins2007;
+    p.closures = std::make_shared<Closures>(cp, std::shared_ptr<const RadialDistribution>(make_g0("torquato", 0.636)),
+                                            make_closure_family("garzo_dufty"));
+    p.mode = Mode::Inventory;
+    p.inventory = inventory;
+    return p;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(inventory_gap_is_consistent_with_the_fixed_gap_problem) {
+    for (double U : {0.4, 1.4, 2.8}) {
+        const Problem p = inventory_problem(U, 2250, 0.595 * 4.0 / 0.787);
+        const Solution s = solve_fv(p, mesh(200));
+        BOOST_TEST_CONTEXT("U = " << U << ", gap/d = " << s.Lambda) {
+            // it holds the grains
+            BOOST_TEST(s.Lambda * observe(p, s).nu_mean == p.inventory, boost::test_tools::tolerance(1e-9));
+            // and is the fixed-gap (Load) solution at that gap
+            Problem load = p;
+            load.mode = Mode::Load;
+            load.Lambda = s.Lambda;
+            const Solution l = solve_fv(load, mesh(200));
+            BOOST_TEST(max_diff(l.nu, s.nu) < 1e-8);
+            BOOST_TEST(max_diff(l.u, s.u) < 1e-8);
+        }
+    }
+}
+
+// §8.5: wall work = bulk dissipation + wall dissipation, to the scheme's O(h^2).
+BOOST_AUTO_TEST_CASE(energy_budget_closes) {
+    for (const Problem& p : {problem(sawyer(2.0)), inventory_problem(1.4, 5550, 0.595 * 4.0 / 0.787)}) {
+        double last = 1;
+        for (int N : {100, 200, 400}) {
+            const EnergyBudget b = energy_budget(p, solve_fv(p, mesh(N)));
+            BOOST_TEST_MESSAGE("N = " << N << ": wall work " << b.wall_work << ", bulk " << b.bulk_dissipation
+                                      << ", walls " << b.wall_dissipation << ", defect " << b.relative_defect());
+            BOOST_TEST(b.bulk_dissipation > 0);
+            BOOST_TEST(b.wall_dissipation > 0);
+            BOOST_TEST(std::abs(b.relative_defect()) < 2e-4);
+            BOOST_TEST(std::abs(b.relative_defect()) < 0.3 * last + 1e-12);  // ~1/4 per halving (second order)
+            last = std::abs(b.relative_defect());
+        }
+    }
+}
+
+// §6.1: doubling the nodes moves the solved gap by < 1e-4 of it.
+BOOST_AUTO_TEST_CASE(inventory_gap_mesh_convergence) {
+    for (double P : {2250.0, 5550.0})
+        for (double U : {0.4, 2.8}) {
+            const Problem p = inventory_problem(U, P, 0.595 * 4.0 / 0.787);
+            const double a = solve_fv(p, mesh(200)).Lambda, b = solve_fv(p, mesh(400)).Lambda;
+            BOOST_TEST_MESSAGE("U = " << U << ", P = " << P << ": gap/d " << a << " -> " << b);
+            BOOST_TEST(std::abs(a - b) < 1e-4 * b);
+        }
+}

@@ -10,6 +10,7 @@ std::unique_ptr<RadialDistribution> make_g0_lun_savage(double numax);
 std::unique_ptr<RadialDistribution> make_g0_carnahan_starling(double numax);
 std::unique_ptr<RadialDistribution> make_g0_ma_ahmadi(double numax);
 std::unique_ptr<RadialDistribution> make_g0_torquato(double numax);
+std::unique_ptr<RadialDistribution> make_g0_chialvo_sundaresan(double numax);
 
 const std::vector<G0Entry>& g0_registry() {
     static const std::vector<G0Entry> table = {
@@ -20,6 +21,8 @@ const std::vector<G0Entry>& g0_registry() {
         {"ma_ahmadi", "Ma & Ahmadi 1986", make_g0_ma_ahmadi, "ma"},
         {"torquato", "Carnahan-Starling below 0.49, then (nu_max - 0.49)/(nu_max - nu), Torquato 1995",
          make_g0_torquato},
+        {"chialvo_sundaresan", "CS + 0.58 nu^2/(nu_max - nu)^(3/2), Chialvo & Sundaresan 2013 Eq. 31",
+         make_g0_chialvo_sundaresan},
     };
     static const bool checked = (registry_checked(table, "g0"), true);  // once, where it is built
     (void)checked;

@@ -14,7 +14,7 @@ namespace granlub::continuum {
 namespace {
 class JohnsonJackson final : public WallFamily {
 public:
-    WallCoefficients coefficients(const Lun84State<D1>& s, const WallParams& w, double numax) const override {
+    WallCoefficients coefficients(const ClosureState<D1>& s, const WallParams& w, double numax) const override {
         const double a = std::numbers::pi * std::sqrt(3.0) / (6.0 * numax);
         const double ew = w.restitution;
         const D1 ng = s.nu * s.g;

@@ -15,7 +15,7 @@ namespace granlub::continuum {
 namespace {
 class Kinetic final : public WallFamily {
 public:
-    WallCoefficients coefficients(const Lun84State<D1>& s, const WallParams& w, double /*numax*/) const override {
+    WallCoefficients coefficients(const ClosureState<D1>& s, const WallParams& w, double /*numax*/) const override {
         const double c = std::sqrt(2.0 / std::numbers::pi);
         const double ew = w.restitution;
         return {c * s.fp / ((1.0 + ew) * s.fmu), c * (1.0 - ew) * s.fp / s.G,

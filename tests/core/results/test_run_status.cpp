@@ -25,7 +25,7 @@ json refinement(double dnu, double rel_bottom, double z_bottom) {
 BOOST_AUTO_TEST_SUITE(regime)
 
 BOOST_AUTO_TEST_CASE(names_round_trip_and_missing_is_unknown) {
-    for (auto s : {RegimeStatus::Steady, RegimeStatus::Transient, RegimeStatus::DtUnconverged})
+    for (auto s : {RegimeStatus::Steady, RegimeStatus::Transient, RegimeStatus::DtUnconverged, RegimeStatus::Ordered})
         BOOST_TEST((regime_status_from_string(to_string(s)) == s));
     BOOST_TEST(!regime_status_from_string("unknown").has_value());  // never written
     BOOST_TEST(!regime_status_from_string("Steady").has_value());

@@ -15,7 +15,10 @@ enum class Method { FiniteVolume, Shooting };
 // The [continuum] section, resolved once per case.
 struct Settings {
     Method method = Method::FiniteVolume;
-    std::string g0_name, wall_name;
+    std::string g0_name, wall_name, closures_name;
+    bool gap_from_inventory = false;  // [continuum] gap = "inventory"
+    bool wall_at_bump_tops = false;   // [continuum] wall_plane = "bump_tops"
+    double ordering_fraction = 0;     // crystallization criterion; 0 = none
     SolverSettings solver;
     std::shared_ptr<const Closures> closures;
     std::shared_ptr<const WallFamily> family;

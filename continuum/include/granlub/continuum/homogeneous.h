@@ -12,6 +12,7 @@ struct UniformShear {
     double slip_bottom = 0, slip_top = 0;  // u_s/U at each wall
     double shear = 0;                      // -u^'
     double Pi = 0;
+    double Lambda = 0;  // H / sigma (Inventory: the gap that holds the grains at nu)
 };
 
 // Shear and slips of the uniform state at a given nu.
@@ -19,6 +20,8 @@ UniformShear uniform_state(const Problem& p, double nu);
 // Load mode: the dense root nu of the energy equation for the problem's Pi (Brent).
 // Throws granlub::SolverError when there is none.
 UniformShear uniform_shear_load(const Problem& p);
+// Inventory mode: the dense root nu with Lambda = inventory / nu.
+UniformShear uniform_shear_inventory(const Problem& p);
 // Fill mode: the Pi that makes nu = p.nu_mean the uniform solution.
 UniformShear uniform_shear_fill(const Problem& p);
 // Solution on the mesh from the uniform state.

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "granlub/continuum/closures/lun84.h"
+#include "granlub/continuum/closures/closure_set.h"
 #include "granlub/continuum/walls/wall_family.h"
 
 namespace granlub::continuum {
@@ -19,6 +19,9 @@ namespace granlub::continuum {
 enum class Mode {
     Load,  // P_y given (Pi known), mean nu out (S&T)
     Fill,  // mean nu given, Pi (hence P_y) out: one extra unknown and the mass constraint
+    // P_y given (Pi known) and the grains per wall area (inventory = integral of nu dy / sigma), the gap
+    // Lambda out: one extra unknown and the mass constraint (the particle solvers' question, §5.1)
+    Inventory,
 };
 
 struct WallBC {
@@ -31,6 +34,7 @@ struct Problem {
     double Lambda = 0;   // H / sigma
     double Pi = 0;       // rho_p U^2 / P_y (Load: given; Fill: output)
     double nu_mean = 0;  // target mean solid fraction (Fill)
+    double inventory = 0;  // Lambda * mean nu: grains per wall area over sigma (Inventory)
     Mode mode = Mode::Load;
     WallBC bottom, top;  // y^ = 0 moving, y^ = 1 fixed
 
@@ -41,6 +45,7 @@ struct Problem {
 struct Solution {
     std::vector<double> y, u, nu;
     double Pi = 0;
+    double Lambda = 0;            // H / sigma: the problem's, or the solved gap (Inventory)
     int iterations = 0;           // Newton (FV) or multiroot (shooting) iterations, all stages
     double residual = 0;          // final max-norm residual
     int continuation_steps = 0;   // 0 when the direct solve converged
@@ -74,7 +79,21 @@ NodeCoefficients node_coefficients(const Closures& c, double nu);
 WallCoefficients wall_coefficients(const Problem& p, const WallBC& w, double nu);
 double wall_du(const Problem& p, bool top, double u, double nu);
 
+// The problem with the solution's Pi and Lambda (the solved unknowns of Fill and Inventory), as Load:
+// what observe() and energy_balance_defect() evaluate.
+Problem solved_problem(const Problem& p, const Solution& s);
+
 Observables observe(const Problem& p, const Solution& s);
+
+// The mechanical energy budget of a solution per unit wall area, in units of P_y U (§8.5):
+//   wall work tau U = bulk dissipation int gamma dy + wall dissipation at both walls
+// where a wall dissipates its collisional terms (R6, R7) and the part (1 - R8) of the slip work that the
+// energy wall condition does not return to the flow. Trapezoid rule: O(h^2) for the FV solution.
+struct EnergyBudget {
+    double wall_work = 0, bulk_dissipation = 0, wall_dissipation = 0;
+    double relative_defect() const { return (wall_work - bulk_dissipation - wall_dissipation) / wall_work; }
+};
+EnergyBudget energy_budget(const Problem& p, const Solution& s);
 
 // Global fluctuation-energy balance (§8.5): int S dy - [K nu']_0^1, with S by the trapezoid
 // rule and u^' by central differences; O(h^2) for the FV solution.

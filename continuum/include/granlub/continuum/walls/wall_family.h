@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "granlub/continuum/closures/lun84.h"
+#include "granlub/continuum/closures/closure_set.h"
 
 namespace granlub::continuum {
 
@@ -27,7 +27,7 @@ struct WallCoefficients {
 class WallFamily {
 public:
     virtual ~WallFamily() = default;
-    virtual WallCoefficients coefficients(const Lun84State<D1>& s, const WallParams& w, double numax) const = 0;
+    virtual WallCoefficients coefficients(const ClosureState<D1>& s, const WallParams& w, double numax) const = 0;
 };
 
 struct WallEntry {

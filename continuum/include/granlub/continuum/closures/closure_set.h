@@ -1,0 +1,46 @@
+// The closures of one case: a closure family (family.h), a g0 form, and the dissipation modifiers
+// friction (effective_restitution.h) and correlation length (correlation_length.h), which act on f_gamma
+// alone (docs/continuum-model.md §2.6-2.7):
+//   f_gamma = f_gamma(e_p) (1 - e_eff^2)/(1 - e_p^2) / L*(nu)
+#pragma once
+#include <memory>
+
+#include "granlub/continuum/closures/correlation_length.h"
+#include "granlub/continuum/closures/family.h"
+#include "granlub/continuum/g0/radial_distribution.h"
+
+namespace granlub::continuum {
+
+class Closures {
+public:
+    // Without a family: lun84 (the default of every case).
+    Closures(ClosureParams p, std::shared_ptr<const RadialDistribution> g0,
+             std::shared_ptr<const ClosureFamily> family = make_closure_family("lun84"))
+        : p_(p), g0_(std::move(g0)), family_(std::move(family)) {
+        const double e = p_.restitution, ee = p_.e_eff();
+        friction_factor_ = ee == e ? 1.0 : (1.0 - ee * ee) / (1.0 - e * e);
+    }
+    // All functions at nu, with exact d/dnu in the dual parts.
+    ClosureState<D1> state(D1 nu) const {
+        ClosureState<D1> s = family_->state(p_, nu, g0_->g0(nu), g0_->dg0(nu));
+        if (friction_factor_ != 1.0) s.fgam = s.fgam * friction_factor_;
+        if (p_.correlation_length == CorrelationLength::Jenkins2007)
+            s.fgam = s.fgam / closures::correlation_length_jenkins2007(s.nu, s.g, p_.restitution);
+        s.G = s.fk * s.dfp / s.fp - s.fphi;
+        return s;
+    }
+    ClosureState<D1> state(double nu) const { return state(D1::variable(nu, 0)); }
+    const ClosureParams& params() const { return p_; }
+    const RadialDistribution& g0() const { return *g0_; }
+    const ClosureFamily& family() const { return *family_; }
+    double numax() const { return g0_->numax(); }
+    double cap() const { return g0_->cap(); }
+
+private:
+    ClosureParams p_;
+    std::shared_ptr<const RadialDistribution> g0_;
+    std::shared_ptr<const ClosureFamily> family_;
+    double friction_factor_ = 1.0;
+};
+
+}  // namespace granlub::continuum
