@@ -7,6 +7,7 @@
 
 #include "figures.h"
 #include "granlub/statistics/flow_regime.h"
+#include "granlub/statistics/point_verdict.h"
 #include "mu_of_i.h"
 #include "scope.h"
 #include "state_series.h"
@@ -172,10 +173,12 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
     t.header = {"solver", "point", "U (m/s)", "P (Pa)", "status", "verdict", "decided by", "I (U/H)", "I (mid-gap)",
                 "gap (mm)"};
     for (const auto& g : grid.per_load)
-        for (const OperatingPoint* p : g.points)
+        for (const OperatingPoint* p : g.points) {
+            std::vector<EngineRegime> engines;  // the point's one verdict (core point_verdict.h), below
             for (const auto& s : col.solvers) {
                 const Run& r = col.run(s, p->id);
                 if (!r.usable()) continue;
+                if (has_verdict(r)) engines.push_back({s, r.summary->run["flow_regime"]});
                 const std::string cls = r.steady() ? "" : r.state_class();
                 std::string verdict = "—", why = "no contact record (run.flow_regime): a model without grain contacts";
                 if (has_verdict(r)) {
@@ -196,6 +199,11 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
                                   {I.mid_gap ? num(*I.mid_gap, 3) : "—", cls},
                                   {gap ? num(*gap * 1e3, 3) : "—", cls}});
             }
+            if (engines.empty()) continue;
+            const PointVerdict v = point_verdict(engines);
+            t.rows.push_back({{"point", ""}, {p->id, ""}, {num(p->speed), ""}, {num(p->normal_stress), ""}, {"", ""},
+                              {to_string(v.regime), ""}, {v.criterion, ""}, {"", ""}, {"", ""}, {"", ""}});
+        }
     return t;
 }
 
