@@ -663,7 +663,8 @@ class Couette:
             q = O.bodies[w].state.pos
             if q[0] > 10 * self.L:
                 O.bodies[w].state.pos = Vector3(q[0] - 10 * self.L, q[1], q[2])
-        write_text(os.path.join(self.out, "progress"), "%d %d\n" % (O.iter, self.run["steps"]))
+        total = self.run["steps"]  # the persistence steps after the run show as 100 %
+        write_text(os.path.join(self.out, "progress"), "%d %d\n" % (min(O.iter, total), total))
 
     def centripetal(self):
         # Sawyer & Tichy 2001: a grain moving at v_x around the annulus (mean radius R_a) feels
