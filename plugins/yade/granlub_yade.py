@@ -13,7 +13,8 @@
 #               servo.every steps by the servo of `granlub dem` (core/include/granlub/particles/servo.h);
 #               its position after each window goes to plate.csv.
 #               With a "bumps" object ({"bottom"|"top": {"diameter", "x": [...], "z": [...]}}): rough
-#               walls, fixed spheres centred on the wall's plane (core/include/granlub/case/wall_bumps.h).
+#               walls, fixed spheres centred on the wall's plane (core/include/granlub/case/wall_bumps.h);
+#               the top's bumps move with the plate, under a weight plate as one rigid body with it.
 #   "collision" binary collisions (grain-grain and grain-wall for every wall material): the
 #               measured normal restitution of the contact law as run, in collision.json.
 #
@@ -133,8 +134,6 @@ def load_params(path):
                 raise ParamError("bumps.%s: x and %s must be lists of the same, non-zero length" % (side, across))
             if side == "sides" and cell.get("periodic_z"):
                 raise ParamError("bumps.sides with cell.periodic_z: there are no side walls")
-            if side == "top" and sv is not None and sv.get("plate") == "weight":
-                raise ParamError("bumps.top with servo.plate = weight: the bumps would ride a free plate")
         if not os.path.isfile(p.get("initial_file", "")):
             raise ParamError("initial_file %r: no such file" % p.get("initial_file"))
     return p
@@ -389,279 +388,397 @@ def write_json(path, obj):
 BUMPS_APART = 16 | 32 | 64  # the bump layers' own bits: a bump never meets a bump of its wall
 
 
-def run_couette(p):
-    t_start = time.time()
-    out = p["output_dir"]
-    cell = p["cell"]
-    H, L, W = cell["gap"], cell["length"], cell["width"]
-    periodic_z = bool(cell.get("periodic_z", False))
-    U, g, Ra = p["wall_speed"], p["gravity"], p["annulus_radius"]
-    d = p["grains"]["diameter"]
-    run = p["run"]
-    en = calibrate_viscel(p) if p["model"] == "viscel" and p["contact"].get("calibrate", True) else None
-    grains = read_initial(p["initial_file"])
+class Couette:
+    """The plane Couette cell of one run. run_couette() calls its parts in order: the walls, the
+    grains, the bumps, the loaded plate, the outputs, the engines; then the run, the contact
+    persistence after it, and the summary. The PyRunners call the hooks in __main__."""
 
-    servo = p.get("servo")
-    top_max = servo["gap_max"] if servo else H  # highest top-wall position
+    def __init__(self, p):
+        self.t_start = time.time()
+        self.p = p
+        self.out = p["output_dir"]
+        cell = p["cell"]
+        self.H, self.L, self.W = cell["gap"], cell["length"], cell["width"]
+        self.periodic_z = bool(cell.get("periodic_z", False))
+        self.U, self.g, self.Ra = p["wall_speed"], p["gravity"], p["annulus_radius"]
+        self.d = p["grains"]["diameter"]
+        self.run = p["run"]
+        self.en = calibrate_viscel(p) if p["model"] == "viscel" and p["contact"].get("calibrate", True) else None
+        self.grains = read_initial(p["initial_file"])
+        self.servo = p.get("servo")
+        self.top_max = self.servo["gap_max"] if self.servo else self.H  # highest top-wall position
+        self.weight = bool(self.servo) and self.servo.get("plate", "window") == "weight"
 
-    O.reset()
-    t = d  # wall half thickness
-    Y0 = H  # granlub y = 0 sits at YADE y = Y0; the y period is H + top_max + H (docs/yade-notes.md §2)
-    Ly = 2 * H + top_max
-    if periodic_z:
-        Lz, Z0 = W, 0.5 * W
-        wall_z = 1000 * W
-    else:
-        Lz, Z0 = W + 4 * t + 2 * d, 0.5 * W + 2 * t + d
-        wall_z = 0.5 * W + 2 * t
-    O.periodic = True
-    O.cell.setBox(L, Ly, Lz)
-    ids, ip2, law = build_materials(p, en)
-    big = 1000 * L
-    bottom = wall_box((0.5 * L, Y0 - t, Z0), (big, t, wall_z), ids["bottom"], p)
-    top = wall_box((0.5 * L, Y0 + H + t, Z0), (big, t, wall_z), ids["top"], p)
-    moving = [bottom]
-    sides = []
-    if not periodic_z:
-        # side walls slide with the bottom wall, as in the annular cell (cases/sawyer2001) and
-        # `granlub dem` (fix wall/gran ... zplane ... shear x U)
-        for sgn in (-1, 1):
-            sides.append(wall_box((0.5 * L, Y0 + 0.5 * top_max, Z0 + sgn * (0.5 * W + t)),
-                                  (big, 0.5 * top_max + 2 * t, t), ids["side"], p))
-        moving += sides
-    for w in moving:
-        O.bodies[w].state.vel = Vector3(U, 0, 0)  # kinematic: NewtonIntegrator moves it
+    # -- walls ----------------------------------------------------------------------------------
 
-    first = len(O.bodies)
-    for (x, y, z, vx, vy, vz, r, wx, wy, wz) in grains:
-        # a warm start's grains may touch a wall: overlaps up to initial_overlap x the radius pass
-        # (1 %; a continued run's own soft contacts under load: 10 %)
-        tol = p.get("initial_overlap", 0.01) * r
-        if not (r > 0 and r - tol <= y <= H - r + tol):
-            raise ParamError("initial grain at y = %g (radius %g) is not between the walls" % (y, r))
-        if not periodic_z and not (-0.5 * W + r - tol <= z <= 0.5 * W - r + tol):
-            raise ParamError("initial grain at z = %g (radius %g) is not between the side walls" % (z, r))
-        b = utils.sphere((x % L, y + Y0, z + Z0), r, material=ids["grain"], color=(0, 0, 1))
-        b.state.vel = Vector3(vx, vy, vz)
-        b.state.angVel = Vector3(wx, wy, wz)
-        O.bodies.append(b)
-    n = len(grains)
-    gids = range(first, first + n)
-    masses = [O.bodies[i].state.mass for i in gids]
+    def build_walls(self):
+        H, L, W, d = self.H, self.L, self.W, self.d
+        O.reset()
+        t = self.t = d  # wall half thickness
+        # granlub y = 0 sits at YADE y = Y0; the y period is H + top_max + H (docs/yade-notes.md §2)
+        Y0 = self.Y0 = H
+        Ly = 2 * H + self.top_max
+        if self.periodic_z:
+            Lz, self.Z0 = W, 0.5 * W
+            wall_z = 1000 * W
+        else:
+            Lz, self.Z0 = W + 4 * t + 2 * d, 0.5 * W + 2 * t + d
+            wall_z = 0.5 * W + 2 * t
+        Z0 = self.Z0
+        O.periodic = True
+        O.cell.setBox(L, Ly, Lz)
+        self.ids, self.ip2, self.law = build_materials(self.p, self.en)
+        ids = self.ids
+        big = 1000 * L
+        self.bottom = wall_box((0.5 * L, Y0 - t, Z0), (big, t, wall_z), ids["bottom"], self.p)
+        self.top = wall_box((0.5 * L, Y0 + H + t, Z0), (big, t, wall_z), ids["top"], self.p)
+        self.moving = [self.bottom]
+        self.sides = []
+        if not self.periodic_z:
+            # side walls slide with the bottom wall, as in the annular cell (cases/sawyer2001) and
+            # `granlub dem` (fix wall/gran ... zplane ... shear x U)
+            for sgn in (-1, 1):
+                self.sides.append(wall_box((0.5 * L, Y0 + 0.5 * self.top_max, Z0 + sgn * (0.5 * W + t)),
+                                           (big, 0.5 * self.top_max + 2 * t, t), ids["side"], self.p))
+            self.moving += self.sides
+        for w in self.moving:
+            O.bodies[w].state.vel = Vector3(self.U, 0, 0)  # kinematic: NewtonIntegrator moves it
 
-    # Rough walls (core wall_bumps.h): fixed spheres with their centres on the wall's plane, the
-    # floor's moving with it, the top's with the window servo's plate. Collision masks (two bodies
-    # meet when their masks share a bit, unless the masks are equal and share a bit with the
-    # collider's avoidSelfInteractionMask, BUMPS_APART): grains (1|2|4|8) meet the wall boxes (1) and
-    # every layer; a layer (2|16, 4|32, side walls 8|64) meets neither the boxes, nor another layer,
-    # nor itself. The side walls' bumps (both walls, one layout at z = -W/2 and W/2) move with the floor.
-    bumps = {"bottom": [], "top": [], "side1": [], "side2": []}
-    layers = p.get("bumps", {})
-    if layers:
-        masks = {"bottom": 2 | 16, "top": 4 | 32, "side1": 8 | 64, "side2": 8 | 64}
-        material = {"bottom": "bottom", "top": "top", "side1": "side", "side2": "side"}
-        for i in gids:
-            O.bodies[i].groupMask = 1 | 2 | 4 | 8
-        placed = []  # (wall, layer, centre(x, across), vx)
-        for side, y0, vx in (("bottom", 0.0, U), ("top", H, 0.0)):
-            if side in layers:
-                placed.append((side, layers[side], lambda x, z, y0=y0: (x, Y0 + y0, z + Z0), vx))
-        if "sides" in layers:
-            for side, zw in (("side1", -0.5 * W), ("side2", 0.5 * W)):
-                placed.append((side, layers["sides"], lambda x, y, zw=zw: (x, Y0 + y, zw + Z0), U))
-        for side, layer, centre, vx in placed:
-            across = layer["y"] if side.startswith("side") else layer["z"]
-            for x, a in zip(layer["x"], across):
-                b = utils.sphere(centre(x, a), 0.5 * layer["diameter"], material=ids[material[side]], fixed=True,
-                                 color=(0.5, 0.5, 0.5))
-                b.groupMask = masks[side]
-                if p["model"] == "viscel":
-                    b.state.mass = p["contact"]["wall_mass"]  # as the wall boxes (reduced mass m)
-                b.state.vel = Vector3(vx, 0, 0)
-                bumps[side].append(O.bodies.append(b))
+    def place_grains(self):
+        H, L, W, Y0, Z0 = self.H, self.L, self.W, self.Y0, self.Z0
+        first = len(O.bodies)
+        for (x, y, z, vx, vy, vz, r, wx, wy, wz) in self.grains:
+            # a warm start's grains may touch a wall: overlaps up to initial_overlap x the radius pass
+            # (1 %; a continued run's own soft contacts under load: 10 %)
+            tol = self.p.get("initial_overlap", 0.01) * r
+            if not (r > 0 and r - tol <= y <= H - r + tol):
+                raise ParamError("initial grain at y = %g (radius %g) is not between the walls" % (y, r))
+            if not self.periodic_z and not (-0.5 * W + r - tol <= z <= 0.5 * W - r + tol):
+                raise ParamError("initial grain at z = %g (radius %g) is not between the side walls" % (z, r))
+            b = utils.sphere((x % L, y + Y0, z + Z0), r, material=self.ids["grain"], color=(0, 0, 1))
+            b.state.vel = Vector3(vx, vy, vz)
+            b.state.angVel = Vector3(wx, wy, wz)
+            O.bodies.append(b)
+        self.n = len(self.grains)
+        self.gids = range(first, first + self.n)
+        self.masses = [O.bodies[i].state.mass for i in self.gids]
 
-    every = run["sample_every"]
-    snap_every = run["snapshot_every"]
-    total = run["steps"]
-    state = {"f": [0.0] * 8, "steps": 0, "rows": 0, "snapshots": 0, "run_steps": 0}
+    # -- bumps ----------------------------------------------------------------------------------
 
-    fcsv = open(os.path.join(out, "wallforce.csv"), "w")
-    fcsv.write("# force of the grains on the walls (N), mean over each interval of %d steps; "
-               "side: x force on each side wall\n" % every)
-    fcsv.write("step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2\n")
-    fbin = open(os.path.join(out, "samples.bin"), "wb")
-    A = L * W
-    state["f_servo"], state["h"] = 0.0, H  # top-wall force summed over the servo window; plate position
-    fplate = None
-    if servo:
-        fplate = open(os.path.join(out, "plate.csv"), "w")
-        fplate.write("# plate (top wall) position after each servo window of %d steps, m\n" % servo["every"])
-        fplate.write("step,gap\n")
+    def place_bumps(self):
+        # Rough walls (core wall_bumps.h): fixed spheres with their centres on the wall's plane, the
+        # floor's moving with it, the top's with the plate (the window servo's moves, or a weight
+        # plate's dynamics: carry_top_bumps). Collision masks (two bodies meet when their masks
+        # share a bit, unless the masks are equal and share a bit with the collider's
+        # avoidSelfInteractionMask, BUMPS_APART): grains (1|2|4|8) meet the wall boxes (1) and every
+        # layer; a layer (2|16, 4|32, side walls 8|64) meets neither the boxes, nor another layer,
+        # nor itself. The side walls' bumps (both walls, one layout at z = -W/2 and W/2) move with
+        # the floor.
+        H, W, U, Y0, Z0 = self.H, self.W, self.U, self.Y0, self.Z0
+        self.bumps = bumps = {"bottom": [], "top": [], "side1": [], "side2": []}
+        layers = self.p.get("bumps", {})
+        if layers:
+            masks = {"bottom": 2 | 16, "top": 4 | 32, "side1": 8 | 64, "side2": 8 | 64}
+            material = {"bottom": "bottom", "top": "top", "side1": "side", "side2": "side"}
+            for i in self.gids:
+                O.bodies[i].groupMask = 1 | 2 | 4 | 8
+            placed = []  # (wall, layer, centre(x, across), vx)
+            for side, y0, vx in (("bottom", 0.0, U), ("top", H, 0.0)):
+                if side in layers:
+                    placed.append((side, layers[side], lambda x, z, y0=y0: (x, Y0 + y0, z + Z0), vx))
+            if "sides" in layers:
+                for side, zw in (("side1", -0.5 * W), ("side2", 0.5 * W)):
+                    placed.append((side, layers["sides"], lambda x, y, zw=zw: (x, Y0 + y, zw + Z0), U))
+            for side, layer, centre, vx in placed:
+                across = layer["y"] if side.startswith("side") else layer["z"]
+                for x, a in zip(layer["x"], across):
+                    b = utils.sphere(centre(x, a), 0.5 * layer["diameter"], material=self.ids[material[side]],
+                                     fixed=True, color=(0.5, 0.5, 0.5))
+                    b.groupMask = masks[side]
+                    if self.p["model"] == "viscel":
+                        b.state.mass = self.p["contact"]["wall_mass"]  # as the wall boxes (reduced mass m)
+                    b.state.vel = Vector3(vx, 0, 0)
+                    bumps[side].append(O.bodies.append(b))
 
-    def averaging():
-        # After NewtonIntegrator, every step: the force of the grains on each wall is summed
-        # every step (contacts last a few steps) and its mean written every sample_every steps;
-        # a snapshot of the grains every snapshot_every steps.
-        fb = O.forces.f(bottom)
-        ft = O.forces.f(top) - Vector3(0, f_load, 0)  # the grains' force alone
-        for i in bumps["bottom"]:  # a rough wall: its plane's force plus its bumps'
-            fb += O.forces.f(i)
-        for i in bumps["top"]:
-            ft += O.forces.f(i)
-        f = state["f"]
-        f[0] += fb[0]; f[1] += fb[1]; f[2] += fb[2]
-        f[3] += ft[0]; f[4] += ft[1]; f[5] += ft[2]
-        if sides:
-            f[6] += O.forces.f(sides[0])[0] + sum(O.forces.f(i)[0] for i in bumps["side1"])
-            f[7] += O.forces.f(sides[1])[0] + sum(O.forces.f(i)[0] for i in bumps["side2"])
-        state["steps"] += 1
-        state["run_steps"] += 1
-        k = state["run_steps"]
-        if state["steps"] == every:
-            fcsv.write("%d,%s\n" % (k, ",".join("%.17g" % (v / every) for v in f)))
-            state["f"], state["steps"] = [0.0] * 8, 0
-            state["rows"] += 1
-        if servo:
-            state["f_servo"] += ft[1]
-            if k % servo["every"] == 0:
-                plate_update(k)
-        if k % snap_every == 0:
-            snapshot()
+    # -- the loaded plate -----------------------------------------------------------------------
 
-    weight = bool(servo) and servo.get("plate", "window") == "weight"
-    f_load = 0.0  # the permanent force on a weight plate (N, along y); O.forces.f() includes it
-    if weight:
-        # A loaded plate, as the experiment's weighted upper disc: a body of mass M free along y
-        # only, pressed by P A in all (its weight M g under the cell's gravity, the rest a constant
-        # force); no controller. At steady state its mean acceleration is zero, so the mean force
-        # of the grains on it is P A. M = plate_mass_ratio x the grains' mass is a numerical choice
-        # (the disc's mass is not reported); a plate as heavy as the grains follows the bed's
-        # dilation within a millisecond, a dead weight (M = P A / g) oscillates for tens of ms.
-        M = servo["plate_mass_ratio"] * sum(masses)
-        pb = O.bodies[top]
-        pb.dynamic = True
-        pb.state.blockedDOFs = "xzXYZ"
-        pb.state.mass = M
-        pb.state.inertia = Vector3(1.0, 1.0, 1.0)  # rotations are blocked; YADE needs a value
-        pb.state.vel = Vector3(0, 0, 0)
-        f_load = -(servo["target_stress"] * A - M * g)
-        O.forces.setPermF(top, Vector3(0, f_load, 0))
+    def load_plate(self):
+        self.A = self.L * self.W
+        self.f_load = 0.0  # the permanent force on a weight plate (N, along y); O.forces.f() includes it
+        if self.weight:
+            # A loaded plate, as the experiment's weighted upper disc: a body of mass M free along y
+            # only, pressed by P A in all (its weight M g under the cell's gravity, the rest a
+            # constant force); no controller. At steady state its mean acceleration is zero, so the
+            # mean force of the grains on it is P A. M = plate_mass_ratio x the grains' mass is a
+            # numerical choice (the disc's mass is not reported); a plate as heavy as the grains
+            # follows the bed's dilation within a millisecond, a dead weight (M = P A / g)
+            # oscillates for tens of ms.
+            M = self.servo["plate_mass_ratio"] * sum(self.masses)
+            pb = O.bodies[self.top]
+            pb.dynamic = True
+            pb.state.blockedDOFs = "xzXYZ"
+            pb.state.mass = M
+            pb.state.inertia = Vector3(1.0, 1.0, 1.0)  # rotations are blocked; YADE needs a value
+            pb.state.vel = Vector3(0, 0, 0)
+            self.f_load = -(self.servo["target_stress"] * self.A - M * self.g)
+            O.forces.setPermF(self.top, Vector3(0, self.f_load, 0))
+        # A weight plate with bumps: plate and bumps are one rigid body. The bumps stay fixed
+        # (non-dynamic) spheres; before NewtonIntegrator the force of the grains on them is added to
+        # the plate (plate_force), after it they are put back on the plate's lower face with its
+        # velocity (carry_top_bumps). The plate's mass M is the body's; rotations are blocked, so
+        # the bumps' torques do not matter. [ASSUMPTION] slaving instead of a YADE clump: a clump
+        # would take its mass and inertia from the 1000-period box and its members.
+        self.carried = self.weight and bool(self.bumps["top"])
 
-    def plate_update(k):
-        if weight:
+    def plate_force(self):
+        f = Vector3(0, 0, 0)
+        for i in self.bumps["top"]:
+            f += O.forces.f(i, sync=True)
+        O.forces.addF(self.top, f)
+
+    def carry_top_bumps(self):
+        b = O.bodies[self.top].state
+        y, v = b.pos[1] - self.t, Vector3(0, b.vel[1], 0)
+        for i in self.bumps["top"]:
+            q = O.bodies[i].state
+            q.pos = Vector3(q.pos[0], y, q.pos[2])
+            q.vel = v
+
+    def plate_update(self, k):
+        servo, state, Y0, t = self.servo, self.state, self.Y0, self.t
+        if self.weight:
             # the plate's position at the window's end; kept in [gap_min, gap_max] (stopped there)
             state["f_servo"] = 0.0
-            b = O.bodies[top].state
+            b = O.bodies[self.top].state
             h = b.pos[1] - Y0 - t
             if not servo["gap_min"] <= h <= servo["gap_max"]:
                 h = min(max(h, servo["gap_min"]), servo["gap_max"])
                 b.pos = Vector3(b.pos[0], Y0 + h + t, b.pos[2])
                 b.vel = Vector3(0, 0, 0)
-            fplate.write("%d,%.17g\n" % (k, h))
+                if self.carried:
+                    self.carry_top_bumps()
+            self.fplate.write("%d,%.17g\n" % (k, h))
             state["h"] = h
             return
-        # The servo of `granlub dem` (core/include/granlub/particles/servo.h): P_top is the top-wall stress
-        # averaged over the window (the force summed every step), the commanded position moves by
-        # step * clamp((P_top - P)/P, -1, max_error) and stays in [gap_min, gap_max]. The plate
-        # travels there at constant speed over the next window instead of jumping: a jump of
+        # The servo of `granlub dem` (core/include/granlub/particles/servo.h): P_top is the top-wall
+        # stress averaged over the window (the force summed every step), the commanded position
+        # moves by step * clamp((P_top - P)/P, -1, max_error) and stays in [gap_min, gap_max]. The
+        # plate travels there at constant speed over the next window instead of jumping: a jump of
         # 0.05 d onto resting grains would be an overlap of 0.05 d with stiff contacts.
         P = servo["target_stress"]
-        p_top = state["f_servo"] / servo["every"] / A
+        p_top = state["f_servo"] / servo["every"] / self.A
         state["f_servo"] = 0.0
         err = min(max((p_top - P) / P, -1.0), servo["max_error"])
-        b = O.bodies[top].state
+        b = O.bodies[self.top].state
         b.pos = Vector3(b.pos[0], Y0 + state["h"] + t, b.pos[2])  # no drift from the integration
-        fplate.write("%d,%.17g\n" % (k, state["h"]))
+        self.fplate.write("%d,%.17g\n" % (k, state["h"]))
         h = min(max(state["h"] + servo["step"] * err, servo["gap_min"]), servo["gap_max"])
         b.vel = Vector3(0, (h - state["h"]) / (servo["every"] * O.dt), 0)
-        for i in bumps["top"]:  # the top's bumps travel with the plate
+        for i in self.bumps["top"]:  # the top's bumps travel with the plate
             q = O.bodies[i].state
             q.pos = Vector3(q.pos[0], Y0 + state["h"], q.pos[2])
             q.vel = b.vel
         state["h"] = h
 
-    def snapshot():
+    # -- outputs --------------------------------------------------------------------------------
+
+    def open_outputs(self):
+        out, every, servo = self.out, self.run["sample_every"], self.servo
+        self.state = {"f": [0.0] * 8, "steps": 0, "rows": 0, "snapshots": 0, "run_steps": 0, "persisting": False}
+        self.fcsv = open(os.path.join(out, "wallforce.csv"), "w")
+        self.fcsv.write("# force of the grains on the walls (N), mean over each interval of %d steps; "
+                        "side: x force on each side wall\n" % every)
+        self.fcsv.write("step,fx_bottom,fy_bottom,fz_bottom,fx_top,fy_top,fz_top,fx_side1,fx_side2\n")
+        self.fbin = open(os.path.join(out, "samples.bin"), "wb")
+        # top-wall force summed over the servo window; plate position
+        self.state["f_servo"], self.state["h"] = 0.0, self.H
+        self.fplate = None
+        if servo:
+            self.fplate = open(os.path.join(out, "plate.csv"), "w")
+            self.fplate.write("# plate (top wall) position after each servo window of %d steps, m\n" % servo["every"])
+            self.fplate.write("step,gap\n")
+
+    def close_outputs(self):
+        self.fcsv.close()
+        self.fbin.close()
+        if self.fplate:
+            self.fplate.close()
+
+    def averaging(self):
+        # After NewtonIntegrator, every step: the force of the grains on each wall is summed
+        # every step (contacts last a few steps) and its mean written every sample_every steps;
+        # a snapshot of the grains every snapshot_every steps.
+        if self.carried:
+            self.carry_top_bumps()
+        state, bumps = self.state, self.bumps
+        if state["persisting"]:  # the result outputs are closed
+            return
+        fb = O.forces.f(self.bottom)
+        ft = O.forces.f(self.top) - Vector3(0, self.f_load, 0)  # the grains' force alone
+        for i in bumps["bottom"]:  # a rough wall: its plane's force plus its bumps'
+            fb += O.forces.f(i)
+        if not self.carried:  # a carried layer's force is in the plate's already (plate_force)
+            for i in bumps["top"]:
+                ft += O.forces.f(i)
+        f = state["f"]
+        f[0] += fb[0]; f[1] += fb[1]; f[2] += fb[2]
+        f[3] += ft[0]; f[4] += ft[1]; f[5] += ft[2]
+        if self.sides:
+            f[6] += O.forces.f(self.sides[0])[0] + sum(O.forces.f(i)[0] for i in bumps["side1"])
+            f[7] += O.forces.f(self.sides[1])[0] + sum(O.forces.f(i)[0] for i in bumps["side2"])
+        state["steps"] += 1
+        state["run_steps"] += 1
+        k = state["run_steps"]
+        every = self.run["sample_every"]
+        if state["steps"] == every:
+            self.fcsv.write("%d,%s\n" % (k, ",".join("%.17g" % (v / every) for v in f)))
+            state["f"], state["steps"] = [0.0] * 8, 0
+            state["rows"] += 1
+        if self.servo:
+            state["f_servo"] += ft[1]
+            if k % self.servo["every"] == 0:
+                self.plate_update(k)
+        if k % self.run["snapshot_every"] == 0:
+            self.snapshot()
+
+    def snapshot(self, f=None):
         # granlub coordinates; columns x (wrapped into the period), y, z, vx, vy, vz: the slab
         # coarse-graining, the y x z cross-section, and the contact and order measures
+        L, Y0, Z0 = self.L, self.Y0, self.Z0
         buf = []
-        for i in gids:
+        for i in self.gids:
             s = O.bodies[i].state
             v = s.vel
             buf.extend((s.pos[0] % L, s.pos[1] - Y0, s.pos[2] - Z0, v[0], v[1], v[2]))
-        fbin.write(struct.pack("<%dd" % len(buf), *buf))
-        state["snapshots"] += 1
+        if f is not None:
+            f.write(struct.pack("<%dd" % len(buf), *buf))
+            return
+        self.fbin.write(struct.pack("<%dd" % len(buf), *buf))
+        self.state["snapshots"] += 1
 
-    def housekeeping():
+    def housekeeping(self):
         # keep the moving walls within a few periods of the cell (their extent is 1000 periods)
-        for w in moving + bumps["bottom"] + bumps["side1"] + bumps["side2"]:
+        bumps = self.bumps
+        for w in self.moving + bumps["bottom"] + bumps["side1"] + bumps["side2"]:
             q = O.bodies[w].state.pos
-            if q[0] > 10 * L:
-                O.bodies[w].state.pos = Vector3(q[0] - 10 * L, q[1], q[2])
-        write_text(os.path.join(out, "progress"), "%d %d\n" % (O.iter, total))
+            if q[0] > 10 * self.L:
+                O.bodies[w].state.pos = Vector3(q[0] - 10 * self.L, q[1], q[2])
+        total = self.run["steps"]  # the persistence steps after the run show as 100 %
+        write_text(os.path.join(self.out, "progress"), "%d %d\n" % (min(O.iter, total), total))
 
-    def centripetal():
+    def centripetal(self):
         # Sawyer & Tichy 2001: a grain moving at v_x around the annulus (mean radius R_a) feels
         # m v_x^2 / (R_a - z) toward the outer wall, -z here; as `granlub dem` (fix centripetal/annulus).
         # A permanent force, refreshed every body_force_every steps: setting ~5000 forces from
         # Python costs about as much as 10 steps of the cell.
+        Ra, Z0, masses = self.Ra, self.Z0, self.masses
         if Ra <= 0:
             return
-        for k, i in enumerate(gids):
+        for k, i in enumerate(self.gids):
             s = O.bodies[i].state
             vx = s.vel[0]
             O.forces.setPermF(i, Vector3(0, 0, -masses[k] * vx * vx / (Ra - (s.pos[2] - Z0))))
 
-    # The collider's Verlet distance (run.verlet_distance smallest radii): the interaction loop visits
-    # every pair within it each step, the collider reruns once a grain has moved further. Exact at any
-    # value; 0.2 was the cheapest on sawyer2001 (YADE's default 0.5: +25 %).
-    O.engines = [ForceResetter(),
-                 InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], allowBiggerThanPeriod=True, sortAxis=1,
-                                       verletDist=-run["verlet_distance"],
-                                       avoidSelfInteractionMask=BUMPS_APART),
-                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [ip2], [law]),
-                 NewtonIntegrator(damping=0.0, gravity=(0, -g, 0)),
-                 PyRunner(command="granlub_averaging()", iterPeriod=1, initRun=True),
-                 PyRunner(command="granlub_centripetal()", iterPeriod=run["body_force_every"]),
-                 PyRunner(command="granlub_housekeeping()", iterPeriod=1000)]
-    # PyRunner commands run in the launcher's __main__ namespace
-    import __main__
-    __main__.granlub_averaging = averaging
-    __main__.granlub_centripetal = centripetal
-    __main__.granlub_housekeeping = housekeeping
-    O.dt = p["contact"]["dt"]
-    centripetal()
+    # -- engines --------------------------------------------------------------------------------
 
-    t_run = time.time()
-    O.run(total, True)  # total > 0 is checked: O.run(0, True) never returns (docs/yade-notes.md §5)
-    wall_clock_run = time.time() - t_run
-    fcsv.close()
-    fbin.close()
-    if fplate:
-        fplate.close()
-    if state["rows"] != total // every or state["snapshots"] != total // snap_every:
-        raise RuntimeError("wrote %d wall-force rows and %d snapshots, expected %d and %d"
-                           % (state["rows"], state["snapshots"], total // every, total // snap_every))
+    def install_engines(self):
+        run = self.run
+        # The collider's Verlet distance (run.verlet_distance smallest radii): the interaction loop
+        # visits every pair within it each step, the collider reruns once a grain has moved
+        # further. Exact at any value; 0.2 was the cheapest on sawyer2001 (YADE's default 0.5: +25 %).
+        # A weight plate carrying bumps: their force joins the plate's before it is integrated.
+        before_newton = [PyRunner(command="granlub_plate_force()", iterPeriod=1, initRun=True)] if self.carried else []
+        O.engines = [ForceResetter(),
+                     InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], allowBiggerThanPeriod=True,
+                                           sortAxis=1, verletDist=-run["verlet_distance"],
+                                           avoidSelfInteractionMask=BUMPS_APART),
+                     InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [self.ip2], [self.law])] + \
+            before_newton + \
+            [NewtonIntegrator(damping=0.0, gravity=(0, -self.g, 0)),
+             PyRunner(command="granlub_averaging()", iterPeriod=1, initRun=True),
+             PyRunner(command="granlub_centripetal()", iterPeriod=run["body_force_every"]),
+             PyRunner(command="granlub_housekeeping()", iterPeriod=1000)]
+        # PyRunner commands run in the launcher's __main__ namespace
+        import __main__
+        __main__.granlub_averaging = self.averaging
+        __main__.granlub_centripetal = self.centripetal
+        __main__.granlub_housekeeping = self.housekeeping
+        __main__.granlub_plate_force = self.plate_force
+        O.dt = self.p["contact"]["dt"]
+        self.centripetal()
 
-    write_final_state(os.path.join(out, "final_raw.csv"), gids, L, Y0, Z0,
-                      O.bodies[top].state.pos[1] - Y0 - t if servo else H, O.time)
+    # -- the run and after it -------------------------------------------------------------------
 
-    max_overlap = 0.0
-    for i in O.interactions:
-        if i.isReal:
-            max_overlap = max(max_overlap, i.geom.penetrationDepth)
-    summary = {
-        "format": FORMAT, "task": "couette", "model": p["model"],
-        "yade_version": yade.config.version, "grains": n, "dt": O.dt,
-        "steps": O.iter, "simulated_time": O.time,
-        "sample_every": every, "wall_rows": state["rows"],
-        "snapshot_every": snap_every, "snapshots": state["snapshots"],
-        "snapshot_columns": ["x", "y", "z", "vx", "vy", "vz"],
-        "max_overlap_over_d": max_overlap / d,
-        "wall_clock_s": time.time() - t_start, "wall_clock_run_s": wall_clock_run,
-    }
-    if en is not None:
-        summary["en"] = en
-    write_json(os.path.join(out, "driver_summary.json"), summary)
+    def simulate(self):
+        total = self.run["steps"]
+        t_run = time.time()
+        O.run(total, True)  # total > 0 is checked: O.run(0, True) never returns (docs/yade-notes.md §5)
+        self.wall_clock_run = time.time() - t_run
+        self.run_time = O.time
+        self.close_outputs()
+
+    def persistence(self):
+        # Contact persistence (core flow_regime.h), as granlub dem measures it: after the run, with
+        # the result outputs closed, persistence_intervals + 1 snapshots persistence_every steps
+        # apart (a shear strain of 0.1 each) in contacts.bin. The window servo's plate stays where
+        # its last window left it (granlub dem's deck ends its servo loop likewise); a weight plate
+        # stays free.
+        self.p_every, self.p_intervals = self.run.get("persistence_every", 0), self.run.get("persistence_intervals", 0)
+        self.state["persisting"] = True
+        if self.p_every > 0 and self.p_intervals > 0:
+            if self.servo and not self.weight:
+                O.bodies[self.top].state.vel = Vector3(0, 0, 0)
+                for i in self.bumps["top"]:
+                    O.bodies[i].state.vel = Vector3(0, 0, 0)
+            with open(os.path.join(self.out, "contacts.bin"), "wb") as fcon:
+                self.snapshot(fcon)
+                for _ in range(self.p_intervals):
+                    O.run(self.p_every, True)
+                    self.snapshot(fcon)
+
+    def write_summary(self):
+        total, every, snap_every = self.run["steps"], self.run["sample_every"], self.run["snapshot_every"]
+        state = self.state
+        if state["rows"] != total // every or state["snapshots"] != total // snap_every:
+            raise RuntimeError("wrote %d wall-force rows and %d snapshots, expected %d and %d"
+                               % (state["rows"], state["snapshots"], total // every, total // snap_every))
+        write_final_state(os.path.join(self.out, "final_raw.csv"), self.gids, self.L, self.Y0, self.Z0,
+                          O.bodies[self.top].state.pos[1] - self.Y0 - self.t if self.servo else self.H, O.time)
+        max_overlap = 0.0
+        for i in O.interactions:
+            if i.isReal:
+                max_overlap = max(max_overlap, i.geom.penetrationDepth)
+        persisted = self.p_every > 0 and self.p_intervals > 0
+        summary = {
+            "format": FORMAT, "task": "couette", "model": self.p["model"],
+            "yade_version": yade.config.version, "grains": self.n, "dt": O.dt,
+            "steps": total, "simulated_time": self.run_time,
+            "persistence_every": self.p_every, "persistence_snapshots": self.p_intervals + 1 if persisted else 0,
+            "sample_every": every, "wall_rows": state["rows"],
+            "snapshot_every": snap_every, "snapshots": state["snapshots"],
+            "snapshot_columns": ["x", "y", "z", "vx", "vy", "vz"],
+            "max_overlap_over_d": max_overlap / self.d,
+            "wall_clock_s": time.time() - self.t_start, "wall_clock_run_s": self.wall_clock_run,
+        }
+        if self.en is not None:
+            summary["en"] = self.en
+        if self.bumps["top"]:  # the top's bumps against the plate's lower face: 0 when they moved with it
+            face = O.bodies[self.top].state.pos[1] - self.t
+            summary["top_bumps_off_plate_m"] = max(abs(O.bodies[i].state.pos[1] - face) for i in self.bumps["top"])
+        write_json(os.path.join(self.out, "driver_summary.json"), summary)
+
+
+def run_couette(p):
+    c = Couette(p)
+    c.build_walls()
+    c.place_grains()
+    c.place_bumps()
+    c.load_plate()
+    c.open_outputs()
+    c.install_engines()
+    c.simulate()
+    c.persistence()
+    c.write_summary()
 
 
 def write_final_state(path, gids, L, Y0, Z0, gap, sim_time):

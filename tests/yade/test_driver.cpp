@@ -112,11 +112,16 @@ BOOST_AUTO_TEST_CASE(tiny_deck_runs_and_is_deterministic, *boost::unit_test::pre
     BOOST_TEST(sum.run.at("steps").get<long long>() == 3000);
     BOOST_TEST(sum.run.at("max_overlap_over_d").get<double>() < 0.02);  // stiff contacts
     // the inertial numbers (core granlub/statistics/flow_regime.h), the coordination number and the order (the
-    // snapshots hold x, y, z); no contact persistence (no snapshots after the run)
+    // snapshots hold x, y, z); the contact persistence from three snapshots after the run, as
+    // granlub dem measures it (issue 50)
     BOOST_TEST(std::isfinite(sum.run.at("flow_regime").at("inertial_number_mid_gap").get<double>()));
     BOOST_TEST(sum.run.at("flow_regime").at("regime").is_string());
     BOOST_TEST(sum.run.at("flow_regime").at("coordination_number").get<double>() > 0.0);
-    BOOST_TEST(sum.run.at("flow_regime").at("contact_persistence").is_null());
+    const double persistence = sum.run.at("flow_regime").at("contact_persistence").get<double>();
+    BOOST_TEST(persistence >= 0.0);
+    BOOST_TEST(persistence <= 1.0);
+    BOOST_TEST(sum.run.at("flow_regime").at("persistence_snapshots").get<int>() == 3);
+    BOOST_TEST(!fs::exists(dir / "contacts.bin"));  // read and removed
     BOOST_TEST(sum.value("q6") > 0.0);
     BOOST_TEST(sum.value("q6") < 0.7);
     BOOST_TEST(!fs::exists(dir / "samples.bin"));                        // raw snapshots removed

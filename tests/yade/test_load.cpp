@@ -1,11 +1,14 @@
-// `granlub yade` with control = "load": the servo-controlled top plate (the servo of `granlub dem`,
-// granlub/particles/servo.h) reaches the target normal stress within 3 block standard errors, a higher load
-// gives a smaller gap and a denser packing, and the result files are those of `granlub dem`
-// (gap, run.load_control, gap.csv). Skipped when YADE is not installed.
+// `granlub yade` with control = "load": the loaded top plate (servo_plate = "weight", the default;
+// the window servo of `granlub dem`, granlub/particles/servo.h, capped from the contact stiffness)
+// reaches the target normal stress within 3 block standard errors, a higher load gives a smaller
+// gap and a denser packing, and the result files are those of `granlub dem` (gap,
+// run.load_control, gap.csv). Skipped when YADE is not installed.
 #define BOOST_TEST_MODULE yade_load
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -25,7 +28,9 @@ namespace {
 
 // The tiny cell (291 grains, H = 4 mm, U = 2 m/s) under load. Softer viscel contacts (t_c = 50 us,
 // dt = 2.5 us) let 16000 steps cover 0.04 s, ~7 s of YADE per point: the plate first rises (the
-// shear dilates the layer), then settles within ~0.02 s.
+// shear dilates the layer), then settles within ~0.02 s. The weight plate (the default) is kicked
+// by the collisions of this dilute deck: over 0.04 s its P_top at 200 Pa had a standard error of
+// 17 %, over 0.08 s 5 % (measured 2026-11-24), so the load runs below are 0.08 s.
 // `time` and `extra` [yade] lines vary the plate (servo_plate, below).
 Case load_case(double stress, const std::string& time = "0.04", const std::string& extra = "") {
     return tiny_case_edits({{"control = \"fill\"", "control = \"load\"\nnormal_stress = " + std::to_string(stress)},
@@ -42,7 +47,7 @@ std::pair<int, fs::path> run_case(const Case& c, const std::string& tag, double 
 }
 
 const checks::LoadRun& run_load(double stress) {
-    return checks::cached_load_run(stress, [](double P) { return run_case(load_case(P), "load", P); });
+    return checks::cached_load_run(stress, [](double P) { return run_case(load_case(P, "0.08"), "load", P); });
 }
 
 }  // namespace
@@ -57,10 +62,10 @@ BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap,
                      *boost::unit_test::precondition(YadeInstalled())) {
     const checks::LoadRun& r = run_load(200.0);
     BOOST_TEST_REQUIRE(r.code == 0);
-    const Case c = load_case(200.0);
+    const Case c = load_case(200.0, "0.08");
     BOOST_TEST((result_status(r.dir, c.inputs_hash("yade")).state == ResultState::Complete));
     checks::check_load_results(r.summary, r.dir, r.summary.run.at("grains").get<double>(), c.grains.diameter,
-                               c.cell.length * c.cell.width, 6, 160);  // 16000 steps / 100
+                               c.cell.length * c.cell.width, 6, 320);  // 32000 steps / 100
     // the driver's parameters carry the servo
     const auto params = nlohmann::json::parse(read_text(r.dir / "params.json"));
     BOOST_TEST(params.at("servo").at("every").get<int>() == 100);
@@ -76,28 +81,44 @@ BOOST_AUTO_TEST_CASE(higher_load_gives_a_smaller_gap_and_denser_packing,
     checks::check_higher_load(lo.summary, hi.summary, 800.0);
 }
 
-// servo_plate = "weight": a loaded plate (mass: the grains') instead of the window servo. No
-// controller holds the mean, so this checks the plate's dynamics and the force bookkeeping (the
-// constant load force must not be counted as the grains' force on the plate). 0.08 s, twice the
-// window servo's runs: the light plate is kicked by the collisions of this dilute deck, and over
-// 0.04 s its P_top at 200 Pa had a standard error of 17 % (5 % over 0.08 s, measured 2026-11-24).
-namespace {
-const checks::LoadRun& run_weight(double stress) {
-    return checks::cached_load_run(stress, [](double P) {
-        return run_case(load_case(P, "0.08", "servo_plate = \"weight\"\n"), "weight", P);
-    });
-}
-}  // namespace
-
+// servo_plate = "weight" (the default): a loaded plate of the grains' mass. No controller holds
+// the mean, so this checks the plate's dynamics and the force bookkeeping (the constant load force
+// must not be counted as the grains' force on the plate).
 BOOST_AUTO_TEST_CASE(weight_plate_carries_the_target_load, *boost::unit_test::precondition(YadeInstalled())) {
-    const checks::LoadRun& lo = run_weight(200.0);
-    const checks::LoadRun& hi = run_weight(800.0);
+    const checks::LoadRun& lo = run_load(200.0);
     BOOST_TEST_REQUIRE(lo.code == 0);
-    BOOST_TEST_REQUIRE(hi.code == 0);
-    checks::check_target_reached(lo.summary, 200.0, 4e-3, 0.5);
-    checks::check_higher_load(lo.summary, hi.summary, 800.0);
     const auto params = nlohmann::json::parse(read_text(lo.dir / "params.json"));
     BOOST_TEST(params.at("servo").at("plate").get<std::string>() == "weight");
+    BOOST_TEST(lo.summary.run.at("flow_regime").at("contact_persistence").is_number());  // as granlub dem's
+}
+
+// servo_plate = "window": granlub dem's servo, its gain capped from the contact stiffness (one
+// grain-plate overlap at the load per unit error, servo.h), so it cannot ram the bed: every window
+// moves the plate by at most the capped step down and three up (the error's clamps). On this soft
+// deck the cap is ~6e-5 d per window, so the plate hardly moves in 0.02 s: the cap, not the load,
+// is what this checks.
+BOOST_AUTO_TEST_CASE(window_servo_moves_at_most_the_capped_step,
+                     *boost::unit_test::precondition(YadeInstalled())) {
+    const Case c = load_case(200.0, "0.02", "servo_plate = \"window\"\n");
+    const auto [code, dir] = run_case(c, "window", 200.0);
+    BOOST_TEST_REQUIRE(code == 0);
+    const auto params = nlohmann::json::parse(read_text(dir / "params.json"));
+    const double step = params.at("servo").at("step").get<double>();
+    BOOST_TEST(step < 2e-3 * 0.05 * c.grains.diameter);  // capped far below servo_gain d (6e-5 d)
+    BOOST_TEST(step > 0.0);
+    double h = c.cell.gap, down = 0, up = 0;
+    std::size_t rows = 0;
+    std::istringstream file(read_text(dir / "gap.csv"));
+    for (std::string line; std::getline(file, line);) {
+        if (line.empty() || line[0] == '#' || line[0] == 't') continue;
+        const double gap = std::stod(line.substr(line.find(',') + 1));
+        down = std::max(down, h - gap), up = std::max(up, gap - h);
+        h = gap, ++rows;
+    }
+    BOOST_TEST_MESSAGE("window servo: step " << step << " m, largest move down " << down << " m, up " << up << " m");
+    BOOST_TEST(rows == 80u);  // 8000 steps / 100
+    BOOST_TEST(down <= step * (1 + 1e-9));
+    BOOST_TEST(up <= 3 * step * (1 + 1e-9));
 }
 
 namespace {
@@ -122,8 +143,8 @@ const std::pair<int, fs::path>& rough_run(const std::string& sides = "") {
 }  // namespace
 
 // The experiment's grains and surfaces in YADE (core grain_sizes.h, wall_bumps.h): a size spread
-// of 0.1 between rough walls (bumps of the grains' size, R = 1/2), under the window servo, which
-// carries the top's bumps with the plate; 0.08 s, as the plate starts at 1.75 H (the grains need
+// of 0.1 between rough walls (bumps of the grains' size, R = 1/2), under the weight plate, which
+// carries the top's bumps as one rigid body; 0.08 s, as the plate starts at 1.75 H (the grains need
 // room: servo.h plate_start). The plate holds the load with the bumps' force counted,
 // the bumps grip the bed harder than the planes of the smooth run, and the summary says what the
 // walls were.
@@ -146,6 +167,31 @@ BOOST_AUTO_TEST_CASE(rough_walls_and_a_size_spread, *boost::unit_test::precondit
     BOOST_TEST(mu > mu_smooth, mu << " vs " << mu_smooth);
     // the grains' own sizes went in: the initial file's radii differ
     BOOST_TEST(s.run.at("order").at("q6").is_number());
+}
+
+// A weight plate on a rough top (issue 50): the plate and its bumps one rigid body under the load,
+// the bumps' force part of the plate's dynamics. The rough case above: the plate falls from 1.75 H
+// onto the bed and holds the load (P_top within 3 block errors of it, the error below 15 %), the
+// bumps end exactly on the plate's lower face, and the contact persistence is measured after the
+// run, as granlub dem measures it.
+BOOST_AUTO_TEST_CASE(weight_plate_carries_its_bumps, *boost::unit_test::precondition(YadeInstalled())) {
+    const auto& [code, dir] = rough_run();
+    BOOST_TEST_REQUIRE(code == 0);
+    const Summary s = read_summary(dir / "summary.json");
+    const Scalar& top = s.outputs.at("normal_stress_top");
+    const double se = top.stderr_.value_or(0);
+    BOOST_TEST_MESSAGE("rough top, weight plate: P_top " << top.value << " +- " << se << " Pa, gap " << s.value("gap")
+                                                         << " m");
+    BOOST_TEST(se > 0.0);
+    BOOST_TEST(std::abs(top.value - 200.0) < 3.0 * se);
+    BOOST_TEST(se < 0.15 * 200.0);
+    const auto ds = nlohmann::json::parse(read_text(dir / "driver_summary.json"));
+    BOOST_TEST(ds.at("top_bumps_off_plate_m").get<double>() == 0.0);
+    const Case c = rough_case();
+    BOOST_TEST(s.value("gap") < 1.75 * c.cell.gap - c.grains.diameter);  // it came down onto the bed
+    const auto& fr = s.run.at("flow_regime");
+    BOOST_TEST(fr.at("contact_persistence").is_number());
+    BOOST_TEST(fr.at("persistence_snapshots").get<int>() == 3);
 }
 
 // [walls] sides = "as_bottom": the floor's bumps on both side walls, moving with the floor, their

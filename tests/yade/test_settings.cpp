@@ -105,7 +105,9 @@ BOOST_AUTO_TEST_CASE(load_control_settings) {
     const ParticleBox box{c.cell.length, c.cell.gap, c.cell.width, false};
     const auto j = couette_params(c, c.points.at(0), s, box, "/tmp/particles.csv");
     BOOST_TEST(j.at("servo").at("every").get<long long>() == 100);
-    BOOST_TEST(j.at("servo").at("step").get<double>() == 0.05 * c.grains.diameter);
+    // the window servo's step: servo_gain d capped at one grain-plate overlap at the load (issue 50)
+    BOOST_TEST(j.at("servo").at("step").get<double>() == s.plate_gain * c.grains.diameter);
+    BOOST_TEST(s.plate_gain < 0.05);
     BOOST_TEST(j.at("servo").at("gap_max").get<double>() == s.servo.gap_max);
     const Case f = tiny_case();
     BOOST_TEST(!couette_params(f, f.points.at(0), resolve_settings(f, f.points.at(0), RunOptions{}), box, "/tmp/p.csv")
@@ -124,15 +126,58 @@ BOOST_AUTO_TEST_CASE(weight_plate_and_warm_start_settings) {
     const auto j = couette_params(c, c.points.at(0), s, box, "/tmp/particles.csv");
     BOOST_TEST(j.at("servo").at("plate").get<std::string>() == "weight");
     BOOST_TEST(j.at("servo").at("plate_mass_ratio").get<double>() == 2.5);
-    const Case d = tiny_case(kFill, kLoad);
+    const Case d = tiny_case(kFill, kLoad);  // the default: a weight plate (issue 50)
     const Settings sd = resolve_settings(d, d.points.at(0), RunOptions{});
-    BOOST_TEST(!sd.weight_plate);
+    BOOST_TEST(sd.weight_plate);
     BOOST_TEST(!sd.warm_start);
-    BOOST_TEST(couette_params(d, d.points.at(0), sd, box, "/tmp/p.csv").at("servo").at("plate").get<std::string>() ==
+    const Case w = tiny_case(kFill, kLoad, "servo_plate = \"window\"\n");
+    const Settings sw = resolve_settings(w, w.points.at(0), RunOptions{});
+    BOOST_TEST(!sw.weight_plate);
+    BOOST_TEST(couette_params(w, w.points.at(0), sw, box, "/tmp/p.csv").at("servo").at("plate").get<std::string>() ==
                "window");
     BOOST_TEST(has(error_of([] { tiny_case("", "", "servo_plate = \"spring\"\n"); }), "servo_plate"));
     BOOST_TEST(has(error_of([] { tiny_case("", "", "plate_mass = 0\n"); }), "plate_mass"));
     BOOST_TEST(has(error_of([] { tiny_case("", "", "start = \"hot\"\n"); }), "start"));
+}
+
+// The window servo (issue 50): its gain capped from the contact stiffness as granlub dem's (one
+// grain-plate overlap at the load per unit error, servo.h), refused by name where a window is
+// shorter than the contacts' response (it would ram); a weight plate may carry a rough top's bumps.
+BOOST_AUTO_TEST_CASE(window_servo_capped_and_refused_where_it_would_ram) {
+    const Case c = tiny_case(kFill, kLoad);
+    const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
+    // viscel, t_c = 10 us, e = 0.9 at a wall of 1000 kg: k_n = m* (pi^2 + ln^2 e) / t_c^2, overlap P d^2 / k_n
+    const double m = c.grains.mass(), ms = m * 1e3 / (m + 1e3), ln = std::log(0.9), d = c.grains.diameter;
+    const double kn = ms * (std::numbers::pi * std::numbers::pi + ln * ln) / 1e-10;
+    BOOST_TEST(s.plate_overlap == 5e3 * d * d / kn, boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(s.plate_gain == s.plate_overlap / d, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(s.plate_gain < 2e-3 * s.servo.servo_gain);  // 0.05 d would be ~800 overlaps
+    const ParticleBox box{c.cell.length, c.cell.gap, c.cell.width, false};
+    BOOST_TEST(couette_params(c, c.points.at(0), s, box, "/tmp/p.csv").at("servo").at("step").get<double>() ==
+               s.plate_gain * d, boost::test_tools::tolerance(1e-12));
+    // Hertz: granlub dem's cap, the same function
+    const Case h = tiny_case(kFill, kLoad, "model = \"hertz\"\n");
+    const Settings sh = resolve_settings(h, h.points.at(0), RunOptions{});
+    BOOST_TEST(sh.plate_overlap == hertz_plate_overlap(h.grains, 5e3));
+    // windows of 10 steps of 0.5 us are shorter than the contacts' response (~t_c = 20 steps)
+    const std::string e = error_of([] {
+        const Case r = tiny_case_edits({{kFill, kLoad}, {"sample_every = 50", "sample_every = 10"}},
+                                       "servo_every = 10\nservo_plate = \"window\"\n");
+        resolve_settings(r, r.points.at(0), RunOptions{});
+    });
+    BOOST_TEST_MESSAGE(e);
+    for (const char* w : {"[yade] servo_every", "ram", "allowed: servo_every >= 20", "servo_plate = \"weight\""})
+        BOOST_TEST(has(e, w), w << " in: " << e);
+    // ... which a weight plate does not have
+    const Case wt = tiny_case_edits({{kFill, kLoad}, {"sample_every = 50", "sample_every = 10"}},
+                                    "servo_every = 10\nservo_plate = \"weight\"\n");
+    BOOST_TEST(resolve_settings(wt, wt.points.at(0), RunOptions{}).weight_plate);
+    // a weight plate on a rough top: allowed, the bumps go to the driver
+    const Case rough = tiny_case_edits({{kFill, kLoad}, {"roughness = 0.5", "roughness = 0.5\nsurface = \"bumps\""}},
+                                       "servo_plate = \"weight\"\nservo_max_gap = 1.75\n");
+    const Settings sr = resolve_settings(rough, rough.points.at(0), RunOptions{});
+    BOOST_TEST(sr.weight_plate);
+    BOOST_TEST(sr.bumps_top.has_value());
 }
 
 // verlet_distance reaches the driver's collider; outside (0, 5] it is refused by name.

@@ -89,6 +89,10 @@ nlohmann::json flow_regime_record(const ParticlePipeline& in, const ParticleReco
         double sum = 0;
         for (double v : contacts->coordination()) sum += v;
         d.coordination = sum / static_cast<double>(contacts->coordination().size());
+        // its block error over the steady snapshots: a point's Z either side of the verdict's
+        // threshold reads "at the transition" (point_verdict.h)
+        const BlockEstimate z = block_average(contacts->coordination(), in.blocks);
+        if (z.blocks >= 2) d.coordination_stderr = z.stderr_;
     }
     if (contacts && rec.persistence) {
         pers = persistence(in, rec);
@@ -198,6 +202,7 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
                                               .grains = in.grains,
                                               .solids_volume = solids,
                                               .simulated_s = in.simulated_s,
+                                              .time_step = in.time_step,
                                               .section = &xs,
                                               .plate_start = in.plate_start,
                                               .slip_bottom_from = protrusion(in.bumps_bottom),

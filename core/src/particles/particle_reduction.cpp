@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "granlub/results/run_status.h"
+#include "granlub/statistics/decorrelation.h"
 
 namespace granlub {
 
@@ -58,8 +59,25 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
     const SteadyWindow& win = in.window;
     const std::size_t start = win.wall_start;
     const double U = in.speed;
+    auto steady = [&](const std::vector<double>& v) { return std::span<const double>(v).subspan(std::min(start, v.size())); };
+    // Blocks no shorter than kBlockDecorrelationTimes decorrelation times of the wall stresses
+    // (decorrelation.h): the slowest of the four main series sets one block length for all.
+    double tau = 1.0;
+    for (const auto* v : {&st.normal_bottom, &st.normal_top, &st.shear_bottom, &st.shear_top})
+        tau = std::max(tau, integrated_autocorrelation_time(steady(*v)));
+    const std::size_t used = st.normal_top.size() - std::min(start, st.normal_top.size());
+    const BlockChoice blocks = decorrelated_blocks(used, tau, in.blocks);
+    const double block_s = in.forces.step.size() >= 2 ? in.forces.step[1] - in.forces.step[0] : 0.0;  // steps
+    o.run["wall_stress_blocks"] = {
+        {"requested", in.blocks},
+        {"used", blocks.blocks},
+        {"decorrelation_time_samples", tau},
+        {"decorrelation_time_s", tau * block_s * in.time_step},
+        {"block_length_s", blocks.blocks > 0 ? static_cast<double>(used / blocks.blocks) * block_s * in.time_step : 0.0},
+        {"min_decorrelation_times_per_block", kBlockDecorrelationTimes},
+        {"decorrelated", blocks.decorrelated}};
     auto put = [&](const std::string& name, const std::vector<double>& v) {
-        const BlockEstimate e = block_average(std::span<const double>(v).subspan(std::min(start, v.size())), in.blocks);
+        const BlockEstimate e = block_average(steady(v), blocks.blocks);
         o.outputs[name] = Scalar{e.mean, e.stderr_, "Pa"};
         return e.mean;
     };

@@ -8,7 +8,9 @@ void add_sampling_keys(SectionSpec& s) {
               "wall-force block length in steps (forces are summed every step)");
     s.integer("snapshots", 50, Range::closed(4, 1e5), "particle snapshots over the run for coarse-graining");
     s.integer("stations", 20, Range::closed(2, 1e5), "coarse-graining slabs across the gap");
-    s.integer("blocks", 10, Range::closed(2, 1e4), "blocks for the standard errors (block averaging)");
+    s.integer("blocks", 10, Range::closed(2, 1e4),
+              "blocks for the standard errors (block averaging); the wall stresses use fewer where blocks would "
+              "be shorter than three decorrelation times (run.wall_stress_blocks)");
 }
 
 void add_until_steady_keys(SectionSpec& s) {

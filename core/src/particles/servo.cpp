@@ -1,6 +1,10 @@
 // The servo keys and their resolution for both particle engines (servo.h).
 #include "granlub/particles/servo.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include <fmt/format.h>
 
 #include "granlub/error.h"
@@ -15,7 +19,8 @@ void add_servo_keys(SectionSpec& s) {
               "control = load: steps between top-plate updates (force averaged over them); 0 = sample_every");
     s.real("servo_gain", 0.05, Range::open_closed(0, 0.1), "",
            "control = load: plate move per update in grain diameters per unit relative stress error "
-           "(granlub dem with hertz: at most one grain-plate contact overlap at the load)");
+           "(soft contacts, granlub dem's hertz and granlub yade: at most one grain-plate contact overlap at the "
+           "load)");
     s.real("servo_max_gap", 1.5, Range::open_closed(1, 4), "",
            "control = load: highest plate position (the box top) as a multiple of [cell] gap");
 }
@@ -57,6 +62,24 @@ ServoSettings resolve_servo(const Case& c, const OperatingPoint& p, const Sectio
     v.gap_min = v.insert_fill * c.cell.gap / kClosestPacking + bumps;
     if (c.cell.ring() || !c.grains.sizes().equal() || bumps > 0) v.plate_start = v.gap_max;
     return v;
+}
+
+double hertz_plate_overlap(const Grains& g, double load) {
+    const double e_star = g.youngs_modulus / (2.0 * (1.0 - g.poisson_ratio * g.poisson_ratio));
+    const double force = load * g.diameter * g.diameter;
+    return std::pow(3.0 * force / (4.0 * e_star * std::sqrt(0.5 * g.diameter)), 2.0 / 3.0);
+}
+
+double linear_plate_overlap(const Grains& g, double load, double kn) { return load * g.diameter * g.diameter / kn; }
+
+double capped_plate_gain(double servo_gain, double overlap, double diameter) {
+    return std::min(servo_gain, overlap / diameter);
+}
+
+double plate_response_time(const Grains& g, double load, double overlap, bool hertz) {
+    const double force = load * g.diameter * g.diameter;
+    const double k = (hertz ? 1.5 : 1.0) * force / overlap;
+    return std::numbers::pi * std::sqrt(g.mass() / k);
 }
 
 nlohmann::json ServoSettings::to_json() const {

@@ -11,6 +11,12 @@
 
 namespace granlub {
 
+std::int64_t persistence_every_steps(double shear_rate, double time_step, std::int64_t steps) {
+    const double every = shear_rate > 0 ? std::round(kPersistenceStrain / (shear_rate * time_step)) : 1.0;
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::min(every, 1e12)), 1,
+                                    std::max<std::int64_t>(1, steps / kPersistenceRunFraction));
+}
+
 std::optional<double> inertial_number(double shear_rate, double diameter, double pressure, double density) {
     if (!(pressure > 0) || !(diameter > 0) || !(density > 0) || !std::isfinite(shear_rate)) return std::nullopt;
     return std::abs(shear_rate) * diameter / std::sqrt(pressure / density);
@@ -109,6 +115,7 @@ nlohmann::json flow_regime_json(const FlowDiagnostics& d) {
                         {"inertial_number_nominal", value(d.inertial_nominal)},
                         {"inertial_number_mid_gap", value(d.inertial_mid_gap)},
                         {"coordination_number", value(d.coordination)},
+                        {"coordination_number_stderr", value(d.coordination_stderr)},
                         {"contact_persistence", value(d.persistence)},
                         {"enduring_contacts", enduring_contacts(d.coordination, d.persistence)},
                         {"thresholds",

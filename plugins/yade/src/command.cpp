@@ -48,7 +48,10 @@ nlohmann::json settings_json(const Settings& s) {
                             {"periodic_depth", s.periodic_depth},
                             {"start", s.warm_start ? "warm" : "cold"},
                             {"servo_plate", s.weight_plate ? "weight" : "window"},
-                            {"plate_mass", s.plate_mass}});
+                            {"plate_mass", s.plate_mass},
+                            {"persistence_every", s.persistence_every},
+                            {"persistence_intervals", s.persistence_intervals}});
+    if (s.servo.load) j.update(nlohmann::json{{"servo_gain_used", s.plate_gain}, {"plate_overlap_m", s.plate_overlap}});
     return j;
 }
 
@@ -185,6 +188,7 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
         r.summary.run["plate"] = s.weight_plate ? fmt::format("a loaded plate of {:g} x the grains' mass", s.plate_mass)
                                                 : std::string("the window servo of granlub dem");
     fs::remove(dir / "samples.bin");  // raw snapshots: large, and reproducible from params.json
+    fs::remove(dir / "contacts.bin");  // the persistence snapshots, likewise
     fs::remove(dir / "progress");
     return r;
 }

@@ -78,7 +78,9 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
                 {"sample_every", s.sample_every},
                 {"snapshot_every", s.snapshot_every},
                 {"body_force_every", s.body_force_every},
-                {"verlet_distance", s.verlet_distance}};
+                {"verlet_distance", s.verlet_distance},
+                {"persistence_every", s.persistence_every},  // after the run (flow_regime.h)
+                {"persistence_intervals", s.persistence_intervals}};
     j["initial_file"] = fs::absolute(initial_file).string();
     j["initial_overlap"] = overlap;
     // rough walls: the bumps' centres in the wall's plane (granlub y = 0, and the top's start; the
@@ -93,7 +95,7 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
         const ServoSettings& v = s.servo;
         j["servo"] = {{"target_stress", v.target_stress},
                       {"every", v.servo_every},
-                      {"step", v.servo_gain * c.grains.diameter},
+                      {"step", s.plate_gain * c.grains.diameter},  // capped from the contact stiffness (settings.cpp)
                       {"max_error", v.servo_max_error},
                       {"gap_min", v.gap_min},
                       {"gap_max", v.gap_max},

@@ -116,6 +116,14 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     rec.snapshots = {(dir / "samples.bin").string(), [&](const SnapshotVisitor& each) {
                          return read_samples(dir / "samples.bin", n, snapshots, snapshot_dt, radius, box, each);
                      }};
+    // contact persistence after the run (flow_regime.h), as granlub dem measures it
+    const auto persistence_snapshots = ds.value("persistence_snapshots", std::size_t{0});
+    const double persistence_dt = dt * static_cast<double>(s.persistence_every);
+    if (persistence_snapshots > 0)
+        rec.persistence = {(dir / "contacts.bin").string(), [&](const SnapshotVisitor& each) {
+                               return read_samples(dir / "contacts.bin", n, persistence_snapshots, persistence_dt,
+                                                   radius, box, each);
+                           }};
     const ParticlePipeline pl{.c = c,
                               .p = p,
                               .box = box,
@@ -126,7 +134,8 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
                               .blocks = static_cast<std::size_t>(s.blocks),
                               .grains = n,
                               .simulated_s = ds.at("simulated_time").get<double>(),
-                              .contact_box = box,  // coordination and order; no persistence snapshots
+                              .contact_box = box,  // coordination, order and persistence
+                              .persistence_every = s.persistence_every,
                               .bumps_bottom = &s.bumps_bottom,
                               .bumps_top = &s.bumps_top,
                               .bumps_side = &s.bumps_side,

@@ -36,9 +36,10 @@ SectionSpec section() {
              "initial grains: cold = the shared initial file ([particles]); warm = granlub dem's final "
              "state of the same point (results/dem/<point>/final_state.csv: positions, velocities, spins, "
              "plate), so the run starts in the DEM's steady state");
-    s.choice("servo_plate", "window", {"window", "weight"},
-             "control = load: window = granlub dem's servo (the plate moved every servo_every steps by "
-             "servo_gain); weight = a loaded plate free along y (mass: plate_mass), pressed by P A");
+    s.choice("servo_plate", "weight", {"window", "weight"},
+             "control = load: weight = a loaded plate free along y (mass: plate_mass), pressed by P A, one rigid "
+             "body with a rough top's bumps; window = granlub dem's servo (the plate moved every servo_every steps "
+             "by servo_gain, capped at one grain-plate overlap at the load: slow on soft contacts)");
     s.real("plate_mass", 1.0, Range::positive(), "",
            "servo_plate = \"weight\": the plate's mass as a multiple of the grains' (a numerical choice: a light "
            "plate follows the bed within a millisecond, a dead weight P A / g oscillates for tens of ms)");

@@ -13,6 +13,39 @@ namespace granlub::yade {
 
 std::string to_string(Model m) { return m == Model::ViscEl ? "viscel" : "hertz"; }
 
+namespace {
+// The window servo capped from the contact stiffness, as granlub dem's (servo.h), and refused where
+// it would ram: a window shorter than the contacts' response moves the plate again before they
+// have answered the last move. A weight plate has no window: nothing to cap.
+void resolve_window_servo(const Case& c, const OperatingPoint& p, const Section& s, Settings& r) {
+    const Grains& g = c.grains;
+    const double P = r.servo.target_stress;
+    const bool hertz = r.model == Model::Hertz;
+    if (hertz) {
+        r.plate_overlap = hertz_plate_overlap(g, P);
+    } else {  // ViscElMat at a wall of mass wall_mass (Pournin et al. 2001): k_n = m* (pi^2 + ln^2 e)/t_c^2
+        const double m = g.mass(), m_star = m * r.wall_mass / (m + r.wall_mass);
+        const double ln_e = std::log(p.top.restitution);
+        const double kn = m_star * (std::numbers::pi * std::numbers::pi + ln_e * ln_e) /
+                          (r.contact_time * r.contact_time);
+        r.plate_overlap = linear_plate_overlap(g, P, kn);
+    }
+    r.plate_gain = capped_plate_gain(r.servo.servo_gain, r.plate_overlap, g.diameter);
+    if (r.weight_plate) return;
+    const double response = plate_response_time(g, P, r.plate_overlap, hertz);
+    const double window = static_cast<double>(r.servo.servo_every) * r.dt;
+    if (window < response)
+        s.fail("servo_every",
+               fmt::format("{} steps of {:g} s ({:g} s) with servo_plate = \"window\": shorter than the grain-plate "
+                           "contacts' response at the load ({:g} s), so the plate would move again before they "
+                           "answered its last move and ram the bed (allowed: servo_every >= {}, or "
+                           "servo_plate = \"weight\")",
+                           r.servo.servo_every, r.dt, window, response,
+                           static_cast<std::int64_t>(std::ceil(response / r.dt / static_cast<double>(r.sample_every))) *
+                               r.sample_every));
+}
+}  // namespace
+
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     if (c.cell.ring())
         throw NoAnswer(fmt::format("point {}: granlub yade runs the slice only; [cell] geometry = \"annulus\" (the "
@@ -72,10 +105,9 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     r.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", box);
     r.bumps_top = wall_bumps(c, p, p.top, "top", box);
     r.bumps_side = side_bumps(c, p, box, r.servo.load ? r.servo.gap_max : box.gap);  // up to the highest plate
-    if (r.bumps_top && r.servo.load && r.weight_plate)
-        s.fail("servo_plate", "\"weight\" with a rough top wall ([walls] surface = \"bumps\"): the bumps would ride "
-                              "a free plate; use servo_plate = \"window\" (granlub dem's servo), which moves them "
-                              "with the plate");
+    if (r.servo.load) resolve_window_servo(c, p, s, r);
+
+    r.persistence_every = persistence_every_steps(p.speed / c.cell.gap, r.dt, r.steps);
 
     // snapshots at whole wall-force blocks (under load: whole servo windows)
     const std::int64_t unit = r.servo.load ? r.servo.servo_every : r.sample_every;

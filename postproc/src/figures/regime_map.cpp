@@ -10,6 +10,7 @@
 #include "figures/state_series.h"
 #include "formats/text.h"
 #include "granlub/statistics/flow_regime.h"
+#include "granlub/statistics/point_verdict.h"
 #include "results/scope.h"
 
 namespace granlub::postproc {
@@ -170,10 +171,12 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
     t.header = {"solver", "point", "U (m/s)", "P (Pa)", "status", "verdict", "decided by", "I (U/H)", "I (mid-gap)",
                 "gap (mm)"};
     for (const auto& g : grid.per_load)
-        for (const OperatingPoint* p : g.points)
+        for (const OperatingPoint* p : g.points) {
+            std::vector<EngineRegime> engines;  // the point's one verdict (core point_verdict.h), below
             for (const auto& s : col.solvers) {
                 const Run& r = col.run(s, p->id);
                 if (!r.usable()) continue;
+                if (has_verdict(r)) engines.push_back({s, r.summary->run["flow_regime"]});
                 const std::string cls = r.steady() ? "" : r.state_class();
                 std::string verdict = "—", why = "no contact record (run.flow_regime): a model without grain contacts";
                 if (has_verdict(r)) {
@@ -194,6 +197,11 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
                                   {I.mid_gap ? num(*I.mid_gap, 3) : "—", cls},
                                   {gap ? num(*gap * 1e3, 3) : "—", cls}});
             }
+            if (engines.empty()) continue;
+            const PointVerdict v = point_verdict(engines);
+            t.rows.push_back({{"point", ""}, {p->id, ""}, {num(p->speed), ""}, {num(p->normal_stress), ""}, {"", ""},
+                              {to_string(v.regime), ""}, {v.criterion, ""}, {"", ""}, {"", ""}, {"", ""}});
+        }
     return t;
 }
 

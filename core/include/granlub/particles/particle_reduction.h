@@ -60,10 +60,12 @@ struct ParticleReductionInputs {
     const SteadyWindow& window;
     const PlateSeries* plate;          // control = load, else null
     const ServoSettings& servo;
-    std::size_t blocks;
+    std::size_t blocks;                // requested: the wall stresses use fewer when their
+                                       // decorrelation time asks for longer blocks (decorrelation.h)
     std::size_t grains;
     double solids_volume;              // m^3, the grains' volume (particles.h, solids_volume)
     double simulated_s;                // the run's simulated time (for the transient message)
+    double time_step = 0;              // s: the decorrelation time in seconds (run.wall_stress_blocks)
     const CrossSection* section = nullptr;  // the same snapshots over y x z, when recorded
     double plate_start = 0;            // m, where the plate started (0: box.gap)
     // slip is taken at the first station whose centre is at least this far from the wall's plane

@@ -44,6 +44,26 @@ struct ServoSettings {
     nlohmann::json to_json() const;   // control, target, servo_*, gap limits (summary provenance)
 };
 
+// The window servo's cap for soft contacts, shared by both engines. The plate is moved once per
+// window; a move into loaded contacts compresses each of them by the move, and moves of servo_gain
+// d (0.05 d, ~100 contact overlaps at the load) hammered the bed (plugins/liggghts/README.md and
+// plugins/yade/README.md, "Load control"). So the gain is capped at plate_overlap / d: a unit error
+// moves the plate by one grain-plate overlap at the load. The load's share of one grain is P d^2
+// [ASSUMPTION] ours, an estimate of the plate's contact force.
+//   Hertz (Hertz 1882; Johnson 1985, Contact Mechanics, eq. 4.23): F = 4/3 E* sqrt(R) delta^(3/2),
+//   1/E* = 2 (1 - nu^2)/E (a wall of the grains' material), R = d/2 (LIGGGHTS' wall: infinite radius).
+double hertz_plate_overlap(const Grains& g, double load);
+//   Linear spring k_n (N/m; YADE's ViscElMat, Pournin et al. 2001: k_n = m* (pi^2 + ln^2 e)/t_c^2):
+//   delta = P d^2 / k_n.
+double linear_plate_overlap(const Grains& g, double load, double kn);
+// The gain the window servo uses: min(servo_gain, overlap / d).
+double capped_plate_gain(double servo_gain, double overlap, double diameter);
+// The time a grain-plate contact takes to respond to a move, pi sqrt(m / k) with k = dF/d(delta)
+// at the load (half a period of the grain on the loaded contact): Hertz k = 3/2 F / delta,
+// linear k = k_n. A servo window shorter than this moves the plate again before the contacts have
+// answered the last move: the moves pile up (the window servo "rams").
+double plate_response_time(const Grains& g, double load, double overlap, bool hertz);
+
 // Adds fill_for_load, servo_every, servo_gain and servo_max_gap to an engine's section.
 void add_servo_keys(SectionSpec& s);
 

@@ -23,20 +23,6 @@ double impulse_reference_speed(const Case& c, const OperatingPoint& p) {
     return std::max({v_wall, v_fall, v_load});
 }
 
-
-
-// Hertz normal overlap of a grain on a plane of the same material under the force P d^2 (one
-// grain's share of the load): F = (4/3) E* R^(1/2) delta^(3/2) (Hertz 1882; Johnson 1985, Contact
-// Mechanics, eq. 4.23) with 1/E* = 2 (1 - nu^2) / E and R = d/2, as LIGGGHTS' hertz model combines
-// the two materials. The load's share per grain is our estimate of the plate's contact force.
-namespace {
-double hertz_plate_overlap(const Grains& g, double load) {
-    const double e_star = g.youngs_modulus / (2.0 * (1.0 - g.poisson_ratio * g.poisson_ratio));
-    const double force = load * g.diameter * g.diameter;
-    return std::pow(3.0 * force / (4.0 * e_star * std::sqrt(0.5 * g.diameter)), 2.0 / 3.0);
-}
-}  // namespace
-
 Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const Section& s = c.section("dem");
     Settings st;
@@ -103,7 +89,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.plate_gain = st.servo_gain;
     if (st.load && st.model == Model::Hertz) {
         st.plate_overlap = hertz_plate_overlap(c.grains, st.target_stress);
-        st.plate_gain = std::min(st.servo_gain, st.plate_overlap / c.grains.diameter);
+        st.plate_gain = capped_plate_gain(st.servo_gain, st.plate_overlap, c.grains.diameter);
     }
     if (st.steps < 20 * st.sample_every)
         s.fail(o.full ? "time_full" : "time",
@@ -138,10 +124,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     // rough walls with the iterated solve: the bumps are moved by fix move or by no fix, and fix
     // impulse/solve treats such atoms as kinematic (infinite mass), as the walls they are
     // a shear strain of kPersistenceStrain at U/H, at most a hundredth of the run
-    const double shear_rate = p.speed / c.cell.gap;
-    const double every = shear_rate > 0 ? std::round(kPersistenceStrain / (shear_rate * st.time_step)) : 1.0;
-    st.persistence_every = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::min(every, 1e12)), 1,
-                                                    std::max<std::int64_t>(1, st.steps / 100));
+    st.persistence_every = persistence_every_steps(p.speed / c.cell.gap, st.time_step, st.steps);
 
     return st;
 }

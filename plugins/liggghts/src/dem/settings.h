@@ -14,6 +14,7 @@
 #include "granlub/particles/until_steady.h"
 #include "granlub/case/wall_bumps.h"
 #include "granlub/run/sweep.h"
+#include "granlub/statistics/flow_regime.h"
 
 namespace granlub::dem {
 
@@ -47,7 +48,7 @@ struct Settings : ServoSettings {
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
     std::int64_t persistence_every = 1;
-    std::int64_t persistence_intervals = 2;
+    std::int64_t persistence_intervals = kPersistenceIntervals;
     // steps of the persistence run after the main run: up to the next multiple of
     // persistence_every (the first snapshot), then the intervals
     std::int64_t persistence_run_steps() const {

@@ -13,6 +13,7 @@
 #include "granlub/particles/until_steady.h"
 #include "granlub/run/sweep.h"
 #include "granlub/case/wall_bumps.h"
+#include "granlub/statistics/flow_regime.h"
 
 namespace granlub::yade {
 
@@ -48,8 +49,15 @@ struct Settings {
     ServoSettings servo;
     bool weight_plate = false;
     double plate_mass = 1.0;
+    // the window servo's gain capped from the contact stiffness (servo.h capped_plate_gain), as
+    // granlub dem caps it: a unit error moves the plate by one grain-plate overlap at the load
+    double plate_overlap = 0;              // m
+    double plate_gain = 0;                 // diameters per unit relative error, the driver's
+    // contact persistence after the run, as granlub dem measures it (flow_regime.h)
+    std::int64_t persistence_every = 1;
+    std::int64_t persistence_intervals = kPersistenceIntervals;
     // rough walls ([walls] surface = "bumps", core wall_bumps.h): fixed spheres in the driver, the
-    // floor's moving with it, the top's with the window servo's plate
+    // floor's moving with it, the top's with the plate (window servo or weight plate)
     std::optional<BumpLayer> bumps_bottom, bumps_top, bumps_side;  // bumps_side: each side wall's
 };
 

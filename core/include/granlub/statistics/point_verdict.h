@@ -1,0 +1,39 @@
+// One verdict per operating point from the flow-regime records of every particle engine that ran
+// it (run.flow_regime, flow_regime.h): the report shows this, not one verdict per engine.
+//
+// Each engine's verdict is flow_regime.h's. The point's is
+//   that verdict when every engine that decided agrees and none has its coordination number Z
+//     within kTransitionSigmas block errors of kEnduringMinCoordination;
+//   "at the transition" when the engines disagree (one contact, one collision lubrication) or an
+//     engine's Z lies within those errors of the threshold: the numbers sit on the boundary and
+//     the criterion gives each engine's Z (± error) and persistence beside the thresholds;
+//   "undetermined" when no engine decided.
+// kTransitionSigmas = 2 [ASSUMPTION] ours: a Z two block errors from 4 could as well lie on its
+// other side in a rerun. The persistence has no error (two intervals after the run): only the
+// engines' disagreement puts it at the transition.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace granlub {
+
+inline constexpr double kTransitionSigmas = 2.0;
+
+struct EngineRegime {
+    std::string engine;       // "dem", "yade"
+    nlohmann::json flow_regime;  // its run.flow_regime (any verdict_version)
+};
+
+enum class PointRegime { Contact, Collision, Transition, Undetermined };
+std::string to_string(PointRegime r);  // "contact lubrication", "collision lubrication", "at the transition",
+                                       // "undetermined"
+
+struct PointVerdict {
+    PointRegime regime = PointRegime::Undetermined;
+    std::string criterion;  // each engine's numbers and verdict, and why the point reads as it does
+};
+PointVerdict point_verdict(const std::vector<EngineRegime>& runs);
+
+}  // namespace granlub
