@@ -20,6 +20,18 @@ struct DriverRun {
     int exit_code;       // the driver's (mpirun's) exit status; -1 if it did not exit normally
 };
 
+// Runs a shell command line, collecting its output and exit status.
+inline DriverRun run_command(const std::string& cmd) {
+    DriverRun run{"", -1};
+    FILE* p = ::popen(cmd.c_str(), "r");
+    if (!p) return run;
+    std::array<char, 4096> buf;
+    while (std::fgets(buf.data(), buf.size(), p)) run.output += buf.data();
+    const int status = ::pclose(p);
+    if (status != -1 && WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
+    return run;
+}
+
 // Runs the driver on `np` ranks in <build>/tests/<folder>, with extra command-line `vars`.
 inline DriverRun run_driver(const std::string& deck, const std::string& vars, int np = 1,
                             const std::string& folder = "liggghts_collide") {
@@ -31,14 +43,7 @@ inline DriverRun run_driver(const std::string& deck, const std::string& vars, in
         if (::geteuid() == 0) cmd += "--allow-run-as-root ";
     }
     cmd += std::string(GRANLUB_LIGGGHTS_DRIVER_PATH) + " -in '" + deck + "' -log none -echo none " + vars + " 2>&1";
-    DriverRun run{"", -1};
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) return run;
-    std::array<char, 4096> buf;
-    while (std::fgets(buf.data(), buf.size(), p)) run.output += buf.data();
-    const int status = ::pclose(p);
-    if (status != -1 && WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
-    return run;
+    return run_command(cmd);
 }
 
 // name=value pairs of the RESULT lines (the measured part, before any "expect")

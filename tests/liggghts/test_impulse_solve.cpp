@@ -154,7 +154,8 @@ BOOST_AUTO_TEST_CASE(values_out_of_range_stop_with_the_plugins_error) {
         {"correction 1.5", "correction must be a number in (0, 1]"},
         {"rest_factor -1", "rest_factor must be a number in [0, 100]"},
         {"rest_factor 101", "rest_factor must be a number in [0, 100]"},
-        {"tol 1e-3", "unknown keyword 'tol' (tolerance, iterations, warm_start, restitution, rest_factor, slop, correction)"},
+        {"tol 1e-3", "unknown keyword 'tol' (tolerance, iterations, warm_start, restitution, rest_factor, slop, correction, "
+                     "velocity_tolerance, overlap_limit, overlaps)"},
     };
     int k = 0;
     for (const Bad& b : bad)
@@ -210,13 +211,23 @@ BOOST_AUTO_TEST_CASE(the_default_iterates_with_the_solver_the_pair_style_makes) 
     BOOST_TEST_REQUIRE(made.exit_code == 0, made.output);
     BOOST_TEST(made.output.find("model impulse: iterate on (the default): made 'fix granlub_impulse_solve all "
                                 "impulse/solve' with its defaults") != std::string::npos, made.output);
+    // written after the pair style, the deck's fix takes over from the one the pair style made there
     const auto written = run_driver(iterated("fix solve all impulse/solve\n", "in.written").string(), "", 1, kFolder);
     BOOST_TEST_REQUIRE(written.exit_code == 0, written.output);
-    BOOST_TEST(written.output.find("granlub_impulse_solve") == std::string::npos);
-    const auto a = results(made.output), b = results(written.output);
+    // written before it, none is made
+    std::string d = read_text(iterated("", "in.written_first"));
+    d = std::regex_replace(d, std::regex("\npair_style "), "\nfix solve all impulse/solve\npair_style ");
+    const auto first = run_driver(write_deck(d, "in.written_first").string(), "", 1, kFolder);
+    BOOST_TEST_REQUIRE(first.exit_code == 0, first.output);
+    BOOST_TEST(first.output.find("granlub_impulse_solve") == std::string::npos);
+    const auto a = results(made.output), b = results(written.output), c = results(first.output);
     BOOST_TEST_REQUIRE(a.size() >= 3u);
     BOOST_TEST_REQUIRE(a.size() == b.size());
-    for (const auto& [key, value] : a) BOOST_TEST_CONTEXT(key) { close(value, b.at(key)); }
+    BOOST_TEST_REQUIRE(a.size() == c.size());
+    for (const auto& [key, value] : a) BOOST_TEST_CONTEXT(key) {
+            close(value, b.at(key));
+            close(value, c.at(key));
+        }
     // and the single pass, written out, makes none
     const auto single = run_driver(deck(kPair + " iterate off", kWall + " iterate off", "", "in.single").string(), "", 1,
                                    kFolder);

@@ -17,6 +17,7 @@
 #ifndef GRANLUB_IMPULSE_CONTACTS_H_
 #define GRANLUB_IMPULSE_CONTACTS_H_
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -90,6 +91,40 @@ public:
 protected:
   std::vector<ImpulseContact> contacts_;
 };
+
+// The solver a model hands its contacts to: the deck's own fix impulse/solve if it has one, else
+// the one pair_style gran made (kMadeSolverId), which then steps aside. M is LAMMPS' Modify (a
+// template, so this header needs neither modify.h nor fix.h).
+template <class M>
+inline ImpulseContactSink * find_solver(M * modify)
+{
+  ImpulseContactSink * made = NULL;
+  for (int k = 0; k < modify->nfix; k++) {
+    if (std::string(modify->fix[k]->style) != "impulse/solve") continue;
+    ImpulseContactSink * s = dynamic_cast<ImpulseContactSink *>(modify->fix[k]);
+    if (std::string(modify->fix[k]->id) != kMadeSolverId) return s;
+    made = s;
+  }
+  return made;
+}
+
+// Physics the rigid contacts cannot give: fix heat/gran (heat/gran/conduction) conducts through
+// the contact area of an elastic overlap (LIGGGHTS' contact_area overlap/constant/projection),
+// and a rigid contact has none: its overlap is the solver's slop or one step's approach, so the
+// heat flow would be a fraction of an elastic contact's and change with the time step (measured on
+// LIGGGHTS' heatTransfer_1 tutorial: the plugin README, "LIGGGHTS' tutorials"). Refused at every
+// run (M, E: LAMMPS' Modify and Error; a template, as find_solver).
+template <class M, class E>
+inline void refuse_contact_area_fixes(M * modify, E * error, const std::string & where)
+{
+  for (int k = 0; k < modify->nfix; k++)
+    if (std::string(modify->fix[k]->style).compare(0, 9, "heat/gran") == 0)
+      error->all(__FILE__, __LINE__, ("model impulse (" + where + ") cannot serve fix " + modify->fix[k]->id + " " +
+                                      modify->fix[k]->style + ": heat conduction between grains needs a contact "
+                                      "area, and a rigid contact has none (its overlap is the solver's slop or one "
+                                      "step's approach, so the heat flow would depend on the time step); use an "
+                                      "elastic model (hertz, hooke) for heat transfer").c_str());
+}
 
 }
 }

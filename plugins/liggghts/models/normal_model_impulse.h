@@ -67,7 +67,8 @@
     and gives the same stresses in sheared cells, so granlub's cases choose
     it there (`[dem] contact_solve`). Without a fix impulse/solve in the
     deck, pair_style gran makes one with its defaults (id
-    granlub_impulse_solve) when a run starts. A pair style and every wall
+    granlub_impulse_solve, at the pair_style command, so thermo_style can
+    name it; a fix the deck writes later takes over). A pair style and every wall
     with model impulse must agree: all iterate on with one fix
     impulse/solve, or all off without one (checked at each run).
 
@@ -137,6 +138,8 @@ namespace ContactModels
       hsetup->add_history_value("impulse_step", "0");
       hsetup->add_history_value("impulse_load", "0");
       cmb->add_history_offset("impulse", historyOffset);
+      // the solver exists from the pair style on, so thermo_style can name it before a run
+      if (!wall && !find_sink()) make_sink();
     }
 
     inline void connectToProperties(PropertyRegistry & registry)
@@ -146,6 +149,7 @@ namespace ContactModels
       // the operator works on the real grains' masses; coarse-graining would rescale them
       if (force->cg_active())
         error->cg(FLERR, "model impulse");
+      refuse_contact_area_fixes(modify, error, where());
       // every run: the solver fix may have been made or removed since the last one. The pair
       // style (its init runs before the fixes' init) makes one with the defaults if the deck has
       // none; a wall model's init comes later and finds it.
@@ -283,13 +287,13 @@ namespace ContactModels
 
     inline ImpulseContactSink * find_sink() const
     {
-      LAMMPS_NS::Fix * f = modify->find_fix_style("impulse/solve", 0);
-      return f ? dynamic_cast<ImpulseContactSink *>(f) : NULL;
+      return find_solver(modify);
     }
 
-    // iterate on without a fix impulse/solve in the deck: the solver with its defaults. Made from
-    // the pair style's init (before the fixes' init, as LIGGGHTS' pair gran makes its contact
-    // history fix), so the run's fix lists include it; it stays for later runs.
+    // iterate on without a fix impulse/solve in the deck: the solver with its defaults. Made at
+    // the pair_style command, or else from the pair style's init (before the fixes' init, as
+    // LIGGGHTS' pair gran makes its contact history fix), so the run's fix lists include it; it
+    // stays for later runs.
     inline ImpulseContactSink * make_sink()
     {
       std::string id(kMadeSolverId), group("all"), style("impulse/solve");
@@ -297,7 +301,9 @@ namespace ContactModels
       modify->add_fix(3, args);
       if (comm->me == 0) {
         const std::string msg = "model impulse: iterate on (the default): made 'fix " + id + " all impulse/solve' "
-                                "with its defaults; 'iterate off' is Sawyer & Tichy's single pass\n";
+                                "with its defaults (thermo_style can read its state as f_" + id + "[1..9]; a fix "
+                                "impulse/solve the deck writes takes over); 'iterate off' is Sawyer & Tichy's single "
+                                "pass\n";
         if (screen) fputs(msg.c_str(), screen);
         if (logfile) fputs(msg.c_str(), logfile);
       }

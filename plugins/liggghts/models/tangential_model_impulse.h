@@ -86,8 +86,7 @@ namespace ContactModels
       registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
       registry.connect("coeffFrict", coeffFrict, "tangential_model impulse");
       // model impulse checks that the solver exists when iterate is on
-      LAMMPS_NS::Fix * f = iterate ? modify->find_fix_style("impulse/solve", 0) : NULL;
-      sink = f ? dynamic_cast<ImpulseContactSink *>(f) : NULL;
+      sink = iterate ? find_solver(modify) : NULL;
     }
 
     inline void surfacesIntersect(const SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)

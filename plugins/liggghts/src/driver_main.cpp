@@ -3,6 +3,9 @@
 // replacement, also under mpirun.
 #include <mpi.h>
 
+#include <cstdio>
+#include <cstring>
+
 #include "input.h"
 #include "lammps.h"
 
@@ -11,6 +14,15 @@
 int main(int argc, char** argv) {
     MPI_Init(&argc, &argv);
     granlub_liggghts_register();  // explicit, so the linker can never drop the plugin
+    // -h: the plugin's styles first; LIGGGHTS then prints its own and exits
+    int me = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &me);
+    for (int k = 1; k < argc && me == 0; k++)
+        if (std::strcmp(argv[k], "-h") == 0 || std::strcmp(argv[k], "-help") == 0) {
+            granlub_liggghts_print_styles(stdout);
+            std::fflush(stdout);
+            break;
+        }
     LAMMPS_NS::LAMMPS* lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
     granlub_liggghts_register_styles(lammps);  // fix and compute styles live in the instance (register_fix_compute.cpp)
     lammps->input->file();

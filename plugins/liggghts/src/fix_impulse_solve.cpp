@@ -124,6 +124,10 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
       rest_factor_(2.0),
       slop_(1e-4),
       correction_(1.0),
+      velocity_tolerance_(0.1),
+      vref_(0.0),
+      overlap_limit_(0.05),
+      overlap_error_(false),
       comm_mode_(kCommStart),
       any_boundary_(false),
       kinematic_bits_(0),
@@ -135,7 +139,14 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
       last_change_(0.0),
       run_steps_(0),
       run_sweeps_(0),
-      run_capped_(0) {
+      run_capped_(0),
+      last_overlap_(0.0),
+      run_max_overlap_(0.0),
+      run_bad_steps_(0),
+      run_max_overlap_step_(0),
+      run_position_capped_(0),
+      warned_at_(0),
+      superseded_(false) {
     if (std::strcmp(arg[1], "all") != 0)
         fail(error, std::string("acts on every contact of the impulse models: its group must be 'all'; got '") +
                         arg[1] + "'");
@@ -162,14 +173,20 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
             rest_factor_ = number(error, "rest_factor", val, 0.0, kMaxRestFactor, false, "[0, 100]");
         } else if (key == "correction") {
             correction_ = number(error, "correction", val, 0.0, 1.0, true, "(0, 1]");
+        } else if (key == "velocity_tolerance") {
+            velocity_tolerance_ = number(error, "velocity_tolerance", val, 0.0, kMaxTolerance, false, "[0, 0.5] (0: off)");
+        } else if (key == "overlap_limit") {
+            overlap_limit_ = number(error, "overlap_limit", val, 0.0, 1.0, true, "(0, 1] (a fraction of r_i + r_j)");
+        } else if (key == "overlaps") {
+            overlap_error_ = second(error, "overlaps", val, "warn", "error");
         } else {
             fail(error, "unknown keyword '" + key + "' (tolerance, iterations, warm_start, restitution, rest_factor, slop, "
-                        "correction)");
+                        "correction, velocity_tolerance, overlap_limit, overlaps)");
         }
     }
     comm_forward = 7;  // kCommStart: velocity, spin, boundary-pair count
     vector_flag = 1;
-    size_vector = 6;
+    size_vector = 9;
     global_freq = 1;
     extvector = 0;
 }
@@ -187,7 +204,13 @@ void FixImpulseSolve::refuse(const std::string& msg) const {
 }
 
 void FixImpulseSolve::init() {
-    if (modify->n_fixes_style("impulse/solve") > 1) refuse("only one fix impulse/solve is allowed");
+    // the fix pair_style gran made (granlub_impulse_solve) steps aside for one the deck wrote
+    const bool made = std::strcmp(id, LIGGGHTS::ContactModels::kMadeSolverId) == 0;
+    const int n = modify->n_fixes_style("impulse/solve");
+    const int made_n = modify->find_fix(LIGGGHTS::ContactModels::kMadeSolverId) >= 0 ? 1 : 0;
+    superseded_ = made && n > 1;
+    if (superseded_) return;
+    if (n - made_n > 1) refuse("only one fix impulse/solve is allowed");
     if (std::strstr(update->integrate_style, "respa")) refuse("does not support run_style respa");
     if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
         refuse("needs spheres with per-atom radius, mass, spin and torque (atom_style granular or sphere)");
@@ -224,6 +247,7 @@ void FixImpulseSolve::check_styles() {
 }
 
 void FixImpulseSolve::setup(int) {
+    if (superseded_) return;
     check_styles();  // here, not in init: computes register with pair gran and the walls in their own init
     // Which atoms the impulses may move: those a time-integrating fix moves by its forces. An atom
     // whose motion is prescribed (fix move, fix freeze) or that no fix integrates (a wall made of
@@ -242,10 +266,13 @@ void FixImpulseSolve::setup(int) {
     setup_pending_ = true;
     setup_step_ = update->ntimestep;  // the step the previous run ended with
     run_steps_ = run_sweeps_ = run_capped_ = 0;
+    run_bad_steps_ = run_position_capped_ = warned_at_ = 0;
+    run_max_overlap_ = 0.0;
+    run_max_overlap_step_ = update->ntimestep;
 }
 
 void FixImpulseSolve::pre_initial_integrate() {
-    if (!setup_pending_) return;
+    if (superseded_ || !setup_pending_) return;
     setup_pending_ = false;
     const double dt = update->dt;
     // the contacts solved at the setup's step (the last of the previous run) get their impulses back
@@ -262,6 +289,7 @@ void FixImpulseSolve::pre_initial_integrate() {
 }
 
 void FixImpulseSolve::pre_final_integrate() {
+    if (superseded_) return;
     const double dt = update->dt;
     const int nlocal = atom->nlocal;
     prepare(dt, nlocal);
@@ -272,6 +300,7 @@ void FixImpulseSolve::pre_final_integrate() {
     run_steps_++;
     run_sweeps_ += sweeps;
     if (sweeps >= iterations_ && last_change_ > tolerance_) run_capped_++;
+    watch_overlaps(last_position_sweeps_ >= iterations_);
 }
 
 void FixImpulseSolve::grow(int nall) {
@@ -330,6 +359,15 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
 
     static const double zero[3] = {0.0, 0.0, 0.0};
     const double previous = static_cast<double>(update->ntimestep - 1);
+    // the bed's own velocity scale (velocity_tolerance): what the non-contact forces (gravity, body
+    // forces) add to a touching grain's velocity in this step -- g dt in a bed at rest. Approach
+    // speeds are left out: an impact is solved to `tolerance`.
+    vref_ = 0.0;
+    for (int k = 0; k < n; k++) {
+        const int i = contacts_[k].i;
+        const double dv = dt * im[i] * std::sqrt(f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]);
+        if (dv > vref_) vref_ = dv;
+    }
     for (int k = 0; k < n; k++) {
         Contact& c = contacts_[k];
         const int i = c.i, j = c.j;
@@ -464,6 +502,16 @@ inline void kick(double* vel, double* omg, double im, double ii, double r, const
 
 }  // namespace
 
+// Velocity sweeps: done when the impulses changed by at most `tolerance` of the largest normal
+// impulse, or when no contact's relative velocity changed by more than `velocity_tolerance` of the
+// step's own velocity scale (all ranks).
+bool FixImpulseSolve::velocities_done(double change, double scale, double vchange) {
+    double local[4] = {change, scale, vchange, vref_}, global[4] = {change, scale, vchange, vref_};
+    if (comm->nprocs > 1) MPI_Allreduce(local, global, 4, MPI_DOUBLE, MPI_MAX, world);
+    last_change_ = global[1] > 0.0 ? global[0] / global[1] : 0.0;
+    return global[0] <= tolerance_ * global[1] || global[2] <= velocity_tolerance_ * global[3];
+}
+
 bool FixImpulseSolve::all_done(double change, double scale) {
     double local[2] = {change, scale}, global[2] = {change, scale};
     if (comm->nprocs > 1) MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
@@ -486,12 +534,13 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
     last_change_ = 0.0;
     while (sweep < iterations_) {
         ++sweep;
-        double change = 0.0, scale = 0.0;
+        double change = 0.0, scale = 0.0, vchange = 0.0;  // vchange: of a relative velocity (squared)
         // boundary pairs: all from the end of the previous sweep, as the grain's other owner does
         for (int b = 0; b < nb; b++) {
             Contact& c = cs[bidx[b]];
             const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, vel + 3 * c.j, omg + 3 * c.j, c.dn, c.dt);
             if (m > change) change = m;
+            if (m > 0.0 && m > vchange * c.mn * c.mn) vchange = m / (c.mn * c.mn);
         }
         for (int b = 0; b < nb; b++) {
             const Contact& c = cs[bidx[b]];
@@ -506,13 +555,14 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
                                             wall ? zero : omg + 3 * c.j, c.dn, c.dt);
             if (m > change) change = m;
             if (m == 0.0) continue;
+            if (m > vchange * c.mn * c.mn) vchange = m / (c.mn * c.mn);  // the change of velocity it made
             kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
             if (!wall) kick(vel + 3 * c.j, omg + 3 * c.j, im[c.j], ii[c.j], c.rj, c.en, c.dn, c.dt, -1.0);
         }
         for (int k = 0; k < n; k++)
             if (cs[k].pn > scale) scale = cs[k].pn;
         if (any_boundary_) forward(kCommVelocity);
-        if (all_done(std::sqrt(change), scale)) break;  // change holds the largest square
+        if (velocities_done(std::sqrt(change), scale, std::sqrt(vchange))) break;  // the largest squares
     }
     return sweep;
 }
@@ -665,8 +715,11 @@ void FixImpulseSolve::unpack_comm(int n, int first, double* buf) {
 // 1 velocity sweeps of the last step, 2 position sweeps of the last step, 3 mean velocity
 // sweeps per step of this run, 4 steps of this run that ended at the cap unconverged, 5
 // contacts of the last step (all ranks; a pair across ranks counts on both), 6 the last step's
-// final relative change (largest impulse change / largest normal impulse).
+// final relative change (largest impulse change / largest normal impulse), 7 the last step's
+// largest overlap / (r_i + r_j), 8 steps of this run with an overlap beyond overlap_limit, 9 the
+// largest overlap of this run / (r_i + r_j).
 double FixImpulseSolve::compute_vector(int k) {
+    if (superseded_) return active()->compute_vector(k);
     switch (k) {
         case 0: return last_sweeps_;
         case 1: return last_position_sweeps_;
@@ -678,11 +731,16 @@ double FixImpulseSolve::compute_vector(int k) {
             return all;
         }
         case 5: return last_change_;
+        case 6: return last_overlap_;
+        case 7: return static_cast<double>(run_bad_steps_);
+        case 8: return run_max_overlap_;
         default: return 0.0;
     }
 }
 
 void FixImpulseSolve::post_run() {
+    if (superseded_) return;
+    report_overlaps();
     if (run_capped_ == 0 || comm->me != 0) return;
     char msg[256];
     std::snprintf(msg, sizeof(msg),

@@ -45,6 +45,10 @@ private:
     void apply_forces(double dt, int nlocal, bool store_history);
     void forward(int mode);
     bool all_done(double change, double scale);
+    bool velocities_done(double change, double scale, double vchange);
+    void watch_overlaps(bool positions_capped);  // fix_impulse_solve_watch.cpp
+    void report_overlaps() const;
+    FixImpulseSolve* active();                   // the fix that solves (the deck's, if this is superseded)
 
     // settings (doc/fix_impulse_solve.txt)
     double tolerance_;    // largest impulse change / largest impulse of the step, to stop
@@ -54,6 +58,10 @@ private:
     double rest_factor_;    // approaches below this times the contact's load velocity: no restitution
     double slop_;         // overlap left uncorrected, fraction of r_i + r_j
     double correction_;   // fraction of the rest removed per step
+    double velocity_tolerance_;  // ... or the largest velocity change / the step's velocity scale, to stop
+    double vref_;                // the step's velocity scale (this rank; prepare)
+    double overlap_limit_;  // an overlap beyond this fraction of r_i + r_j was not removed: warn
+    bool overlap_error_;    // ... or stop (keyword overlaps warn|error)
 
     // per atom (owned and ghost), grown only: velocities being solved, inverse mass and inertia,
     // boundary-contact counts (mass splitting), pseudo-velocities
@@ -70,6 +78,11 @@ private:
     int last_sweeps_, last_position_sweeps_;
     double last_change_;
     bigint run_steps_, run_sweeps_, run_capped_;
+    // overlaps (fix_impulse_solve_watch.cpp): the largest of the last step (fraction of r_i + r_j),
+    // steps of this run with overlaps not removed, the largest of the run and its step, warnings
+    double last_overlap_, run_max_overlap_;
+    bigint run_bad_steps_, run_max_overlap_step_, run_position_capped_, warned_at_;
+    bool superseded_;  // the made fix, when the deck has its own (init): inert, reports the deck's
 };
 
 }  // namespace LAMMPS_NS

@@ -27,13 +27,19 @@ static_assert(sizeof(SurfacesCloseData) == 168,
 
 namespace {
 
+// Each creator also adds the plugin's fix and compute styles to the instance (register_fix_compute.cpp):
+// with LD_PRELOAD into the stock liggghts no driver does, and `clear` remakes the style tables. So
+// from the first pair_style or fix wall/gran with our models on, fix impulse/solve (which the pair
+// style makes by default) and the others exist in every route.
 template <typename T>
 PairStyles::IGranularPairStyle* create_pair(LAMMPS* lmp, PairGran* parent, const int64_t hash) {
+    granlub_liggghts_register_styles(lmp);
     return new T(lmp, parent, hash);
 }
 
 template <typename T>
 Walls::IGranularWall* create_wall(LAMMPS* lmp, FixWallGran* parent, const int64_t hash) {
+    granlub_liggghts_register_styles(lmp);
     return new T(lmp, parent, hash);
 }
 

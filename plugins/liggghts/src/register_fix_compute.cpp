@@ -4,13 +4,17 @@
 // obtained the standard-conforming way (an explicit template instantiation may name a private
 // member; C++11 [temp.explicit]/12), so this depends on the members' names and types only, not on
 // the class layout.
+#include <cstdio>
 #include <map>
 #include <string>
 
+#include "force.h"
 #include "lammps.h"
 #include "modify.h"
+#include "pair_gran_proxy.h"
 
 #include "compute_wall_gran_force.h"
+#include "fix_check_timestep_impulse.h"
 #include "fix_centripetal_annulus.h"
 #include "fix_impulse_solve.h"
 #include "fix_wall_gran_moving.h"
@@ -54,15 +58,58 @@ Compute* create_compute(LAMMPS* lmp, int iarg, int narg, char** arg) {
     return new T(lmp, iarg, narg, arg);
 }
 
+// LIGGGHTS' own check/timestep/gran (its creator, kept when the plugin takes the name over)
+FixCreator liggghts_check_timestep = NULL;
+
+// check/timestep/gran: the impulse model's check when the pair style is model impulse, LIGGGHTS' otherwise
+Fix* create_check_timestep(LAMMPS* lmp, int narg, char** arg) {
+    PairGranProxy* pair = dynamic_cast<PairGranProxy*>(lmp->force->pair);
+    if (pair && pair->contact_match("normal", "impulse")) return new FixCheckTimestepImpulse(lmp, narg, arg);
+    return liggghts_check_timestep(lmp, narg, arg);
+}
+
+// The plugin's styles, for the maps and for `-h` (one list).
+struct FixStyleEntry {
+    const char* name;
+    FixCreator create;
+    const char* what;
+};
+const FixStyleEntry kFixes[] = {
+    {"centripetal/annulus", &create_fix<FixCentripetalAnnulus>, "body force of a turning annulus (doc/fix_centripetal_annulus.txt)"},
+    {"impulse/solve", &create_fix<FixImpulseSolve>, "the impulse contacts solved to convergence (doc/fix_impulse_solve.txt)"},
+    {"wall/gran/moving", &create_fix<FixWallGranMoving>, "exact moving primitive walls (doc/fix_wall_gran_moving.txt)"},
+};
+
 }  // namespace
 
 extern "C" int granlub_liggghts_register_styles(void* lammps) {
     LAMMPS* lmp = static_cast<LAMMPS*>(lammps);
     std::map<std::string, FixCreator>* fixes = lmp->modify->*fix_map_member(FixMapTag());
     std::map<std::string, ComputeCreator>* computes = lmp->modify->*compute_map_member(ComputeMapTag());
-    (*fixes)["centripetal/annulus"] = &create_fix<FixCentripetalAnnulus>;
-    (*fixes)["impulse/solve"] = &create_fix<FixImpulseSolve>;
-    (*fixes)["wall/gran/moving"] = &create_fix<FixWallGranMoving>;
+    int n = 0;
+    for (const FixStyleEntry& f : kFixes) {
+        (*fixes)[f.name] = f.create;
+        ++n;
+    }
+    FixCreator& check = (*fixes)["check/timestep/gran"];
+    if (check && check != &create_check_timestep) {
+        liggghts_check_timestep = check;
+        check = &create_check_timestep;
+        ++n;
+    }
     (*computes)["wall/gran/force"] = &create_compute<ComputeWallGranForce>;
-    return 4;
+    return n + 1;
+}
+
+extern "C" void granlub_liggghts_print_styles(void* file) {
+    FILE* out = static_cast<FILE*>(file);
+    std::fprintf(out, "granlub plugin (libliggghts_granlub.so), in addition to LIGGGHTS' styles listed below:\n"
+                      "* contact models (pair_style gran, fix wall/gran): %s\n* fix styles:\n",
+                 granlub_liggghts_combinations());
+    for (const FixStyleEntry& f : kFixes) std::fprintf(out, "    %-20s %s\n", f.name, f.what);
+    std::fprintf(out, "    %-20s with model impulse: travel per step against the diameter and the skin "
+                      "(doc/fix_check_timestep_impulse.txt)\n"
+                      "* compute styles:\n    %-20s forces and torques of fix wall/gran walls "
+                      "(doc/compute_wall_gran_force.txt)\n\n",
+                 "check/timestep/gran", "wall/gran/force");
 }

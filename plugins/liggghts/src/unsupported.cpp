@@ -21,6 +21,7 @@
 #include "fix_wall_gran_base.h"
 #include "pair_gran_base.h"
 
+#include "granlub_liggghts.h"
 #include "unsupported.h"
 
 using namespace LAMMPS_NS;
@@ -89,9 +90,14 @@ std::set<int64_t> supported() {
     return s;
 }
 
-[[noreturn]] void reject(LAMMPS* lmp, int64_t hash) {
+std::string allowed_keywords() {
     std::string allowed;
     for (int64_t h : supported()) allowed += (allowed.empty() ? "'" : ", '") + keywords(h) + "'";
+    return allowed;
+}
+
+[[noreturn]] void reject(LAMMPS* lmp, int64_t hash) {
+    const std::string allowed = allowed_keywords();
     const std::string what = field(hash, 0) == IMPULSE ? "model impulse" : "tangential impulse";
     const std::string msg = what + " combines only as " + allowed + " (granlub plugin: no other tangential, " +
                             "cohesion, rolling_friction or surface model); got '" + keywords(hash) + "'";
@@ -104,6 +110,11 @@ PairStyles::IGranularPairStyle* reject_pair(LAMMPS* lmp, PairGran*, const int64_
 Walls::IGranularWall* reject_wall(LAMMPS* lmp, FixWallGran*, const int64_t hash) { reject(lmp, hash); }
 
 }  // namespace
+
+extern "C" const char* granlub_liggghts_combinations(void) {
+    static const std::string text = allowed_keywords();
+    return text.c_str();
+}
 
 int granlub_liggghts_register_unsupported() {
     const std::set<int64_t> ok = supported();
