@@ -266,6 +266,18 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
             BOOST_TEST(std::string(e.what()).find("contact_solve") != std::string::npos, e.what());
         }
     }
+    for (const char* combo : {"contact_solve = \"iterated\"\nimpact_time = true",
+                              "model = \"hertz\"\nimpact_time = true"}) {  // impact_time: the single pass only
+        const Case c = parse_case(edit(kCase, "\\[dem\\]", std::string("[dem]\n") + combo), "tiny.toml", schema());
+        try {
+            dem::resolve(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("expected a CaseError for " << combo);
+        } catch (const CaseError& e) {
+            const std::string w = e.what();
+            BOOST_TEST(w.find("impact_time") != std::string::npos, w);
+            BOOST_TEST(w.find("single_pass") != std::string::npos, w);
+        }
+    }
     {  // a time step that lets grains tunnel
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ntime_step = 1e-4"), "tiny.toml", schema());
         try {

@@ -96,6 +96,7 @@ NORMAL_MODEL(IMPULSE,impulse,50)
 #include "comm.h"
 #include <cstdio>
 #include "impulse_contacts.h"
+#include "impulse_impact_time.h"
 #include <string>
 
 namespace LIGGGHTS {
@@ -111,6 +112,7 @@ namespace ContactModels
       separate(true),
       bounceSpeed(0.0),
       iterate(true),
+      impactTime(false),
       historyOffset(-1),
       wall(dynamic_cast<LAMMPS_NS::FixWallGran *>(hsetup)),
       sink(NULL)
@@ -124,11 +126,15 @@ namespace ContactModels
       settings.registerOnOff("separate", separate, true);
       settings.registerDoubleSetting("bounce_speed", bounceSpeed, 0.0);
       settings.registerOnOff("iterate", iterate, true);
+      settings.registerOnOff("impact_time", impactTime, false);
     }
     inline void postSettings(IContactHistorySetup * hsetup, ContactModelBase * cmb)
     {
       if (!(bounceSpeed >= 0.0))
         error->all(FLERR, "model impulse: bounce_speed must be >= 0 (m/s; 0 = restitution at every speed)");
+      if (impactTime && iterate)
+        error->all(FLERR, "model impulse: impact_time on is an option of the single pass: it needs 'iterate off' "
+                          "(allowed: impact_time off with iterate on or off, impact_time on with iterate off)");
       if (!iterate) return;
       // the solver's accumulated impulses per contact (warm start, and the force of a run's setup)
       historyOffset = hsetup->add_history_value("impulse_n", "0");
@@ -196,7 +202,8 @@ namespace ContactModels
         const double e = -vn > bounceSpeed ? coeffRest[sidata.itype][sidata.jtype] : 0.0;
         Fn = sidata.meff * (1.0 + e) * (-vn) / dt;   // S&T 2001, Eq. 19
       }
-      if (separate) remove_overlap(sidata);
+      if (impactTime && Fn > 0.0) replay_impact(sidata, Fn);
+      else if (separate) remove_overlap(sidata);
       sidata.Fn = Fn;
       sidata.kn = 0.0;
       sidata.kt = 0.0;
@@ -345,10 +352,35 @@ namespace ContactModels
       }
     }
 
+    // impact_time on: the impact is applied at its time within the step (impulse_impact_time.h)
+    inline void replay_impact(const SurfacesIntersectData & sidata, double Fn)
+    {
+      const double overlap = sidata.is_wall ? sidata.radi - sidata.r : sidata.radi + sidata.radj - sidata.r;
+      const double s = time_since_impact(overlap, sidata.vn, update->dt);
+      const double J = Fn * update->dt * (sidata.is_wall ? sidata.area_ratio : 1.0);
+      double ** const x = atom->x;
+      const int i = sidata.i;
+      const double wi = s * J / sidata.mi;  // how far grain i has moved with its new velocity
+      const double wj = sidata.is_wall ? 0.0 : s * J / sidata.mj;
+      const double left = separate ? overlap - wi - wj : 0.0;  // overlap the replay leaves: removed as `separate`
+      double di = wi, dj = wj;
+      if (left > 0.0) {
+        if (sidata.is_wall) di += left;
+        else {
+          di += left * sidata.mj / (sidata.mi + sidata.mj);
+          dj += left * sidata.mi / (sidata.mi + sidata.mj);
+        }
+      }
+      for (int d = 0; d < 3; d++) x[i][d] += di * sidata.en[d];
+      if (!sidata.is_wall && sidata.j < atom->nlocal)
+        for (int d = 0; d < 3; d++) x[sidata.j][d] -= dj * sidata.en[d];
+    }
+
     double ** coeffRest;
     bool separate;
     double bounceSpeed;
     bool iterate;
+    bool impactTime;                  // impact_time on: the single pass applies each impact at its time
     int historyOffset;                // iterate on: kImpulseHistoryValues values from here
     LAMMPS_NS::FixWallGran * wall;    // the wall this model belongs to; NULL in pair gran
     ImpulseContactSink * sink;        // fix impulse/solve (iterate on)

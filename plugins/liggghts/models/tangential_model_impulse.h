@@ -49,6 +49,7 @@ TANGENTIAL_MODEL(TANGENTIAL_IMPULSE,impulse,50)
 #include "modify.h"
 #include "fix.h"
 #include "impulse_contacts.h"
+#include "impulse_impact_time.h"
 #include <cmath>
 
 namespace LIGGGHTS {
@@ -65,6 +66,7 @@ namespace ContactModels
       coeffFrict(NULL),
       beta0(0.0),
       iterate(true),
+      impactTime(false),
       sink(NULL)
     {}
 
@@ -73,6 +75,7 @@ namespace ContactModels
     {
       settings.registerDoubleSetting("beta0", beta0, 0.0);
       settings.registerOnOff("iterate", iterate, true);
+      settings.registerOnOff("impact_time", impactTime, false);  // model impulse checks it
     }
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)
@@ -151,6 +154,7 @@ namespace ContactModels
       const double Ft = (J_coulomb < J_stick ? J_coulomb : J_stick) / dt;        // S&T Eq. 23
       const double s = -Ft / vs;
       const double Ft1 = s * vs1, Ft2 = s * vs2, Ft3 = s * vs3;
+      if (impactTime) replay_impact(sidata, Ft1, Ft2, Ft3);
 
       // torque on i: (-r_i e_n) x F_t ; on j: (r_j e_n) x (-F_t), the same sign
       const double tor1 = eny * Ft3 - enz * Ft2;
@@ -191,9 +195,30 @@ namespace ContactModels
     inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
   private:
+    // impact_time on: grain i (and a local j) moved by s J_t / m, as model impulse does with the
+    // normal impulse (impulse_impact_time.h)
+    inline void replay_impact(const SurfacesIntersectData & sidata, double F1, double F2, double F3)
+    {
+      const double overlap = sidata.is_wall ? sidata.radi - sidata.r : sidata.radi + sidata.radj - sidata.r;
+      const double s = time_since_impact(overlap, sidata.vn, update->dt);
+      if (s <= 0.0) return;
+      const double J = s * update->dt * (sidata.is_wall ? sidata.area_ratio : 1.0);
+      double ** const x = atom->x;
+      const double ci = J / sidata.mi;
+      x[sidata.i][0] += ci * F1;
+      x[sidata.i][1] += ci * F2;
+      x[sidata.i][2] += ci * F3;
+      if (sidata.is_wall || sidata.j >= atom->nlocal) return;
+      const double cj = J / sidata.mj;
+      x[sidata.j][0] -= cj * F1;
+      x[sidata.j][1] -= cj * F2;
+      x[sidata.j][2] -= cj * F3;
+    }
+
     double ** coeffFrict;
     double beta0;
     bool iterate;
+    bool impactTime;            // impact_time on (a setting of model impulse, shared by both)
     ImpulseContactSink * sink;  // fix impulse/solve (iterate on)
   };
 }

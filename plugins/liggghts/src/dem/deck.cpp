@@ -134,7 +134,8 @@ ModelText model_text(const Settings& s) {
     return {"model impulse tangential impulse",
             fmt::format(" beta0 {} separate {}{}{}", s.beta0, s.separate ? "on" : "off",
                         s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "",
-                        s.iterated ? " iterate on" : " iterate off")};  // explicit: the model's default is on
+                        // iterate explicit: the model's default is on
+                        s.iterated ? " iterate on" : (s.impact_time ? " iterate off impact_time on" : " iterate off"))};
 }
 
 DeckLine deck_lines(std::string& d) {

@@ -23,6 +23,11 @@ SectionSpec section() {
              "impulse model: 'single_pass' = Sawyer & Tichy's operator (each contact resolved once per step, in "
              "sequence); 'iterated' = all contacts of a step solved together to convergence (fix impulse/solve: "
              "projected Gauss-Seidel, warm start, overlaps corrected by pseudo-velocities; our addition)");
+    s.boolean("impact_time", false,
+              "contact_solve = 'single_pass': apply each impact at its time within the step (grains moved by the "
+              "distance their new velocity covers since the surfaces met), not at the step's end as Sawyer & Tichy "
+              "do; removes the single pass's first-order flight-timing error (plugin doc gran_model_impulse)");
+    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
     s.real("solve_tolerance", 1e-4, Range::closed(1e-12, 0.5), "",
            "contact_solve = 'iterated': stop when the largest impulse change of a sweep is at most this times the "
            "largest normal impulse of the step");

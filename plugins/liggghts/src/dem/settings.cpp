@@ -34,6 +34,10 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     if (st.iterated && st.model != Model::Impulse)
         s.fail("contact_solve", "'iterated' solves the impulse model's contacts; model = 'hertz' has none (its "
                                 "forces come from springs): use contact_solve = 'single_pass' or model = 'impulse'");
+    st.impact_time = s.boolean("impact_time");
+    if (st.impact_time && (st.model != Model::Impulse || st.iterated))
+        s.fail("impact_time", "true is an option of the impulse model's single pass: it needs model = 'impulse' and "
+                              "contact_solve = 'single_pass' (allowed: false with any model, true with those two)");
     st.solve_tolerance = s.real("solve_tolerance");
     st.solve_iterations = s.integer("solve_iterations");
     const ParticleStart start = particle_start(c, p, o.seed);
@@ -182,6 +186,7 @@ nlohmann::json Settings::to_json() const {
                             {"geometry", ring ? "annulus" : "slice"},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
+    if (impact_time) j.update(nlohmann::json{{"impact_time", true}});  // absent: off, as every earlier result
     if (iterated)
         j.update(nlohmann::json{{"solve_tolerance", solve_tolerance}, {"solve_iterations", solve_iterations}});
     if (load) j.update(nlohmann::json{{"servo_gain_used", plate_gain}, {"plate_overlap_m", plate_overlap}});
