@@ -6,7 +6,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "continuum_map.h"
+#include "figures/continuum_map.h"
 #include "granlub/error.h"
 #include <fmt/format.h>
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "figures/continuum_map.h"
 #include "figures/mu_of_i.h"
 #include "figures/regime_map.h"
 #include "figures/shear_power_law.h"
@@ -16,6 +17,7 @@ RegimeSection regime_section(const Case& c, const Collection& col) {
     for (auto&& f : regime_map_figures(c, col, out.grid)) out.figures.push_back(std::move(f));
     for (auto&& f : liftoff_figures(c, col, out.grid)) out.figures.push_back(std::move(f));
     for (auto&& f : mu_of_i_figures(c, col, out.grid)) out.figures.push_back(std::move(f));
+    for (auto&& f : continuum_map_figures(c, col)) out.figures.push_back(std::move(f));
     for (auto&& f : shear_power_law_figures(col, out.grid)) out.figures.push_back(std::move(f));
     out.verdicts = regime_table(c, col, out.grid);
     out.exponents = shear_exponent_table(col, out.grid);

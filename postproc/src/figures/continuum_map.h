@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "collect.h"
-#include "figure_model.h"
+#include "results/collect.h"
+#include "formats/figure_model.h"
 
 namespace granlub::postproc {
 

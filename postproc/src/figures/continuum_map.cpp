@@ -1,4 +1,4 @@
-#include "continuum_map.h"
+#include "figures/continuum_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 
 #include <fmt/format.h>
 
-#include "figures.h"
+#include "figures/figures.h"
 #include "granlub/error.h"
 #include "granlub/results/file_io.h"
-#include "mu_of_i.h"
+#include "figures/mu_of_i.h"
 
 namespace granlub::postproc {
 
