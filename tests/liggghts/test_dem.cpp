@@ -278,6 +278,18 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
             BOOST_TEST(w.find("single_pass") != std::string::npos, w);
         }
     }
+    for (const char* combo : {"contact_solve = \"iterated\"\nspeculative = true", "model = \"hertz\"\nspeculative = true",
+                              "impact_time = true\nspeculative = true"}) {  // speculative: the single pass, alone
+        const Case c = parse_case(edit(kCase, "\\[dem\\]", std::string("[dem]\n") + combo), "tiny.toml", schema());
+        try {
+            dem::resolve(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("expected a CaseError for " << combo);
+        } catch (const CaseError& e) {
+            const std::string w = e.what();
+            BOOST_TEST(w.find("speculative") != std::string::npos, w);
+            BOOST_TEST(w.find("single_pass") != std::string::npos, w);
+        }
+    }
     {  // a time step that lets grains tunnel
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ntime_step = 1e-4"), "tiny.toml", schema());
         try {
