@@ -3,13 +3,14 @@
 // of examples/in.collide (head-on pair, normal wall impact, oblique stick and Coulomb) stay exact;
 // on tests/liggghts/in.impact_time the grains turn at the start of the step in which the surfaces
 // would meet, never overlapping, so each is (1 + e) s' short of the analytic trajectory along the
-// normal, s' the time left to contact (1e-5 s at both steps); the unsupported combinations stop with
-// the model's message.
+// normal, s' the time left to contact (1e-5 s at both steps; 1 and 2 ranks); the unsupported
+// combinations stop with the model's message.
 #define BOOST_TEST_MODULE liggghts_speculative
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "run_driver.h"
 
@@ -41,11 +42,12 @@ BOOST_AUTO_TEST_CASE(collision_velocities_stay_exact) {
 }
 
 BOOST_AUTO_TEST_CASE(grains_turn_before_they_touch) {
-    for (const double dt : {3e-5, 1.5e-5}) {
+    // the pair straddles the ranks' boundary at x = 0.05 on 2 ranks: each owner turns its own grain
+    for (const auto& [dt, np] : {std::pair{3e-5, 1}, std::pair{1.5e-5, 1}, std::pair{3e-5, 2}}) {
         const int steps = static_cast<int>(std::lround(3e-3 / dt));
         const auto r = results(granlub::test::run_driver(
                                    kDeck, "-var dt " + std::to_string(dt) + " -var nsteps " + std::to_string(steps) +
-                                              " -var impact off -var spec on")
+                                              " -var impact off -var spec on", np)
                                    .output);
         BOOST_TEST_REQUIRE(r.count("z3") == 1u);
         // the last step before contact starts 1e-5 s before it (at 9e-5 s for both steps): turned there
