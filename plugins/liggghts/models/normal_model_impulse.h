@@ -197,15 +197,7 @@ namespace ContactModels
       // impulses of the contacts resolved earlier in this step (sequential resolution) -- except
       // across a periodic or processor boundary (see boundary_pair)
       const double dt = update->dt;
-      double vn = sidata.vn;
-      if (!boundary_pair(sidata)) {
-        const double * const fi = atom->f[sidata.i];
-        vn += dt / sidata.mi * (fi[0] * sidata.en[0] + fi[1] * sidata.en[1] + fi[2] * sidata.en[2]);
-        if (!sidata.is_wall) {
-          const double * const fj = atom->f[sidata.j];
-          vn -= dt / sidata.mj * (fj[0] * sidata.en[0] + fj[1] * sidata.en[1] + fj[2] * sidata.en[2]);
-        }
-      }
+      const double vn = with_resolved_impulses(sidata, sidata.vn);
       double Fn = 0.0;
       if (vn < 0.0) {
         const double e = -vn > bounceSpeed ? coeffRest[sidata.itype][sidata.jtype] : 0.0;
@@ -244,6 +236,21 @@ namespace ContactModels
     }
 
   private:
+    // v_n plus the impulses of the contacts resolved earlier in this step (the forces accumulated so
+    // far in f, times dt/m) -- except across a periodic or processor boundary (see boundary_pair)
+    inline double with_resolved_impulses(const SurfacesIntersectData & sidata, double vn) const
+    {
+      if (boundary_pair(sidata)) return vn;
+      const double dt = update->dt;
+      const double * const fi = atom->f[sidata.i];
+      vn += dt / sidata.mi * (fi[0] * sidata.en[0] + fi[1] * sidata.en[1] + fi[2] * sidata.en[2]);
+      if (!sidata.is_wall) {
+        const double * const fj = atom->f[sidata.j];
+        vn -= dt / sidata.mj * (fj[0] * sidata.en[0] + fj[1] * sidata.en[1] + fj[2] * sidata.en[2]);
+      }
+      return vn;
+    }
+
     // the normal force Fn along e_n on grain i, its opposite on grain j (a wall: times the area ratio)
     inline void add_normal_force(const SurfacesIntersectData & sidata, double Fn, ForceData & i_forces,
                                  ForceData & j_forces) const
@@ -297,14 +304,7 @@ namespace ContactModels
       const double dt = update->dt;
       double vn = 0.0;
       for (int d = 0; d < 3; d++) vn += (sidata.v_i[d] - sidata.v_j[d]) * sidata.en[d];
-      if (!boundary_pair(sidata)) {
-        const double * const fi = atom->f[i];
-        vn += dt / sidata.mi * (fi[0] * sidata.en[0] + fi[1] * sidata.en[1] + fi[2] * sidata.en[2]);
-        if (!sidata.is_wall) {
-          const double * const fj = atom->f[sidata.j];
-          vn -= dt / sidata.mj * (fj[0] * sidata.en[0] + fj[1] * sidata.en[1] + fj[2] * sidata.en[2]);
-        }
-      }
+      vn = with_resolved_impulses(sidata, vn);
       sidata.vn = vn;
       const double e = -vn > bounceSpeed ? coeffRest[sidata.itype][sidata.jtype] : 0.0;
       const double dv = speculative_dv(gap, vn, dt, e);
