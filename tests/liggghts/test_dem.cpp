@@ -11,6 +11,7 @@
 #include <map>
 #include <numbers>
 #include <regex>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -266,15 +267,19 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
             BOOST_TEST(std::string(e.what()).find("contact_solve") != std::string::npos, e.what());
         }
     }
-    for (const char* combo : {"contact_solve = \"iterated\"\nimpact_time = true",
-                              "model = \"hertz\"\nimpact_time = true"}) {  // impact_time: the single pass only
+    // impact_time and speculative: options of the single pass only (speculative: without impact_time)
+    for (const auto& [combo, key] : {std::pair{"contact_solve = \"iterated\"\nimpact_time = true", "impact_time"},
+                                     std::pair{"model = \"hertz\"\nimpact_time = true", "impact_time"},
+                                     std::pair{"contact_solve = \"iterated\"\nspeculative = true", "speculative"},
+                                     std::pair{"model = \"hertz\"\nspeculative = true", "speculative"},
+                                     std::pair{"impact_time = true\nspeculative = true", "speculative"}}) {
         const Case c = parse_case(edit(kCase, "\\[dem\\]", std::string("[dem]\n") + combo), "tiny.toml", schema());
         try {
             dem::resolve(c, c.points.front(), RunOptions{});
             BOOST_FAIL("expected a CaseError for " << combo);
         } catch (const CaseError& e) {
             const std::string w = e.what();
-            BOOST_TEST(w.find("impact_time") != std::string::npos, w);
+            BOOST_TEST(w.find(key) != std::string::npos, w);
             BOOST_TEST(w.find("single_pass") != std::string::npos, w);
         }
     }

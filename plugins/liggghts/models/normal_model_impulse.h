@@ -97,6 +97,9 @@ NORMAL_MODEL(IMPULSE,impulse,50)
 #include <cstdio>
 #include "impulse_contacts.h"
 #include "impulse_impact_time.h"
+#include "impulse_speculative.h"
+#include "neighbor.h"
+#include <cmath>
 #include <string>
 
 namespace LIGGGHTS {
@@ -113,6 +116,7 @@ namespace ContactModels
       bounceSpeed(0.0),
       iterate(true),
       impactTime(false),
+      speculative(false),
       historyOffset(-1),
       wall(dynamic_cast<LAMMPS_NS::FixWallGran *>(hsetup)),
       sink(NULL)
@@ -127,6 +131,7 @@ namespace ContactModels
       settings.registerDoubleSetting("bounce_speed", bounceSpeed, 0.0);
       settings.registerOnOff("iterate", iterate, true);
       settings.registerOnOff("impact_time", impactTime, false);
+      settings.registerOnOff("speculative", speculative, false);  // impulse_speculative.h
     }
     inline void postSettings(IContactHistorySetup * hsetup, ContactModelBase * cmb)
     {
@@ -135,6 +140,12 @@ namespace ContactModels
       if (impactTime && iterate)
         error->all(FLERR, "model impulse: impact_time on is an option of the single pass: it needs 'iterate off' "
                           "(allowed: impact_time off with iterate on or off, impact_time on with iterate off)");
+      if (speculative && iterate)
+        error->all(FLERR, "model impulse: speculative on is an option of the single pass: it needs 'iterate off' "
+                          "(allowed: speculative off with iterate on or off, speculative on with iterate off)");
+      if (speculative && impactTime)
+        error->all(FLERR, "model impulse: speculative on and impact_time on are two alternatives of the single pass "
+                          "(allowed: at most one of them on)");
       if (!iterate) return;
       // the solver's accumulated impulses per contact (warm start, and the force of a run's setup)
       historyOffset = hsetup->add_history_value("impulse_n", "0");
@@ -160,6 +171,8 @@ namespace ContactModels
       // style (its init runs before the fixes' init) makes one with the defaults if the deck has
       // none; a wall model's init comes later and finds it.
       sink = find_sink();
+      // speculative on: pairs and walls that are close but not touching reach surfacesClose
+      if (speculative) neighbor->register_contact_dist_factor(kSpeculativeDistance);
       if (iterate && !sink && !wall) sink = make_sink();
       if (iterate && !sink)
         error->all(FLERR, ("model impulse (" + where() + ") iterates ('iterate on', the default) but the run has no "
@@ -188,15 +201,7 @@ namespace ContactModels
       // impulses of the contacts resolved earlier in this step (sequential resolution) -- except
       // across a periodic or processor boundary (see boundary_pair)
       const double dt = update->dt;
-      double vn = sidata.vn;
-      if (!boundary_pair(sidata)) {
-        const double * const fi = atom->f[sidata.i];
-        vn += dt / sidata.mi * (fi[0] * sidata.en[0] + fi[1] * sidata.en[1] + fi[2] * sidata.en[2]);
-        if (!sidata.is_wall) {
-          const double * const fj = atom->f[sidata.j];
-          vn -= dt / sidata.mj * (fj[0] * sidata.en[0] + fj[1] * sidata.en[1] + fj[2] * sidata.en[2]);
-        }
-      }
+      const double vn = with_resolved_impulses(sidata, sidata.vn);
       double Fn = 0.0;
       if (vn < 0.0) {
         const double e = -vn > bounceSpeed ? coeffRest[sidata.itype][sidata.jtype] : 0.0;
@@ -210,7 +215,50 @@ namespace ContactModels
       sidata.gamman = 0.0;
       sidata.gammat = 0.0;
       if (Fn == 0.0) return;
+      add_normal_force(sidata, Fn, i_forces, j_forces);
+    }
 
+    inline void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
+    {
+      if (scdata.contact_flags)
+        *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
+      if (speculative) speculate(scdata, i_forces, j_forces);
+    }
+
+    // iterate on: the pair style's pass (once per step, before the walls') starts the step's contacts
+    inline void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
+    {
+      if (iterate && sidata.computeflag && !sidata.is_wall) sink->begin_collection();
+    }
+    inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+    // One grain a ghost: resolved from the start-of-step velocities alone, identically by both
+    // owners (newton off) or once (newton on), so the two grains get equal and opposite impulses.
+    inline bool boundary_pair(const SurfacesIntersectData & sidata) const
+    {
+      return !sidata.is_wall && sidata.j >= atom->nlocal;
+    }
+
+  private:
+    // v_n plus the impulses of the contacts resolved earlier in this step (the forces accumulated so
+    // far in f, times dt/m) -- except across a periodic or processor boundary (see boundary_pair)
+    inline double with_resolved_impulses(const SurfacesIntersectData & sidata, double vn) const
+    {
+      if (boundary_pair(sidata)) return vn;
+      const double dt = update->dt;
+      const double * const fi = atom->f[sidata.i];
+      vn += dt / sidata.mi * (fi[0] * sidata.en[0] + fi[1] * sidata.en[1] + fi[2] * sidata.en[2]);
+      if (!sidata.is_wall) {
+        const double * const fj = atom->f[sidata.j];
+        vn -= dt / sidata.mj * (fj[0] * sidata.en[0] + fj[1] * sidata.en[1] + fj[2] * sidata.en[2]);
+      }
+      return vn;
+    }
+
+    // the normal force Fn along e_n on grain i, its opposite on grain j (a wall: times the area ratio)
+    inline void add_normal_force(const SurfacesIntersectData & sidata, double Fn, ForceData & i_forces,
+                                 ForceData & j_forces) const
+    {
       if (sidata.is_wall) {
         const double Fa = Fn * sidata.area_ratio;
         i_forces.delta_F[0] += Fa * sidata.en[0];
@@ -229,27 +277,49 @@ namespace ContactModels
       }
     }
 
-    inline void surfacesClose(SurfacesCloseData & scdata, ForceData &, ForceData &)
+    // speculative on: a close, not touching pair or wall contact (impulse_speculative.h). Both callers
+    // of surfacesClose (pair gran's loop, fix wall/gran's compute_force) pass a SurfacesIntersectData;
+    // fix wall/gran has filled its geometry and masses (r, e_n, m_i), pair gran has not: set here. Fn
+    // is always written: tangential impulse reads it next (a stale value would be another pair's).
+    inline void speculate(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
     {
-      if (scdata.contact_flags)
-        *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
+      SurfacesIntersectData & sidata = static_cast<SurfacesIntersectData &>(scdata);
+      sidata.Fn = 0.0;
+      if (!sidata.computeflag) return;  // compute pair/gran/local's re-run: no impulse twice
+      const int i = sidata.i;
+      double gap;
+      if (sidata.is_wall) {
+        gap = sidata.r - sidata.radi;
+      } else {
+        const int j = sidata.j;
+        const double r = std::sqrt(sidata.rsq);
+        sidata.r = r;
+        sidata.rinv = 1.0 / r;
+        for (int d = 0; d < 3; d++) sidata.en[d] = sidata.delta[d] / r;
+        sidata.mi = atom->rmass[i];
+        sidata.mj = atom->rmass[j];
+        sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
+        sidata.omega_i = atom->omega[i];
+        sidata.omega_j = atom->omega[j];
+        gap = r - sidata.radi - sidata.radj;
+      }
+      if (gap < 0.0) gap = 0.0;
+      // the approach speed with the impulses resolved so far this step (as surfacesIntersect)
+      const double dt = update->dt;
+      double vn = 0.0;
+      for (int d = 0; d < 3; d++) vn += (sidata.v_i[d] - sidata.v_j[d]) * sidata.en[d];
+      vn = with_resolved_impulses(sidata, vn);
+      sidata.vn = vn;
+      const double e = -vn > bounceSpeed ? coeffRest[sidata.itype][sidata.jtype] : 0.0;
+      const double dv = speculative_dv(gap, vn, dt, e);
+      if (!(dv > 0.0)) return;
+      const double Fn = sidata.meff * dv / dt;
+      sidata.Fn = Fn;
+      sidata.kn = sidata.kt = sidata.gamman = sidata.gammat = 0.0;
+      sidata.has_force_update = true;
+      add_normal_force(sidata, Fn, i_forces, j_forces);
     }
 
-    // iterate on: the pair style's pass (once per step, before the walls') starts the step's contacts
-    inline void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
-    {
-      if (iterate && sidata.computeflag && !sidata.is_wall) sink->begin_collection();
-    }
-    inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
-
-    // One grain a ghost: resolved from the start-of-step velocities alone, identically by both
-    // owners (newton off) or once (newton on), so the two grains get equal and opposite impulses.
-    inline bool boundary_pair(const SurfacesIntersectData & sidata) const
-    {
-      return !sidata.is_wall && sidata.j >= atom->nlocal;
-    }
-
-  private:
     // iterate on: the contact, for fix impulse/solve; no force here. Only a real force pass
     // (computeflag) collects: compute pair/gran/local re-runs the loops with computeflag 0.
     inline void collect(SurfacesIntersectData & sidata)
@@ -381,6 +451,7 @@ namespace ContactModels
     double bounceSpeed;
     bool iterate;
     bool impactTime;                  // impact_time on: the single pass applies each impact at its time
+    bool speculative;                 // speculative on: the single pass acts on predicted gaps too
     int historyOffset;                // iterate on: kImpulseHistoryValues values from here
     LAMMPS_NS::FixWallGran * wall;    // the wall this model belongs to; NULL in pair gran
     ImpulseContactSink * sink;        // fix impulse/solve (iterate on)

@@ -50,6 +50,7 @@ TANGENTIAL_MODEL(TANGENTIAL_IMPULSE,impulse,50)
 #include "fix.h"
 #include "impulse_contacts.h"
 #include "impulse_impact_time.h"
+#include "impulse_speculative.h"
 #include <cmath>
 
 namespace LIGGGHTS {
@@ -67,6 +68,7 @@ namespace ContactModels
       beta0(0.0),
       iterate(true),
       impactTime(false),
+      speculative(false),
       sink(NULL)
     {}
 
@@ -76,6 +78,7 @@ namespace ContactModels
       settings.registerDoubleSetting("beta0", beta0, 0.0);
       settings.registerOnOff("iterate", iterate, true);
       settings.registerOnOff("impact_time", impactTime, false);  // model impulse checks it
+      settings.registerOnOff("speculative", speculative, false);  // model impulse checks it
     }
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)
@@ -185,10 +188,20 @@ namespace ContactModels
       }
     }
 
-    inline void surfacesClose(SurfacesCloseData & scdata, ForceData &, ForceData &)
+    inline void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
     {
       if (scdata.contact_flags)
         *scdata.contact_flags &= ~CONTACT_TANGENTIAL_MODEL;
+      if (!speculative || iterate) return;
+      // speculative on: model impulse has just given this close pair a normal impulse (Fn > 0) or
+      // none (Fn = 0); friction on it as on a touching contact (impulse_speculative.h). The pair is
+      // not touching: its contact flag stays cleared.
+      SurfacesIntersectData & sidata = static_cast<SurfacesIntersectData &>(scdata);
+      if (!(sidata.Fn > 0.0)) return;
+      int * const flags = sidata.contact_flags;
+      sidata.contact_flags = NULL;
+      surfacesIntersect(sidata, i_forces, j_forces);
+      sidata.contact_flags = flags;
     }
 
     inline void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
@@ -219,6 +232,7 @@ namespace ContactModels
     double beta0;
     bool iterate;
     bool impactTime;            // impact_time on (a setting of model impulse, shared by both)
+    bool speculative;           // speculative on (a setting of model impulse, shared by both)
     ImpulseContactSink * sink;  // fix impulse/solve (iterate on)
   };
 }

@@ -38,6 +38,11 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     if (st.impact_time && (st.model != Model::Impulse || st.iterated))
         s.fail("impact_time", "true is an option of the impulse model's single pass: it needs model = 'impulse' and "
                               "contact_solve = 'single_pass' (allowed: false with any model, true with those two)");
+    st.speculative = s.boolean("speculative");
+    if (st.speculative && (st.model != Model::Impulse || st.iterated || st.impact_time))
+        s.fail("speculative", "true is an option of the impulse model's single pass: it needs model = 'impulse', "
+                              "contact_solve = 'single_pass' and impact_time = false (allowed: false with any "
+                              "model, true with those three)");
     st.solve_tolerance = s.real("solve_tolerance");
     st.solve_iterations = s.integer("solve_iterations");
     const ParticleStart start = particle_start(c, p, o.seed);
@@ -187,6 +192,7 @@ nlohmann::json Settings::to_json() const {
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
     if (impact_time) j.update(nlohmann::json{{"impact_time", true}});  // absent: off, as every earlier result
+    if (speculative) j.update(nlohmann::json{{"speculative", true}});  // absent: off, as every earlier result
     if (iterated)
         j.update(nlohmann::json{{"solve_tolerance", solve_tolerance}, {"solve_iterations", solve_iterations}});
     if (load) j.update(nlohmann::json{{"servo_gain_used", plate_gain}, {"plate_overlap_m", plate_overlap}});

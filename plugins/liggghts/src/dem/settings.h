@@ -29,6 +29,7 @@ struct Settings : ServoSettings {
     double bounce_speed = 0;      // impulse: restitution only above this approach speed (m/s)
     bool iterated = false;        // impulse: contacts solved to convergence (fix impulse/solve), not one pass
     bool impact_time = false;     // impulse, single pass: each impact applied at its time within the step
+    bool speculative = false;     // impulse, single pass: contacts activated on their predicted gap
     double solve_tolerance = 0;   // iterated: largest impulse change / largest normal impulse, to stop
     std::int64_t solve_iterations = 0;  // iterated: cap on the sweeps per step
     double time_step = 0;         // s
