@@ -18,13 +18,17 @@ namespace {
 struct Asked {
     const char* key;
     const char* label;
+    const char* unit;  // of the difference in the largest-disagreement sentence
     bool stress;    // lattice analogues for the automaton
     bool absolute;  // a difference's size as it is (slips, already / U), else relative to the reference
 };
 constexpr Asked kQuantities[] = {
-    {"nu_bar_over_numax", "ν̄/ν_max", false, false},          {"gap", "gap", false, false},
-    {"shear_stress_bottom", "τ moving wall", true, false},     {"shear_stress_top", "τ stationary wall", true, false},
-    {"slip_bottom_over_U", "slip moving wall / U", false, true}, {"slip_top_over_U", "slip stationary wall / U", false, true}};
+    {"nu_bar_over_numax", "ν̄/ν_max", "", false, false},
+    {"gap", "gap", " m", false, false},
+    {"shear_stress_bottom", "τ moving wall", " Pa", true, false},
+    {"shear_stress_top", "τ stationary wall", " Pa", true, false},
+    {"slip_bottom_over_U", "slip moving wall", "", false, true},
+    {"slip_top_over_U", "slip stationary wall", "", false, true}};
 
 struct Answer {
     const Run* run;
@@ -81,8 +85,8 @@ std::string size_text(const Asked& q, const Answer& ref, const Answer& b) {
     const double d = b.v - ref.v;
     const double se = std::hypot(ref.se, b.se);
     const std::string z = se > 0 ? fmt::format(" (z = {:.1f})", d / se) : "";
-    if (q.absolute || ref.v == 0) return fmt::format("{:+.3g}{}", d, z);
-    return fmt::format("{:+.0f} %{}", 100 * d / std::abs(ref.v), z);
+    if (q.absolute || ref.v == 0) return fmt::format("{:+.2g}{}", d, z);
+    return fmt::format("{:+.2g}\u00a0%{}", 100 * d / std::abs(ref.v), z);  // no break before the %
 }
 
 // One cell: who agrees, and each other solver's difference from the first of them.
@@ -92,27 +96,28 @@ Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::stri
     const auto group = agreeing(a);
     std::string names;
     for (std::size_t i : group) names += (names.empty() ? "" : " = ") + a[i].run->solver;
-    if (group.size() == a.size()) return {names + " agree", "ok"};
+    if (group.size() == a.size()) return {names, "ok"};
     const Answer& ref = a[group.front()];
-    std::string text = group.size() > 1 ? names + " agree" : "";
+    std::string text = group.size() > 1 ? names : "";
     for (std::size_t i = 0; i < a.size(); ++i) {
         if (std::find(group.begin(), group.end(), i) != group.end()) continue;
         text += fmt::format("{}{} {}", text.empty() ? "" : "; ", a[i].run->solver, size_text(q, ref, a[i]));
         const double size = q.absolute ? std::abs(a[i].v - ref.v) : std::abs(a[i].v - ref.v) / std::abs(ref.v);
         if (!q.absolute && size > largest.size)
-            largest = {size, fmt::format("Largest disagreement: {} at {}, {} − {} = {} ({} ± {}): {}.", q.label, point,
-                                         a[i].run->solver, ref.run->solver, size_text(q, ref, a[i]), num(a[i].v - ref.v, 3),
-                                         num(std::hypot(ref.se, a[i].se), 2), known_cause(q, ref, a[i]))};
+            largest = {size, fmt::format("Largest disagreement: {} at {}, {} − {} = {}{}{} ({}): {}.", q.label, point,
+                                         a[i].run->solver, ref.run->solver, num(a[i].v - ref.v, 3),
+                                         ref.se > 0 || a[i].se > 0 ? " ± " + num(std::hypot(ref.se, a[i].se), 2) : "",
+                                         q.unit, size_text(q, ref, a[i]), known_cause(q, ref, a[i]))};
     }
-    if (group.size() == 1) text += " against " + ref.run->solver;
+    if (group.size() == 1) text += " vs " + ref.run->solver;
     return {text, ""};
 }
 
 // Why a state's numbers are not answers, in a few words (Results found gives each run's reason).
 const char* why_not(const std::string& state) {
     static const std::map<std::string, const char*> why = {
-        {"transient", "the run ended before a steady state; shown greyed and hollow"},
-        {"dt-unconverged", "halving the time step changed the answer; shown greyed and hollow"},
+        {"transient", "it ended before a steady state"},
+        {"dt-unconverged", "halving the time step changed the answer"},
         {"status unknown", "the summary does not say whether the run is steady"},
         {"failed", "the solver failed"},
         {"no answer", "the solver's model cannot answer the point"},
@@ -139,13 +144,14 @@ std::string not_answers(const Collection& col) {
     for (const auto& [key, points] : by) {
         const std::string state = key.substr(key.find(": ") + 2);
         const std::string where = points.size() == col.points.size() ? "every point" : list_text(points);
-        out += fmt::format("{}{} at {} ({})", out.empty() ? "" : "; ", key, where, why_not(state));
+        out += fmt::format("{}{} at {} ({}: {})", out.empty() ? "" : "; ", key.substr(0, key.find(": ")), where, state,
+                           why_not(state));
     }
     for (const auto& s : col.solvers) {
         if (!lattice_stresses(s) || !col.any_usable(s)) continue;
         const bool load = std::any_of(col.points.begin(), col.points.end(),
                                       [](const OperatingPoint* p) { return p->control == Control::Load; });
-        out += fmt::format("{}{}'s wall stresses (lattice analogues, ∝ U² by construction){}", out.empty() ? "" : "; ", s,
+        out += fmt::format("{}{}'s wall stresses (lattice analogues){}", out.empty() ? "" : "; ", s,
                            load ? " and its ν̄ (the lattice's fixed fill under load control)" : "");
     }
     return out.empty() ? "" : "Not answers: " + out + ".";
