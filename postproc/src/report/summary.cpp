@@ -71,8 +71,8 @@ std::string known_cause(const Asked& q, const Answer& a, const Answer& b) {
         return rel <= 0.15 ? "the size of the impulse operator's time-step error (about 10 % at the default step; "
                              "What each solver's numbers mean)"
                            : "larger than the impulse operator's time-step error (about 10 %): no known cause";
-    if (particle(*a.run) != particle(*b.run))
-        return "a model difference: kinetic theory or lattice against grains (What each solver's numbers mean)";
+    if (!particle(*a.run) || !particle(*b.run))
+        return "a model difference";  // what each model leaves out: the scope table
     return "no known cause";
 }
 
@@ -90,7 +90,21 @@ std::string size_text(const Asked& q, const Answer& ref, const Answer& b) {
 }
 
 // One cell: who agrees, and each other solver's difference from the first of them.
-Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::string& point, Disagreement& largest) {
+// "Largest disagreement: τ moving wall at U2.0: dem − continuum = −327 ± 64 Pa (−20 %, z = −5.1): cause."
+std::string largest_text(const Asked& q, const Answer& ref, const Answer& b, const std::string& point) {
+    const double d = b.v - ref.v, se = std::hypot(ref.se, b.se);
+    std::string size = num(d, 3) + (se > 0 ? " ± " + num(se, 2) : "") + q.unit;
+    std::vector<std::string> extra;
+    if (!q.absolute && ref.v != 0) extra.push_back(fmt::format("{:+.2g}\u00a0%", 100 * d / std::abs(ref.v)));
+    if (se > 0) extra.push_back(fmt::format("z = {:.1f}", d / se));
+    if (!extra.empty()) size += " (" + list_text(extra) + ")";
+    return fmt::format("Largest disagreement: {} at {}: {} − {} = {}: {}.", q.label, point, b.run->solver, ref.run->solver,
+                       size, known_cause(q, ref, b));
+}
+
+// `largest`: the largest relative disagreement so far; `largest_slip` the largest in units of U.
+Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::string& point, Disagreement& largest,
+                   Disagreement& largest_slip) {
     if (a.empty()) return {"—", ""};
     if (a.size() == 1) return {"only " + a[0].run->solver, ""};
     const auto group = agreeing(a);
@@ -103,11 +117,8 @@ Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::stri
         if (std::find(group.begin(), group.end(), i) != group.end()) continue;
         text += fmt::format("{}{} {}", text.empty() ? "" : "; ", a[i].run->solver, size_text(q, ref, a[i]));
         const double size = q.absolute ? std::abs(a[i].v - ref.v) : std::abs(a[i].v - ref.v) / std::abs(ref.v);
-        if (!q.absolute && size > largest.size)
-            largest = {size, fmt::format("Largest disagreement: {} at {}, {} − {} = {}{}{} ({}): {}.", q.label, point,
-                                         a[i].run->solver, ref.run->solver, num(a[i].v - ref.v, 3),
-                                         ref.se > 0 || a[i].se > 0 ? " ± " + num(std::hypot(ref.se, a[i].se), 2) : "",
-                                         q.unit, size_text(q, ref, a[i]), known_cause(q, ref, a[i]))};
+        if (Disagreement& l = q.absolute ? largest_slip : largest; size > l.size)
+            l = {size, largest_text(q, ref, a[i], point)};
     }
     if (group.size() == 1) text += " vs " + ref.run->solver;
     return {text, ""};
@@ -199,7 +210,7 @@ CaseSummary case_summary(const Collection& col) {
     CaseSummary s;
     s.table.header = {"quantity"};
     for (const OperatingPoint* p : col.points) s.table.header.push_back(p->id);
-    Disagreement largest;
+    Disagreement largest, largest_slip;  // a slip's size (in units of U) is not a relative one
     bool all = true;
     for (const Asked& q : kQuantities) {
         std::vector<Cell> row{{q.label, ""}};
@@ -215,7 +226,7 @@ CaseSummary case_summary(const Collection& col) {
                 a.push_back({r, *v, r->scalar_stderr(q.key).value_or(0), r->scalar_dt_error(q.key).value_or(0)});
             }
             any = any || !a.empty();
-            row.push_back(quantity_cell(q, a, p->id, largest));
+            row.push_back(quantity_cell(q, a, p->id, largest, largest_slip));
             all = all && (a.size() < 2 || row.back().cls == "ok");
         }
         if (any) s.table.rows.push_back(std::move(row));
@@ -230,6 +241,7 @@ CaseSummary case_summary(const Collection& col) {
     }
     if (any_regime) s.table.rows.push_back(std::move(regime));
     if (!largest.text.empty()) s.sentences.push_back(largest.text);
+    else if (!largest_slip.text.empty()) s.sentences.push_back(largest_slip.text);
     s.sentences.push_back(not_answers(col));
     s.all_agree = all && s.sentences.back().empty();
     if (s.sentences.back().empty()) s.sentences.pop_back();
