@@ -24,13 +24,13 @@ script='<script>
   }
   var broken = 0, imgs = document.images;
   for (var i = 0; i < imgs.length; ++i) if (!imgs[i].complete || imgs[i].naturalWidth === 0) ++broken;
-  var legend = document.body.textContent.split("Hollow faded").length - 1;
+  var legend = document.body.textContent.split("Hollow " + "faded").length - 1;  // split: not the text of this script
   var m = {clientWidth: d.clientWidth, innerHeight: window.innerHeight, scrollWidth: d.scrollWidth,
            scrollHeight: d.scrollHeight, summaryTop: Math.round(top), summaryBottom: Math.round(bottom),
            images: imgs.length, brokenImages: broken, legendNotes: legend};
   var p = document.createElement("pre");
   p.id = "granlub-measure";
-  p.textContent = "MEASURE " + JSON.stringify(m) + " END";
+  p.textContent = "granlub-" + "measure " + JSON.stringify(m) + " end-" + "measure";  // not this line
   document.body.appendChild(p);
 })();
 </script>'
@@ -39,5 +39,5 @@ awk -v s="$script" '{ if ($0 == "</body>") print s; print }' "$report/index.html
 DBUS_SESSION_BUS_ADDRESS=disabled: chromium --headless --no-sandbox --disable-gpu --no-first-run --disable-extensions \
 --user-data-dir="$work/profile" --window-size="$width,$height" --dump-dom \
   "file://$page" > "$work/dom.html" 2> "$work/chromium.log" || { cat "$work/chromium.log" >&2; exit 1; }
-sed -n 's/.*MEASURE \(.*\) END.*/\1/p' "$work/dom.html" | head -n 1 | grep . ||
+sed -n 's/.*granlub-measure \(.*\) end-measure.*/\1/p' "$work/dom.html" | head -n 1 | grep . ||
   { echo "measure_report.sh: no measurement in chromium's page (see its log below)" >&2; tail -n 5 "$work/chromium.log" >&2; exit 1; }

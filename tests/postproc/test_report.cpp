@@ -61,9 +61,12 @@ BOOST_AUTO_TEST_CASE(full_report_exists_and_parses) {
         const auto stem = svg.stem().string();
         BOOST_TEST(fs::exists(rep / "plots" / (stem + ".dat")), stem);
         BOOST_TEST(fs::exists(rep / "plots" / (stem + ".gp")), stem);
+        BOOST_TEST(fs::exists(rep / "plots" / (stem + ".pdf")), stem);  // the figure as PDF (rsvg-convert)
+        BOOST_TEST(html.find("<a href=\"plots/" + stem + ".pdf\">PDF</a>") != std::string::npos, stem);
+        BOOST_TEST(test::slurp(rep / "plots" / (stem + ".pdf")).starts_with("%PDF"), stem);
     }
-    BOOST_TEST(html.find("Missing solvers (no usable results): yade.") != std::string::npos);
-    BOOST_TEST(html.find("Solvers compared: continuum, automaton, dem.") != std::string::npos);
+    BOOST_TEST(html.find("solvers compared: continuum, automaton, dem; missing (no usable results): yade.") !=
+               std::string::npos);
     BOOST_TEST(html.find("n = 1.50 ± 0.05") != std::string::npos);  // the dem's fitted exponent in a legend
     BOOST_TEST(!std::regex_search(html, std::regex("[^A-Za-z](nan|inf)[^A-Za-z]", std::regex::icase)));
     const std::string md = test::slurp(rep / "report.md");
@@ -118,7 +121,7 @@ BOOST_AUTO_TEST_CASE(partial_results_state_missing_solvers) {
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
     expect_well_formed(s.o.results_root / "report" / "index.html");
-    BOOST_TEST(html.find("Missing solvers (no usable results): automaton, dem, yade.") != std::string::npos);
+    BOOST_TEST(html.find("solvers compared: continuum; missing (no usable results): automaton, dem, yade.") != std::string::npos);
     BOOST_TEST(html.find("No point has results from two solvers") != std::string::npos);
     BOOST_TEST(count(html, "<td class=\"missing\">missing</td>") == 2u);  // continuum's other two points
     const std::string table = postproc::summary_table(s.c, s.o);
@@ -194,7 +197,7 @@ BOOST_AUTO_TEST_CASE(a_second_compare_replaces_the_report_whole) {
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     BOOST_TEST(!fs::exists(s.o.results_root / "report" / "plots" / "leftover.svg"));
     const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
-    BOOST_TEST(html.find("Missing solvers (no usable results): automaton, dem, yade.") != std::string::npos);
+    BOOST_TEST(html.find("solvers compared: continuum; missing (no usable results): automaton, dem, yade.") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(any_other_results_folder_is_a_solver) {
@@ -204,7 +207,7 @@ BOOST_AUTO_TEST_CASE(any_other_results_folder_is_a_solver) {
     fs::create_directories(s.o.results_root / "initial" / "U1.0");  // shared initial states: not a solver
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
-    BOOST_TEST(html.find("Solvers compared: continuum, mysolver.") != std::string::npos);
+    BOOST_TEST(html.find("solvers compared: continuum, mysolver; missing") != std::string::npos);
     BOOST_TEST(html.find(">initial<") == std::string::npos);
     const auto row = test::read_metrics_row(s.o.results_root / "report" / "metrics.csv", "profile", s.c.points[0].id,
                                             "nu_over_numax", "continuum", "mysolver");

@@ -140,22 +140,19 @@ std::vector<Figure> stress_figures(const Collection& col) {
         Figure f;
         f.name = std::string("stress_") + q;
         f.title = stress_title(q);
-        f.caption = fmt::format("Log–log; markers are the results (bars ±1 standard error), dashed lines the "
-                                "power law σ = c Uⁿ fitted per solver to its steady points (at least {}).",
-                                kMinFitPoints);
+        f.caption = "Log–log; dashed: the fitted power law σ = c Uⁿ per solver.";
         f.x.label = "wall speed U (m/s)";
         f.x.log = true;
         f.y.label = stress_label(q);
         f.y.log = true;
         std::vector<std::string> not_fitted;
-        bool controlled = false, lattice = false;
+        bool controlled = false;
         std::size_t short_groups = 0;
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
                 // The automaton's "stresses" are lattice analogues: said in the legend, beside the markers.
                 const std::string label = with_group(lattice_stresses(solver) ? solver + " (lattice analogue)" : solver,
                                                      groups[g].label);
-                lattice = lattice || (lattice_stresses(solver) && col.any_usable(solver));
                 auto series = points_by_state(col, solver, groups[g].points, label,
                                               [&](const Run& r, const OperatingPoint& p, Series& s) {
                                                   s.x.push_back(p.speed);
@@ -202,7 +199,6 @@ std::vector<Figure> stress_figures(const Collection& col) {
         else if (short_count > 0)
             f.caption += fmt::format(" No power law for {} of the {} speed groups (fewer than {} speeds).", short_count,
                                      groups.size(), kMinFitPoints);
-        if (lattice) f.caption += std::string(" Note: ") + kLatticeStressNote + ".";
         if (!not_fitted.empty()) {
             f.caption += " No power law:";
             for (std::size_t i = 0; i < not_fitted.size(); ++i) f.caption += (i ? "; " : " ") + not_fitted[i];
@@ -250,7 +246,7 @@ std::vector<Figure> slip_figures(const Collection& col) {
                     (swept ? std::string(" against the ") + wall + "'s roughness R"
                            : fmt::format(" against U (one roughness, R = {})",
                                          col.points.empty() ? std::string("?") : num(R(*col.points.front())))) +
-                    "; bars ±1 standard error." + walls;
+                    "." + walls;
         f.x.label = swept ? "roughness R of the " + wall : std::string("wall speed U (m/s)");
         f.y.label = "slip / U at the " + wall;
         for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -284,8 +280,7 @@ Figure solid_fraction_figure(const Collection& col, double case_nu_max) {
     Figure f;
     f.name = "solid_fraction";
     f.title = "Mean solid fraction";
-    f.caption = "Mean solid fraction over the gap divided by each model's own ν_max, per point "
-                "(bars ±1 standard error).";
+    f.caption = "Mean solid fraction over the gap divided by each model's own ν_max, per point.";
     f.x.label = "operating point";
     f.y.label = "mean ν / ν_max";
     const std::size_t n = col.solvers.size();

@@ -75,8 +75,9 @@ namespace {
 constexpr const char* kStyle = R"(
 body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 1.5em auto; max-width: 1700px;
        padding: 0 1.5em; color: #222; line-height: 1.45; }
-h1 { font-size: 1.6em; border-bottom: 2px solid #0072B2; padding-bottom: .2em; }
+h1 { font-size: 1.4em; border-bottom: 2px solid #0072B2; padding-bottom: .2em; margin: .4em 0 .3em; }
 h2 { font-size: 1.3em; margin-top: 1.8em; border-bottom: 1px solid #ccc; }
+h2#s-summary { margin-top: .6em; }
 h3 { font-size: 1.1em; margin-top: 1.3em; }
 table { border-collapse: collapse; margin: .6em 0 1em; font-size: .9em; }
 th, td { border: 1px solid #ccc; padding: .25em .6em; text-align: left; vertical-align: top; }
@@ -95,9 +96,9 @@ figcaption a { margin-right: .5em; }
 figure svg { width: 100%; height: auto; border: 1px solid #eee; }
 figcaption { font-size: .85em; color: #444; }
 pre { background: #f7f7f7; padding: .8em; overflow-x: auto; font-size: .85em; }
-nav { position: sticky; top: 0; background: #ffffffee; border-bottom: 1px solid #ccc; padding: .4em 0;
-      display: flex; flex-wrap: wrap; font-size: .9em; z-index: 1; }
-nav a { margin-right: 1.2em; color: #0072B2; text-decoration: none; white-space: nowrap; }
+nav { position: sticky; top: 0; background: #ffffffee; border-bottom: 1px solid #ccc; padding: .3em 0;
+      display: flex; flex-wrap: wrap; font-size: .85em; z-index: 1; }
+nav a { margin-right: 1em; color: #0072B2; text-decoration: none; white-space: nowrap; }
 h2 { scroll-margin-top: 2.5em; }
 details { margin: .4em 0 .8em; }
 summary { cursor: pointer; font-weight: bold; font-size: 1.05em; padding: .2em 0; }

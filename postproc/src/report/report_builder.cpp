@@ -10,6 +10,7 @@
 #include "granlub/results/run_status.h"
 #include "report/regime_section.h"
 #include "report/summary.h"
+#include "results/scope.h"
 #include "report/ring_slice.h"
 #include "tables/differences.h"
 #include "tables/exponents.h"
@@ -25,11 +26,9 @@ void opening(Report& rep, const Case& c, const Collection& col) {
     std::vector<std::string> with_results, without;
     for (const auto& s : col.solvers) (col.any_usable(s) ? with_results : without).push_back(s);
     for (const auto& s : col.missing_solvers) without.push_back(s);
-    rep.text(fmt::format("Case {} ({}), {} operating point(s); solvers compared: {}{}. Written {} by granlub {}.",
-                         c.name, c.file.string(), col.points.size(),
+    rep.text(fmt::format("Case {}, {} operating point(s); solvers compared: {}{}.", c.name, col.points.size(),
                          with_results.empty() ? "none" : list_text(with_results),
-                         without.empty() ? "" : fmt::format("; missing (no usable results): {}", list_text(without)),
-                         utc_now(), version()));
+                         without.empty() ? "" : fmt::format("; missing (no usable results): {}", list_text(without))));
 }
 
 // The answer first (summary.h): who agrees on what, the largest disagreement, what is not an answer.
@@ -44,8 +43,8 @@ void summary_section(Report& rep, const Collection& col) {
                              with.size(), list_text(with)));
         return;
     }
-    rep.text("Who agrees within the combined standard errors (|z| ≤ 2), per quantity and point; the others' "
-             "difference from the first of them (relative; slips in units of U), steady results only.");
+    rep.text("a = b: steady results agreeing within their combined standard errors (|z| ≤ 2); the others: their "
+             "difference from the first.");
     rep.table(s.table);
     for (const auto& t : s.sentences) rep.text(t);
 }
@@ -70,8 +69,8 @@ void how_to_read(Report& rep) {
              "computed for other inputs (rerun the solver). corrupt: cannot be read or fails the checks.");
     rep.text("Tables: bold = a significant difference, more than twice the combined standard error (|z| > 2); "
              "between deterministic results every difference is a model difference and has no z. [Δt x]: the "
-             "value's time-step error estimate. “(lattice)”: the automaton's stresses are lattice analogues, not "
-             "comparable in size. Wall stresses are fitted against U as σ = c Uⁿ over a solver's steady points (at "
+             "value's time-step error estimate. “(lattice)”, “lattice analogue”: " + std::string(kLatticeStressNote) +
+             ". Wall stresses are fitted against U as σ = c Uⁿ over a solver's steady points (at "
              "least three) that differ only in speed: rapid (Bagnold) flow at fixed solid fraction gives n = 2, "
              "quasi-static flow n → 0.");
 }
@@ -112,18 +111,41 @@ void results_found(Report& rep, const Case& c, const Collection& col) {
 }
 
 
-// The figures the registry puts under `heading` (figures/registry.h): per point in folds, the first
-// point unfolded, or once for the case.
+// The figures the registry puts under `heading` (figures/registry.h): per point in folds (the
+// profiles of the first point unfolded), or once for the case.
 void figure_section(Report& rep, const Collection& col, const ReportFigures& figs, const std::string& heading) {
+    // A heading without a figure (no row drew one: no particle run with a cross-section) is left out.
+    if (std::none_of(figs.groups.begin(), figs.groups.end(), [&](const FigureGroup& g) { return g.heading == heading; }))
+        return;
     rep.heading(heading);
     for (const OperatingPoint* p : col.points) {
         const auto refs = figs.of(heading, p->id);
         if (refs.empty()) continue;
-        rep.fold(fmt::format("Point {}", p->id), p == col.points.front());
+        rep.fold(fmt::format("Point {}", p->id), p == col.points.front() && heading == kProfilesHeading);
         rep.figures(refs);
         rep.end_fold();
     }
-    if (auto refs = figs.of(heading); !refs.empty()) rep.figures(std::move(refs));
+    auto refs = figs.of(heading);
+    // Under load control the normal stresses follow the load (the control variable, never fitted):
+    // their figures fold, the shear stresses stay open.
+    const bool load = std::any_of(col.points.begin(), col.points.end(),
+                                  [](const OperatingPoint* p) { return p->control == Control::Load; });
+    std::vector<FigureRef> normal;
+    if (heading == kStressHeading && load)
+        for (auto it = refs.begin(); it != refs.end();) {
+            if (it->name.starts_with("stress_normal_stress")) {
+                normal.push_back(std::move(*it));
+                it = refs.erase(it);
+            } else {
+                ++it;
+            }
+        }
+    if (!refs.empty()) rep.figures(std::move(refs));
+    if (!normal.empty()) {
+        rep.fold("Normal stresses: under load control they follow the load, not fitted");
+        rep.figures(std::move(normal));
+        rep.end_fold();
+    }
 }
 
 void exponents(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
@@ -210,6 +232,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     if (ring) ring_section(rep, *ring, figs);
     differences(rep, col, metrics);
     rep.heading("Provenance of every run");
+    rep.text(fmt::format("This report: written {} by granlub {}.", utc_now(), version()));
     rep.fold("Versions, seeds and hashes of every run; each solver's settings");
     provenance_section(rep, col);
     rep.end_fold();

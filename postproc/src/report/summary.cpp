@@ -18,13 +18,17 @@ namespace {
 struct Asked {
     const char* key;
     const char* label;
+    const char* unit;  // of the difference in the largest-disagreement sentence
     bool stress;    // lattice analogues for the automaton
     bool absolute;  // a difference's size as it is (slips, already / U), else relative to the reference
 };
 constexpr Asked kQuantities[] = {
-    {"nu_bar_over_numax", "ν̄/ν_max", false, false},          {"gap", "gap", false, false},
-    {"shear_stress_bottom", "τ moving wall", true, false},     {"shear_stress_top", "τ stationary wall", true, false},
-    {"slip_bottom_over_U", "slip moving wall / U", false, true}, {"slip_top_over_U", "slip stationary wall / U", false, true}};
+    {"nu_bar_over_numax", "ν̄/ν_max", "", false, false},
+    {"gap", "gap", " m", false, false},
+    {"shear_stress_bottom", "τ moving wall", " Pa", true, false},
+    {"shear_stress_top", "τ stationary wall", " Pa", true, false},
+    {"slip_bottom_over_U", "slip moving wall", "", false, true},
+    {"slip_top_over_U", "slip stationary wall", "", false, true}};
 
 struct Answer {
     const Run* run;
@@ -67,8 +71,8 @@ std::string known_cause(const Asked& q, const Answer& a, const Answer& b) {
         return rel <= 0.15 ? "the size of the impulse operator's time-step error (about 10 % at the default step; "
                              "What each solver's numbers mean)"
                            : "larger than the impulse operator's time-step error (about 10 %): no known cause";
-    if (particle(*a.run) != particle(*b.run))
-        return "a model difference: kinetic theory or lattice against grains (What each solver's numbers mean)";
+    if (!particle(*a.run) || !particle(*b.run))
+        return "a model difference";  // what each model leaves out: the scope table
     return "no known cause";
 }
 
@@ -81,38 +85,50 @@ std::string size_text(const Asked& q, const Answer& ref, const Answer& b) {
     const double d = b.v - ref.v;
     const double se = std::hypot(ref.se, b.se);
     const std::string z = se > 0 ? fmt::format(" (z = {:.1f})", d / se) : "";
-    if (q.absolute || ref.v == 0) return fmt::format("{:+.3g}{}", d, z);
-    return fmt::format("{:+.0f} %{}", 100 * d / std::abs(ref.v), z);
+    if (q.absolute || ref.v == 0) return fmt::format("{:+.2g}{}", d, z);
+    return fmt::format("{:+.2g}\u00a0%{}", 100 * d / std::abs(ref.v), z);  // no break before the %
 }
 
 // One cell: who agrees, and each other solver's difference from the first of them.
-Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::string& point, Disagreement& largest) {
+// "Largest disagreement: τ moving wall at U2.0: dem − continuum = −327 ± 64 Pa (−20 %, z = −5.1): cause."
+std::string largest_text(const Asked& q, const Answer& ref, const Answer& b, const std::string& point) {
+    const double d = b.v - ref.v, se = std::hypot(ref.se, b.se);
+    std::string size = num(d, 3) + (se > 0 ? " ± " + num(se, 2) : "") + q.unit;
+    std::vector<std::string> extra;
+    if (!q.absolute && ref.v != 0) extra.push_back(fmt::format("{:+.2g}\u00a0%", 100 * d / std::abs(ref.v)));
+    if (se > 0) extra.push_back(fmt::format("z = {:.1f}", d / se));
+    if (!extra.empty()) size += " (" + list_text(extra) + ")";
+    return fmt::format("Largest disagreement: {} at {}: {} − {} = {}: {}.", q.label, point, b.run->solver, ref.run->solver,
+                       size, known_cause(q, ref, b));
+}
+
+// `largest`: the largest relative disagreement so far; `largest_slip` the largest in units of U.
+Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::string& point, Disagreement& largest,
+                   Disagreement& largest_slip) {
     if (a.empty()) return {"—", ""};
     if (a.size() == 1) return {"only " + a[0].run->solver, ""};
     const auto group = agreeing(a);
     std::string names;
     for (std::size_t i : group) names += (names.empty() ? "" : " = ") + a[i].run->solver;
-    if (group.size() == a.size()) return {names + " agree", "ok"};
+    if (group.size() == a.size()) return {names, "ok"};
     const Answer& ref = a[group.front()];
-    std::string text = group.size() > 1 ? names + " agree" : "";
+    std::string text = group.size() > 1 ? names : "";
     for (std::size_t i = 0; i < a.size(); ++i) {
         if (std::find(group.begin(), group.end(), i) != group.end()) continue;
         text += fmt::format("{}{} {}", text.empty() ? "" : "; ", a[i].run->solver, size_text(q, ref, a[i]));
         const double size = q.absolute ? std::abs(a[i].v - ref.v) : std::abs(a[i].v - ref.v) / std::abs(ref.v);
-        if (!q.absolute && size > largest.size)
-            largest = {size, fmt::format("Largest disagreement: {} at {}, {} − {} = {} ({} ± {}): {}.", q.label, point,
-                                         a[i].run->solver, ref.run->solver, size_text(q, ref, a[i]), num(a[i].v - ref.v, 3),
-                                         num(std::hypot(ref.se, a[i].se), 2), known_cause(q, ref, a[i]))};
+        if (Disagreement& l = q.absolute ? largest_slip : largest; size > l.size)
+            l = {size, largest_text(q, ref, a[i], point)};
     }
-    if (group.size() == 1) text += " against " + ref.run->solver;
+    if (group.size() == 1) text += " vs " + ref.run->solver;
     return {text, ""};
 }
 
 // Why a state's numbers are not answers, in a few words (Results found gives each run's reason).
 const char* why_not(const std::string& state) {
     static const std::map<std::string, const char*> why = {
-        {"transient", "the run ended before a steady state; shown greyed and hollow"},
-        {"dt-unconverged", "halving the time step changed the answer; shown greyed and hollow"},
+        {"transient", "it ended before a steady state"},
+        {"dt-unconverged", "halving the time step changed the answer"},
         {"status unknown", "the summary does not say whether the run is steady"},
         {"failed", "the solver failed"},
         {"no answer", "the solver's model cannot answer the point"},
@@ -139,13 +155,14 @@ std::string not_answers(const Collection& col) {
     for (const auto& [key, points] : by) {
         const std::string state = key.substr(key.find(": ") + 2);
         const std::string where = points.size() == col.points.size() ? "every point" : list_text(points);
-        out += fmt::format("{}{} at {} ({})", out.empty() ? "" : "; ", key, where, why_not(state));
+        out += fmt::format("{}{} at {} ({}: {})", out.empty() ? "" : "; ", key.substr(0, key.find(": ")), where, state,
+                           why_not(state));
     }
     for (const auto& s : col.solvers) {
         if (!lattice_stresses(s) || !col.any_usable(s)) continue;
         const bool load = std::any_of(col.points.begin(), col.points.end(),
                                       [](const OperatingPoint* p) { return p->control == Control::Load; });
-        out += fmt::format("{}{}'s wall stresses (lattice analogues, ∝ U² by construction){}", out.empty() ? "" : "; ", s,
+        out += fmt::format("{}{}'s wall stresses (lattice analogues){}", out.empty() ? "" : "; ", s,
                            load ? " and its ν̄ (the lattice's fixed fill under load control)" : "");
     }
     return out.empty() ? "" : "Not answers: " + out + ".";
@@ -193,7 +210,7 @@ CaseSummary case_summary(const Collection& col) {
     CaseSummary s;
     s.table.header = {"quantity"};
     for (const OperatingPoint* p : col.points) s.table.header.push_back(p->id);
-    Disagreement largest;
+    Disagreement largest, largest_slip;  // a slip's size (in units of U) is not a relative one
     bool all = true;
     for (const Asked& q : kQuantities) {
         std::vector<Cell> row{{q.label, ""}};
@@ -209,7 +226,7 @@ CaseSummary case_summary(const Collection& col) {
                 a.push_back({r, *v, r->scalar_stderr(q.key).value_or(0), r->scalar_dt_error(q.key).value_or(0)});
             }
             any = any || !a.empty();
-            row.push_back(quantity_cell(q, a, p->id, largest));
+            row.push_back(quantity_cell(q, a, p->id, largest, largest_slip));
             all = all && (a.size() < 2 || row.back().cls == "ok");
         }
         if (any) s.table.rows.push_back(std::move(row));
@@ -224,6 +241,7 @@ CaseSummary case_summary(const Collection& col) {
     }
     if (any_regime) s.table.rows.push_back(std::move(regime));
     if (!largest.text.empty()) s.sentences.push_back(largest.text);
+    else if (!largest_slip.text.empty()) s.sentences.push_back(largest_slip.text);
     s.sentences.push_back(not_answers(col));
     s.all_agree = all && s.sentences.back().empty();
     if (s.sentences.back().empty()) s.sentences.pop_back();

@@ -8,7 +8,7 @@
 namespace granlub::postproc {
 
 void difference_tables(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
-    bool first_fold = true;  // the first point unfolded, the others one click away
+    bool first_fold = false;  // every point one click away: the summary says who differs
     for (const OperatingPoint* p : col.points) {
         const auto runs = col.usable(p->id);
         if (runs.size() < 2) continue;
