@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "granlub/statistics/point_verdict.h"
+
 #include "formats/text.h"
 #include "granlub/statistics/flow_regime.h"
 #include "results/scope.h"
@@ -170,40 +172,27 @@ std::string not_answers(const Collection& col) {
 
 }  // namespace
 
+// The point's one verdict is core's (point_verdict.h), as in the regime table: the engines' verdicts
+// combined, "at the transition" where they straddle the threshold or a Z lies within its errors of it.
 std::optional<RegimeReading> regime_reading(const Collection& col, const std::string& point) {
-    struct Engine {
-        std::string solver;
-        FlowVerdict v;
-        std::optional<double> z;
-    };
-    std::vector<Engine> e;
+    std::vector<EngineRegime> engines;
     for (const Run* r : col.usable(point)) {
         const auto& run = r->summary->run;
         if (!r->steady() || !run.is_object() || !run.contains("flow_regime") || !run["flow_regime"].contains("regime"))
             continue;
-        const auto& fr = run["flow_regime"];
-        const auto z = fr.contains("coordination_number") && fr["coordination_number"].is_number()
-                           ? std::optional(fr["coordination_number"].get<double>())
-                           : std::nullopt;
-        e.push_back({r->solver, read_flow_verdict(fr), z});
+        engines.push_back({r->solver, run["flow_regime"]});
     }
-    if (e.empty()) return std::nullopt;
-    auto z_text = [](const Engine& x) { return x.z ? fmt::format("Z = {}", num(*x.z, 3)) : std::string("Z unknown"); };
-    bool above = false, below = false, same = true;
-    for (const auto& x : e) {
-        if (x.z) (*x.z >= kEnduringMinCoordination ? above : below) = true;
-        same = same && x.v.lubrication == e.front().v.lubrication;
-    }
+    if (engines.empty()) return std::nullopt;
+    const PointVerdict v = point_verdict(engines);
     std::string names;
-    for (const auto& x : e) names += (names.empty() ? "" : ", ") + x.solver;
-    if (same && e.front().v.lubrication != Lubrication::Undetermined)
-        return RegimeReading{fmt::format("{} ({})", to_string(e.front().v.lubrication), names), false};
-    std::string each;
-    for (const auto& x : e) each += fmt::format("{}{} {} ({})", each.empty() ? "" : ", ", x.solver, z_text(x),
-                                                to_string(x.v.lubrication));
-    if (above && below)
-        return RegimeReading{fmt::format("at the transition (Z = {} decides): {}", num(kEnduringMinCoordination), each), true};
-    return RegimeReading{"uncertain: " + each, true};
+    for (const auto& x : engines) names += (names.empty() ? "" : ", ") + x.engine;
+    switch (v.regime) {
+        case PointRegime::Contact:
+        case PointRegime::Collision: return RegimeReading{fmt::format("{} ({})", to_string(v.regime), names), false};
+        case PointRegime::Transition: return RegimeReading{fmt::format("at the transition: {}", v.criterion), true};
+        case PointRegime::Undetermined: break;
+    }
+    return RegimeReading{fmt::format("undetermined: {}", v.criterion), true};
 }
 
 CaseSummary case_summary(const Collection& col) {
