@@ -24,7 +24,7 @@ struct Asked {
     bool stress;    // lattice analogues for the automaton
     bool absolute;  // a difference's size as it is (slips, already / U), else relative to the reference
 };
-constexpr Asked kQuantities[] = {
+constexpr Asked kAsked[] = {
     {"nu_bar_over_numax", "ν̄/ν_max", "", false, false},
     {"gap", "gap", " m", false, false},
     {"shear_stress_bottom", "τ moving wall", " Pa", true, false},
@@ -38,10 +38,6 @@ struct Answer {
 };
 
 bool particle(const Run& r) { return r.summary->run.is_object() && r.summary->run.contains("simulated_time_s"); }
-std::string run_text(const Run& r, const char* key) {
-    const auto& j = r.summary->run;
-    return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
-}
 
 bool agree(const Answer& a, const Answer& b) {
     const double se = std::hypot(a.se, b.se), d = std::abs(a.v - b.v);
@@ -201,7 +197,7 @@ CaseSummary case_summary(const Collection& col) {
     for (const OperatingPoint* p : col.points) s.table.header.push_back(p->id);
     Disagreement largest, largest_slip;  // a slip's size (in units of U) is not a relative one
     bool all = true;
-    for (const Asked& q : kQuantities) {
+    for (const Asked& q : kAsked) {
         std::vector<Cell> row{{q.label, ""}};
         bool any = false;
         for (const OperatingPoint* p : col.points) {

@@ -15,10 +15,6 @@ std::optional<double> run_number(const Run& r, const char* key) {
     return std::nullopt;
 }
 
-std::string run_text(const Run& r, const char* key) {
-    const auto& run = r.summary->run;
-    return run.is_object() && run.contains(key) && run[key].is_string() ? run[key].get<std::string>() : "";
-}
 
 // How the run decided its steady window (run.steady_state of granlub/statistics/steady_state.h), or "".
 std::string steady_rule(const Run& r) {
@@ -197,6 +193,11 @@ std::string run_length(const Run& first, const RunLengths& l, std::size_t runs) 
 }
 
 }  // namespace
+
+std::string run_text(const Run& r, const char* key) {
+    const auto& run = r.summary->run;
+    return run.is_object() && run.contains(key) && run[key].is_string() ? run[key].get<std::string>() : "";
+}
 
 bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }
 

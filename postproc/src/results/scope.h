@@ -20,6 +20,9 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
 // The automaton's wall stresses are lattice analogues (wall momentum per lattice step scaled by
 // rho_p nu_max U^2, so proportional to U^2 by construction), not measured stresses.
 bool lattice_stresses(const std::string& solver);
+
+// A text field of a run's summary (run.<key>), or "" when it has none.
+std::string run_text(const Run& r, const char* key);
 inline constexpr const char* kLatticeStressNote =
     "the automaton's stresses are lattice analogues (wall momentum per lattice step × ρ_p ν_max U², so ∝ U² by "
     "construction), drawn in Pa for scale only: not a measured stress, neither its magnitude nor its exponent "
