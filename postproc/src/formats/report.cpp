@@ -78,6 +78,8 @@ body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 1.5em a
 h1 { font-size: 1.4em; border-bottom: 2px solid #0072B2; padding-bottom: .2em; margin: .4em 0 .3em; }
 h2 { font-size: 1.3em; margin-top: 1.8em; border-bottom: 1px solid #ccc; }
 h2#s-summary { margin-top: .6em; }
+h2#s-summary + .tw table { font-size: .8em; margin-top: .3em; }  /* the summary: within the first screen */
+h2#s-summary + .tw td, h2#s-summary + .tw th { padding: .15em .4em; }
 h3 { font-size: 1.1em; margin-top: 1.3em; }
 table { border-collapse: collapse; margin: .6em 0 1em; font-size: .9em; }
 th, td { border: 1px solid #ccc; padding: .25em .6em; text-align: left; vertical-align: top; }

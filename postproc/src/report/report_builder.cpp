@@ -43,9 +43,7 @@ void summary_section(Report& rep, const Collection& col) {
                              with.size(), list_text(with)));
         return;
     }
-    rep.text("a = b: steady results agreeing within their combined standard errors (|z| ≤ 2); the others: their "
-             "difference from the first.");
-    rep.table(s.table);
+    rep.table(s.table);  // how to read its cells: the legend's "Tables" paragraph
     for (const auto& t : s.sentences) rep.text(t);
 }
 
@@ -67,7 +65,9 @@ void how_to_read(Report& rep) {
              "hollow in figures, never fitted, compared or bold. failed: the solver failed on the point. no answer: "
              "the solver's model cannot answer the point's question (not a failure). missing: no result. stale: "
              "computed for other inputs (rerun the solver). corrupt: cannot be read or fails the checks.");
-    rep.text("Tables: bold = a significant difference, more than twice the combined standard error (|z| > 2); "
+    rep.text("Tables: in the summary, a = b: steady results agreeing within their combined standard errors "
+             "(|z| ≤ 2); the others: their difference from the first. Bold = a significant difference, more than "
+             "twice the combined standard error (|z| > 2); "
              "between deterministic results every difference is a model difference and has no z. [Δt x]: the "
              "value's time-step error estimate. “(lattice)”, “lattice analogue”: " + std::string(kLatticeStressNote) +
              ". Wall stresses are fitted against U as σ = c Uⁿ over a solver's steady points (at "
