@@ -26,6 +26,10 @@ Report& Report::text(std::string t) {
     blocks.push_back(block_of(Block::Kind::Text, std::move(t)));
     return *this;
 }
+Report& Report::note(std::string t) {
+    blocks.push_back(block_of(Block::Kind::Note, std::move(t)));
+    return *this;
+}
 Report& Report::table(Table t) {
     blocks.push_back(block_of(Block::Kind::Table));
     blocks.back().table = std::move(t);
@@ -75,11 +79,13 @@ namespace {
 constexpr const char* kStyle = R"(
 body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 1.5em auto; max-width: 1700px;
        padding: 0 1.5em; color: #222; line-height: 1.45; }
-h1 { font-size: 1.4em; border-bottom: 2px solid #0072B2; padding-bottom: .2em; margin: .4em 0 .3em; }
+h1 { font-size: 1.2em; border-bottom: 2px solid #0072B2; padding-bottom: .2em; margin: .4em 0 .3em; }
 h2 { font-size: 1.3em; margin-top: 1.8em; border-bottom: 1px solid #ccc; }
 h2#s-summary { margin-top: .6em; }
 h2#s-summary + .tw table { font-size: .8em; margin-top: .3em; }  /* the summary: within the first screen */
-h2#s-summary + .tw td, h2#s-summary + .tw th { padding: .15em .4em; }
+h2#s-summary + .tw td, h2#s-summary + .tw th { padding: .15em .4em; line-height: 1.3; }
+h2#s-summary + .tw td:first-child { white-space: nowrap; }
+p.note { font-size: .85em; margin: .4em 0; }
 h3 { font-size: 1.1em; margin-top: 1.3em; }
 table { border-collapse: collapse; margin: .6em 0 1em; font-size: .9em; }
 th, td { border: 1px solid #ccc; padding: .25em .6em; text-align: left; vertical-align: top; }
@@ -99,7 +105,7 @@ figure svg { width: 100%; height: auto; border: 1px solid #eee; }
 figcaption { font-size: .85em; color: #444; }
 pre { background: #f7f7f7; padding: .8em; overflow-x: auto; font-size: .85em; }
 nav { position: sticky; top: 0; background: #ffffffee; border-bottom: 1px solid #ccc; padding: .3em 0;
-      display: flex; flex-wrap: wrap; font-size: .85em; z-index: 1; }
+      display: flex; flex-wrap: wrap; font-size: .8em; z-index: 1; }
 nav a { margin-right: 1em; color: #0072B2; text-decoration: none; white-space: nowrap; }
 h2 { scroll-margin-top: 2.5em; }
 details { margin: .4em 0 .8em; }
@@ -147,6 +153,7 @@ std::string render_html(const Report& r) {
                 break;
             case Block::Kind::FoldEnd: out += "</details>\n"; break;
             case Block::Kind::Text: out += fmt::format("<p>{}</p>\n", xml_escape(b.text)); break;
+            case Block::Kind::Note: out += fmt::format("<p class=\"note\">{}</p>\n", xml_escape(b.text)); break;
             case Block::Kind::Pre: out += fmt::format("<pre>{}</pre>\n", xml_escape(b.text)); break;
             case Block::Kind::Table:
                 out += "<div class=\"tw\"><table>\n<thead><tr>";
@@ -189,7 +196,8 @@ std::string render_markdown(const Report& r) {
             case Block::Kind::Heading: out += fmt::format("{} {}\n\n", std::string(static_cast<std::size_t>(b.level), '#'), b.text); break;
             case Block::Kind::FoldBegin: out += fmt::format("#### {}\n\n", b.text); break;
             case Block::Kind::FoldEnd: break;
-            case Block::Kind::Text: out += b.text + "\n\n"; break;
+            case Block::Kind::Text:
+            case Block::Kind::Note: out += b.text + "\n\n"; break;
             case Block::Kind::Pre: out += "```\n" + b.text + (b.text.ends_with('\n') ? "" : "\n") + "```\n\n"; break;
             case Block::Kind::Table: {
                 out += "|";

@@ -28,10 +28,10 @@ struct FigureRef {
 
 struct Block {
     // FoldBegin .. FoldEnd: a section the reader opens (HTML <details>; Markdown a heading).
-    enum class Kind { Heading, Text, Table, Figures, Pre, Links, FoldBegin, FoldEnd } kind = Kind::Text;
+    enum class Kind { Heading, Text, Note, Table, Figures, Pre, Links, FoldBegin, FoldEnd } kind = Kind::Text;
     int level = 2;                                   // Heading
     bool open = false;                               // FoldBegin: shown unfolded
-    std::string text;                                // Heading, Text, Pre, FoldBegin (its summary)
+    std::string text;                                // Heading, Text, Note, Pre, FoldBegin (its summary)
     Table table;                                     // Table
     std::vector<FigureRef> figures;                  // Figures (shown side by side)
     std::vector<std::pair<std::string, std::string>> links;  // Links: (label, relative href)
@@ -43,6 +43,7 @@ struct Report {
 
     Report& heading(std::string text, int level = 2);
     Report& text(std::string text);
+    Report& note(std::string text);  // a paragraph in smaller type (HTML class "note"; Markdown: plain text)
     Report& table(Table t);
     Report& figures(std::vector<FigureRef> f);
     Report& pre(std::string text);

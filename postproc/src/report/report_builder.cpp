@@ -26,7 +26,8 @@ void opening(Report& rep, const Case& c, const Collection& col) {
     std::vector<std::string> with_results, without;
     for (const auto& s : col.solvers) (col.any_usable(s) ? with_results : without).push_back(s);
     for (const auto& s : col.missing_solvers) without.push_back(s);
-    rep.text(fmt::format("Case {}, {} operating point(s); solvers compared: {}{}.", c.name, col.points.size(),
+    const std::size_t n = col.points.size();
+    rep.note(fmt::format("Case {}, {} operating point{}; solvers compared: {}{}.", c.name, n, n == 1 ? "" : "s",
                          with_results.empty() ? "none" : list_text(with_results),
                          without.empty() ? "" : fmt::format("; missing (no usable results): {}", list_text(without))));
 }
@@ -44,7 +45,7 @@ void summary_section(Report& rep, const Collection& col) {
         return;
     }
     rep.table(s.table);  // how to read its cells: the legend's "Tables" paragraph
-    for (const auto& t : s.sentences) rep.text(t);
+    for (const auto& t : s.sentences) rep.note(t);
 }
 
 // The one legend: what every figure's markers, lines and bands mean, the statuses and the table

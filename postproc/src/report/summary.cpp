@@ -79,10 +79,13 @@ struct Disagreement {
     std::string text;
 };
 
+// z to one decimal near the |z| = 2 threshold, to the unit beyond 10, where a decimal says nothing.
+std::string z_text(double z) { return std::abs(z) < 10 ? fmt::format("z = {:.1f}", z) : fmt::format("z = {:.0f}", z); }
+
 std::string size_text(const Asked& q, const Answer& ref, const Answer& b) {
     const double d = b.v - ref.v;
     const double se = std::hypot(ref.se, b.se);
-    const std::string z = se > 0 ? fmt::format(" (z = {:.1f})", d / se) : "";
+    const std::string z = se > 0 ? " (" + z_text(d / se) + ")" : "";
     if (q.absolute || ref.v == 0) return fmt::format("{:+.2g}{}", d, z);
     return fmt::format("{:+.2g}\u00a0%{}", 100 * d / std::abs(ref.v), z);  // no break before the %
 }
@@ -94,7 +97,7 @@ std::string largest_text(const Asked& q, const Answer& ref, const Answer& b, con
     std::string size = num(d, 3) + (se > 0 ? " ± " + num(se, 2) : "") + q.unit;
     std::vector<std::string> extra;
     if (!q.absolute && ref.v != 0) extra.push_back(fmt::format("{:+.2g}\u00a0%", 100 * d / std::abs(ref.v)));
-    if (se > 0) extra.push_back(fmt::format("z = {:.1f}", d / se));
+    if (se > 0) extra.push_back(z_text(d / se));
     if (!extra.empty()) size += " (" + list_text(extra) + ")";
     return fmt::format("Largest disagreement: {} at {}: {} − {} = {}: {}.", q.label, point, b.run->solver, ref.run->solver,
                        size, known_cause(q, ref, b));
