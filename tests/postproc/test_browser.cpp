@@ -1,6 +1,6 @@
 // The report as a reader's browser lays it out: headless Chromium (postproc/docs/measure_report.sh)
-// at 1024, 1400 and 1920 px, on a report of small synthetic results (continuum, automaton, dem with
-// one transient point): no horizontal scroll, the summary within the first screen, no image that
+// at 1024, 1400 and 1920 px, on a report of small synthetic results shaped like the main job's (four
+// solvers at three points, the dem transient at one and dt-unconverged at another): no horizontal scroll, the summary within the first screen, no image that
 // does not load, the legend's note exactly once; and every link of the page lands on a file of the
 // report or an id in it.
 #include <regex>
@@ -21,9 +21,11 @@ BOOST_AUTO_TEST_SUITE(browser)
 
 BOOST_AUTO_TEST_CASE(report_at_three_widths) {
     auto s = test::make_case("browser");
-    for (const char* solver : {"continuum", "automaton", "dem"}) test::write_solver(s, solver);
+    for (const char* solver : {"continuum", "automaton", "dem", "yade"}) test::write_solver(s, solver);
     test::patch_run(s, "dem", s.c.points.back().id,
                     {{"status", "transient"}, {"status_reason", "no steady state detected in 0.1 s of simulated time"}});
+    test::patch_run(s, "dem", s.c.points.front().id,
+                    {{"status", "dt-unconverged"}, {"status_reason", "halving the time step moved tau by 9 %"}});
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const fs::path report = s.o.results_root / "report";
     const std::string html = test::slurp(report / "index.html");
