@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -37,8 +38,20 @@ Settings settings_from_case(const Case& c) {
         sec.fail("friction_restitution", fmt::format("{} gives e_eff = {:.4f} for e_p = {} and [grains] friction = {}; "
                                                      "it must lie in [0, 1)",
                                                      fr, lp.dissipation_restitution, lp.restitution, c.grains.friction));
-    lp.correlation_length =
-        sec.string("correlation_length") == "jenkins2007" ? CorrelationLength::Jenkins2007 : CorrelationLength::None;
+    const std::string cl = sec.string("correlation_length");
+    lp.correlation_length = cl == "jenkins2007"     ? CorrelationLength::Jenkins2007
+                            : cl == "jenkins_berzi" ? CorrelationLength::JenkinsBerzi
+                                                    : CorrelationLength::None;
+    const std::optional<double> cc = sec.maybe_real("correlation_constant");
+    if (lp.correlation_length == CorrelationLength::JenkinsBerzi && !cc)
+        sec.fail("correlation_constant", "correlation_length = \"jenkins_berzi\" needs its constant c (order one, "
+                                         "fitted to simulations): set correlation_constant");
+    if (lp.correlation_length != CorrelationLength::JenkinsBerzi && cc)
+        sec.fail("correlation_constant", fmt::format("correlation_constant = {} is the constant of correlation_length "
+                                                     "= \"jenkins_berzi\", but correlation_length = \"{}\" (allowed: "
+                                                     "remove it, or correlation_length = \"jenkins_berzi\")",
+                                                     *cc, cl));
+    if (cc) lp.correlation_constant = *cc;
     const double numax = sec.maybe_real("max_solid_fraction").value_or(c.cell.max_solid_fraction);
     // Each registry's failure against its own key.
     std::shared_ptr<const ClosureFamily> family;

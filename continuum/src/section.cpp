@@ -16,8 +16,13 @@ SectionSpec section() {
     s.choice("friction_restitution", "none", {"none", "jenkins_zhang", "chialvo_sundaresan"},
              "grain friction ([grains] friction) through an effective restitution in the dissipation: "
              "Jenkins & Zhang 2002 or Chialvo & Sundaresan 2013; none = frictionless");
-    s.choice("correlation_length", "none", {"none", "jenkins2007"},
-             "correlation length L dividing the dissipation (extended kinetic theory, Jenkins 2007); none = L = d");
+    s.choice("correlation_length", "none", {"none", "jenkins2007", "jenkins_berzi"},
+             "correlation length L dividing the dissipation (extended kinetic theory): Jenkins 2007, or "
+             "jenkins_berzi (Jenkins & Berzi 2010, at its homogeneous-shear value, constant correlation_constant); "
+             "none = L = d");
+    s.real_optional("correlation_constant", Range::closed(0.01, 10.0), "",
+                    "c of correlation_length = jenkins_berzi (order one, fitted to simulations); needed by it, "
+                    "allowed with it only");
     s.real_optional("max_solid_fraction", Range::closed(0.3, 0.75), "",
                     "nu_max where g0 diverges (random close packing); default [cell] max_solid_fraction");
     s.choice("gap", "fixed", {"fixed", "inventory"},

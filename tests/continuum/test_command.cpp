@@ -263,6 +263,13 @@ BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
     e = settings_error("[continuum]\nwall_plane = \"bump_tops\"\n");
     BOOST_TEST(contains(e, "wall_plane"), e);
     BOOST_TEST(contains(e, "bumps"), e);
+    // the Jenkins-Berzi correlation length needs its constant, and the constant needs it
+    e = settings_error("[continuum]\ncorrelation_length = \"jenkins_berzi\"\n");
+    BOOST_TEST(contains(e, "correlation_constant"), e);
+    e = settings_error("[continuum]\ncorrelation_length = \"jenkins2007\"\ncorrelation_constant = 0.5\n");
+    BOOST_TEST(contains(e, "correlation_constant"), e);
+    BOOST_TEST(contains(e, "jenkins_berzi"), e);
+    BOOST_TEST(settings_error("[continuum]\ncorrelation_length = \"jenkins_berzi\"\ncorrelation_constant = 0.5\n").empty());
     std::string fill(kCase);
     fill = fill.substr(0, fill.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
     e = settings_error("[continuum]\ngap = \"inventory\"\n", fill);
