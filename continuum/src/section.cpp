@@ -32,6 +32,9 @@ SectionSpec section() {
              "where the continuum meets a bumpy wall ([walls] surface = bumps): the plane through the bumps' "
              "centres, or their tops (the room the bumps leave); gap and mean nu are reported between the "
              "centres' planes either way");
+    s.choice("wall_roughness", "declared", {"declared", "bumps"},
+             "R5..R8 of a bumpy wall ([walls] surface = bumps): the declared roughness, or sin(theta) = l/(d_w + d) of the "
+             "bumps the particle solvers build from it (their diameter and spacing, whole bumps in the periodic length)");
     s.real_optional("ordering_fraction", Range::closed(0.3, 0.75), "",
                     "crystallization criterion: a solution whose largest nu exceeds it is labelled ordered, not "
                     "drawn as a number; default: no criterion");
