@@ -236,6 +236,11 @@ PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& 
     m.run["wall_model"] = s.wall_name;
     m.run["closures"] = s.closures_name;
     m.run["dissipation_restitution"] = s.closures->params().e_eff();
+    const ClosureParams& cp = s.closures->params();
+    m.run["correlation_length"] = cp.correlation_length == CorrelationLength::JenkinsBerzi
+                                      ? fmt::format("jenkins_berzi, c = {}", cp.correlation_constant)
+                                  : cp.correlation_length == CorrelationLength::Jenkins2007 ? "jenkins2007"
+                                                                                           : "none";
     m.run["wall_roughness"] = {{"source", s.roughness_from_bumps ? "bumps" : "declared"},
                                {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
                                {"top", wall_roughness(c, s, p, p.top, "top")}};

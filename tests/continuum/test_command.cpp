@@ -305,6 +305,7 @@ BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
     const auto sum = read_summary(tmp.path / "continuum" / "U1.4" / "summary.json");
     BOOST_TEST(sum.run.at("wall_roughness").at("source") == "bumps");
     BOOST_TEST(sum.run.at("wall_roughness").at("top").get<double>() == built);
+    BOOST_TEST(sum.run.at("correlation_length") == "none");
     try {
         continuum::settings_from_case(parse("[continuum]\nwall_roughness = \"bumps\"\n"));
         BOOST_FAIL("plane walls accepted wall_roughness = bumps");
