@@ -30,7 +30,23 @@ struct Args {
     granlub::RunOptions opt;
     std::string results;
     std::vector<std::string> solvers;
+    bool map = false;                        // granlub continuum --map
+    std::vector<int> map_grid{100, 100};     // --map-grid SPEEDS,LOADS
 };
+
+// `granlub continuum CASE --map`: the (U, P) map instead of the case's points (continuum/command.h).
+void add_map_options(CLI::App* sub, Args& a) {
+    auto* map = sub->add_flag("--map", a.map,
+                              "instead of the case's points, solve its (U, P) map: U 0.4-2.8 m/s x P 1-8 kPa with the "
+                              "first point's walls, into results/continuum/map.csv (the report draws it; default: off)");
+    for (const char* other : {"--point", "--full", "--vtk", "--force"}) map->excludes(sub->get_option(other));
+    sub->add_option("--map-grid", a.map_grid, "grid of the map: speeds,loads (default: 100,100)")
+        ->type_name("S,L")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::Range(1, 1000))
+        ->needs(map);
+}
 
 void add_case(CLI::App* sub, Args& a) {
     sub->add_option("CASE", a.case_path, "case directory (holding case.toml) or a case .toml file")
@@ -167,6 +183,7 @@ int run_case_command(const CaseCommands& cmd, const Args& a) {
                 } catch (const granlub::Error&) {
                     // a point this solver cannot run: the sweep reports it and runs the others
                 }
+                if (a.map) return granlub::cli::continuum_map(c, a.opt, a.map_grid[0], a.map_grid[1]);
                 return m->run(c, a.opt);
             }
         if (cmd.compare && cmd.compare->parsed()) return granlub::cli::compare(c, a.opt);
@@ -207,6 +224,7 @@ int main(int argc, char** argv) {
         auto* sub = app.add_subcommand(m.name, m.description);
         add_case(sub, a);
         add_run_options(sub, a, m.name != "continuum", m.name == "dem");
+        if (m.name == "continuum" && granlub::cli::have_continuum_map()) add_map_options(sub, a);
         cmd.solvers.emplace_back(sub, &m);
     }
 

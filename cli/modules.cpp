@@ -29,6 +29,23 @@ const std::vector<SolverModule>& solver_modules() {
     return modules;
 }
 
+int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads) {
+#ifdef GRANLUB_HAVE_CONTINUUM
+    return continuum::run_map(c, o, speeds, loads);
+#else
+    (void)c, (void)o, (void)speeds, (void)loads;
+    throw Error("granlub was built without the continuum module: no map");
+#endif
+}
+
+bool have_continuum_map() {
+#ifdef GRANLUB_HAVE_CONTINUUM
+    return true;
+#else
+    return false;
+#endif
+}
+
 int check_solvers(const Case& c, const RunOptions& o) {
     int rc = 0;
     fmt::print("\n# solver checks (every point, quick and --full run lengths)\n");

@@ -24,6 +24,9 @@ int check_solvers(const Case& c, const RunOptions& o);
 // `granlub compare` if postproc is compiled in; otherwise throws.
 int compare(const Case& c, const RunOptions& o);
 bool have_compare();
+// `granlub continuum CASE --map` if the continuum is compiled in (continuum/command.h run_map); otherwise throws.
+int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads);
+bool have_continuum_map();
 // The closing table of `granlub run`: one row per solver and point (postproc's summary table when
 // postproc is built in, else the mean solid fraction and wall stresses read from the summaries).
 void closing_table(const Case& c, const RunOptions& o);

@@ -65,7 +65,8 @@ void BM_point_ekt_inventory(benchmark::State& state) {
     ClosureParams cp;
     cp.restitution = 0.9;
     cp.dissipation_restitution = 0.9 - 1.5 * 0.5 * std::exp(-1.5);  // Chialvo & Sundaresan 2013, mu_p = 0.5
-    cp.correlation_length = CorrelationLength::Jenkins2007;
+    cp.correlation_length = CorrelationLength::JenkinsBerzi;
+    cp.correlation_constant = 0.44;
     p.closures = std::make_shared<Closures>(cp, std::shared_ptr<const RadialDistribution>(make_g0("chialvo_sundaresan", 0.587)),
                                             make_closure_family("garzo_dufty"));
     p.mode = Mode::Inventory;

@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "granlub/case/particle_box.h"
 #include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/closures/effective_restitution.h"
 #include "granlub/continuum/fv_solver.h"
@@ -37,8 +39,20 @@ Settings settings_from_case(const Case& c) {
         sec.fail("friction_restitution", fmt::format("{} gives e_eff = {:.4f} for e_p = {} and [grains] friction = {}; "
                                                      "it must lie in [0, 1)",
                                                      fr, lp.dissipation_restitution, lp.restitution, c.grains.friction));
-    lp.correlation_length =
-        sec.string("correlation_length") == "jenkins2007" ? CorrelationLength::Jenkins2007 : CorrelationLength::None;
+    const std::string cl = sec.string("correlation_length");
+    lp.correlation_length = cl == "jenkins2007"     ? CorrelationLength::Jenkins2007
+                            : cl == "jenkins_berzi" ? CorrelationLength::JenkinsBerzi
+                                                    : CorrelationLength::None;
+    const std::optional<double> cc = sec.maybe_real("correlation_constant");
+    if (lp.correlation_length == CorrelationLength::JenkinsBerzi && !cc)
+        sec.fail("correlation_constant", "correlation_length = \"jenkins_berzi\" needs its constant c (order one, "
+                                         "fitted to simulations): set correlation_constant");
+    if (lp.correlation_length != CorrelationLength::JenkinsBerzi && cc)
+        sec.fail("correlation_constant", fmt::format("correlation_constant = {} is the constant of correlation_length "
+                                                     "= \"jenkins_berzi\", but correlation_length = \"{}\" (allowed: "
+                                                     "remove it, or correlation_length = \"jenkins_berzi\")",
+                                                     *cc, cl));
+    if (cc) lp.correlation_constant = *cc;
     const double numax = sec.maybe_real("max_solid_fraction").value_or(c.cell.max_solid_fraction);
     // Each registry's failure against its own key.
     std::shared_ptr<const ClosureFamily> family;
@@ -76,6 +90,10 @@ Settings settings_from_case(const Case& c) {
     if (s.wall_at_bump_tops && c.bottom.surface != WallSurface::Bumps && c.top.surface != WallSurface::Bumps)
         sec.fail("wall_plane", "wall_plane = \"bump_tops\" needs bumps on the walls ([walls] surface = \"bumps\"); "
                                "with plane walls allowed: \"bump_centres\"");
+    s.roughness_from_bumps = sec.string("wall_roughness") == "bumps";
+    if (s.roughness_from_bumps && c.bottom.surface != WallSurface::Bumps && c.top.surface != WallSurface::Bumps)
+        sec.fail("wall_roughness", "wall_roughness = \"bumps\" needs bumps on the walls ([walls] surface = \"bumps\"); "
+                                   "with plane walls allowed: \"declared\"");
     s.ordering_fraction = sec.maybe_real("ordering_fraction").value_or(0.0);
     return s;
 }
@@ -109,6 +127,14 @@ double bump_offset(const Case& c, const Settings& s, const OperatingPoint& p) {
 }
 }  // namespace
 
+double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side) {
+    if (!s.roughness_from_bumps) return w.roughness;
+    // sin(theta) = l/(d_w + d) of the layer the particle solvers build (Jenkins & Richman 1986; wall_bumps.h):
+    // the bumps' diameter and spacing give the continuum's R, where the declared R only asked for them.
+    const std::optional<BumpLayer> b = wall_bumps(c, p, w, side, particle_box(c));
+    return b ? b->roughness : w.roughness;
+}
+
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
     const Section& sec = c.section("continuum");
     Problem q;
@@ -125,10 +151,11 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
         WallBC bc;
         bc.family = s.family;
         bc.params.restitution = w.restitution;
-        bc.params.r5 = roughness_factor(sec, "r5", side, w.roughness);
-        bc.params.r6 = roughness_factor(sec, "r6", side, w.roughness);
-        bc.params.r7 = roughness_factor(sec, "r7", side, w.roughness);
-        bc.params.r8 = roughness_factor(sec, "r8", side, w.roughness);
+        const double r = wall_roughness(c, s, p, w, side);
+        bc.params.r5 = roughness_factor(sec, "r5", side, r);
+        bc.params.r6 = roughness_factor(sec, "r6", side, r);
+        bc.params.r7 = roughness_factor(sec, "r7", side, r);
+        bc.params.r8 = roughness_factor(sec, "r8", side, r);
         bc.params.slip_dissipation = s.slip_dissipation;
         if (!(bc.params.r5 > 0))
             throw SolverError(fmt::format(
@@ -209,6 +236,14 @@ PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& 
     m.run["wall_model"] = s.wall_name;
     m.run["closures"] = s.closures_name;
     m.run["dissipation_restitution"] = s.closures->params().e_eff();
+    const ClosureParams& cp = s.closures->params();
+    m.run["correlation_length"] = cp.correlation_length == CorrelationLength::JenkinsBerzi
+                                      ? fmt::format("jenkins_berzi, c = {}", cp.correlation_constant)
+                                  : cp.correlation_length == CorrelationLength::Jenkins2007 ? "jenkins2007"
+                                                                                           : "none";
+    m.run["wall_roughness"] = {{"source", s.roughness_from_bumps ? "bumps" : "declared"},
+                               {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
+                               {"top", wall_roughness(c, s, p, p.top, "top")}};
     m.run["lubrication"] = lubrication_record(inertial, nu_mean);
     const EnergyBudget eb = energy_budget(q, sol);
     m.run["energy_budget"] = {{"wall_work_W_m2", P * U * eb.wall_work},

@@ -4,13 +4,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 #include <fmt/format.h>
 
 #include "granlub/continuum/case_setup.h"
+#include "granlub/continuum/command.h"
 #include "granlub/error.h"
 #include "granlub/results/file_io.h"
 #include "granlub/results/results.h"
+#include "granlub/run/run_lock.h"
 
 namespace granlub::continuum {
 
@@ -73,6 +76,22 @@ std::filesystem::path write_continuum_map(const Case& c, const MapGrid& g, const
     std::filesystem::create_directories(path.parent_path());
     write_file_atomic(path, csv);
     return path;
+}
+
+int run_map(const Case& c, const RunOptions& o, int speeds, int loads) {
+    MapGrid g;
+    g.speeds = speeds;
+    g.loads = loads;
+    const std::filesystem::path root = results_root(c, o);
+    const ResultsLock held({{root, "continuum", LockMode::Exclusive}}, o.wait);
+    MapStats st;
+    const std::clock_t c0 = std::clock();
+    const auto path = write_continuum_map(c, g, root, &st);
+    const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
+    fmt::print("continuum map: {}: {} points ({} failed, {} ordered) in {:.2f} s wall, {:.2f} s CPU ({:.3f} ms CPU a "
+               "point)\n",
+               path.string(), st.points, st.failed, st.ordered, st.seconds, cpu, 1e3 * cpu / double(st.points));
+    return st.failed == st.points ? 1 : 0;
 }
 
 }  // namespace granlub::continuum

@@ -16,8 +16,13 @@ SectionSpec section() {
     s.choice("friction_restitution", "none", {"none", "jenkins_zhang", "chialvo_sundaresan"},
              "grain friction ([grains] friction) through an effective restitution in the dissipation: "
              "Jenkins & Zhang 2002 or Chialvo & Sundaresan 2013; none = frictionless");
-    s.choice("correlation_length", "none", {"none", "jenkins2007"},
-             "correlation length L dividing the dissipation (extended kinetic theory, Jenkins 2007); none = L = d");
+    s.choice("correlation_length", "none", {"none", "jenkins2007", "jenkins_berzi"},
+             "correlation length L dividing the dissipation (extended kinetic theory): Jenkins 2007, or "
+             "jenkins_berzi (Jenkins & Berzi 2010, at its homogeneous-shear value, constant correlation_constant); "
+             "none = L = d");
+    s.real_optional("correlation_constant", Range::closed(0.01, 10.0), "",
+                    "c of correlation_length = jenkins_berzi (order one, fitted to simulations); needed by it, "
+                    "allowed with it only");
     s.real_optional("max_solid_fraction", Range::closed(0.3, 0.75), "",
                     "nu_max where g0 diverges (random close packing); default [cell] max_solid_fraction");
     s.choice("gap", "fixed", {"fixed", "inventory"},
@@ -27,6 +32,9 @@ SectionSpec section() {
              "where the continuum meets a bumpy wall ([walls] surface = bumps): the plane through the bumps' "
              "centres, or their tops (the room the bumps leave); gap and mean nu are reported between the "
              "centres' planes either way");
+    s.choice("wall_roughness", "declared", {"declared", "bumps"},
+             "R5..R8 of a bumpy wall ([walls] surface = bumps): the declared roughness, or sin(theta) = l/(d_w + d) of the "
+             "bumps the particle solvers build from it (their diameter and spacing, whole bumps in the periodic length)");
     s.real_optional("ordering_fraction", Range::closed(0.3, 0.75), "",
                     "crystallization criterion: a solution whose largest nu exceeds it is labelled ordered, not "
                     "drawn as a number; default: no criterion");

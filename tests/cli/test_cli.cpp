@@ -274,6 +274,31 @@ BOOST_AUTO_TEST_CASE(check_warns_of_points_a_solver_cannot_run) {
     fs::remove_all(dir);
 }
 
+// `granlub continuum CASE --map`: the (U, P) map through the command, into the results folder (atomic,
+// with its provenance lines), one row per grid point; the options it excludes are refused (exit 2).
+BOOST_AUTO_TEST_CASE(continuum_map_route) {
+    if (!built("continuum")) return;
+    const fs::path out = fs::temp_directory_path() / "granlub_test_cli_map";
+    fs::remove_all(out);
+    const std::string base = exe + " continuum " + src + "/cases/sawyer2001 --results " + out.string();
+    const auto o = run(base + " --map --map-grid 3,2");
+    BOOST_TEST(o.rc == 0, o.text);
+    BOOST_TEST(o.text.find("6 points (0 failed") != std::string::npos, o.text);
+    std::ifstream f(out / "continuum" / "map.csv");
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(f, l);) lines.push_back(l);
+    BOOST_TEST_REQUIRE(lines.size() == 2u + 1u + 6u);
+    BOOST_TEST(lines[0].find("3 speeds x 2 loads") != std::string::npos, lines[0]);
+    BOOST_TEST(lines[1].find("case_hash ") != std::string::npos, lines[1]);
+    BOOST_TEST(lines[2].starts_with("speed_m_s,normal_stress_Pa,status,"), lines[2]);
+    BOOST_TEST(lines[3].starts_with("0.4,1000,steady,"), lines[3]);
+    BOOST_TEST(lines[8].starts_with("2.8,8000,steady,"), lines[8]);
+    BOOST_TEST(!fs::exists(out / "continuum" / "U1.4"));  // the map, not the case's points
+    for (const char* bad : {" --map --point U1.4", " --map --force", " --map-grid 3,2", " --map --map-grid 0,2"})
+        BOOST_TEST(run(base + bad).rc == 2, bad);
+    fs::remove_all(out);
+}
+
 BOOST_AUTO_TEST_CASE(an_unknown_command_is_named) {
     const auto o = run(exe + " frobnicate cases/sawyer2001");
     BOOST_TEST(o.rc == 2);

@@ -351,3 +351,48 @@ BOOST_AUTO_TEST_CASE(correlation_length_values) {
     BOOST_CHECK_CLOSE_FRACTION(with(CorrelationLength::None).fgam.v / with(CorrelationLength::Jenkins2007).fgam.v, L,
                                1e-12);
 }
+
+// The Jenkins-Berzi correlation length at its homogeneous-shear value (§2.7):
+// L*^3 = (c^2/4) (1 - e_eff^2)/(1 - e^2) G^{2/3}. Checks: (i) it is the fixed point of the defining form
+// L* = (c/2) [2J/(15(1 - e^2))]^{1/2} (d gdot/T^{1/2}) G^{1/3} with the shear rate of homogeneous shear,
+// (d gdot/T^{1/2})^2 = f_gamma/f_mu (L* included) and J = 5 sqrt(pi) f_mu/(8 nu G); (ii) L*, mu and I of
+// the rough cases' set (Garzo-Dufty, Chialvo-Sundaresan g0 to 0.587, CS13 e_eff, c = 0.44) against a
+// table computed independently from the formulas; (iii) exact derivatives.
+BOOST_AUTO_TEST_CASE(jenkins_berzi_correlation_length_homogeneous_shear) {
+    const double c = 0.44, e = 0.9, ee = closures::e_eff_chialvo_sundaresan(0.9, 0.5);
+    ClosureParams p;
+    p.restitution = e;
+    p.dissipation_restitution = ee;
+    p.correlation_length = CorrelationLength::JenkinsBerzi;
+    p.correlation_constant = c;
+    const auto g0 = std::shared_ptr<const RadialDistribution>(make_g0("chialvo_sundaresan", 0.587));
+    const Closures jb(p, g0, make_closure_family("garzo_dufty"));
+    p.correlation_length = CorrelationLength::None;
+    const Closures none(p, g0, make_closure_family("garzo_dufty"));
+    struct R { double nu, L, mu, I; };
+    const std::array<R, 6> t{{{0.45, 1.0, 0.4597, 0.6868},
+                              {0.50, 1.0, 0.4668, 0.4973},
+                              {0.55, 1.0, 0.4734, 0.2786},
+                              {0.57, 1.1881, 0.4364, 0.1467},
+                              {0.58, 1.5899, 0.3779, 0.0655},
+                              {0.585, 2.4150, 0.3068, 0.0207}}};
+    for (const R& r : t) {
+        BOOST_TEST_CONTEXT("nu = " << r.nu) {
+            const auto s = jb.state(r.nu);
+            const double L = none.state(r.nu).fgam.v / s.fgam.v;
+            BOOST_TEST(std::abs(L - r.L) <= 6e-5);
+            BOOST_TEST(std::abs(std::sqrt(s.fmu.v * s.fgam.v) / s.fp.v - r.mu) <= 6e-5);
+            BOOST_TEST(std::abs(std::sqrt(s.fgam.v / s.fmu.v / s.fp.v) - r.I) <= 6e-5);
+            if (L > 1) {  // (i) the fixed point of the rate-dependent form
+                const double G = r.nu * s.g.v;
+                const double J = 5 * std::sqrt(std::numbers::pi) * s.fmu.v / (8 * r.nu * G);
+                const double rate = std::sqrt(s.fgam.v / s.fmu.v);  // d gdot / T^{1/2}
+                BOOST_CHECK_CLOSE_FRACTION(L, 0.5 * c * std::sqrt(2 * J / (15 * (1 - e * e))) * rate * std::cbrt(G),
+                                           1e-12);
+            }
+            const double h = 1e-6 * r.nu;  // (iii)
+            const auto a = node_coefficients(jb, r.nu - h), b = node_coefficients(jb, r.nu + h);
+            BOOST_CHECK_CLOSE_FRACTION(node_coefficients(jb, r.nu).dC, (b.C - a.C) / (2 * h), 1e-6);
+        }
+    }
+}

@@ -13,6 +13,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/case/case.h"
+#include "granlub/case/particle_box.h"
+#include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/case_setup.h"
 #include "granlub/continuum/command.h"
 #include "granlub/error.h"
@@ -263,6 +265,13 @@ BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
     e = settings_error("[continuum]\nwall_plane = \"bump_tops\"\n");
     BOOST_TEST(contains(e, "wall_plane"), e);
     BOOST_TEST(contains(e, "bumps"), e);
+    // the Jenkins-Berzi correlation length needs its constant, and the constant needs it
+    e = settings_error("[continuum]\ncorrelation_length = \"jenkins_berzi\"\n");
+    BOOST_TEST(contains(e, "correlation_constant"), e);
+    e = settings_error("[continuum]\ncorrelation_length = \"jenkins2007\"\ncorrelation_constant = 0.5\n");
+    BOOST_TEST(contains(e, "correlation_constant"), e);
+    BOOST_TEST(contains(e, "jenkins_berzi"), e);
+    BOOST_TEST(settings_error("[continuum]\ncorrelation_length = \"jenkins_berzi\"\ncorrelation_constant = 0.5\n").empty());
     std::string fill(kCase);
     fill = fill.substr(0, fill.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
     e = settings_error("[continuum]\ngap = \"inventory\"\n", fill);
@@ -272,6 +281,37 @@ BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
     TempDir tmp;
     BOOST_CHECK_THROW(continuum::run(parse("[continuum]\nclosures = \"garzo_dufty\"\nviscosity_alpha = 1.6\n"), into(tmp)),
                       CaseError);
+}
+
+// wall_roughness = "bumps": a bumpy wall's R5..R8 are sin(theta) = l/(d_w + d) of the layer the particle
+// solvers build (whole bumps in the periodic length: 38 of 0.789 mm over 30 mm, R = 0.5016), not the declared
+// R = 0.5 that asked for them; the summary says which. Plane walls refuse it, naming the key.
+BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
+    std::string bumpy(kCase);
+    bumpy.replace(bumpy.find("roughness = 0.5\n"), 16, "roughness = 0.5\nsurface = \"bumps\"\n");
+    const Case c = parse("[continuum]\nwall_roughness = \"bumps\"\n", bumpy);
+    const continuum::Settings s = continuum::settings_from_case(c);
+    const OperatingPoint& p = c.points.front();
+    const double built = wall_bumps(c, p, p.bottom, "bottom", particle_box(c))->roughness;
+    BOOST_TEST(continuum::wall_roughness(c, s, p, p.bottom, "bottom") == built);
+    BOOST_TEST(continuum::wall_roughness(c, s, p, p.top, "top") == built);
+    BOOST_TEST(std::abs(built - 0.5) > 1e-4);  // the rounding to whole bumps: the test can tell them apart
+    BOOST_TEST(std::abs(built - 0.5) <= kBumpRoughnessTolerance);
+    const Case declared = parse("", bumpy);
+    BOOST_TEST(continuum::wall_roughness(declared, continuum::settings_from_case(declared), p, p.bottom, "bottom") ==
+               0.5);
+    TempDir tmp;
+    BOOST_TEST(continuum::run(c, into(tmp, "U1.4")) == 0);
+    const auto sum = read_summary(tmp.path / "continuum" / "U1.4" / "summary.json");
+    BOOST_TEST(sum.run.at("wall_roughness").at("source") == "bumps");
+    BOOST_TEST(sum.run.at("wall_roughness").at("top").get<double>() == built);
+    BOOST_TEST(sum.run.at("correlation_length") == "none");
+    try {
+        continuum::settings_from_case(parse("[continuum]\nwall_roughness = \"bumps\"\n"));
+        BOOST_FAIL("plane walls accepted wall_roughness = bumps");
+    } catch (const CaseError& e) {
+        BOOST_TEST(contains(e.what(), "wall_roughness"), e.what());
+    }
 }
 
 // gap = "inventory": the gap under the load from the grains the particle solvers insert, with the gap

@@ -1,4 +1,4 @@
-// The continuum's (U, P) map (results/continuum/map.csv, written by `build/bench/continuum_map CASE`;
+// The continuum's (U, P) map (results/continuum/map.csv, written by `granlub continuum CASE --map`;
 // format in continuum/include/granlub/continuum/map.h) drawn under the particle solvers' points:
 // contour lines of the continuum's mu (top wall) and mean solid fraction over speed x load, its
 // contact/collision boundary, and mu(I) lines at the case's loads beside the particle results and

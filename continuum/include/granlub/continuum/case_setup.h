@@ -18,6 +18,7 @@ struct Settings {
     std::string g0_name, wall_name, closures_name;
     bool gap_from_inventory = false;  // [continuum] gap = "inventory"
     bool wall_at_bump_tops = false;   // [continuum] wall_plane = "bump_tops"
+    bool roughness_from_bumps = false;  // [continuum] wall_roughness = "bumps"
     double ordering_fraction = 0;     // crystallization criterion; 0 = none
     SolverSettings solver;
     std::shared_ptr<const Closures> closures;
@@ -27,6 +28,9 @@ struct Settings {
 
 // Throws CaseError naming the key for values the section spec cannot check alone.
 Settings settings_from_case(const Case& c);
+// The roughness R of one wall of a point for R5..R8: the declared one, or with wall_roughness = "bumps" on a
+// bumpy wall sin(theta) = l/(d_w + d) of the bump layer the particle solvers build (wall_bumps.h).
+double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side);
 // Throws SolverError when the point cannot have a sheared steady state (e.g. R5 = 0).
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p);
 // Solves one point and fills profile.csv / summary.json contents.

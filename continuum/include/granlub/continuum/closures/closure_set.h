@@ -26,6 +26,9 @@ public:
         if (friction_factor_ != 1.0) s.fgam = s.fgam * friction_factor_;
         if (p_.correlation_length == CorrelationLength::Jenkins2007)
             s.fgam = s.fgam / closures::correlation_length_jenkins2007(s.nu, s.g, p_.restitution);
+        if (p_.correlation_length == CorrelationLength::JenkinsBerzi)
+            s.fgam = s.fgam / closures::correlation_length_jenkins_berzi(s.nu, s.g, p_.correlation_constant,
+                                                                        friction_factor_);
         s.G = s.fk * s.dfp / s.fp - s.fphi;
         return s;
     }

@@ -14,7 +14,8 @@ namespace granlub::continuum {
 
 enum class CorrelationLength {
     None,         // L* = 1: classical kinetic theory
-    Jenkins2007,  // closures/correlation_length.h
+    Jenkins2007,   // closures/correlation_length.h
+    JenkinsBerzi,  // closures/correlation_length.h, with ClosureParams::correlation_constant
 };
 
 struct ClosureParams {
@@ -25,6 +26,7 @@ struct ClosureParams {
     // (closures/effective_restitution.h); negative = e_p (frictionless)
     double dissipation_restitution = -1.0;
     CorrelationLength correlation_length = CorrelationLength::None;
+    double correlation_constant = 1.0;  // c of the Jenkins-Berzi correlation length
     double eta() const { return 0.5 * (1.0 + restitution); }
     double e_eff() const { return dissipation_restitution < 0 ? restitution : dissipation_restitution; }
 };
