@@ -26,10 +26,10 @@ struct Settings {
 };
 
 // Throws CaseError naming the key for values the section spec cannot check alone.
-Settings settings_from_case(const Case& c);
+Settings resolve_settings(const Case& c);
 // Throws SolverError when the point cannot have a sheared steady state (e.g. R5 = 0).
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p);
 // Solves one point and fills profile.csv / summary.json contents.
-PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& p);
+PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& s);
 
 }  // namespace granlub::continuum

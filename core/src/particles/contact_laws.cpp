@@ -1,0 +1,53 @@
+// The contact-law table (contact_laws.h). A row per law; the sources of each law are in its
+// engine's code (LIGGGHTS: plugins/liggghts/models and LIGGGHTS' own; YADE: granlub_yade.py).
+#include "granlub/particles/contact_laws.h"
+
+#include <array>
+
+#include <fmt/format.h>
+
+#include "granlub/error.h"
+
+namespace granlub {
+
+namespace {
+
+constexpr std::array kLaws{
+    // Sawyer & Tichy 2001, the impulse operator (plugins/liggghts/models/normal_model_impulse.h)
+    ContactLaw{"impulse", "Sawyer & Tichy 2001 impulse operator (granlub plugin)", "model impulse tangential impulse",
+               nullptr, StepRule::Travel, Stiffness::Rigid, true},
+    // YADE's ViscElMat spring-dashpot (Pournin et al. 2001), small e_t: the closest to the impulse operator
+    ContactLaw{"viscel", "ViscElMat spring-dashpot with small e_t (YADE; closest to the impulse operator)", nullptr,
+               "viscel", StepRule::ContactTime, Stiffness::Linear},
+    // LIGGGHTS' Hertz-Mindlin with history; YADE's Hertz-Mindlin with Tsuji damping (granlub_yade.py)
+    ContactLaw{"hertz", "Hertz-Mindlin, the soft-sphere reference (LIGGGHTS' built-in with history; YADE's with Tsuji damping)", "model hertz tangential history",
+               "hertz", StepRule::Rayleigh, Stiffness::Hertz},
+};
+
+bool in(const ContactLaw& l, ParticleEngine e) { return (e == ParticleEngine::Liggghts ? l.liggghts : l.yade) != nullptr; }
+
+}  // namespace
+
+std::span<const ContactLaw> contact_laws() { return kLaws; }
+
+std::vector<std::string> contact_law_names(ParticleEngine e) {
+    std::vector<std::string> names;
+    for (const ContactLaw& l : kLaws)
+        if (in(l, e)) names.emplace_back(l.name);
+    return names;
+}
+
+std::string contact_law_doc(ParticleEngine e) {
+    std::string doc;
+    for (const ContactLaw& l : kLaws)
+        if (in(l, e)) doc += fmt::format("{}{} = {}", doc.empty() ? "" : "; ", l.name, l.title);
+    return doc;
+}
+
+const ContactLaw& contact_law(const std::string& name) {
+    for (const ContactLaw& l : kLaws)
+        if (name == l.name) return l;
+    throw Error(fmt::format("internal: no contact law '{}' (granlub/particles/contact_laws.h)", name));
+}
+
+}  // namespace granlub
