@@ -40,7 +40,7 @@ struct Settings : ServoSettings {
     std::size_t stations = 0;     // coarse-graining slabs across the gap
     std::size_t blocks = 0;       // blocks for standard errors
     double skin_m = 0;            // neighbour skin, m ([dem] skin is in grain diameters)
-    std::uint64_t seed = 1;
+    std::uint64_t seed = 0;       // [particles] seed (--seed overrides); every key-set field is set by resolve_settings
     double velocity_noise = 0;
     bool vtk = false;
     bool refine_dt = false;       // the point's answer at time_step / 2, checked against time_step (run.dt_refinement)
