@@ -33,6 +33,9 @@ struct ContactLaw {
     const char* title;     // one line: what it is and where it comes from (the decks' comment, the key's doc)
     const char* liggghts;  // the pair style's model words in granlub dem's decks; nullptr: not in granlub dem
     const char* yade;      // the law granlub_yade.py builds; nullptr: not in granlub yade
+    // the report's line on what made a solver's numbers; nullptr: the report words it itself (the
+    // impulse operator's depends on contact_solve)
+    const char* contacts;
     StepRule step;
     Stiffness stiffness;
     // the impulse operator's options ([dem] beta0, separate_overlaps, bounce_speed, contact_solve,
@@ -50,5 +53,7 @@ std::string contact_law_doc(ParticleEngine e);
 
 // The row of `name` (a value the schema has checked); throws Error for a name not in the table.
 const ContactLaw& contact_law(const std::string& name);
+// The row of `name`, or nullptr (a results file's model, which an older version may have written).
+const ContactLaw* find_contact_law(const std::string& name);
 
 }  // namespace granlub
