@@ -9,7 +9,7 @@
 
 namespace granlub::automaton {
 
-Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o) {
+Mapping resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const Section& s = c.section("automaton");
     const std::string src = c.file.string();
     const double d = c.grains.diameter;

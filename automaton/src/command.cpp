@@ -197,7 +197,7 @@ std::string point_line(const EnsembleResult& r, const Summary& s, std::int64_t s
 }
 
 PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOptions& o, const std::filesystem::path& dir) {
-    const Mapping m = map_point(c, pt, o);
+    const Mapping m = resolve_settings(c, pt, o);
     const Params& prm = m.params;
     const double U = pt.speed, d = c.grains.diameter, nu_max = c.cell.max_solid_fraction;
 
@@ -236,7 +236,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
 }  // namespace
 
 void check(const Case& c, const RunOptions& o) {
-    for_each_run(c, o, [&](const OperatingPoint& p, const RunOptions& v) { map_point(c, p, v); });
+    for_each_run(c, o, [&](const OperatingPoint& p, const RunOptions& v) { resolve_settings(c, p, v); });
 }
 
 int run(const Case& c, const RunOptions& o) {

@@ -16,7 +16,7 @@
 
 namespace granlub::continuum {
 
-Settings settings_from_case(const Case& c) {
+Settings resolve_settings(const Case& c) {
     const Section& sec = c.section("continuum");
     Settings s;
     s.method = sec.string("method") == "shooting" ? Method::Shooting : Method::FiniteVolume;
@@ -186,7 +186,7 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
     return q;
 }
 
-PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& p) {
+PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& s) {
     const Problem q = problem_for(c, s, p);
     const auto t0 = std::chrono::steady_clock::now();
     Solution sol = s.method == Method::Shooting ? solve_shooting(q, s.solver) : solve_fv(q, s.solver);

@@ -22,7 +22,7 @@ std::string continuum_map_csv(const Case& c, const MapGrid& g, MapStats* stats) 
     if (!(g.speeds >= 1 && g.loads >= 1 && g.speed_min > 0 && g.load_min > 0 && g.speed_max >= g.speed_min &&
           g.load_max >= g.load_min))
         throw Error("continuum map: the grid needs >= 1 speed and load, positive and ordered bounds");
-    const Settings s = settings_from_case(c);
+    const Settings s = resolve_settings(c);
     const auto t0 = std::chrono::steady_clock::now();
     MapStats st;
     std::string out = fmt::format(
@@ -44,7 +44,7 @@ std::string continuum_map_csv(const Case& c, const MapGrid& g, MapStats* stats) 
             p.control = Control::Load;
             ++st.points;
             try {
-                const PointResult r = solve_point(c, s, p);
+                const PointResult r = solve_point(c, p, s);
                 const Summary& m = r.summary;
                 const std::string status = m.run.at("status").get<std::string>();
                 st.ordered += status == "ordered";

@@ -72,7 +72,7 @@ std::string error_of(const std::string& text) {
     try {
         const Case c = parse_case(text, "test.toml", schema());
         RunOptions o;
-        for (const auto& p : c.points) automaton::map_point(c, p, o);
+        for (const auto& p : c.points) automaton::resolve_settings(c, p, o);
     } catch (const Error& e) {
         return e.what();
     }
@@ -131,16 +131,16 @@ BOOST_AUTO_TEST_CASE(keys_set_their_fields_and_an_old_name_still_reads) {
     std::string t = case_text();
     t.replace(t.find("snapshot_every = 500\n"), 21, "");
     const Case plain = parse_case(t, "test.toml", schema());
-    BOOST_TEST(automaton::map_point(plain, plain.points[0], o).params.run.snapshot_every == 100);
+    BOOST_TEST(automaton::resolve_settings(plain, plain.points[0], o).params.run.snapshot_every == 100);
     const Case c = parse_case(case_text(), "test.toml", schema());
     BOOST_TEST(c.warnings.empty());
-    automaton::Params p = automaton::map_point(c, c.points[0], o).params;
+    automaton::Params p = automaton::resolve_settings(c, c.points[0], o).params;
     BOOST_TEST(p.run.snapshot_every == 500);
     BOOST_TEST(p.run.steps == 3000);
     BOOST_TEST(p.run.replicas == 2);
-    BOOST_TEST(automaton::map_point(c, c.points[0], RunOptions{}).params.run.snapshot_every == 0);  // no --vtk
+    BOOST_TEST(automaton::resolve_settings(c, c.points[0], RunOptions{}).params.run.snapshot_every == 0);  // no --vtk
     o.full = true;
-    p = automaton::map_point(c, c.points[0], o).params;
+    p = automaton::resolve_settings(c, c.points[0], o).params;
     BOOST_TEST(p.run.steps == 50000);  // steps_full's default
     BOOST_TEST(p.run.replicas == 16);
     // the old name vtk_every: read as snapshot_every, with a warning naming both
@@ -150,7 +150,7 @@ BOOST_AUTO_TEST_CASE(keys_set_their_fields_and_an_old_name_still_reads) {
     BOOST_TEST_REQUIRE(old.warnings.size() == 1u);
     BOOST_TEST(old.warnings[0].find("vtk_every is the old name of snapshot_every") != std::string::npos, old.warnings[0]);
     BOOST_TEST(old.warnings[0].find("test.toml:") != std::string::npos, old.warnings[0]);
-    BOOST_TEST(automaton::map_point(old, old.points[0], o).params.run.snapshot_every == 500);
+    BOOST_TEST(automaton::resolve_settings(old, old.points[0], o).params.run.snapshot_every == 500);
     // both names: refused, naming both
     try {
         parse_case(case_text("", "vtk_every = 200\n"), "test.toml", schema());

@@ -149,11 +149,11 @@ solid_fraction = 0.595
     base = base.substr(0, base.find("[operating]"));
     const Case fv = parse_case(base + fill, "test.toml", schema());
     const Case sh = parse_case(base + fill + "[continuum]\nmethod = \"shooting\"\n", "test.toml", schema());
-    const auto sfv = continuum::settings_from_case(fv);
-    const auto ssh = continuum::settings_from_case(sh);
+    const auto sfv = continuum::resolve_settings(fv);
+    const auto ssh = continuum::resolve_settings(sh);
     for (std::size_t i = 0; i < fv.points.size(); ++i) {
-        const auto a = continuum::solve_point(fv, sfv, fv.points[i]);
-        const auto b = continuum::solve_point(sh, ssh, sh.points[i]);
+        const auto a = continuum::solve_point(fv, fv.points[i], sfv);
+        const auto b = continuum::solve_point(sh, sh.points[i], ssh);
         BOOST_TEST(std::abs(a.summary.value("mean_solid_fraction") - 0.595) < 1e-9);
         BOOST_TEST(std::abs(b.summary.value("mean_solid_fraction") - 0.595) < 1e-5);
         for (const char* q : {"normal_stress_bottom", "shear_stress_bottom", "slip_bottom"})
@@ -167,14 +167,14 @@ solid_fraction = 0.595
 
 BOOST_AUTO_TEST_CASE(per_wall_roughness_factors_override_the_case_roughness) {
     const Case c = parse("[continuum]\nr6 = 0.2\nr5_top = 0.8\n");
-    const auto s = continuum::settings_from_case(c);
+    const auto s = continuum::resolve_settings(c);
     const auto p = continuum::problem_for(c, s, c.points[0]);
     BOOST_TEST(p.bottom.params.r5 == 0.5);
     BOOST_TEST(p.top.params.r5 == 0.8);
     BOOST_TEST(p.bottom.params.r6 == 0.2);
     BOOST_TEST(p.top.params.r6 == 0.2);
     BOOST_TEST(p.top.params.r8 == 0.5);
-    const auto r = continuum::solve_point(c, s, c.points[0]);
+    const auto r = continuum::solve_point(c, c.points[0], s);
     BOOST_TEST(r.summary.value("slip_top") < r.summary.value("slip_bottom"));  // rougher top wall slips less
     BOOST_TEST(std::abs(r.summary.value("shear_stress_top") / r.summary.value("shear_stress_bottom") - 1) < 1e-9);
 }
@@ -218,9 +218,9 @@ BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
     BOOST_TEST(continuum::run(c, o) == 1);
     BOOST_TEST(!fs::exists(tmp.path / "continuum" / "U2.0" / "summary.json"));
     BOOST_TEST(!fs::exists(tmp.path / "continuum" / "U2.0" / "profile.csv"));
-    const auto s = continuum::settings_from_case(c);
+    const auto s = continuum::resolve_settings(c);
     try {
-        continuum::solve_point(c, s, c.points[1]);
+        continuum::solve_point(c, c.points[1], s);
         BOOST_FAIL("R5 = 0 accepted");
     } catch (const SolverError& e) {
         BOOST_TEST(contains(e.what(), "R5 = 0"));
@@ -239,7 +239,7 @@ BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
     // Newton that cannot converge names the residual and what to try
     const Case tight = parse("[continuum]\nmax_iterations = 1\nmax_continuation_steps = 1\n");
     try {
-        continuum::solve_point(tight, continuum::settings_from_case(tight), tight.points[0]);
+        continuum::solve_point(tight, tight.points[0], continuum::resolve_settings(tight));
         BOOST_FAIL("one Newton iteration should not converge");
     } catch (const SolverError& e) {
         BOOST_TEST(contains(e.what(), "residual"));
@@ -251,7 +251,7 @@ BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
 BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
     const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
         try {
-            continuum::settings_from_case(parse(extra, base));
+            continuum::resolve_settings(parse(extra, base));
         } catch (const CaseError& e) {
             return e.what();
         }
@@ -290,7 +290,7 @@ BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
     std::string bumpy(kCase);
     bumpy.replace(bumpy.find("roughness = 0.5\n"), 16, "roughness = 0.5\nsurface = \"bumps\"\n");
     const Case c = parse("[continuum]\nwall_roughness = \"bumps\"\n", bumpy);
-    const continuum::Settings s = continuum::settings_from_case(c);
+    const continuum::Settings s = continuum::resolve_settings(c);
     const OperatingPoint& p = c.points.front();
     const double built = wall_bumps(c, p, p.bottom, "bottom", particle_box(c))->roughness;
     BOOST_TEST(continuum::wall_roughness(c, s, p, p.bottom, "bottom") == built);
@@ -298,7 +298,7 @@ BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
     BOOST_TEST(std::abs(built - 0.5) > 1e-4);  // the rounding to whole bumps: the test can tell them apart
     BOOST_TEST(std::abs(built - 0.5) <= kBumpRoughnessTolerance);
     const Case declared = parse("", bumpy);
-    BOOST_TEST(continuum::wall_roughness(declared, continuum::settings_from_case(declared), p, p.bottom, "bottom") ==
+    BOOST_TEST(continuum::wall_roughness(declared, continuum::resolve_settings(declared), p, p.bottom, "bottom") ==
                0.5);
     TempDir tmp;
     BOOST_TEST(continuum::run(c, into(tmp, "U1.4")) == 0);
@@ -307,7 +307,7 @@ BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
     BOOST_TEST(sum.run.at("wall_roughness").at("top").get<double>() == built);
     BOOST_TEST(sum.run.at("correlation_length") == "none");
     try {
-        continuum::settings_from_case(parse("[continuum]\nwall_roughness = \"bumps\"\n"));
+        continuum::resolve_settings(parse("[continuum]\nwall_roughness = \"bumps\"\n"));
         BOOST_FAIL("plane walls accepted wall_roughness = bumps");
     } catch (const CaseError& e) {
         BOOST_TEST(contains(e.what(), "wall_roughness"), e.what());

@@ -261,7 +261,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\nmodel = \"hertz\"\ncontact_solve = \"iterated\""),
                                   "tiny.toml", schema());
         try {
-            dem::resolve(c, c.points.front(), RunOptions{});
+            dem::resolve_settings(c, c.points.front(), RunOptions{});
             BOOST_FAIL("expected a CaseError");
         } catch (const CaseError& e) {
             BOOST_TEST(std::string(e.what()).find("contact_solve") != std::string::npos, e.what());
@@ -275,7 +275,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
                                      std::pair{"impact_time = true\nspeculative = true", "speculative"}}) {
         const Case c = parse_case(edit(kCase, "\\[dem\\]", std::string("[dem]\n") + combo), "tiny.toml", schema());
         try {
-            dem::resolve(c, c.points.front(), RunOptions{});
+            dem::resolve_settings(c, c.points.front(), RunOptions{});
             BOOST_FAIL("expected a CaseError for " << combo);
         } catch (const CaseError& e) {
             const std::string w = e.what();
@@ -286,7 +286,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
     {  // a time step that lets grains tunnel
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ntime_step = 1e-4"), "tiny.toml", schema());
         try {
-            dem::resolve(c, c.points.front(), RunOptions{});
+            dem::resolve_settings(c, c.points.front(), RunOptions{});
             BOOST_FAIL("expected a CaseError");
         } catch (const CaseError& e) {
             BOOST_TEST(std::string(e.what()).find("time_step") != std::string::npos);
@@ -298,10 +298,10 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
 BOOST_AUTO_TEST_CASE(run_length_in_shear_strain_with_a_cap) {
     const Case base = parse_case(kCase, "tiny.toml", schema());
     const double H = base.cell.gap, U = base.points.front().speed;
-    const double t0 = dem::resolve(base, base.points.front(), RunOptions{}).time;
+    const double t0 = dem::resolve_settings(base, base.points.front(), RunOptions{}).time;
     auto time_with = [&](const std::string& keys) {
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\n" + keys), "tiny.toml", schema());
-        return dem::resolve(c, c.points.front(), RunOptions{}).time;
+        return dem::resolve_settings(c, c.points.front(), RunOptions{}).time;
     };
     const double two = 2 * t0 * U / H;  // the strain of twice `time`
     BOOST_TEST(std::abs(time_with(fmt::format("strain = {:.17g}", two)) - 2 * t0) < 1e-12 * t0);

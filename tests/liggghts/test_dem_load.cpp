@@ -112,7 +112,7 @@ BOOST_AUTO_TEST_CASE(bad_servo_settings_give_clear_errors) {
     auto expect = [](const std::string& text, const std::vector<std::string>& words) {
         try {
             const Case c = parse_case(text, "tiny_load.toml", schema());
-            dem::resolve(c, c.points.front(), RunOptions{});
+            dem::resolve_settings(c, c.points.front(), RunOptions{});
             BOOST_FAIL("expected a CaseError");
         } catch (const CaseError& e) {
             const std::string w = e.what();
@@ -144,13 +144,13 @@ BOOST_AUTO_TEST_CASE(bad_servo_settings_give_clear_errors) {
 // error (a jump must not hammer the loaded contacts, settings.h); impulse contacts keep theirs.
 BOOST_AUTO_TEST_CASE(hertz_plate_moves_at_most_one_contact_overlap_per_unit_error) {
     const Case impulse = parse_case(kCase, "tiny_load.toml", schema());
-    const dem::Settings si = dem::resolve(impulse, impulse.points.front(), RunOptions{});
+    const dem::Settings si = dem::resolve_settings(impulse, impulse.points.front(), RunOptions{});
     BOOST_TEST(si.plate_gain == si.servo_gain);
     BOOST_TEST(si.plate_overlap == 0.0);
     const std::string hertz_text = edit(edit(kCase, "\\[dem\\]", "[dem]\nmodel = \"hertz\""),
                                         "friction = 0.5\n\\[walls\\]", "friction = 0.5\nyoungs_modulus = 1e9\n[walls]");
     const Case hertz = parse_case(hertz_text, "tiny_load.toml", schema());
-    const dem::Settings sh = dem::resolve(hertz, hertz.points.front(), RunOptions{});
+    const dem::Settings sh = dem::resolve_settings(hertz, hertz.points.front(), RunOptions{});
     // F = P d^2 = 30e-6 N on a sphere of R = 0.5 mm against a plane, E* = E / (2 (1 - 0.23^2)):
     // delta = (3 F / (4 E* sqrt(R)))^(2/3) = 1.53e-8 m (Johnson 1985, eq. 4.23)
     const double e_star = 1e9 / (2.0 * (1.0 - 0.23 * 0.23));

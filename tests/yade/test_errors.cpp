@@ -214,7 +214,7 @@ BOOST_AUTO_TEST_CASE(reduction_of_known_output) {
             const double row[6] = {x, y, 0.0, 0.3 * p.speed, 0.0, 0.0};
             b.write(reinterpret_cast<const char*>(row), sizeof row);
         }
-        nlohmann::json d = {{"grains", n},     {"snapshots", snaps},          {"dt", s.dt},
+        nlohmann::json d = {{"grains", n},     {"snapshots", snaps},          {"dt", s.time_step},
                             {"steps", s.steps}, {"simulated_time", 0.0015},    {"max_overlap_over_d", 0.0},
                             {"wall_clock_s", 1.0}, {"wall_clock_run_s", 0.5}, {"yade_version", "test"}};
         std::ofstream(dir / "driver_summary.json") << d.dump();

@@ -30,12 +30,12 @@ InsertionOptions insertion(const Case& c, const Settings& s) {
 
 nlohmann::json settings_json(const Settings& s) {
     nlohmann::json j = s.servo.to_json();
-    j.update(nlohmann::json{{"model", to_string(s.model)},
+    j.update(nlohmann::json{{"model", s.law->name},
                             {"contact_time", s.contact_time},
                             {"tangential_restitution", s.tangential_restitution},
                             {"wall_mass", s.wall_mass},
                             {"calibrate_restitution", s.calibrate_restitution},
-                            {"dt", s.dt},
+                            {"dt", s.time_step},
                             {"steps", s.steps},
                             {"sample_every", s.sample_every},
                             {"snapshot_every", s.snapshot_every},
@@ -123,7 +123,7 @@ void run_piece(const DriverPaths& paths, const Case& c, const OperatingPoint& p,
     run_driver(paths, dir, couette_params(c, p, s, start, from, overlap), p.id, timeout, poll);
 }
 
-PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint& p0, const fs::path& dir) {
+PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOptions& o, const fs::path& dir) {
     // Everything that can be wrong with the inputs is checked before YADE starts.
     const Settings s = resolve_settings(c, p0, o);
     OperatingPoint p = p0;
@@ -170,7 +170,7 @@ PointResult solve_point(const Case& c, const RunOptions& o, const OperatingPoint
         fs::remove(dir / "final_raw.csv");
         wall_s += r.summary.run.value("yade_wall_clock_s", 0.0);
         return PieceRun{r.summary.run.value("steady_state_detected", false),
-                        static_cast<double>(piece.steps) * piece.dt};
+                        static_cast<double>(piece.steps) * piece.time_step};
     });
     if (k.time_max_s > 0) {
         record_continuation(r.summary.run, k);
@@ -212,7 +212,7 @@ int run(const Case& c, const RunOptions& o) {
     const bool warm = c.section("yade").string("start") == "warm";
     return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {
-            return solve_point(c, o, p, dir);
+            return solve_point(c, p, o, dir);
         } catch (const SolverError&) {
             throw;
         } catch (const Error& e) {  // bad input found for this point: same message, as a point failure

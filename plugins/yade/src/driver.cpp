@@ -46,7 +46,7 @@ json common_params(const Case& c, const OperatingPoint& p, const Settings& s, co
     json j;
     j["format"] = kParamsFormat;
     j["task"] = task;
-    j["model"] = to_string(s.model);
+    j["model"] = s.law->yade;
     j["seed"] = s.insertion.seed;
     j["grains"] = {{"diameter", c.grains.diameter},
                    {"density", c.grains.density},
@@ -56,7 +56,7 @@ json common_params(const Case& c, const OperatingPoint& p, const Settings& s, co
                       {"bottom", material(p.bottom)},
                       {"top", material(p.top)},
                       {"side", material(p.bottom)}};
-    j["contact"] = {{"dt", s.dt},
+    j["contact"] = {{"dt", s.time_step},
                     {"contact_time", s.contact_time},
                     {"tangential_restitution", s.tangential_restitution},
                     {"wall_mass", s.wall_mass},

@@ -148,7 +148,7 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     const auto steps = ds.at("steps").get<double>();
     const double yade_run_s = ds.at("wall_clock_run_s").get<double>();
     sum.run["engine"] = "YADE " + ds.value("yade_version", std::string("?"));
-    sum.run["model"] = to_string(s.model);
+    sum.run["model"] = s.law->name;
     sum.run["grains"] = n;
     sum.run["steps"] = ds.at("steps");
     sum.run["time_step_s"] = dt;

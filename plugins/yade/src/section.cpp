@@ -1,6 +1,7 @@
 // The [yade] case section: one line per key (type, default, range, unit, doc).
 #include "granlub/yade/command.h"
 
+#include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particle_section.h"
 #include "granlub/particles/servo.h"
 
@@ -8,9 +9,8 @@ namespace granlub::yade {
 
 SectionSpec section() {
     SectionSpec s("yade", "YADE cross-check of the particle simulation (plugins/yade)");
-    s.choice("model", "viscel", {"viscel", "hertz"},
-             "contact law: viscel = ViscElMat spring-dashpot with small e_t (closest to the impulse "
-             "operator); hertz = Hertz-Mindlin with Tsuji damping, as [dem] model = \"hertz\"");
+    s.choice("model", "viscel", contact_law_names(ParticleEngine::Yade),
+             "contact law (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Yade));
     s.real("contact_time", 1e-5, Range::positive(), "s", "viscel: binary contact duration t_c");
     s.real("tangential_restitution", 0.01, Range::open_closed(0, 1), "",
            "viscel: tangential restitution e_t (small: sliding stops when slip vanishes)");

@@ -7,11 +7,10 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particle_section.h"
 
 namespace granlub::yade {
-
-std::string to_string(Model m) { return m == Model::ViscEl ? "viscel" : "hertz"; }
 
 namespace {
 // The window servo capped from the contact stiffness, as granlub dem's (servo.h), and refused where
@@ -20,10 +19,10 @@ namespace {
 void resolve_window_servo(const Case& c, const OperatingPoint& p, const Section& s, Settings& r) {
     const Grains& g = c.grains;
     const double P = r.servo.target_stress;
-    const bool hertz = r.model == Model::Hertz;
+    const bool hertz = r.law->stiffness == Stiffness::Hertz;
     if (hertz) {
         r.plate_overlap = hertz_plate_overlap(g, P);
-    } else {  // ViscElMat at a wall of mass wall_mass (Pournin et al. 2001): k_n = m* (pi^2 + ln^2 e)/t_c^2
+    } else {  // Stiffness::Linear: ViscElMat at a wall of mass wall_mass (Pournin et al. 2001): k_n = m* (pi^2 + ln^2 e)/t_c^2
         const double m = g.mass(), m_star = m * r.wall_mass / (m + r.wall_mass);
         const double ln_e = std::log(p.top.restitution);
         const double kn = m_star * (std::numbers::pi * std::numbers::pi + ln_e * ln_e) /
@@ -33,16 +32,42 @@ void resolve_window_servo(const Case& c, const OperatingPoint& p, const Section&
     r.plate_gain = capped_plate_gain(r.servo.servo_gain, r.plate_overlap, g.diameter);
     if (r.weight_plate) return;
     const double response = plate_response_time(g, P, r.plate_overlap, hertz);
-    const double window = static_cast<double>(r.servo.servo_every) * r.dt;
+    const double window = static_cast<double>(r.servo.servo_every) * r.time_step;
     if (window < response)
         s.fail("servo_every",
                fmt::format("{} steps of {:g} s ({:g} s) with servo_plate = \"window\": shorter than the grain-plate "
                            "contacts' response at the load ({:g} s), so the plate would move again before they "
                            "answered its last move and ram the bed (allowed: servo_every >= {}, or "
                            "servo_plate = \"weight\")",
-                           r.servo.servo_every, r.dt, window, response,
-                           static_cast<std::int64_t>(std::ceil(response / r.dt / static_cast<double>(r.sample_every))) *
+                           r.servo.servo_every, r.time_step, window, response,
+                           static_cast<std::int64_t>(std::ceil(response / r.time_step / static_cast<double>(r.sample_every))) *
                                r.sample_every));
+}
+
+// [yade] dt, or the law's rule (contact_laws.h) with dt = 0; checked against the rule's limit.
+double law_time_step(const Case& c, const Section& s, const ContactLaw& law, double contact_time) {
+    const double given = s.real("dt");
+    switch (law.step) {
+    case StepRule::ContactTime: {
+        const double dt = given == 0 ? contact_time / 20.0 : given;
+        if (dt > contact_time / 10.0)
+            s.fail("dt", fmt::format("too large for contact_time = {:g} s: a contact needs at least 10 steps "
+                                     "(allowed: dt <= {:g} s, or 0 for contact_time/20)",
+                                     contact_time, contact_time / 10.0));
+        return dt;
+    }
+    case StepRule::Rayleigh: {
+        const double tr = c.grains.rayleigh_time();
+        const double dt = given == 0 ? kHertzStepFraction * tr : given;
+        if (dt > kHertzMaxStepFraction * tr)
+            s.fail("dt", fmt::format("too large for Hertz contacts of these grains (Rayleigh time {:g} s) "
+                                     "(allowed: dt <= {:g} s, or 0 for {} Rayleigh times)",
+                                     tr, kHertzMaxStepFraction * tr, kHertzStepFraction));
+        return dt;
+    }
+    case StepRule::Travel: break;  // no [yade] law is rigid
+    }
+    throw Error(fmt::format("internal: [yade] has no time-step rule for the contact law '{}'", law.name));
 }
 }  // namespace
 
@@ -53,7 +78,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
                                    p.id));
     const Section& s = c.section("yade");
     Settings r;
-    r.model = s.string("model") == "hertz" ? Model::Hertz : Model::ViscEl;
+    r.law = &contact_law(s.string("model"));
     r.contact_time = s.real("contact_time");
     r.tangential_restitution = s.real("tangential_restitution");
     r.wall_mass = s.real("wall_mass");
@@ -73,41 +98,31 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     r.insertion = start.insertion;
     r.periodic_depth = start.periodic_depth;
 
-    const double tr = c.grains.rayleigh_time();
-    r.dt = s.real("dt");
-    if (r.dt == 0) r.dt = r.model == Model::ViscEl ? r.contact_time / 20.0 : kHertzStepFraction * tr;
-    if (r.model == Model::ViscEl && r.dt > r.contact_time / 10.0)
-        s.fail("dt", fmt::format("too large for contact_time = {:g} s: a contact needs at least 10 steps "
-                                 "(allowed: dt <= {:g} s, or 0 for contact_time/20)",
-                                 r.contact_time, r.contact_time / 10.0));
-    if (r.model == Model::Hertz && r.dt > kHertzMaxStepFraction * tr)
-        s.fail("dt", fmt::format("too large for Hertz contacts of these grains (Rayleigh time {:g} s) "
-                                 "(allowed: dt <= {:g} s, or 0 for {} Rayleigh times)",
-                                 tr, kHertzMaxStepFraction * tr, kHertzStepFraction));
+    r.time_step = law_time_step(c, s, *r.law, r.contact_time);
 
     const std::string time_key = o.full ? "time_full" : "time";
     const double time = s.real(time_key);
     r.time = time;
     r.until_steady = until_steady_cap(s, o.full, time);
-    const double steps = time / r.dt;
+    const double steps = time / r.time_step;
     if (!(steps <= kMaxSteps))
         s.fail(time_key, fmt::format("{:g} s is {:.3g} steps of {:g} s; at most {:g} steps are allowed", time, steps,
-                                     r.dt, kMaxSteps));
-    const auto rows = static_cast<std::int64_t>(std::llround(time / (r.dt * static_cast<double>(r.sample_every))));
+                                     r.time_step, kMaxSteps));
+    const auto rows = static_cast<std::int64_t>(std::llround(time / (r.time_step * static_cast<double>(r.sample_every))));
     if (rows < 2 * r.blocks)
         s.fail(time_key, fmt::format("gives {} wall-force block(s) of sample_every = {} steps of {:g} s; the "
                                      "standard errors need at least 2 x blocks = {} (allowed: {} >= {:g} s)",
-                                     rows, r.sample_every, r.dt, 2 * r.blocks, time_key,
-                                     static_cast<double>(2 * r.blocks * r.sample_every) * r.dt));
+                                     rows, r.sample_every, r.time_step, 2 * r.blocks, time_key,
+                                     static_cast<double>(2 * r.blocks * r.sample_every) * r.time_step));
     r.steps = rows * r.sample_every;
-    r.servo = resolve_servo(c, p, s, r.sample_every, r.dt, r.steps);
+    r.servo = resolve_servo(c, p, s, r.sample_every, r.time_step, r.steps);
     const ParticleBox box = particle_box(c, r.periodic_depth);
     r.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", box);
     r.bumps_top = wall_bumps(c, p, p.top, "top", box);
     r.bumps_side = side_bumps(c, p, box, r.servo.load ? r.servo.gap_max : box.gap);  // up to the highest plate
     if (r.servo.load) resolve_window_servo(c, p, s, r);
 
-    r.persistence_every = persistence_every_steps(p.speed / c.cell.gap, r.dt, r.steps);
+    r.persistence_every = persistence_every_steps(p.speed / c.cell.gap, r.time_step, r.steps);
 
     // snapshots at whole wall-force blocks (under load: whole servo windows)
     const std::int64_t unit = r.servo.load ? r.servo.servo_every : r.sample_every;

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "figures/state_series.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "results/scope.h"
 #include "statistics/metrics.h"
 #include "statistics/stats.h"

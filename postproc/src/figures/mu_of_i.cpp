@@ -6,7 +6,7 @@
 
 #include "figures/figures.h"
 #include "figures/state_series.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/statistics/flow_regime.h"
 #include "results/scope.h"
 

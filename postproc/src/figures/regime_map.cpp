@@ -8,7 +8,7 @@
 #include "figures/figures.h"
 #include "figures/mu_of_i.h"
 #include "figures/state_series.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/statistics/flow_regime.h"
 #include "granlub/statistics/point_verdict.h"
 #include "results/scope.h"

@@ -10,7 +10,7 @@
 
 #include "figures/figures.h"
 #include "formats/svg_plot.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/error.h"
 #include "granlub/particles/cross_section.h"
 

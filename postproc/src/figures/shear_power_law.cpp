@@ -7,7 +7,7 @@
 
 #include "figures/figures.h"
 #include "figures/state_series.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "results/scope.h"
 #include "statistics/metrics.h"
 

@@ -4,7 +4,7 @@
 
 #include "formats/figure_style.h"
 #include "formats/svg_plot.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/results/results.h"
 
 namespace granlub::postproc {

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "formats/text.h"
+#include "formats/format.h"
 
 namespace granlub::postproc {
 

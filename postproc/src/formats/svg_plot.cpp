@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "formats/figure_style.h"
-#include "formats/text.h"
+#include "formats/format.h"
 
 namespace granlub::postproc {
 namespace {
@@ -270,13 +270,10 @@ std::vector<Tick> log_ticks(double lo, double hi) {
     return ticks;
 }
 
-std::string render_svg(const Figure& f) {
-    Mapper m{axis_range(f.x, f.series, true), axis_range(f.y, f.series, false)};
-    const int corner = legend_corner(f, m);
-    const double height = height_of(f, corner);
-    const std::string clip = f.name + "-clip";
-    std::string out;
-    out.reserve(16384);
+namespace {
+
+// The svg element, its title, background and the frame's clip path.
+void svg_open(const Figure& f, double height, const std::string& clip, std::string& out) {
     out += fmt::format(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
         "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"13\">\n",
@@ -285,8 +282,10 @@ std::string render_svg(const Figure& f) {
     out += fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>\n", kWidth, height);
     out += fmt::format("<defs><clipPath id=\"{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath></defs>\n",
                        clip, kX0, kY0, kX1 - kX0, kY1 - kY0);
+}
 
-    // Grid, ticks and tick labels.
+// Grid, ticks, tick labels, the axes' titles and the figure's title.
+void svg_axes(const Figure& f, const Mapper& m, std::string& out) {
     std::vector<Tick> xt, yt;
     if (!f.x.categories.empty()) {
         for (const auto& c : f.x.categories) xt.push_back({c.first, c.second});
@@ -343,8 +342,10 @@ std::string render_svg(const Figure& f) {
         ylabel_x, (kY0 + kY1) / 2, xml_escape(f.y.label));
     out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
                        (kX0 + kX1) / 2, 21, xml_escape(f.title));
+}
 
-    // Data: bands, then lines, then error bars and markers, all clipped to the frame.
+// Data: bands, then lines, then error bars and markers, all clipped to the frame; the frame.
+void svg_data(const Figure& f, const Mapper& m, const std::string& clip, std::string& out) {
     out += fmt::format("<g clip-path=\"url(#{})\">\n", clip);
     for (const auto& s : f.series) {
         if (s.mark != Mark::Line || s.err.size() != s.y.size() || s.y.empty()) continue;
@@ -383,8 +384,10 @@ std::string render_svg(const Figure& f) {
     out += "</g>\n";
     out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#333333\"/>\n", kX0,
                        kY0, kX1 - kX0, kY1 - kY0);
+}
 
-    // Legend in a frame corner free of data points, else below the frame (never over a marker).
+// Legend in a frame corner free of data points, else below the frame (never over a marker).
+void svg_legend(const Figure& f, int corner, std::string& out) {
     std::vector<const Series*> entries;
     for (const auto& s : f.series)
         if (!s.label.empty()) entries.push_back(&s);
@@ -417,6 +420,20 @@ std::string render_svg(const Figure& f) {
         }
         out += "</g>\n";
     }
+}
+
+}  // namespace
+
+std::string render_svg(const Figure& f) {
+    Mapper m{axis_range(f.x, f.series, true), axis_range(f.y, f.series, false)};
+    const int corner = legend_corner(f, m);
+    const std::string clip = f.name + "-clip";
+    std::string out;
+    out.reserve(16384);
+    svg_open(f, height_of(f, corner), clip, out);
+    svg_axes(f, m, out);
+    svg_data(f, m, clip, out);
+    svg_legend(f, corner, out);
     out += "</svg>\n";
     return out;
 }

@@ -11,7 +11,7 @@
 #include "formats/gnuplot.h"
 #include "formats/pdf.h"
 #include "formats/svg_plot.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/error.h"
 #include "granlub/postproc/command.h"
 #include "granlub/run/run_lock.h"

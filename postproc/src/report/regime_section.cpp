@@ -6,7 +6,7 @@
 #include "figures/mu_of_i.h"
 #include "figures/regime_map.h"
 #include "figures/shear_power_law.h"
-#include "formats/text.h"
+#include "formats/format.h"
 
 namespace granlub::postproc {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "figures/registry.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
 #include "report/regime_section.h"

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "figures/figures.h"
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/error.h"
 #include "granlub/results/table.h"
 

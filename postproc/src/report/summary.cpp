@@ -8,7 +8,7 @@
 
 #include "granlub/statistics/point_verdict.h"
 
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/statistics/flow_regime.h"
 #include "results/scope.h"
 #include "statistics/stats.h"

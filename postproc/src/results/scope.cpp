@@ -4,7 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "formats/text.h"
+#include "formats/format.h"
+#include "granlub/particles/contact_laws.h"
 
 namespace granlub::postproc {
 namespace {
@@ -76,8 +77,9 @@ std::string grains_and_walls(const Case& c, const Run& first, bool particles) {
 // that size is that error.
 std::string contact_text(const Run& r) {
     const std::string model = run_text(r, "model");
-    if (model == "hertz") return "contacts: Hertz–Mindlin springs (soft spheres)";
-    if (model == "viscel") return "contacts: linear visco-elastic springs (soft spheres)";
+    const ContactLaw* law = find_contact_law(model);
+    if (!law) return "";
+    if (law->contacts) return law->contacts;  // the table's line (granlub/particles/contact_laws.h)
     if (model != "impulse") return "";
     const std::string dt_error =
         " (under enduring contacts its wall stresses carry a first-order time-step error: ~10 % above Hertz at the "

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "formats/text.h"
+#include "formats/format.h"
 #include "tables/metric_lookup.h"
 
 namespace granlub::postproc {

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "formats/text.h"
+#include "formats/format.h"
 
 namespace granlub::postproc {
 namespace {

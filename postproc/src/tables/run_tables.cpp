@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "formats/text.h"
+#include "formats/format.h"
 #include "granlub/statistics/flow_regime.h"
 #include "results/scope.h"
 #include "tables/metric_lookup.h"

@@ -17,6 +17,6 @@ struct Mapping {
 };
 
 // Throws CaseError / SolverError naming the key and what is allowed.
-Mapping map_point(const Case& c, const OperatingPoint& p, const RunOptions& o);
+Mapping resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o);
 
 }  // namespace granlub::automaton

@@ -27,13 +27,13 @@ struct Settings {
 };
 
 // Throws CaseError naming the key for values the section spec cannot check alone.
-Settings settings_from_case(const Case& c);
+Settings resolve_settings(const Case& c);
 // The roughness R of one wall of a point for R5..R8: the declared one, or with wall_roughness = "bumps" on a
 // bumpy wall sin(theta) = l/(d_w + d) of the bump layer the particle solvers build (wall_bumps.h).
 double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side);
 // Throws SolverError when the point cannot have a sheared steady state (e.g. R5 = 0).
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p);
 // Solves one point and fills profile.csv / summary.json contents.
-PointResult solve_point(const Case& c, const Settings& s, const OperatingPoint& p);
+PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& s);
 
 }  // namespace granlub::continuum

@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// How solve() inserts the grains: below the plate's start (servo.h); the ring's clear of the facets.
+// How solve_point() inserts the grains: below the plate's start (servo.h); the ring's clear of the facets.
 InsertionOptions insertion(const Case& c, const Settings& s) {
     InsertionOptions ins;
     ins.seed = s.seed;
@@ -76,7 +76,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
             bumps.push_back({*s.bumps_side, kSide, z, p.speed, true});
     write_file_atomic(dir / kData, data_file(init.particles, bounds, c.grains.density,
                                              fmt::format("case {} point {} ({})", c.name, p.id, prov), bumps));
-    if (s.ring && s.ring_mesh) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facets);
+    if (s.ring && s.ring_mesh) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facet_count);
     else
         for (const char* mesh : kRingMeshes) fs::remove(dir / mesh);  // an earlier run's, not this deck's
     write_file_atomic(dir / kDeck, s.ring ? ring_deck(c, p, s, init.particles.size(), prov)
@@ -246,9 +246,9 @@ nlohmann::json refinement_record(const Refined& r, const Settings& s, std::map<s
     return rec;
 }
 
-PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, const fs::path& dir) {
+PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOptions& o, const fs::path& dir) {
     OperatingPoint p = p0;
-    const Settings s = resolve(c, p, o);
+    const Settings s = resolve_settings(c, p, o);
     p.solid_fraction = s.insert_fill;
 
     const InsertionOptions ins = insertion(c, s);
@@ -279,8 +279,8 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
     double loop = reported.loop_s, wall = reported.wall_s, engine_steps = reported.engine_steps;
     if (refined) loop += refined->coarse.loop_s, wall += refined->coarse.wall_s, engine_steps += refined->coarse.engine_steps;
     r.summary.run = out.run;
-    r.summary.run["model"] = s.model == Model::Impulse ? "impulse" : "hertz";
-    if (s.model == Model::Impulse) r.summary.run["contact_solve"] = s.iterated ? "iterated" : "single_pass";
+    r.summary.run["model"] = s.law->name;
+    if (s.law->impulse_options) r.summary.run["contact_solve"] = s.iterated ? "iterated" : "single_pass";
     r.summary.run["atoms"] = init.particles.size();
     r.summary.run["steps"] = static_cast<std::int64_t>(std::llround(reported.record.last_s / rs.time_step));
     r.summary.run["time_step_s"] = rs.time_step;
@@ -318,9 +318,9 @@ PointResult solve(const Case& c, const OperatingPoint& p0, const RunOptions& o, 
 void check(const Case& c, const RunOptions& o) {
     for_each_run(c, o, [&](const OperatingPoint& p0, const RunOptions& v) {
         OperatingPoint p = p0;
-        const Settings s = resolve(c, p, v);
-        p.solid_fraction = s.insert_fill;  // as solve() inserts it
-        check_initial_particles(c, p, s.box.width, s.insert_fill_key, insertion(c, s));  // as solve() inserts
+        const Settings s = resolve_settings(c, p, v);
+        p.solid_fraction = s.insert_fill;  // as solve_point() inserts it
+        check_initial_particles(c, p, s.box.width, s.insert_fill_key, insertion(c, s));  // as solve_point() inserts
     });
 }
 
@@ -328,7 +328,7 @@ int run(const Case& c, const RunOptions& o) {
     // each point is its own LIGGGHTS process of --np ranks: as many side by side as cores allow
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
     return run_sweep(
-        c, "dem", o, [&](const OperatingPoint& p, const fs::path& dir) { return solve(c, p, o, dir); }, at_once);
+        c, "dem", o, [&](const OperatingPoint& p, const fs::path& dir) { return solve_point(c, p, o, dir); }, at_once);
 }
 
 }  // namespace granlub::dem

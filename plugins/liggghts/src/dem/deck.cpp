@@ -130,8 +130,8 @@ bool fixed_top_ending(const Settings& s, const DeckLine& line) {
 }
 
 ModelText model_text(const Settings& s) {
-    if (s.model != Model::Impulse) return {"model hertz tangential history", ""};
-    return {"model impulse tangential impulse",
+    if (!s.law->impulse_options) return {s.law->liggghts, ""};
+    return {s.law->liggghts,
             fmt::format(" beta0 {} separate {}{}{}", s.beta0, s.separate ? "on" : "off",
                         s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "",
                         // iterate explicit: the model's default is on
@@ -162,7 +162,7 @@ void engine_block(const Settings& s, const DeckLine& line, const std::string& bo
     line("hard_particles  yes     # glass: Young's modulus above LIGGGHTS' 1 GPa sanity limit");
     line("processors      " + processors);
     line(fmt::format("read_data       {}", kData));
-    line(fmt::format("neighbor        {} bin", s.skin));
+    line(fmt::format("neighbor        {} bin", s.skin_m));
     line("neigh_modify    delay 0");
 }
 
@@ -181,7 +181,7 @@ void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, co
     line("");
     line(fmt::format("pair_style      gran {}{}", m.model, m.settings));
     line("pair_coeff      * *");
-    if (s.model == Model::Impulse && s.iterated) {
+    if (s.law->impulse_options && s.iterated) {
         line("# contact_solve = iterated: every impulse contact of a step (pair and walls, `iterate on`) solved together");
         line("# to convergence (plugins/liggghts/doc/fix_impulse_solve.txt)");
         line(fmt::format("fix solve all impulse/solve tolerance {} iterations {}", s.solve_tolerance,
@@ -263,20 +263,11 @@ std::string bump_force_columns(const Settings& s, const DeckLine& line) {
     return cols;
 }
 
-}  // namespace
-
-std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
-                 const std::string& provenance) {
-    const bool impulse = s.model == Model::Impulse;
+// The deck's opening comment: the cell, the walls, the grains and the contact model.
+void slice_header(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+                  const std::string& provenance, const DeckLine& line) {
     const auto& box = s.box;
     const double U = p.speed;
-    const double A = box.length * box.width;
-    const ModelText mt = model_text(s);
-    const std::string& model = mt.model;
-    const std::string& settings = mt.settings;
-    std::string d;
-    const DeckLine line = deck_lines(d);
-
     line(fmt::format("# granlub dem: case {}, point {} ({})", c.name, p.id, provenance));
     line(fmt::format("# Shear cell: x along the flow (periodic, L = {:g} m), y across the gap (H = {:g} m):", box.length,
                      box.gap));
@@ -288,16 +279,19 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
                      box.periodic_z ? fmt::format(" (periodic, {:g} m)", box.width)
                                     : fmt::format(" (side walls at +-{:g} m moving with the bottom)", 0.5 * box.width)));
     line(fmt::format("# {} grains of d = {:g} m (solid fraction {:.4f}); contact model: {}.", grains, c.grains.diameter,
-                     s.insert_fill, impulse ? "Sawyer & Tichy 2001 impulse operator (granlub plugin)"
-                                            : "Hertz-Mindlin (LIGGGHTS built-in), soft-sphere reference"));
+                     s.insert_fill, s.law->title));
     line("# Rerun by hand in this folder: granlub-liggghts -in in.granlub");
-    line("");
-    engine_block(s, line, box.periodic_z ? "p f p" : "p f f", "* 1 1   # split along the flow only");
-    line("");
-    contact_block(c, p, s, line);
-    line("");
+}
+
+// The slice's walls: the floor, the top (a plate at ${hplate} under load control) and, without a
+// periodic width, the side walls. Returns the top wall's fix line: the servo loop remakes it.
+std::string slice_walls(const OperatingPoint& p, const Settings& s, const DeckLine& line) {
+    const auto& box = s.box;
+    const double U = p.speed;
+    const ModelText mt = model_text(s);
+    const std::string& model = mt.model;
+    const std::string& settings = mt.settings;
     const std::string g = s.grains_group();
-    if (s.bumps()) bump_block(s, line, U);
     line("# walls: primitive planes; `shear x U` moves the bottom and side walls along the flow;");
     line("# store_force gives the force of each wall on each grain (f_force_<id>), summed every step");
     line(fmt::format("fix wbot {} wall/gran {} primitive type 2 yplane 0.0 shear x {} store_force yes{}", g, model, U,
@@ -317,7 +311,12 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
         line(fmt::format("fix wsid2 {} wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}", g,
                          model, 0.5 * box.width, U, settings));
     }
-    line("");
+    return top_wall;
+}
+
+// Gravity, the centripetal force and the integration of the grains.
+void slice_body_forces(const Case& c, const Settings& s, const DeckLine& line) {
+    const std::string g = s.grains_group();
     line("# body forces: gravity along -y; centripetal acceleration u_x^2 / (R - z) toward the outer wall (-z),");
     line("# with R the annulus mean radius (Sawyer & Tichy 2001, particle simulation)");
     if (c.gravity > 0) line(fmt::format("fix grav {} gravity {} vector 0 -1 0", g, c.gravity));
@@ -326,7 +325,11 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     if (c.cell.annulus_radius > 0)
         line(fmt::format("fix cent {} centripetal/annulus {}", g, c.cell.annulus_radius));
     line(fmt::format("fix integr {} nve/sphere", g));
-    line("");
+}
+
+// The wall-force file: every wall's force on the grains, block means of sample_every steps.
+void slice_wall_forces(const Settings& s, const DeckLine& line) {
+    const auto& box = s.box;
     line("# wall forces (on the grains), averaged over blocks of sample_every steps, sampled every step");
     line("# (impulse forces last one step). Columns: step, then fx fy fz of bottom, top[, fx fx fy fy of the side walls].");
     // compute wall/gran/force (plugins/liggghts/doc/compute_wall_gran_force.txt): every wall's force in one
@@ -338,16 +341,17 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     // x: the side walls' drag; y: what they carry of the grains' weight (the vertical balance)
     if (!box.periodic_z) cols += side_force_columns(s, line);
     line(fmt::format("fix walls all ave/time 1 {0} {0} {1} file {2}", s.sample_every, cols, kWallFile));
-    line(fmt::format("# wall area A = L W = {} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A", A));
-    line("");
-    line("# particle snapshots for coarse-graining across the gap");
-    output_block(s, line);
-    if (fixed_top_ending(s, line)) return d;
-    // Load control (README "Load control"): a plate servo in the deck. Every servo_every steps the
-    // plate moves by gain d clamp((P_top - P)/P, -1, max_error), P_top the top-wall stress averaged
-    // over those steps (summed every step: the impulsive force is integrated, not sampled), then
-    // clamped to [gap_min, gap_max]. An integral controller: at steady state the plate's mean
-    // drift is zero, so the window-averaged P_top equals P (while the clamps are inactive).
+    line(fmt::format("# wall area A = L W = {} m^2: normal stress bottom = f_y(bottom)/A, top = -f_y(top)/A",
+                     box.length * box.width));
+}
+
+// Load control (README "Load control"): a plate servo in the deck. Every servo_every steps the
+// plate moves by gain d clamp((P_top - P)/P, -1, max_error), P_top the top-wall stress averaged
+// over those steps (summed every step: the impulsive force is integrated, not sampled), then
+// clamped to [gap_min, gap_max]. An integral controller: at steady state the plate's mean
+// drift is zero, so the window-averaged P_top equals P (while the clamps are inactive).
+void slice_servo_loop(const Case& c, const Settings& s, const std::string& top_wall, const DeckLine& line) {
+    const double A = s.box.length * s.box.width;
     const double d_g = c.grains.diameter;
     line("");
     line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress,
@@ -370,6 +374,31 @@ std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std:
     line(top_wall);
     line("next update");
     line("jump SELF servo");
+}
+
+}  // namespace
+
+std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+                 const std::string& provenance) {
+    std::string d;
+    const DeckLine line = deck_lines(d);
+    slice_header(c, p, s, grains, provenance, line);
+    line("");
+    engine_block(s, line, s.box.periodic_z ? "p f p" : "p f f", "* 1 1   # split along the flow only");
+    line("");
+    contact_block(c, p, s, line);
+    line("");
+    if (s.bumps()) bump_block(s, line, p.speed);
+    const std::string top_wall = slice_walls(p, s, line);
+    line("");
+    slice_body_forces(c, s, line);
+    line("");
+    slice_wall_forces(s, line);
+    line("");
+    line("# particle snapshots for coarse-graining across the gap");
+    output_block(s, line);
+    if (fixed_top_ending(s, line)) return d;
+    slice_servo_loop(c, s, top_wall, line);
     persistence_block(s, line);  // after the last servo window (`next` skips the jump)
     final_state_block(s, line);
     return d;

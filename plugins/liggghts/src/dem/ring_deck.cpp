@@ -126,12 +126,11 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
                             : fmt::format("is still at y = H = {:g} m", s.box.gap)));
     line(fmt::format("# {} grains of d = {:g} m; contact model: {}. No centripetal body force: the curvature makes it.",
                      grains, d_g,
-                     s.model == Model::Impulse ? "Sawyer & Tichy 2001 impulse operator (granlub plugin)"
-                                               : "Hertz-Mindlin (LIGGGHTS built-in), soft-sphere reference"));
+                     s.law->title));
     if (s.ring_mesh)
         line(fmt::format("# Meshes ({} facets per circle): {}, {}, {}, {}. Rerun by hand in this folder: "
                          "granlub-liggghts -in in.granlub",
-                         s.ring_facets, kRingMeshes[0], kRingMeshes[1], kRingMeshes[2], kRingMeshes[3]));
+                         s.ring_facet_count, kRingMeshes[0], kRingMeshes[1], kRingMeshes[2], kRingMeshes[3]));
     else
         line("# Walls: exact primitives (planes and cylinders). Rerun by hand in this folder: granlub-liggghts -in "
              "in.granlub");

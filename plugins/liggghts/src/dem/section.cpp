@@ -1,6 +1,7 @@
 // The [dem] case section: one line per key (type, default, range, unit, doc). Apart from the
 // engine pipeline so that it compiles with core alone (the case-parser fuzzer builds it).
 #include "granlub/dem/command.h"
+#include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particle_section.h"
 #include "granlub/particles/servo.h"
 #include "settings.h"
@@ -9,8 +10,8 @@ namespace granlub::dem {
 
 SectionSpec section() {
     SectionSpec s("dem", "particle simulation in LIGGGHTS (granlub-liggghts)");
-    s.choice("model", "impulse", {"impulse", "hertz"},
-             "contact model: Sawyer & Tichy impulse operator, or LIGGGHTS' Hertz-Mindlin (soft-sphere reference)");
+    s.choice("model", "impulse", contact_law_names(ParticleEngine::Liggghts),
+             "contact model (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Liggghts));
     s.real("beta0", 0.0, Range::closed(-1, 1), "",
            "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
     s.boolean("separate_overlaps", true,

@@ -9,6 +9,7 @@
 
 #include "granlub/error.h"
 #include "granlub/statistics/flow_regime.h"
+#include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particle_section.h"
 
 namespace granlub::dem {
@@ -23,70 +24,74 @@ double impulse_reference_speed(const Case& c, const OperatingPoint& p) {
     return std::max({v_wall, v_fall, v_load});
 }
 
-Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
-    const Section& s = c.section("dem");
-    Settings st;
-    st.model = s.string("model") == "hertz" ? Model::Hertz : Model::Impulse;
+namespace {
+
+// The contact law and its options: model, beta0 ... solve_iterations. The impulse options are
+// refused with a law that has none (contact_laws.h, impulse_options).
+void read_contact(const Section& s, Settings& st) {
+    st.law = &contact_law(s.string("model"));
     st.beta0 = s.real("beta0");
     st.separate = s.boolean("separate_overlaps");
     st.bounce_speed = s.real("bounce_speed");
+    const bool impulse = st.law->impulse_options;
     st.iterated = s.string("contact_solve") == "iterated";
-    if (st.iterated && st.model != Model::Impulse)
-        s.fail("contact_solve", "'iterated' solves the impulse model's contacts; model = 'hertz' has none (its "
-                                "forces come from springs): use contact_solve = 'single_pass' or model = 'impulse'");
+    if (st.iterated && !impulse)
+        s.fail("contact_solve", fmt::format("'iterated' solves the impulse model's contacts; model = '{}' has none (its "
+                                            "forces come from springs): use contact_solve = 'single_pass' or model = "
+                                            "'impulse'",
+                                            st.law->name));
     st.impact_time = s.boolean("impact_time");
-    if (st.impact_time && (st.model != Model::Impulse || st.iterated))
+    if (st.impact_time && (!impulse || st.iterated))
         s.fail("impact_time", "true is an option of the impulse model's single pass: it needs model = 'impulse' and "
                               "contact_solve = 'single_pass' (allowed: false with any model, true with those two)");
     st.speculative = s.boolean("speculative");
-    if (st.speculative && (st.model != Model::Impulse || st.iterated || st.impact_time))
+    if (st.speculative && (!impulse || st.iterated || st.impact_time))
         s.fail("speculative", "true is an option of the impulse model's single pass: it needs model = 'impulse', "
                               "contact_solve = 'single_pass' and impact_time = false (allowed: false with any "
                               "model, true with those three)");
     st.solve_tolerance = s.real("solve_tolerance");
     st.solve_iterations = s.integer("solve_iterations");
-    const ParticleStart start = particle_start(c, p, o.seed);
-    st.ring = c.cell.ring();
-    st.box = st.ring ? ring_slice_box(c) : particle_box(c, start.periodic_depth);
-    st.contact_box = st.box;
-    st.np = std::max(1, o.np);
-    st.vtk = o.vtk;
-    st.seed = start.insertion.seed;
-    st.velocity_noise = start.insertion.velocity_noise;
-    st.time = o.full ? s.real("time_full") : s.real("time");
-    if (const double strain = s.real("strain"); strain > 0 && p.speed > 0)  // [dem] strain: a run length in U t / H
-        st.time = std::max(st.time, std::min(strain * c.cell.gap / p.speed, s.real("strain_time_max")));
+}
 
-    st.until_steady = until_steady_cap(s, o.full, s.real(o.full ? "time_full" : "time"));
-
-    if (c.cell.annulus_radius > 0 && c.cell.annulus_radius <= 0.5 * st.box.width)
-        s.fail("annulus_radius", fmt::format("the annulus radius {:g} m must exceed half the cell width {:g} m "
-                                             "(the centripetal term divides by the local radius R - z)",
-                                             c.cell.annulus_radius, 0.5 * st.box.width));
-
-    // time step: derived from the case, or given and checked
+// The time step by the law's rule (contact_laws.h): derived from the case, or given and checked.
+double law_time_step(const Case& c, const OperatingPoint& p, const Section& s, const ContactLaw& law) {
     const double given = s.real("time_step");
-    const double v_ref = impulse_reference_speed(c, p);
-    if (st.model == Model::Impulse) {
+    switch (law.step) {
+    case StepRule::Travel: {
         // a grain at the reference speed travels step_fraction of the smallest grain's diameter per step
+        const double v_ref = impulse_reference_speed(c, p);
         const double d_min = c.grains.sizes().min();
-        st.time_step = given > 0 ? given : s.real("step_fraction") * d_min / v_ref;
-        const double frac = st.time_step * v_ref / d_min;
+        const double dt = given > 0 ? given : s.real("step_fraction") * d_min / v_ref;
+        const double frac = dt * v_ref / d_min;
         if (frac > kMaxStepFraction)
             s.fail(given > 0 ? "time_step" : "step_fraction",
                    fmt::format("a grain at {:g} m/s moves {:.3g} diameters of the smallest grain ({:g} m) per step of "
                                "{:g} s; the impulse model finds contacts only by overlap, so at most {:g} diameters "
                                "per step are allowed",
-                               v_ref, frac, d_min, st.time_step, kMaxStepFraction));
-    } else {
+                               v_ref, frac, d_min, dt, kMaxStepFraction));
+        return dt;
+    }
+    case StepRule::Rayleigh: {
         const double tr = c.grains.rayleigh_time();
-        st.time_step = given > 0 ? given : s.real("hertz_step_fraction") * tr;
-        if (st.time_step > kHertzMaxStepFraction * tr)
+        const double dt = given > 0 ? given : s.real("hertz_step_fraction") * tr;
+        if (dt > kHertzMaxStepFraction * tr)
             s.fail(given > 0 ? "time_step" : "hertz_step_fraction",
                    fmt::format("time step {:g} s is {:.2f} Rayleigh times ({:g} s) of the Hertz contacts; at most {:g} "
                                "is stable",
-                               st.time_step, st.time_step / tr, tr, kHertzMaxStepFraction));
+                               dt, dt / tr, tr, kHertzMaxStepFraction));
+        return dt;
     }
+    case StepRule::ContactTime: break;  // no [dem] law has a contact time
+    }
+    throw Error(fmt::format("internal: [dem] has no time-step rule for the contact law '{}'", law.name));
+}
+
+// time, steps, sample_every, the servo, snapshots: the run's length and its sampling.
+void resolve_run_length(const Case& c, const OperatingPoint& p, const RunOptions& o, const Section& s, Settings& st) {
+    st.time = o.full ? s.real("time_full") : s.real("time");
+    if (const double strain = s.real("strain"); strain > 0 && p.speed > 0)  // [dem] strain: a run length in U t / H
+        st.time = std::max(st.time, std::min(strain * c.cell.gap / p.speed, s.real("strain_time_max")));
+    st.until_steady = until_steady_cap(s, o.full, s.real(o.full ? "time_full" : "time"));
     const double steps = std::ceil(st.time / st.time_step - 1e-9);
     if (!(steps <= kMaxSteps))
         s.fail(o.full ? "time_full" : "time", fmt::format("{:g} s is {:.3g} steps of {:g} s; at most {:g} steps are "
@@ -96,7 +101,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     st.sample_every = s.integer("sample_every");
     static_cast<ServoSettings&>(st) = resolve_servo(c, p, s, st.sample_every, st.time_step, st.steps);
     st.plate_gain = st.servo_gain;
-    if (st.load && st.model == Model::Hertz) {
+    if (st.load && st.law->stiffness == Stiffness::Hertz) {
         st.plate_overlap = hertz_plate_overlap(c.grains, st.target_stress);
         st.plate_gain = capped_plate_gain(st.servo_gain, st.plate_overlap, c.grains.diameter);
     }
@@ -107,9 +112,44 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
                            st.time, st.steps, st.time_step, st.sample_every));
     st.snapshots = s.integer("snapshots");
     st.snapshot_every = std::max<std::int64_t>(1, st.steps / st.snapshots);
+}
+
+// [cell] geometry = "annulus": the ring, its walls' meshes and the contact search's box.
+void resolve_ring(const Case& c, const Section& s, Settings& st) {
+    st.annulus = annulus(c);
+    st.ring_mesh = s.string("ring_walls") == "mesh";
+    if (st.ring_mesh) {  // the meshes' facets, and how far inside the outer circle their chords lie
+        const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
+        st.ring_facet_count =
+            static_cast<std::size_t>(std::max(64.0, std::ceil(2.0 * std::numbers::pi * ro / chord)));
+        st.wall_sag = ro * (1.0 - std::cos(std::numbers::pi / static_cast<double>(st.ring_facet_count)));
+    }
+    st.contact_box = ring_contact_box(st.annulus, st.box_top(), c.grains.diameter);
+}
+
+}  // namespace
+
+Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
+    const Section& s = c.section("dem");
+    Settings st;
+    read_contact(s, st);
+    const ParticleStart start = particle_start(c, p, o.seed);
+    st.ring = c.cell.ring();
+    st.box = st.ring ? ring_slice_box(c) : particle_box(c, start.periodic_depth);
+    st.contact_box = st.box;
+    st.np = std::max(1, o.np);
+    st.vtk = o.vtk;
+    st.seed = start.insertion.seed;
+    st.velocity_noise = start.insertion.velocity_noise;
+    if (c.cell.annulus_radius > 0 && c.cell.annulus_radius <= 0.5 * st.box.width)
+        s.fail("annulus_radius", fmt::format("the annulus radius {:g} m must exceed half the cell width {:g} m "
+                                             "(the centripetal term divides by the local radius R - z)",
+                                             c.cell.annulus_radius, 0.5 * st.box.width));
+    st.time_step = law_time_step(c, p, s, *st.law);
+    resolve_run_length(c, p, o, s, st);
     st.stations = static_cast<std::size_t>(s.integer("stations"));
     st.blocks = static_cast<std::size_t>(s.integer("blocks"));
-    st.skin = s.real("skin") * c.grains.diameter;
+    st.skin_m = s.real("skin") * c.grains.diameter;
     st.refine_dt = s.boolean("refine_dt");
     st.refine_time = s.real("refine_time");
     if (st.refine_dt) try {  // a refine_time too short fails now, not after the full-step run
@@ -117,16 +157,7 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
         } catch (const CaseError& e) {
             s.fail("refine_time", e.what());
         }
-    if (st.ring) {
-        st.annulus = annulus(c);
-        st.ring_mesh = s.string("ring_walls") == "mesh";
-        if (st.ring_mesh) {  // the meshes' facets, and how far inside the outer circle their chords lie
-            const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
-            st.ring_facets = static_cast<std::size_t>(std::max(64.0, std::ceil(2.0 * std::numbers::pi * ro / chord)));
-            st.wall_sag = ro * (1.0 - std::cos(std::numbers::pi / static_cast<double>(st.ring_facets)));
-        }
-        st.contact_box = ring_contact_box(st.annulus, st.box_top(), c.grains.diameter);
-    }
+    if (st.ring) resolve_ring(c, s, st);
     st.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", st.box);
     st.bumps_top = wall_bumps(c, p, p.top, "top", st.box);
     st.bumps_side = side_bumps(c, p, st.box, st.box_top());
@@ -134,7 +165,6 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     // impulse/solve treats such atoms as kinematic (infinite mass), as the walls they are
     // a shear strain of kPersistenceStrain at U/H, at most a hundredth of the run
     st.persistence_every = persistence_every_steps(p.speed / c.cell.gap, st.time_step, st.steps);
-
     return st;
 }
 
@@ -167,7 +197,7 @@ Settings half_step(const Settings& s) {
 
 nlohmann::json Settings::to_json() const {
     nlohmann::json j = ServoSettings::to_json();
-    j.update(nlohmann::json{{"model", model == Model::Impulse ? "impulse" : "hertz"},
+    j.update(nlohmann::json{{"model", law->name},
                             {"beta0", beta0},
                             {"separate_overlaps", separate},
                             {"bounce_speed", bounce_speed},
@@ -180,7 +210,7 @@ nlohmann::json Settings::to_json() const {
                             {"snapshot_every", snapshot_every},
                             {"stations", stations},
                             {"blocks", blocks},
-                            {"skin_m", skin},
+                            {"skin_m", skin_m},
                             {"seed", seed},
                             {"velocity_noise", velocity_noise},
                             {"ranks", np},
@@ -199,7 +229,7 @@ nlohmann::json Settings::to_json() const {
     if (ring)
         j.update(ring_mesh ? nlohmann::json{{"annulus_radius_m", annulus.R},
                                             {"ring_walls", "mesh"},
-                                            {"ring_facets_per_circle", ring_facets},
+                                            {"ring_facets_per_circle", ring_facet_count},
                                             {"ring_wall_sag_m", wall_sag}}
                            : nlohmann::json{{"annulus_radius_m", annulus.R}, {"ring_walls", "primitive"}});
     return j;

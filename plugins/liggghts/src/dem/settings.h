@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granlub/particles/annulus.h"
+#include "granlub/particles/contact_laws.h"
 #include "granlub/case/case.h"
 #include "granlub/particles/particles.h"
 #include "granlub/particles/servo.h"
@@ -18,12 +19,10 @@
 
 namespace granlub::dem {
 
-enum class Model { Impulse, Hertz };
-
 // The servo part (control = "load": the top wall is a plate moved by the deck every servo_every
 // steps, see deck.h and README "Load control") is shared with granlub yade (granlub/particles/servo.h).
 struct Settings : ServoSettings {
-    Model model = Model::Impulse;
+    const ContactLaw* law = nullptr;  // [dem] model, a row of contact_laws.h (set by resolve_settings)
     double beta0 = 0;             // Walton's tangential restitution (impulse); 0 = stick limit
     bool separate = false;        // impulse: remove overlaps (position correction)
     double bounce_speed = 0;      // impulse: restitution only above this approach speed (m/s)
@@ -40,8 +39,8 @@ struct Settings : ServoSettings {
     std::int64_t snapshot_every = 0;  // particle snapshots for coarse-graining, steps
     std::size_t stations = 0;     // coarse-graining slabs across the gap
     std::size_t blocks = 0;       // blocks for standard errors
-    double skin = 0;              // neighbour skin, m
-    std::uint64_t seed = 1;
+    double skin_m = 0;            // neighbour skin, m ([dem] skin is in grain diameters)
+    std::uint64_t seed = 0;       // [particles] seed (--seed overrides); every key-set field is set by resolve_settings
     double velocity_noise = 0;
     bool vtk = false;
     bool refine_dt = false;       // the point's answer at time_step / 2, checked against time_step (run.dt_refinement)
@@ -70,7 +69,7 @@ struct Settings : ServoSettings {
     bool ring = false;
     Annulus annulus;
     bool ring_mesh = false;       // the ring's walls as STL meshes (else primitives, ring_deck.h)
-    std::size_t ring_facets = 0;  // facets per circle of the ring's meshes (ring_mesh only)
+    std::size_t ring_facet_count = 0;  // facets per circle of the ring's meshes (ring_mesh only; [dem] ring_facet is their length)
     double wall_sag = 0;          // m: how far the outer wall's facets lie inside its circle at most
     ParticleBox contact_box;      // what core's contact search (contacts.h) is given for the grains
     double plate_overlap = 0;     // m, Hertz grain-plate overlap under the load's share of one grain
@@ -89,14 +88,14 @@ struct Settings : ServoSettings {
 };
 
 // Reads [dem], derives and checks the time step (throws CaseError naming the key).
-Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o);
+Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o);
 
 // The same run at half the time step: the same simulated time, blocks, snapshots, servo windows
 // and persistence interval in seconds, twice the steps.
 Settings half_step(const Settings& s);
 
 // The half-step run of refine_dt: half_step(s), and with refine_time > 0 that simulated time (whole
-// servo windows, the same number of snapshots). Throws CaseError (why, without the key: resolve()
+// servo windows, the same number of snapshots). Throws CaseError (why, without the key: resolve_settings()
 // names it) when it is too short for the blocks or the servo.
 Settings refine_settings(const Settings& s);
 

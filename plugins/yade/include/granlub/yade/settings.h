@@ -8,6 +8,7 @@
 #include <string>
 
 #include "granlub/case/case.h"
+#include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particles.h"
 #include "granlub/particles/servo.h"
 #include "granlub/particles/until_steady.h"
@@ -17,24 +18,23 @@
 
 namespace granlub::yade {
 
-enum class Model { ViscEl, Hertz };
-std::string to_string(Model m);
-
+// Every field that a [yade] key sets is set by resolve_settings() from that key: the key's
+// default, range and doc are the schema's (src/section.cpp), so none is restated here.
 struct Settings {
-    Model model = Model::ViscEl;
-    double contact_time = 1e-5;            // viscel: t_c, s
-    double tangential_restitution = 0.01;  // viscel: e_t
-    double wall_mass = 1e3;                // viscel: kg
-    bool calibrate_restitution = true;     // viscel: e_n such that a binary collision gives e
-    double dt = 0;                         // s, resolved (never 0)
+    const ContactLaw* law = nullptr;       // [yade] model, a row of granlub/particles/contact_laws.h
+    double contact_time = 0;               // viscel: t_c, s
+    double tangential_restitution = 0;     // viscel: e_t
+    double wall_mass = 0;                  // viscel: kg
+    bool calibrate_restitution = false;    // viscel: e_n such that a binary collision gives e
+    double time_step = 0;                  // s, resolved (never 0; [yade] dt)
     double time = 0;                       // s, the run length the case asks for (time or time_full)
     std::int64_t steps = 0;                // multiple of sample_every and of snapshot_every
-    std::int64_t sample_every = 100;       // steps per wall-force mean
+    std::int64_t sample_every = 0;         // steps per wall-force mean
     std::int64_t snapshot_every = 0;       // steps between particle snapshots
-    std::int64_t body_force_every = 50;    // steps between centripetal-force refreshes
-    double verlet_distance = 0.2;          // collider's Verlet distance, smallest grain radii
-    std::int64_t stations = 20;
-    std::int64_t blocks = 10;
+    std::int64_t body_force_every = 0;     // steps between centripetal-force refreshes
+    double verlet_distance = 0;            // collider's Verlet distance, smallest grain radii
+    std::int64_t stations = 0;
+    std::int64_t blocks = 0;
     double timeout = 0;                    // s; 0 = from the run size
     UntilSteadyCap until_steady;           // time_max: continued until steady up to this in all; 0 = off
     // The initial configuration, shared with `granlub dem`: [particles] seed, velocity_noise and
@@ -48,7 +48,7 @@ struct Settings {
     // servo_plate = "weight", a plate of plate_mass x the grains' mass pressed by P A
     ServoSettings servo;
     bool weight_plate = false;
-    double plate_mass = 1.0;
+    double plate_mass = 0;                 // multiples of the grains' mass
     // the window servo's gain capped from the contact stiffness (servo.h capped_plate_gain), as
     // granlub dem caps it: a unit error moves the plate by one grain-plate overlap at the load
     double plate_overlap = 0;              // m

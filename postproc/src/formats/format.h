@@ -1,4 +1,5 @@
-// Small text helpers shared by the report writers.
+// Value formatting shared by the report writers: numbers, lists, escapes (core's granlub/text.h is the
+// case text's guard, another thing).
 #pragma once
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include "formats/text.h"
+#include "formats/format.h"
 
 #include <cmath>
 
