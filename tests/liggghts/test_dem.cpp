@@ -311,6 +311,23 @@ BOOST_AUTO_TEST_CASE(run_length_in_shear_strain_with_a_cap) {
     BOOST_TEST(time_with("strain = 0") == t0);                                // off
 }
 
+// [dem] neighbor_skin: the deck's neighbour skin in grain diameters; the old name skin reads the same,
+// with a warning.
+BOOST_AUTO_TEST_CASE(neighbor_skin_in_diameters_and_its_old_name) {
+    auto resolved = [](const std::string& key) {
+        const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\n" + key + " = 0.5"), "tiny.toml", schema());
+        return std::pair{dem::resolve_settings(c, c.points.front(), RunOptions{}).skin_m, c.warnings};
+    };
+    const auto [now, now_warnings] = resolved("neighbor_skin");
+    const auto [old, old_warnings] = resolved("skin");
+    const Case base = parse_case(kCase, "tiny.toml", schema());
+    BOOST_TEST(now == 0.5 * base.grains.diameter);
+    BOOST_TEST(old == now);
+    BOOST_TEST(now_warnings.empty());
+    BOOST_REQUIRE_EQUAL(old_warnings.size(), 1u);
+    BOOST_TEST(old_warnings[0].find("[dem] skin is the old name of neighbor_skin") != std::string::npos, old_warnings[0]);
+}
+
 // The wall-force and plate-position readers: comments and blank lines skipped, rows parsed, and a
 // bad line named by file and line number.
 BOOST_AUTO_TEST_CASE(output_readers_parse_rows_and_name_bad_lines) {

@@ -35,7 +35,7 @@ const std::pair<std::string, std::string> kElasticGrains{kGrains85.first,
                                                          "restitution = 1.0\nfriction = 0.5\n\n[walls]"};
 const std::pair<std::string, std::string> kElasticWalls{kMixedWalls.first,
                                                         "[walls]\nrestitution = 1.0\nfriction = 0.5\nroughness = 0.5\n"};
-const char* kHertzFine = "model = \"hertz\"\ndt = 1e-8\n";
+const char* kHertzFine = "model = \"hertz\"\ntime_step = 1e-8\n";
 
 // Hertz contact duration of an elastic head-on impact (Johnson 1985, eq. 11.24):
 // t = 2.868 (m*^2 / (R* E*^2 v))^(1/5), E* = 1 / ((1 - nu^2)/E x 2) for two glass bodies.

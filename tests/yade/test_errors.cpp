@@ -120,7 +120,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs_are_rejected_before_yade_starts) {
     ScopedEnv env("GRANLUB_YADE", fake_launcher(dir, "touch '" + marker.string() + "'; exit 0").string());
     const auto root = dir / "results";
     // a time step too large for the contact, more grains than fit, too few plate updates under load
-    const Case c1 = tiny_case("", "", "dt = 5e-6\n");
+    const Case c1 = tiny_case("", "", "time_step = 5e-6\n");
     const Case c2 = tiny_case_edits({{"annulus_radius = 0.0762", "annulus_radius = 0.0762\nmax_solid_fraction = 0.74"},
                                      {"solid_fraction = 0.5", "solid_fraction = 0.73"}},
                                     "");

@@ -65,9 +65,9 @@ BOOST_AUTO_TEST_CASE(hertz_time_step_is_a_rayleigh_fraction) {
 }
 
 BOOST_AUTO_TEST_CASE(too_large_time_step_is_rejected) {
-    const Case c = tiny_case("", "", "dt = 2e-6\n");
+    const Case c = tiny_case("", "", "time_step = 2e-6\n");
     const std::string e = error_of([&] { resolve_settings(c, c.points.at(0), RunOptions{}); });
-    BOOST_TEST(has(e, "[yade] dt"));
+    BOOST_TEST(has(e, "[yade] time_step"));
     BOOST_TEST(has(e, "contact_time"));
     BOOST_TEST(has(e, "case.toml"));
 }
@@ -180,19 +180,27 @@ BOOST_AUTO_TEST_CASE(window_servo_capped_and_refused_where_it_would_ram) {
     BOOST_TEST(sr.bumps_top.has_value());
 }
 
-// verlet_distance reaches the driver's collider; outside (0, 5] it is refused by name.
-BOOST_AUTO_TEST_CASE(collider_verlet_distance) {
+// neighbor_skin reaches the driver's collider (its verletDist in smallest radii, the same number); outside
+// (0, 5] it is refused by name; the old names verlet_distance and dt still read, with a warning each.
+BOOST_AUTO_TEST_CASE(collider_neighbor_skin) {
     const ParticleBox box{0.03, 0.004, 0.019, false};
     const Case d = tiny_case();
     const Settings sd = resolve_settings(d, d.points.at(0), RunOptions{});
     BOOST_TEST(couette_params(d, d.points.at(0), sd, box, "/tmp/p.csv").at("run").at("verlet_distance").get<double>() ==
                0.2);
-    const Case c = tiny_case("", "", "verlet_distance = 0.5\n");
+    const Case c = tiny_case("", "", "neighbor_skin = 0.5\n");
     const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
     BOOST_TEST(couette_params(c, c.points.at(0), s, box, "/tmp/p.csv").at("run").at("verlet_distance").get<double>() ==
                0.5);
-    BOOST_TEST(has(error_of([] { tiny_case("", "", "verlet_distance = 0\n"); }), "verlet_distance"));
-    BOOST_TEST(has(error_of([] { tiny_case("", "", "verlet_distance = 6\n"); }), "verlet_distance"));
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "neighbor_skin = 0\n"); }), "neighbor_skin"));
+    BOOST_TEST(has(error_of([] { tiny_case("", "", "neighbor_skin = 6\n"); }), "neighbor_skin"));
+    const Case old = tiny_case("", "", "verlet_distance = 0.5\ndt = 5e-7\n");
+    const Settings so = resolve_settings(old, old.points.at(0), RunOptions{});
+    BOOST_TEST(so.neighbor_skin == 0.5);
+    BOOST_TEST(so.time_step == 5e-7);
+    BOOST_REQUIRE_EQUAL(old.warnings.size(), 2u);
+    BOOST_TEST(has(old.warnings[0] + old.warnings[1], "[yade] verlet_distance is the old name of neighbor_skin"));
+    BOOST_TEST(has(old.warnings[0] + old.warnings[1], "[yade] dt is the old name of time_step"));
 }
 
 BOOST_AUTO_TEST_CASE(load_control_runs_whole_servo_windows_and_snapshot_intervals) {

@@ -40,7 +40,7 @@ nlohmann::json settings_json(const Settings& s) {
                             {"sample_every", s.sample_every},
                             {"snapshot_every", s.snapshot_every},
                             {"body_force_every", s.body_force_every},
-                            {"verlet_distance", s.verlet_distance},
+                            {"verlet_distance", s.neighbor_skin},
                             {"stations", s.stations},
                             {"blocks", s.blocks},
                             {"seed", s.insertion.seed},

@@ -78,7 +78,7 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
                 {"sample_every", s.sample_every},
                 {"snapshot_every", s.snapshot_every},
                 {"body_force_every", s.body_force_every},
-                {"verlet_distance", s.verlet_distance},
+                {"verlet_distance", s.neighbor_skin},  // the driver's verletDist = -value
                 {"persistence_every", s.persistence_every},  // after the run (flow_regime.h)
                 {"persistence_intervals", s.persistence_intervals}};
     j["initial_file"] = fs::absolute(initial_file).string();

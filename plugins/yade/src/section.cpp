@@ -18,18 +18,21 @@ SectionSpec section() {
            "viscel: mass given to the walls (ViscElMat needs one for the right reduced mass)");
     s.boolean("calibrate_restitution", true,
               "viscel: search e_n so that a binary collision in YADE gives the case's restitution");
-    s.real("dt", 0.0, Range::non_negative(), "s",
-           "time step; 0 = contact_time/20 (viscel) or 0.15 Rayleigh times (hertz, as granlub dem; at most 0.3)");
+    s.real("time_step", 0.0, Range::non_negative(), "s",
+           "time step; 0 = contact_time/20 (viscel) or 0.15 Rayleigh times (hertz, as granlub dem; at most 0.3)")
+        .old_names({"dt"});
     s.real("time", 1.5e-3, Range::positive(), "s",
            "simulated time of a quick run (3000 steps, ~45 s of YADE per sawyer2001 point with viscel)");
     s.real("time_full", 0.2, Range::positive(), "s", "simulated time with --full");
     add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)
     s.integer("body_force_every", 50, Range::closed(1, 1e8),
               "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");
-    s.real("verlet_distance", 0.2, Range::open_closed(0, 5), "",
-           "collider's Verlet distance in smallest grain radii (InsertionSortCollider.verletDist = -value): "
-           "contacts are sought this far ahead and the collider reruns when a grain has moved further; "
-           "exact at any value, the cost is not (YADE's own 0.5 costs 25 % more on sawyer2001)");
+    s.real("neighbor_skin", 0.2, Range::open_closed(0, 5), "",
+           "neighbour skin as in [dem]: pairs closer than contact plus this gap are tracked, in diameters of the "
+           "smallest grain. YADE enlarges each grain's bound by half of it (InsertionSortCollider.verletDist = "
+           "-value smallest radii) and reruns the collider when a grain has moved that far; exact at any value, "
+           "the cost is not (YADE's own 0.5 costs 25 % more on sawyer2001)")
+        .old_names({"verlet_distance"});
     s.real("timeout", 0.0, Range::non_negative(), "s",
            "wall-clock limit of one YADE run; 0 = 600 s + 100 us per grain-step (a guard against hangs, generous for shared machines)");
     s.choice("start", "cold", {"cold", "warm"},

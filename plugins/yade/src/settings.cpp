@@ -44,15 +44,15 @@ void resolve_window_servo(const Case& c, const OperatingPoint& p, const Section&
                                r.sample_every));
 }
 
-// [yade] dt, or the law's rule (contact_laws.h) with dt = 0; checked against the rule's limit.
+// [yade] time_step, or the law's rule (contact_laws.h) with dt = 0; checked against the rule's limit.
 double law_time_step(const Case& c, const Section& s, const ContactLaw& law, double contact_time) {
-    const double given = s.real("dt");
+    const double given = s.real("time_step");
     switch (law.step) {
     case StepRule::ContactTime: {
         const double dt = given == 0 ? contact_time / 20.0 : given;
         if (dt > contact_time / 10.0)
-            s.fail("dt", fmt::format("too large for contact_time = {:g} s: a contact needs at least 10 steps "
-                                     "(allowed: dt <= {:g} s, or 0 for contact_time/20)",
+            s.fail("time_step", fmt::format("too large for contact_time = {:g} s: a contact needs at least 10 steps "
+                                     "(allowed: time_step <= {:g} s, or 0 for contact_time/20)",
                                      contact_time, contact_time / 10.0));
         return dt;
     }
@@ -60,8 +60,8 @@ double law_time_step(const Case& c, const Section& s, const ContactLaw& law, dou
         const double tr = c.grains.rayleigh_time();
         const double dt = given == 0 ? kHertzStepFraction * tr : given;
         if (dt > kHertzMaxStepFraction * tr)
-            s.fail("dt", fmt::format("too large for Hertz contacts of these grains (Rayleigh time {:g} s) "
-                                     "(allowed: dt <= {:g} s, or 0 for {} Rayleigh times)",
+            s.fail("time_step", fmt::format("too large for Hertz contacts of these grains (Rayleigh time {:g} s) "
+                                     "(allowed: time_step <= {:g} s, or 0 for {} Rayleigh times)",
                                      tr, kHertzMaxStepFraction * tr, kHertzStepFraction));
         return dt;
     }
@@ -85,7 +85,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     r.calibrate_restitution = s.boolean("calibrate_restitution");
     r.sample_every = s.integer("sample_every");
     r.body_force_every = s.integer("body_force_every");
-    r.verlet_distance = s.real("verlet_distance");
+    r.neighbor_skin = s.real("neighbor_skin");
     r.stations = s.integer("stations");
     r.blocks = s.integer("blocks");
     r.timeout = s.real("timeout");

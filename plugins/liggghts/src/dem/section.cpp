@@ -63,7 +63,10 @@ SectionSpec section() {
            "control, sqrt(12 P / (pi rho)) (the load's push on one grain over one diameter)");
     s.real("hertz_step_fraction", kHertzStepFraction, Range::open_closed(0, kHertzMaxStepFraction), "",
            "hertz model: time step as a fraction of the Rayleigh time");
-    s.real("skin", 0.25, Range::positive(), "", "neighbour-list skin in grain diameters");
+    s.real("neighbor_skin", 0.25, Range::positive(), "",
+           "neighbour skin: pairs closer than contact plus this gap are listed (LIGGGHTS' neighbor skin), in grain "
+           "diameters (the case's d); the list is rebuilt when a grain has moved half of it")
+        .old_names({"skin"});
     s.choice("ring_walls", "primitive", {"primitive", "mesh"},
              "[cell] geometry = annulus: 'primitive' = all four walls exact (fix wall/gran/moving: the floor and "
              "both cylinders turning in place, the top a plane the servo moves); 'mesh' = STL meshes (ring_facet), "

@@ -149,7 +149,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     resolve_run_length(c, p, o, s, st);
     st.stations = static_cast<std::size_t>(s.integer("stations"));
     st.blocks = static_cast<std::size_t>(s.integer("blocks"));
-    st.skin_m = s.real("skin") * c.grains.diameter;
+    st.skin_m = s.real("neighbor_skin") * c.grains.diameter;
     st.refine_dt = s.boolean("refine_dt");
     st.refine_time = s.real("refine_time");
     if (st.refine_dt) try {  // a refine_time too short fails now, not after the full-step run

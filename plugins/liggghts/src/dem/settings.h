@@ -39,7 +39,7 @@ struct Settings : ServoSettings {
     std::int64_t snapshot_every = 0;  // particle snapshots for coarse-graining, steps
     std::size_t stations = 0;     // coarse-graining slabs across the gap
     std::size_t blocks = 0;       // blocks for standard errors
-    double skin_m = 0;            // neighbour skin, m ([dem] skin is in grain diameters)
+    double skin_m = 0;            // neighbour skin, m ([dem] neighbor_skin is in grain diameters)
     std::uint64_t seed = 0;       // [particles] seed (--seed overrides); every key-set field is set by resolve_settings
     double velocity_noise = 0;
     bool vtk = false;

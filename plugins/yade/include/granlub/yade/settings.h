@@ -26,13 +26,13 @@ struct Settings {
     double tangential_restitution = 0;     // viscel: e_t
     double wall_mass = 0;                  // viscel: kg
     bool calibrate_restitution = false;    // viscel: e_n such that a binary collision gives e
-    double time_step = 0;                  // s, resolved (never 0; [yade] dt)
+    double time_step = 0;                  // s, resolved (never 0; [yade] time_step)
     double time = 0;                       // s, the run length the case asks for (time or time_full)
     std::int64_t steps = 0;                // multiple of sample_every and of snapshot_every
     std::int64_t sample_every = 0;         // steps per wall-force mean
     std::int64_t snapshot_every = 0;       // steps between particle snapshots
     std::int64_t body_force_every = 0;     // steps between centripetal-force refreshes
-    double verlet_distance = 0;            // collider's Verlet distance, smallest grain radii
+    double neighbor_skin = 0;              // smallest diameters; the collider's verletDist in smallest radii
     std::int64_t stations = 0;
     std::int64_t blocks = 0;
     double timeout = 0;                    // s; 0 = from the run size
