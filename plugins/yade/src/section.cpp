@@ -1,5 +1,7 @@
-// The [yade] case section: one line per key (type, default, range, unit, doc).
+// The [yade] case section: one line per key (type, default, range, unit, doc) and, for a plain key,
+// the Settings field it fills (granlub/case/bound_keys.h; resolve_settings() reads them in one loop).
 #include "granlub/yade/command.h"
+#include "granlub/yade/settings.h"
 
 #include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particle_section.h"
@@ -7,16 +9,19 @@
 
 namespace granlub::yade {
 
-SectionSpec section() {
-    SectionSpec s("yade", "YADE cross-check of the particle simulation (plugins/yade)");
+namespace {
+
+BoundKeys<Settings> declare() {
+    BoundKeys<Settings> k(SectionSpec("yade", "YADE cross-check of the particle simulation (plugins/yade)"));
+    SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
     s.choice("model", "viscel", contact_law_names(ParticleEngine::Yade),
              "contact law (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Yade));
-    s.real("contact_time", 1e-5, Range::positive(), "s", "viscel: binary contact duration t_c");
-    s.real("tangential_restitution", 0.01, Range::open_closed(0, 1), "",
+    k.real("contact_time", &Settings::contact_time, 1e-5, Range::positive(), "s", "viscel: binary contact duration t_c");
+    k.real("tangential_restitution", &Settings::tangential_restitution, 0.01, Range::open_closed(0, 1), "",
            "viscel: tangential restitution e_t (small: sliding stops when slip vanishes)");
-    s.real("wall_mass", 1e3, Range::positive(), "kg",
+    k.real("wall_mass", &Settings::wall_mass, 1e3, Range::positive(), "kg",
            "viscel: mass given to the walls (ViscElMat needs one for the right reduced mass)");
-    s.boolean("calibrate_restitution", true,
+    k.boolean("calibrate_restitution", &Settings::calibrate_restitution, true,
               "viscel: search e_n so that a binary collision in YADE gives the case's restitution");
     s.real("time_step", 0.0, Range::non_negative(), "s",
            "time step; 0 = contact_time/20 (viscel) or 0.15 Rayleigh times (hertz, as granlub dem; at most 0.3)")
@@ -25,15 +30,15 @@ SectionSpec section() {
            "simulated time of a quick run (3000 steps, ~45 s of YADE per sawyer2001 point with viscel)");
     s.real("time_full", 0.2, Range::positive(), "s", "simulated time with --full");
     add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)
-    s.integer("body_force_every", 50, Range::closed(1, 1e8),
+    k.integer("body_force_every", &Settings::body_force_every, 50, Range::closed(1, 1e8),
               "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");
-    s.real("neighbor_skin", 0.2, Range::open_closed(0, 5), "",
+    k.real("neighbor_skin", &Settings::neighbor_skin, 0.2, Range::open_closed(0, 5), "",
            "neighbour skin as in [dem]: pairs closer than contact plus this gap are tracked, in diameters of the "
            "smallest grain. YADE enlarges each grain's bound by half of it (InsertionSortCollider.verletDist = "
            "-value smallest radii) and reruns the collider when a grain has moved that far; exact at any value, "
            "the cost is not (YADE's own 0.5 costs 25 % more on sawyer2001)")
         .old_names({"verlet_distance"});
-    s.real("timeout", 0.0, Range::non_negative(), "s",
+    k.real("timeout", &Settings::timeout, 0.0, Range::non_negative(), "s",
            "wall-clock limit of one YADE run; 0 = 600 s + 100 us per grain-step (a guard against hangs, generous for shared machines)");
     s.choice("start", "cold", {"cold", "warm"},
              "initial grains: cold = the shared initial file ([particles]); warm = granlub dem's final "
@@ -43,13 +48,23 @@ SectionSpec section() {
              "control = load: weight = a loaded plate free along y (mass: plate_mass), pressed by P A, one rigid "
              "body with a rough top's bumps; window = granlub dem's servo (the plate moved every servo_every steps "
              "by servo_gain, capped at one grain-plate overlap at the load: slow on soft contacts)");
-    s.real("plate_mass", 1.0, Range::positive(), "",
+    k.real("plate_mass", &Settings::plate_mass, 1.0, Range::positive(), "",
            "servo_plate = \"weight\": the plate's mass as a multiple of the grains' (a numerical choice: a light "
            "plate follows the bed within a millisecond, a dead weight P A / g oscillates for tens of ms)");
     add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
     add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/particles/servo.h)
+    k.bind("sample_every", &Settings::sample_every).bind("stations", &Settings::stations).bind("blocks", &Settings::blocks);
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with dem
-    return s;
+    return k;
 }
+
+}  // namespace
+
+const BoundKeys<Settings>& yade_keys() {
+    static const BoundKeys<Settings> keys = declare();
+    return keys;
+}
+
+SectionSpec section() { return yade_keys().spec; }
 
 }  // namespace granlub::yade

@@ -78,20 +78,10 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
                                    p.id));
     const Section& s = c.section("yade");
     Settings r;
+    yade_keys().read(r, s);  // the plain keys (src/section.cpp)
     r.law = &contact_law(s.string("model"));
-    r.contact_time = s.real("contact_time");
-    r.tangential_restitution = s.real("tangential_restitution");
-    r.wall_mass = s.real("wall_mass");
-    r.calibrate_restitution = s.boolean("calibrate_restitution");
-    r.sample_every = s.integer("sample_every");
-    r.body_force_every = s.integer("body_force_every");
-    r.neighbor_skin = s.real("neighbor_skin");
-    r.stations = s.integer("stations");
-    r.blocks = s.integer("blocks");
-    r.timeout = s.real("timeout");
     r.warm_start = s.string("start") == "warm";
     r.weight_plate = s.string("servo_plate") == "weight";
-    r.plate_mass = s.real("plate_mass");
 
     // The initial grains of `granlub dem` too: [particles] is one section for both engines.
     const ParticleStart start = particle_start(c, p, o.seed);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "granlub/case/bound_keys.h"
 #include "granlub/case/case.h"
 #include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particles.h"
@@ -19,7 +20,8 @@
 namespace granlub::yade {
 
 // Every field that a [yade] key sets is set by resolve_settings() from that key: the key's
-// default, range and doc are the schema's (src/section.cpp), so none is restated here.
+// default, range and doc are the schema's (src/section.cpp), so none is restated here. A plain
+// key is this field and its line in src/section.cpp, which names the field (yade_keys()).
 struct Settings {
     const ContactLaw* law = nullptr;       // [yade] model, a row of granlub/particles/contact_laws.h
     double contact_time = 0;               // viscel: t_c, s
@@ -66,5 +68,8 @@ struct Settings {
 // steps are whole servo windows and whole snapshot intervals (rounded up).
 // Throws CaseError (file, key, value, what is allowed) for settings that cannot work.
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o);
+
+// The [yade] section with each plain key's field (src/section.cpp); section() is its spec.
+const BoundKeys<Settings>& yade_keys();
 
 }  // namespace granlub::yade
