@@ -1,5 +1,7 @@
-// The [dem] case section: one line per key (type, default, range, unit, doc). Apart from the
-// engine pipeline so that it compiles with core alone (the case-parser fuzzer builds it).
+// The [dem] case section: one line per key (type, default, range, unit, doc) and, for a plain key,
+// the Settings field it fills (granlub/case/bound_keys.h; resolve_settings() reads them in one
+// loop). Apart from the engine pipeline so that it compiles with core alone (the case-parser fuzzer
+// builds it).
 #include "granlub/dem/command.h"
 #include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particle_section.h"
@@ -8,43 +10,46 @@
 
 namespace granlub::dem {
 
-SectionSpec section() {
-    SectionSpec s("dem", "particle simulation in LIGGGHTS (granlub-liggghts)");
+namespace {
+
+BoundKeys<Settings> declare() {
+    BoundKeys<Settings> k(SectionSpec("dem", "particle simulation in LIGGGHTS (granlub-liggghts)"));
+    SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
     s.choice("model", "impulse", contact_law_names(ParticleEngine::Liggghts),
              "contact model (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Liggghts));
-    s.real("beta0", 0.0, Range::closed(-1, 1), "",
+    k.real("beta0", &Settings::beta0, 0.0, Range::closed(-1, 1), "",
            "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
-    s.boolean("separate_overlaps", true,
+    k.boolean("separate_overlaps", &Settings::separate, true,
               "impulse model: also remove overlaps by moving grains apart (our assumption, not S&T's; "
               "without it enduring contacts sink into each other)");
-    s.real("bounce_speed", 0.0, Range::closed(0, 1e3), "m/s",
+    k.real("bounce_speed", &Settings::bounce_speed, 0.0, Range::closed(0, 1e3), "m/s",
            "impulse model: restitution only for approach speeds above this (below, e = 0); 0 = at every speed "
            "(our assumption, not S&T's)");
     s.choice("contact_solve", "single_pass", {"single_pass", "iterated"},
              "impulse model: 'single_pass' = Sawyer & Tichy's operator (each contact resolved once per step, in "
              "sequence); 'iterated' = all contacts of a step solved together to convergence (fix impulse/solve: "
              "projected Gauss-Seidel, warm start, overlaps corrected by pseudo-velocities; our addition)");
-    s.boolean("impact_time", false,
+    k.boolean("impact_time", &Settings::impact_time, false,
               "contact_solve = 'single_pass': apply each impact at its time within the step (grains moved by the "
               "distance their new velocity covers since the surfaces met), not at the step's end as Sawyer & Tichy "
               "do; removes the single pass's first-order flight-timing error (plugin doc gran_model_impulse)");
     s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
-    s.boolean("speculative", false,
+    k.boolean("speculative", &Settings::speculative, false,
               "contact_solve = 'single_pass': also act on grains and walls close but not yet touching, so that "
               "surfaces meeting within the step stop at contact (restitution on a real impact) and no overlap is "
               "made at the contact (speculative contacts; plugin doc gran_model_impulse); does not remove the loaded "
               "cells' time-step error (docs/measurements/liggghts.md) and costs about 1.6x the single pass");
     s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
-    s.real("solve_tolerance", 1e-4, Range::closed(1e-12, 0.5), "",
+    k.real("solve_tolerance", &Settings::solve_tolerance, 1e-4, Range::closed(1e-12, 0.5), "",
            "contact_solve = 'iterated': stop when the largest impulse change of a sweep is at most this times the "
            "largest normal impulse of the step");
-    s.integer("solve_iterations", 200, Range::closed(1, 100000),
+    k.integer("solve_iterations", &Settings::solve_iterations, 200, Range::closed(1, 100000),
               "contact_solve = 'iterated': at most this many sweeps per step (velocities, and positions, each)");
-    s.boolean("refine_dt", false,
+    k.boolean("refine_dt", &Settings::refine_dt, false,
               "check every point's time step: a run at the full step (folder dt_full/), then the point's answer at "
               "half the step; run.dt_refinement compares them, each output carries dt_error = |value(dt) - "
               "value(dt/2)|, and a point that moves more than the rule allows is dt-unconverged");
-    s.real("refine_time", 0.0, Range::non_negative(), "s",
+    k.real("refine_time", &Settings::refine_time, 0.0, Range::non_negative(), "s",
            "refine_dt: 0 = the half-step run is cold, the whole `time` from the initial grains; > 0 = this long, "
            "warm-started from the full-step run's final state (cheaper, but a layered packing keeps the full "
            "step's state: on sawyer2001 it missed the cold run's answer by 3-6 standard errors at 1.4 and 2 m/s)");
@@ -76,8 +81,19 @@ SectionSpec section() {
            "meshes' facets per circle follow from the outer wall's circumference; ring_walls = 'mesh' only)");
     add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
     add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/particles/servo.h)
+    k.bind("sample_every", &Settings::sample_every).bind("snapshots", &Settings::snapshots);
+    k.bind("stations", &Settings::stations).bind("blocks", &Settings::blocks);
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with yade
-    return s;
+    return k;
 }
+
+}  // namespace
+
+const BoundKeys<Settings>& dem_keys() {
+    static const BoundKeys<Settings> keys = declare();
+    return keys;
+}
+
+SectionSpec section() { return dem_keys().spec; }
 
 }  // namespace granlub::dem

@@ -26,13 +26,10 @@ double impulse_reference_speed(const Case& c, const OperatingPoint& p) {
 
 namespace {
 
-// The contact law and its options: model, beta0 ... solve_iterations. The impulse options are
-// refused with a law that has none (contact_laws.h, impulse_options).
+// The contact law and the checks of its options (beta0 ... solve_iterations, read by dem_keys()):
+// the impulse options are refused with a law that has none (contact_laws.h, impulse_options).
 void read_contact(const Section& s, Settings& st) {
     st.law = &contact_law(s.string("model"));
-    st.beta0 = s.real("beta0");
-    st.separate = s.boolean("separate_overlaps");
-    st.bounce_speed = s.real("bounce_speed");
     const bool impulse = st.law->impulse_options;
     st.iterated = s.string("contact_solve") == "iterated";
     if (st.iterated && !impulse)
@@ -40,17 +37,13 @@ void read_contact(const Section& s, Settings& st) {
                                             "forces come from springs): use contact_solve = 'single_pass' or model = "
                                             "'impulse'",
                                             st.law->name));
-    st.impact_time = s.boolean("impact_time");
     if (st.impact_time && (!impulse || st.iterated))
         s.fail("impact_time", "true is an option of the impulse model's single pass: it needs model = 'impulse' and "
                               "contact_solve = 'single_pass' (allowed: false with any model, true with those two)");
-    st.speculative = s.boolean("speculative");
     if (st.speculative && (!impulse || st.iterated || st.impact_time))
         s.fail("speculative", "true is an option of the impulse model's single pass: it needs model = 'impulse', "
                               "contact_solve = 'single_pass' and impact_time = false (allowed: false with any "
                               "model, true with those three)");
-    st.solve_tolerance = s.real("solve_tolerance");
-    st.solve_iterations = s.integer("solve_iterations");
 }
 
 // The time step by the law's rule (contact_laws.h): derived from the case, or given and checked.
@@ -98,7 +91,6 @@ void resolve_run_length(const Case& c, const OperatingPoint& p, const RunOptions
                                                           "allowed",
                                                           st.time, steps, st.time_step, kMaxSteps));
     st.steps = static_cast<std::int64_t>(steps);
-    st.sample_every = s.integer("sample_every");
     static_cast<ServoSettings&>(st) = resolve_servo(c, p, s, st.sample_every, st.time_step, st.steps);
     st.plate_gain = st.servo_gain;
     if (st.load && st.law->stiffness == Stiffness::Hertz) {
@@ -110,7 +102,6 @@ void resolve_run_length(const Case& c, const OperatingPoint& p, const RunOptions
                fmt::format("{:g} s is {} steps of {:g} s: fewer than 20 wall-stress samples of {} steps "
                            "(sample_every); run longer",
                            st.time, st.steps, st.time_step, st.sample_every));
-    st.snapshots = s.integer("snapshots");
     st.snapshot_every = std::max<std::int64_t>(1, st.steps / st.snapshots);
 }
 
@@ -132,6 +123,7 @@ void resolve_ring(const Case& c, const Section& s, Settings& st) {
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const Section& s = c.section("dem");
     Settings st;
+    dem_keys().read(st, s);  // the plain keys (section.cpp)
     read_contact(s, st);
     const ParticleStart start = particle_start(c, p, o.seed);
     st.ring = c.cell.ring();
@@ -147,11 +139,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
                                              c.cell.annulus_radius, 0.5 * st.box.width));
     st.time_step = law_time_step(c, p, s, *st.law);
     resolve_run_length(c, p, o, s, st);
-    st.stations = static_cast<std::size_t>(s.integer("stations"));
-    st.blocks = static_cast<std::size_t>(s.integer("blocks"));
     st.skin_m = s.real("neighbor_skin") * c.grains.diameter;
-    st.refine_dt = s.boolean("refine_dt");
-    st.refine_time = s.real("refine_time");
     if (st.refine_dt) try {  // a refine_time too short fails now, not after the full-step run
             (void)refine_settings(st);
         } catch (const CaseError& e) {

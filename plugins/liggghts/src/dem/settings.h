@@ -9,6 +9,7 @@
 
 #include "granlub/particles/annulus.h"
 #include "granlub/particles/contact_laws.h"
+#include "granlub/case/bound_keys.h"
 #include "granlub/case/case.h"
 #include "granlub/particles/particles.h"
 #include "granlub/particles/servo.h"
@@ -89,6 +90,10 @@ struct Settings : ServoSettings {
 
 // Reads [dem], derives and checks the time step (throws CaseError naming the key).
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o);
+
+// The [dem] section with each plain key's field (section.cpp); section() is its spec. A plain key
+// is its field here and its line there.
+const BoundKeys<Settings>& dem_keys();
 
 // The same run at half the time step: the same simulated time, blocks, snapshots, servo windows
 // and persistence interval in seconds, twice the steps.
