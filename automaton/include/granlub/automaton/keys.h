@@ -2,6 +2,8 @@
 // src/section.cpp, with its default, range and doc (the schema) and the field it fills; from that
 // one line the case mapping reads it, validate() checks the field's range, Params() takes its
 // default and the summary records it. A new key is its field in params.h and its line there.
+// core's BoundKeys (granlub/case/bound_keys.h) is the same idea for [dem] and [yade], without the
+// --full/--vtk pairing and the summary's getters this table needs.
 #pragma once
 #include <functional>
 #include <optional>
