@@ -43,6 +43,7 @@ struct ImpulseContact {
   double en[3];        // unit normal from j (or the wall) to i
   double ri, rj;       // radii; rj = 0 for a wall
   double overlap;      // r_i + r_j - |x_i - x_j| (wall: r_i - distance), > 0 or 0
+  double gap;          // speculative on: the surfaces' distance of a close, not touching contact (> 0), else 0
   double e;            // coefficientRestitution of the two types
   double bounce;       // bounce_speed: restitution only above this approach speed
   double mu;           // coefficientFriction (0 without tangential impulse)
@@ -80,6 +81,8 @@ public:
     contacts_.push_back(ImpulseContact());  // capacity is kept across steps: no allocation once warm
     return contacts_.back();
   }
+
+  inline ImpulseContact & last_contact() { return contacts_.back(); }
 
   // tangential impulse: friction of the contact just added by model impulse
   inline void set_friction(double mu, double beta0) {

@@ -19,6 +19,9 @@
 //    restitution to whatever approach speed it sees, gravity's too). t_s = -beta0 v_s(u) is
 //    Walton's tangential restitution applied the same way (our choice: Walton 1993 defines it
 //    for a binary impact; beta0 = 0, the default, is the stick limit of Sawyer & Tichy 2001).
+//  * speculative on (the models' setting): contacts within the contact distance that do not touch
+//    yet come with their gap g > 0 and the target t_n = -g/dt (the gap may close, not overlap), or
+//    Newton's -e v_n(u) if the surfaces meet within the step (prepare).
 //  * Projected Gauss-Seidel over the contacts with accumulated, clamped impulses (Jean 1999,
 //    the NLGS of LMGC90; Catto 2005, "Iterative dynamics with temporal coherence", GDC, sequential
 //    impulses): each contact in turn changes its impulses to meet its law with the others
@@ -393,6 +396,12 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
         const double load = c.history ? c.history[kHistLoad] * (im[i] + (wall ? 0.0 : im[j])) : 0.0;
         const bool impact = -vn > c.bounce && (restitution_all_ || (!enduring && -vn > rest_factor_ * load));
         c.tn = vn < 0.0 && impact ? -c.e * vn : 0.0;
+        // speculative on: a close contact with gap g > 0 (impulse_speculative.h). Signorini with the gap
+        // at the velocity level (Moreau 1988, CISM 302:1, the index set on y + h ydot; Jean 1999, CMAME
+        // 177:235): the next move may close the gap but not overlap, v_n' >= -g/dt; restitution only if
+        // the surfaces, arriving as they are, meet within the step (v_n dt < -g; Catto's speculative
+        // contacts), as the single pass's speculative rule.
+        if (c.gap > 0.0 && !(c.tn > 0.0 && vn * dt < -c.gap)) c.tn = -c.gap / dt;
         c.impact = c.tn > 0.0;
         const double ws[3] = {c.ri * wi[0] + c.rj * wj[0], c.ri * wi[1] + c.rj * wj[1], c.ri * wi[2] + c.rj * wj[2]};
         double exw[3];

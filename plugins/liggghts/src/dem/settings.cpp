@@ -39,10 +39,10 @@ Settings resolve(const Case& c, const OperatingPoint& p, const RunOptions& o) {
         s.fail("impact_time", "true is an option of the impulse model's single pass: it needs model = 'impulse' and "
                               "contact_solve = 'single_pass' (allowed: false with any model, true with those two)");
     st.speculative = s.boolean("speculative");
-    if (st.speculative && (st.model != Model::Impulse || st.iterated || st.impact_time))
-        s.fail("speculative", "true is an option of the impulse model's single pass: it needs model = 'impulse', "
-                              "contact_solve = 'single_pass' and impact_time = false (allowed: false with any "
-                              "model, true with those three)");
+    if (st.speculative && (st.model != Model::Impulse || st.impact_time))
+        s.fail("speculative", "true is an option of the impulse model (single pass or iterated): it needs model = "
+                              "'impulse' and impact_time = false (allowed: false with any model, true with those "
+                              "two)");
     st.solve_tolerance = s.real("solve_tolerance");
     st.solve_iterations = s.integer("solve_iterations");
     const ParticleStart start = particle_start(c, p, o.seed);
