@@ -338,7 +338,7 @@ namespace ContactModels
       const double gap = close_geometry(sidata);
       if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
       collect(sidata);
-      sink->last_contact().gap = gap;
+      sink->mark_close(gap);
     }
 
     // iterate on: the contact, for fix impulse/solve; no force here. Only a real force pass
