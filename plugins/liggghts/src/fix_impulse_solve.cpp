@@ -544,62 +544,13 @@ bool FixImpulseSolve::all_done(double change, double scale) {
     return global[0] <= tolerance_ * global[1];
 }
 
-int FixImpulseSolve::solve_velocities(int nlocal) {
+// One sweep over the step's contacts: the boundary pairs all from the end of the previous sweep
+// (as the grain's other owner does), then the others in sequence, each seeing the changes before
+// it. rebound (speculative on, after the solve): only the impacts, each with its rebound target
+// and its friction (prepare). change, vchange: the largest impulse change and relative-velocity
+// change (squared).
+void FixImpulseSolve::sweep_contacts(bool rebound, double& change, double& vchange) {
     static const double zero[3] = {0.0, 0.0, 0.0};
-    double* const vel = &vel_[0];
-    double* const omg = &omg_[0];
-    const double* const im = &im_[0];
-    const double* const ii = &ii_[0];
-    Contact* const cs = contacts_.empty() ? NULL : &contacts_[0];
-    const int n = static_cast<int>(contacts_.size());
-    const int nb = static_cast<int>(boundary_.size());
-    const int* const bidx = boundary_.empty() ? NULL : &boundary_[0];
-    (void)nlocal;
-    int sweep = 0;
-    last_change_ = 0.0;
-    while (sweep < iterations_) {
-        ++sweep;
-        double change = 0.0, scale = 0.0, vchange = 0.0;  // vchange: of a relative velocity (squared)
-        // boundary pairs: all from the end of the previous sweep, as the grain's other owner does
-        for (int b = 0; b < nb; b++) {
-            Contact& c = cs[bidx[b]];
-            const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, vel + 3 * c.j, omg + 3 * c.j, c.dn, c.dt);
-            if (m > change) change = m;
-            if (m > 0.0 && m > vchange * c.mn * c.mn) vchange = m / (c.mn * c.mn);
-        }
-        for (int b = 0; b < nb; b++) {
-            const Contact& c = cs[bidx[b]];
-            kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
-        }
-        // the others in sequence, each seeing the changes before it
-        for (int k = 0; k < n; k++) {
-            Contact& c = cs[k];
-            if (c.boundary) continue;
-            const bool wall = c.j < 0;
-            const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, wall ? c.vwall : vel + 3 * c.j,
-                                            wall ? zero : omg + 3 * c.j, c.dn, c.dt);
-            if (m > change) change = m;
-            if (m == 0.0) continue;
-            if (m > vchange * c.mn * c.mn) vchange = m / (c.mn * c.mn);  // the change of velocity it made
-            kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
-            if (!wall) kick(vel + 3 * c.j, omg + 3 * c.j, im[c.j], ii[c.j], c.rj, c.en, c.dn, c.dt, -1.0);
-        }
-        for (int k = 0; k < n; k++)
-            if (cs[k].pn > scale) scale = cs[k].pn;
-        if (any_boundary_) forward(kCommVelocity);
-        if (velocities_done(std::sqrt(change), scale, std::sqrt(vchange))) break;  // the largest squares
-    }
-    if (speculative_) rebound(nlocal);
-    return sweep;
-}
-
-// speculative on: after the solve, one sequential pass gives each impact its rebound (target trest,
-// prepare), with accumulated, clamped impulses and friction in its Coulomb disc; boundary pairs first
-// and at once, as in a sweep. An isolated impact: the solve stops it, this pass gives -e v_n: the
-// single pass's velocities (test_liggghts_speculative).
-void FixImpulseSolve::rebound(int nlocal) {
-    static const double zero[3] = {0.0, 0.0, 0.0};
-    (void)nlocal;
     double* const vel = &vel_[0];
     double* const omg = &omg_[0];
     const double* const im = &im_[0];
@@ -610,30 +561,62 @@ void FixImpulseSolve::rebound(int nlocal) {
     const int* const bidx = boundary_.empty() ? NULL : &boundary_[0];
     for (int b = 0; b < nb; b++) {
         Contact& c = cs[bidx[b]];
-        c.dn = 0.0;
-        c.dt[0] = c.dt[1] = c.dt[2] = 0.0;
-        if (!(c.trest > 0.0)) continue;
-        c.tn = c.trest;
-        c.mu = c.mu_close;
-        contact_change(c, vel + 3 * c.i, omg + 3 * c.i, vel + 3 * c.j, omg + 3 * c.j, c.dn, c.dt);
+        if (rebound) {
+            if (!(c.trest > 0.0)) continue;
+            c.tn = c.trest;
+            c.mu = c.mu_close;
+        }
+        const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, vel + 3 * c.j, omg + 3 * c.j, c.dn, c.dt);
+        if (m > change) change = m;
+        if (m > 0.0 && m > vchange * c.mn * c.mn) vchange = m / (c.mn * c.mn);
     }
     for (int b = 0; b < nb; b++) {
         const Contact& c = cs[bidx[b]];
-        if (c.trest > 0.0) kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
+        if (rebound && !(c.trest > 0.0)) continue;
+        kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
     }
     for (int k = 0; k < n; k++) {
         Contact& c = cs[k];
-        if (c.boundary || !(c.trest > 0.0)) continue;
-        c.tn = c.trest;
-        c.mu = c.mu_close;
+        if (c.boundary) continue;
+        if (rebound) {
+            if (!(c.trest > 0.0)) continue;
+            c.tn = c.trest;
+            c.mu = c.mu_close;
+        }
         const bool wall = c.j < 0;
         const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, wall ? c.vwall : vel + 3 * c.j,
                                         wall ? zero : omg + 3 * c.j, c.dn, c.dt);
+        if (m > change) change = m;
         if (m == 0.0) continue;
+        if (m > vchange * c.mn * c.mn) vchange = m / (c.mn * c.mn);  // the change of velocity it made
         kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
         if (!wall) kick(vel + 3 * c.j, omg + 3 * c.j, im[c.j], ii[c.j], c.rj, c.en, c.dn, c.dt, -1.0);
     }
     if (any_boundary_) forward(kCommVelocity);
+}
+
+int FixImpulseSolve::solve_velocities(int nlocal) {
+    const Contact* const cs = contacts_.empty() ? NULL : &contacts_[0];
+    const int n = static_cast<int>(contacts_.size());
+    (void)nlocal;
+    int sweep = 0;
+    last_change_ = 0.0;
+    while (sweep < iterations_) {
+        ++sweep;
+        double change = 0.0, scale = 0.0, vchange = 0.0;  // vchange: of a relative velocity (squared)
+        sweep_contacts(false, change, vchange);
+        for (int k = 0; k < n; k++)
+            if (cs[k].pn > scale) scale = cs[k].pn;
+        if (velocities_done(std::sqrt(change), scale, std::sqrt(vchange))) break;  // the largest squares
+    }
+    // speculative on: after the solve, one sequential pass gives each impact its rebound, with
+    // accumulated, clamped impulses and friction in its Coulomb disc. An isolated impact: the solve
+    // stops it, this pass gives -e v_n: the single pass's velocities (test_liggghts_speculative).
+    if (speculative_) {
+        double change = 0.0, vchange = 0.0;
+        sweep_contacts(true, change, vchange);
+    }
+    return sweep;
 }
 
 // Pseudo-velocities (split impulses): the same sweeps on the normal rows only, targets from the
