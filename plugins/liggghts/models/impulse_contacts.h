@@ -43,6 +43,7 @@ struct ImpulseContact {
   double en[3];        // unit normal from j (or the wall) to i
   double ri, rj;       // radii; rj = 0 for a wall
   double overlap;      // r_i + r_j - |x_i - x_j| (wall: r_i - distance), > 0 or 0
+  double gap;          // speculative on: the surfaces' distance of a close, not touching contact (> 0), else 0
   double e;            // coefficientRestitution of the two types
   double bounce;       // bounce_speed: restitution only above this approach speed
   double mu;           // coefficientFriction (0 without tangential impulse)
@@ -60,6 +61,8 @@ struct ImpulseContact {
   double mn;           // normal effective mass
   double kt;           // 1 / (tangential inverse mass)
   double tn;           // target normal velocity
+  double trest;        // speculative on: Newton's target of an impact, applied after the solve (0: none)
+  double mu_close;     // speculative on: mu, kept while a close contact's friction waits for the rebound pass
   double tt[3];        // target slip
   double pn, pt[3];    // accumulated impulses
   double dn, dt[3];    // the change of this sweep (boundary contacts: applied after all were computed)
@@ -74,12 +77,16 @@ public:
   virtual ~ImpulseContactSink() {}
 
   // the pair style's pass starts every step's collection (pair gran runs before the walls)
-  inline void begin_collection() { contacts_.clear(); }
+  inline void begin_collection() { contacts_.clear(); speculative_ = false; }
 
   inline ImpulseContact & add_contact() {
     contacts_.push_back(ImpulseContact());  // capacity is kept across steps: no allocation once warm
     return contacts_.back();
   }
+
+  // speculative on: a close contact with its gap, just added (the step's solve then applies
+  // restitution after the solve: fix_impulse_solve.cpp)
+  inline void mark_close(double gap) { contacts_.back().gap = gap; speculative_ = true; }
 
   // tangential impulse: friction of the contact just added by model impulse
   inline void set_friction(double mu, double beta0) {
@@ -89,7 +96,9 @@ public:
   }
 
 protected:
+  ImpulseContactSink() : speculative_(false) {}
   std::vector<ImpulseContact> contacts_;
+  bool speculative_;  // this step's contacts include close ones (speculative on)
 };
 
 // The solver a model hands its contacts to: the deck's own fix impulse/solve if it has one, else

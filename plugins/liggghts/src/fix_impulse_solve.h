@@ -41,6 +41,7 @@ private:
     void grow(int nall);
     void prepare(double dt, int nlocal);
     int solve_velocities(int nlocal);
+    void sweep_contacts(bool rebound, double& change, double& vchange);
     int solve_positions(double dt, int nlocal);
     void apply_forces(double dt, int nlocal, bool store_history);
     void forward(int mode);

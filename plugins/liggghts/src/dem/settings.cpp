@@ -45,10 +45,10 @@ void read_contact(const Section& s, Settings& st) {
         s.fail("impact_time", "true is an option of the impulse model's single pass: it needs model = 'impulse' and "
                               "contact_solve = 'single_pass' (allowed: false with any model, true with those two)");
     st.speculative = s.boolean("speculative");
-    if (st.speculative && (!impulse || st.iterated || st.impact_time))
-        s.fail("speculative", "true is an option of the impulse model's single pass: it needs model = 'impulse', "
-                              "contact_solve = 'single_pass' and impact_time = false (allowed: false with any "
-                              "model, true with those three)");
+    if (st.speculative && (!impulse || st.impact_time))
+        s.fail("speculative", "true is an option of the impulse model (single pass or iterated): it needs model = "
+                              "'impulse' and impact_time = false (allowed: false with any model, true with those "
+                              "two)");
     st.solve_tolerance = s.real("solve_tolerance");
     st.solve_iterations = s.integer("solve_iterations");
 }
