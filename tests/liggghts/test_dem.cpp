@@ -285,7 +285,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
     {  // speculative with the iterated solve: accepted, and the deck says so
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ncontact_solve = \"iterated\"\nspeculative = true"),
                                   "tiny.toml", schema());
-        const auto s = dem::resolve(c, c.points.front(), RunOptions{});
+        const auto s = dem::resolve_settings(c, c.points.front(), RunOptions{});
         BOOST_TEST(s.iterated);
         BOOST_TEST(s.speculative);
     }
