@@ -27,6 +27,8 @@
 //    largest change of any impulse in a sweep is at most `tolerance` times the largest normal
 //    impulse of the step (all ranks), or `iterations` sweeps. An isolated contact converges in
 //    one sweep to the single pass's answer: the collision tests hold to 1e-12 either way.
+//  * Active set (ours, switchable: active_set): after a step's first sweep only the contacts of
+//    grains the previous sweep moved beyond the stopping rules are solved (build_adjacency).
 //  * Warm start (Catto 2005): each contact starts from its impulses of the previous step, kept
 //    in LIGGGHTS' contact history, which follows the pair across neighbour rebuilds and ranks.
 //  * Overlaps (`separate on`) are corrected with pseudo-velocities (split impulses: Catto 2006,
@@ -533,10 +535,9 @@ bool FixImpulseSolve::all_done(double change, double scale) {
 // move since it was last solved would not change. After the first sweep, a sweep solves only the
 // contacts of the grains that a contact moved in the previous sweep by more than both stopping
 // rules allow (an impulse change above `tolerance` of the largest normal impulse and a relative
-// velocity change above `velocity_tolerance` of the velocity scale); the others already meet
-// a rule. A settling bed's sweeps then follow the
-// grains still moving instead of every contact of the bed (measured: plugin README, "LIGGGHTS'
-// tutorials").
+// velocity change above `velocity_tolerance` of the velocity scale); the others already meet a
+// rule. A settling bed's sweeps then follow the grains still moving instead of every contact of the
+// bed (measured: plugin README, "LIGGGHTS' tutorials"). Boundary pairs are solved in every sweep.
 void FixImpulseSolve::build_adjacency(int nlocal) {
     const int n = static_cast<int>(contacts_.size());
     adj_start_.assign(static_cast<std::size_t>(nlocal) + 1, 0);
