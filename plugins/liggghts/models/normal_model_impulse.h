@@ -400,7 +400,7 @@ namespace ContactModels
       modify->add_fix(3, args);
       if (comm->me == 0) {
         const std::string msg = "model impulse: iterate on (the default): made 'fix " + id + " all impulse/solve' "
-                                "with its defaults (thermo_style can read its state as f_" + id + "[1..9]; a fix "
+                                "with its defaults (thermo_style can read its state as f_" + id + "[1..10]; a fix "
                                 "impulse/solve the deck writes takes over); 'iterate off' is Sawyer & Tichy's single "
                                 "pass\n";
         if (screen) fputs(msg.c_str(), screen);
