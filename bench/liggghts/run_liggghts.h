@@ -9,11 +9,13 @@
 #include <cstdio>
 #include <regex>
 #include <string>
+#include <vector>
 
 namespace granlub::bench {
 
 struct Measured {
     double loop_s = 0;      // loop time of the timed (last) run, wall clock
+    std::vector<double> loops;  // the loop times of every run of the deck, in order (its phases)
     double cpu_s = 0;       // user + sys CPU of the whole process tree (all runs, all ranks)
     double atoms = 0;
     double steps = 0;       // timed steps
@@ -65,6 +67,7 @@ inline Measured run_liggghts(const std::string& dir, const std::string& deck, co
     size_t last = std::string::npos;
     for (auto it = std::sregex_iterator(out.begin(), out.end(), loop); it != std::sregex_iterator(); ++it) {
         m.loop_s = std::stod((*it)[1].str());
+        m.loops.push_back(m.loop_s);
         m.atoms = std::stod((*it)[3].str());
         last = static_cast<size_t>(it->position(0));
     }

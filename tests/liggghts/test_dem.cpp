@@ -267,10 +267,9 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
             BOOST_TEST(std::string(e.what()).find("contact_solve") != std::string::npos, e.what());
         }
     }
-    // impact_time and speculative: options of the single pass only (speculative: without impact_time)
+    // impact_time: an option of the single pass only; speculative: of the impulse model without impact_time
     for (const auto& [combo, key] : {std::pair{"contact_solve = \"iterated\"\nimpact_time = true", "impact_time"},
                                      std::pair{"model = \"hertz\"\nimpact_time = true", "impact_time"},
-                                     std::pair{"contact_solve = \"iterated\"\nspeculative = true", "speculative"},
                                      std::pair{"model = \"hertz\"\nspeculative = true", "speculative"},
                                      std::pair{"impact_time = true\nspeculative = true", "speculative"}}) {
         const Case c = parse_case(edit(kCase, "\\[dem\\]", std::string("[dem]\n") + combo), "tiny.toml", schema());
@@ -280,8 +279,15 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
         } catch (const CaseError& e) {
             const std::string w = e.what();
             BOOST_TEST(w.find(key) != std::string::npos, w);
-            BOOST_TEST(w.find("single_pass") != std::string::npos, w);
+            BOOST_TEST(w.find("allowed") != std::string::npos, w);
         }
+    }
+    {  // speculative with the iterated solve: accepted, and the deck says so
+        const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ncontact_solve = \"iterated\"\nspeculative = true"),
+                                  "tiny.toml", schema());
+        const auto s = dem::resolve_settings(c, c.points.front(), RunOptions{});
+        BOOST_TEST(s.iterated);
+        BOOST_TEST(s.speculative);
     }
     {  // a time step that lets grains tunnel
         const Case c = parse_case(edit(kCase, "\\[dem\\]", "[dem]\ntime_step = 1e-4"), "tiny.toml", schema());

@@ -154,8 +154,9 @@ BOOST_AUTO_TEST_CASE(values_out_of_range_stop_with_the_plugins_error) {
         {"correction 1.5", "correction must be a number in (0, 1]"},
         {"rest_factor -1", "rest_factor must be a number in [0, 100]"},
         {"rest_factor 101", "rest_factor must be a number in [0, 100]"},
+        {"active_set some", "active_set must be yes or no; got 'some'"},
         {"tol 1e-3", "unknown keyword 'tol' (tolerance, iterations, warm_start, restitution, rest_factor, slop, correction, "
-                     "velocity_tolerance, overlap_limit, overlaps)"},
+                     "velocity_tolerance, active_set, overlap_limit, overlaps)"},
     };
     int k = 0;
     for (const Bad& b : bad)

@@ -37,34 +37,39 @@ enum ImpulseHistory { kHistPn = 0, kHistPt = 1, kHistStep = 4, kHistLoad = 5, kI
 static const char* const kMadeSolverId = "granlub_impulse_solve";
 
 struct ImpulseContact {
-  // --- filled by the contact models when the contact is found ---
-  int i;               // the grain (owned by this rank)
-  int j;               // the other grain (owned or ghost); -1 for a wall
-  double en[3];        // unit normal from j (or the wall) to i
-  double ri, rj;       // radii; rj = 0 for a wall
-  double overlap;      // r_i + r_j - |x_i - x_j| (wall: r_i - distance), > 0 or 0
-  double e;            // coefficientRestitution of the two types
-  double bounce;       // bounce_speed: restitution only above this approach speed
-  double mu;           // coefficientFriction (0 without tangential impulse)
-  double beta0;        // Walton's tangential restitution (tangential impulse)
-  double vwall[3];     // a wall's velocity at the contact (0 for grain pairs)
-  double delta[3];     // a mesh wall: the contact vector LIGGGHTS hands to the mesh's stress
-  double * history;    // kImpulseHistoryValues values in the contact history, or NULL
-  double * wallforce;  // a wall with store_force: the wall's force on grain i this step, or NULL
-  LAMMPS_NS::FixMeshSurface * mesh;  // a mesh wall: the mesh (per-element forces), or NULL
-  int tri;             // the mesh element
-  bool separate;       // `separate on`: correct the overlap (pseudo-velocities)
-  // --- the solver's state ---
-  bool boundary;       // a grain pair with j a ghost (periodic image or another rank's)
-  bool impact;         // restitution acts on this contact this step
-  double mn;           // normal effective mass
-  double kt;           // 1 / (tangential inverse mass)
-  double tn;           // target normal velocity
-  double tt[3];        // target slip
-  double pn, pt[3];    // accumulated impulses
-  double dn, dt[3];    // the change of this sweep (boundary contacts: applied after all were computed)
-  double b;            // target separating pseudo-velocity (overlap correction)
-  double q;            // accumulated pseudo-impulse
+  // Fields read in every velocity sweep come first, together (one or two cache lines per contact:
+  // the sweeps are the solver's hot loop). F: filled by the contact models when the contact is
+  // found; S: the solver's state.
+  int i;               // F: the grain (owned by this rank)
+  int j;               // F: the other grain (owned or ghost); -1 for a wall
+  double en[3];        // F: unit normal from j (or the wall) to i
+  double ri, rj;       // F: radii; rj = 0 for a wall
+  double mu;           // F: coefficientFriction (0 without tangential impulse)
+  double mn;           // S: normal effective mass
+  double wn;           // S: its inverse, 1/m_i + 1/m_j (0 between two kinematic atoms)
+  double kt;           // S: 1 / (tangential inverse mass)
+  double tn;           // S: target normal velocity
+  double tt[3];        // S: target slip
+  double pn, pt[3];    // S: accumulated impulses
+  double vwall[3];     // F: a wall's velocity at the contact (0 for grain pairs)
+  bool boundary;       // S: a grain pair with j a ghost (periodic image or another rank's)
+  bool impact;         // S: restitution acts on this contact this step
+  bool separate;       // F: `separate on`: correct the overlap (pseudo-velocities)
+  int tri;             // F: the mesh element
+  double overlap;      // F: r_i + r_j - |x_i - x_j| (wall: r_i - distance), > 0 or 0
+  double gap;          // F: speculative on: the surfaces' distance of a close, not touching contact (> 0), else 0
+  double e;            // F: coefficientRestitution of the two types
+  double bounce;       // F: bounce_speed: restitution only above this approach speed
+  double beta0;        // F: Walton's tangential restitution (tangential impulse)
+  double delta[3];     // F: a mesh wall: the contact vector LIGGGHTS hands to the mesh's stress
+  double * history;    // F: kImpulseHistoryValues values in the contact history, or NULL
+  double * wallforce;  // F: a wall with store_force: the wall's force on grain i this step, or NULL
+  LAMMPS_NS::FixMeshSurface * mesh;  // F: a mesh wall: the mesh (per-element forces), or NULL
+  double dn, dt[3];    // S: the change of this sweep (boundary contacts: applied after all were computed)
+  double b;            // S: target separating pseudo-velocity (overlap correction)
+  double q;            // S: accumulated pseudo-impulse
+  double trest;        // S: speculative on: Newton's target of an impact, applied after the solve (0: none)
+  double mu_close;     // S: speculative on: mu, kept while a close contact's friction waits for the rebound pass
 };
 
 // The contacts of one step, filled by the models and read by the solver. A model reaches it
@@ -74,12 +79,16 @@ public:
   virtual ~ImpulseContactSink() {}
 
   // the pair style's pass starts every step's collection (pair gran runs before the walls)
-  inline void begin_collection() { contacts_.clear(); }
+  inline void begin_collection() { contacts_.clear(); speculative_ = false; }
 
   inline ImpulseContact & add_contact() {
     contacts_.push_back(ImpulseContact());  // capacity is kept across steps: no allocation once warm
     return contacts_.back();
   }
+
+  // speculative on: a close contact with its gap, just added (the step's solve then applies
+  // restitution after the solve: fix_impulse_solve.cpp)
+  inline void mark_close(double gap) { contacts_.back().gap = gap; speculative_ = true; }
 
   // tangential impulse: friction of the contact just added by model impulse
   inline void set_friction(double mu, double beta0) {
@@ -89,7 +98,9 @@ public:
   }
 
 protected:
+  ImpulseContactSink() : speculative_(false) {}
   std::vector<ImpulseContact> contacts_;
+  bool speculative_;  // this step's contacts include close ones (speculative on)
 };
 
 // The solver a model hands its contacts to: the deck's own fix impulse/solve if it has one, else

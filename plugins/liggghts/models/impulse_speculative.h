@@ -1,6 +1,9 @@
 /* ----------------------------------------------------------------------
-    granlub: `speculative on` of model impulse / tangential impulse (the
-    single pass, iterate off): contacts activated on their predicted gap.
+    granlub: `speculative on` of model impulse / tangential impulse:
+    contacts activated on their predicted gap. Below, the single pass's rule
+    (iterate off); with iterate on the close contacts go to fix impulse/solve
+    with their gap (normal_model_impulse.h collect_close; the solve's rule:
+    fix_impulse_solve.cpp, prepare).
 
     The single pass finds a contact only once the surfaces overlap, after
     the step's move, and `separate` pushes the grains apart afterwards; in a

@@ -140,9 +140,6 @@ namespace ContactModels
       if (impactTime && iterate)
         error->all(FLERR, "model impulse: impact_time on is an option of the single pass: it needs 'iterate off' "
                           "(allowed: impact_time off with iterate on or off, impact_time on with iterate off)");
-      if (speculative && iterate)
-        error->all(FLERR, "model impulse: speculative on is an option of the single pass: it needs 'iterate off' "
-                          "(allowed: speculative off with iterate on or off, speculative on with iterate off)");
       if (speculative && impactTime)
         error->all(FLERR, "model impulse: speculative on and impact_time on are two alternatives of the single pass "
                           "(allowed: at most one of them on)");
@@ -222,7 +219,9 @@ namespace ContactModels
     {
       if (scdata.contact_flags)
         *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
-      if (speculative) speculate(scdata, i_forces, j_forces);
+      if (!speculative) return;
+      if (iterate) collect_close(scdata);
+      else speculate(scdata, i_forces, j_forces);
     }
 
     // iterate on: the pair style's pass (once per step, before the walls') starts the step's contacts
@@ -286,24 +285,7 @@ namespace ContactModels
       SurfacesIntersectData & sidata = static_cast<SurfacesIntersectData &>(scdata);
       sidata.Fn = 0.0;
       if (!sidata.computeflag) return;  // compute pair/gran/local's re-run: no impulse twice
-      const int i = sidata.i;
-      double gap;
-      if (sidata.is_wall) {
-        gap = sidata.r - sidata.radi;
-      } else {
-        const int j = sidata.j;
-        const double r = std::sqrt(sidata.rsq);
-        sidata.r = r;
-        sidata.rinv = 1.0 / r;
-        for (int d = 0; d < 3; d++) sidata.en[d] = sidata.delta[d] / r;
-        sidata.mi = atom->rmass[i];
-        sidata.mj = atom->rmass[j];
-        sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
-        sidata.omega_i = atom->omega[i];
-        sidata.omega_j = atom->omega[j];
-        gap = r - sidata.radi - sidata.radj;
-      }
-      if (gap < 0.0) gap = 0.0;
+      const double gap = close_geometry(sidata);
       // the approach speed with the impulses resolved so far this step (as surfacesIntersect)
       const double dt = update->dt;
       double vn = 0.0;
@@ -318,6 +300,45 @@ namespace ContactModels
       sidata.kn = sidata.kt = sidata.gamman = sidata.gammat = 0.0;
       sidata.has_force_update = true;
       add_normal_force(sidata, Fn, i_forces, j_forces);
+    }
+
+    // A close, not touching contact (surfacesClose): a pair's geometry and masses, which pair gran
+    // has not set (fix wall/gran has); returns the surfaces' gap (>= 0).
+    inline double close_geometry(SurfacesIntersectData & sidata) const
+    {
+      double gap;
+      if (sidata.is_wall) {
+        gap = sidata.r - sidata.radi;
+      } else {
+        const int i = sidata.i, j = sidata.j;
+        const double r = std::sqrt(sidata.rsq);
+        sidata.r = r;
+        sidata.rinv = 1.0 / r;
+        for (int d = 0; d < 3; d++) sidata.en[d] = sidata.delta[d] / r;
+        sidata.mi = atom->rmass[i];
+        sidata.mj = atom->rmass[j];
+        sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
+        sidata.omega_i = atom->omega[i];
+        sidata.omega_j = atom->omega[j];
+        gap = r - sidata.radi - sidata.radj;
+      }
+      return gap > 0.0 ? gap : 0.0;
+    }
+
+    // speculative on with iterate on: a close pair or wall contact goes to fix impulse/solve with its
+    // gap, every one within the contact distance (whether it closes is the solve's answer: the
+    // other contacts' impulses may push the grains together). Its history is kept across neighbour
+    // rebuilds like a touching contact's (the flag, as LIGGGHTS' capillary cohesion models do), so a
+    // contact pressed at a gap warm-starts.
+    inline void collect_close(SurfacesCloseData & scdata)
+    {
+      SurfacesIntersectData & sidata = static_cast<SurfacesIntersectData &>(scdata);
+      sidata.Fn = 0.0;
+      if (!sidata.computeflag) return;
+      const double gap = close_geometry(sidata);
+      if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+      collect(sidata);
+      sink->mark_close(gap);
     }
 
     // iterate on: the contact, for fix impulse/solve; no force here. Only a real force pass
@@ -339,6 +360,7 @@ namespace ContactModels
       c.e = coeffRest[sidata.itype][sidata.jtype];
       c.bounce = bounceSpeed;
       c.separate = separate;
+      c.gap = 0.0;
       c.history = sidata.contact_history ? sidata.contact_history + historyOffset : NULL;
       if (sidata.is_wall) {
         c.j = -1;
@@ -378,7 +400,7 @@ namespace ContactModels
       modify->add_fix(3, args);
       if (comm->me == 0) {
         const std::string msg = "model impulse: iterate on (the default): made 'fix " + id + " all impulse/solve' "
-                                "with its defaults (thermo_style can read its state as f_" + id + "[1..9]; a fix "
+                                "with its defaults (thermo_style can read its state as f_" + id + "[1..10]; a fix "
                                 "impulse/solve the deck writes takes over); 'iterate off' is Sawyer & Tichy's single "
                                 "pass\n";
         if (screen) fputs(msg.c_str(), screen);

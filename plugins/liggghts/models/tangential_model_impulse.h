@@ -192,7 +192,11 @@ namespace ContactModels
     {
       if (scdata.contact_flags)
         *scdata.contact_flags &= ~CONTACT_TANGENTIAL_MODEL;
-      if (!speculative || iterate) return;
+      if (!speculative) return;
+      if (iterate) {  // model impulse has just collected this close contact (a real force pass only)
+        if (scdata.computeflag && sink) sink->set_friction(coeffFrict[scdata.itype][scdata.jtype], beta0);
+        return;
+      }
       // speculative on: model impulse has just given this close pair a normal impulse (Fn > 0) or
       // none (Fn = 0); friction on it as on a touching contact (impulse_speculative.h). The pair is
       // not touching: its contact flag stays cleared.

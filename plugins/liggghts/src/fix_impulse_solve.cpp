@@ -19,6 +19,9 @@
 //    restitution to whatever approach speed it sees, gravity's too). t_s = -beta0 v_s(u) is
 //    Walton's tangential restitution applied the same way (our choice: Walton 1993 defines it
 //    for a binary impact; beta0 = 0, the default, is the stick limit of Sawyer & Tichy 2001).
+//  * speculative on (the models' setting): contacts within the contact distance that do not touch
+//    yet come with their gap g > 0 and the target t_n = -g/dt (the gap may close, not overlap), or
+//    Newton's -e v_n(u) if the surfaces meet within the step (prepare).
 //  * Projected Gauss-Seidel over the contacts with accumulated, clamped impulses (Jean 1999,
 //    the NLGS of LMGC90; Catto 2005, "Iterative dynamics with temporal coherence", GDC, sequential
 //    impulses): each contact in turn changes its impulses to meet its law with the others
@@ -27,6 +30,8 @@
 //    largest change of any impulse in a sweep is at most `tolerance` times the largest normal
 //    impulse of the step (all ranks), or `iterations` sweeps. An isolated contact converges in
 //    one sweep to the single pass's answer: the collision tests hold to 1e-12 either way.
+//  * Active set (ours, switchable: active_set): after a step's first sweep only the contacts of
+//    grains the previous sweep moved beyond the stopping rules are solved (build_adjacency).
 //  * Warm start (Catto 2005): each contact starts from its impulses of the previous step, kept
 //    in LIGGGHTS' contact history, which follows the pair across neighbour rebuilds and ranks.
 //  * Overlaps (`separate on`) are corrected with pseudo-velocities (split impulses: Catto 2006,
@@ -125,6 +130,7 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
       slop_(1e-4),
       correction_(1.0),
       velocity_tolerance_(0.1),
+      active_set_(true),
       vref_(0.0),
       overlap_limit_(0.05),
       overlap_error_(false),
@@ -140,6 +146,7 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
       run_steps_(0),
       run_sweeps_(0),
       run_capped_(0),
+      run_solved_(0),
       last_overlap_(0.0),
       run_max_overlap_(0.0),
       run_bad_steps_(0),
@@ -177,16 +184,18 @@ FixImpulseSolve::FixImpulseSolve(LAMMPS* lmp, int narg, char** arg)
             velocity_tolerance_ = number(error, "velocity_tolerance", val, 0.0, kMaxTolerance, false, "[0, 0.5] (0: off)");
         } else if (key == "overlap_limit") {
             overlap_limit_ = number(error, "overlap_limit", val, 0.0, 1.0, true, "(0, 1] (a fraction of r_i + r_j)");
+        } else if (key == "active_set") {
+            active_set_ = !second(error, "active_set", val, "yes", "no");
         } else if (key == "overlaps") {
             overlap_error_ = second(error, "overlaps", val, "warn", "error");
         } else {
             fail(error, "unknown keyword '" + key + "' (tolerance, iterations, warm_start, restitution, rest_factor, slop, "
-                        "correction, velocity_tolerance, overlap_limit, overlaps)");
+                        "correction, velocity_tolerance, active_set, overlap_limit, overlaps)");
         }
     }
     comm_forward = 7;  // kCommStart: velocity, spin, boundary-pair count
     vector_flag = 1;
-    size_vector = 9;
+    size_vector = 10;
     global_freq = 1;
     extvector = 0;
 }
@@ -265,7 +274,7 @@ void FixImpulseSolve::setup(int) {
     // the first half kick (pre_initial_integrate), so a run continues the previous one.
     setup_pending_ = true;
     setup_step_ = update->ntimestep;  // the step the previous run ended with
-    run_steps_ = run_sweeps_ = run_capped_ = 0;
+    run_steps_ = run_sweeps_ = run_capped_ = run_solved_ = 0;
     run_bad_steps_ = run_position_capped_ = warned_at_ = 0;
     run_max_overlap_ = 0.0;
     run_max_overlap_step_ = update->ntimestep;
@@ -368,6 +377,10 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
         const double dv = dt * im[i] * std::sqrt(f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]);
         if (dv > vref_) vref_ = dv;
     }
+    if (comm->nprocs > 1) {  // one scale for all ranks (the rule and the active set alike)
+        double mine = vref_;
+        MPI_Allreduce(&mine, &vref_, 1, MPI_DOUBLE, MPI_MAX, world);
+    }
     for (int k = 0; k < n; k++) {
         Contact& c = contacts_[k];
         const int i = c.i, j = c.j;
@@ -393,7 +406,29 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
         const double load = c.history ? c.history[kHistLoad] * (im[i] + (wall ? 0.0 : im[j])) : 0.0;
         const bool impact = -vn > c.bounce && (restitution_all_ || (!enduring && -vn > rest_factor_ * load));
         c.tn = vn < 0.0 && impact ? -c.e * vn : 0.0;
-        c.impact = c.tn > 0.0;
+        c.trest = 0.0;
+        if (speculative_) {
+            // speculative on: a close contact has gap g > 0 (impulse_speculative.h). Signorini with the
+            // gap at the velocity level (Moreau 1988, CISM 302:1, the index set on y + h ydot; Jean 1999,
+            // CMAME 177:235): the next move may close the gap but not overlap, v_n' >= -g/dt. Restitution
+            // only if the surfaces, arriving as they are, meet within the step (v_n dt < -g; as the single
+            // pass's speculative rule), and not inside the solve: with the gaps as constraints a closed
+            // column of grains cannot give every impact its rebound, and the accumulated impulses then
+            // grow to the cap (measured: docs/measurements/liggghts.md). The solve stops the impacts
+            // (target -g/dt, or 0 touching); one sequential pass after it gives each impact its rebound
+            // -e v_n (Catto's speculative contacts; Box2D's restitution after the solve). [ASSUMPTION] the
+            // order: ours.
+            // Friction acts on a close contact only in the rebound pass, on an impact (as the single pass's
+            // speculative impulse): in the solve its surfaces are apart. With friction there too the
+            // gaps lock a sheared packing (wedging: the wall-to-wall impulses grew 1000-fold within 100
+            // steps on the loaded periodic cell, measured: docs/measurements/liggghts.md). [ASSUMPTION]
+            c.mu_close = c.mu;
+            if (c.gap > 0.0) c.mu = 0.0;
+            const bool meets = c.gap > 0.0 ? vn * dt < -c.gap : true;
+            if (c.tn > 0.0 && meets) c.trest = c.tn;
+            c.tn = c.gap > 0.0 ? -c.gap / dt : 0.0;
+        }
+        c.impact = c.tn > 0.0 || c.trest > 0.0;
         const double ws[3] = {c.ri * wi[0] + c.rj * wj[0], c.ri * wi[1] + c.rj * wj[1], c.ri * wi[2] + c.rj * wj[2]};
         double exw[3];
         cross(en, ws, exw);
@@ -405,11 +440,12 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
         c.pt[0] = c.pt[1] = c.pt[2] = 0.0;
         c.q = 0.0;
         if (ai + aj == 0.0) {  // two kinematic atoms (or one against a wall): nothing to solve
-            c.mn = c.kt = c.tn = c.mu = 0.0;
+            c.mn = c.wn = c.kt = c.tn = c.mu = 0.0;
             c.separate = false;
             continue;
         }
         c.mn = 1.0 / (ai + aj);
+        c.wn = ai + aj;
         c.kt = 1.0 / (3.5 * (ai + aj));  // 1/m + r^2/I per grain, I = 2/5 m r^2
         if (!(warm_start_ && c.history && c.history[kHistStep] == previous)) continue;
         // warm start: last step's impulses, the tangential one in the present tangent plane and cone
@@ -506,10 +542,10 @@ inline void kick(double* vel, double* omg, double im, double ii, double r, const
 // impulse, or when no contact's relative velocity changed by more than `velocity_tolerance` of the
 // step's own velocity scale (all ranks).
 bool FixImpulseSolve::velocities_done(double change, double scale, double vchange) {
-    double local[4] = {change, scale, vchange, vref_}, global[4] = {change, scale, vchange, vref_};
-    if (comm->nprocs > 1) MPI_Allreduce(local, global, 4, MPI_DOUBLE, MPI_MAX, world);
+    double local[3] = {change, scale, vchange}, global[3] = {change, scale, vchange};
+    if (comm->nprocs > 1) MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_MAX, world);
     last_change_ = global[1] > 0.0 ? global[0] / global[1] : 0.0;
-    return global[0] <= tolerance_ * global[1] || global[2] <= velocity_tolerance_ * global[3];
+    return global[0] <= tolerance_ * global[1] || global[2] <= velocity_tolerance_ * vref_;
 }
 
 bool FixImpulseSolve::all_done(double change, double scale) {
@@ -517,6 +553,74 @@ bool FixImpulseSolve::all_done(double change, double scale) {
     if (comm->nprocs > 1) MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
     last_change_ = global[1] > 0.0 ? global[0] / global[1] : 0.0;
     return global[0] <= tolerance_ * global[1];
+}
+
+// speculative on, after the solve: one sequential pass over the impacts only, each with its
+// rebound target and its friction (prepare), the boundary pairs all from the end of the solve (as
+// the grain's other owner does), then the others in sequence, each seeing the changes before it.
+void FixImpulseSolve::rebound_pass() {
+    static const double zero[3] = {0.0, 0.0, 0.0};
+    double* const vel = &vel_[0];
+    double* const omg = &omg_[0];
+    const double* const im = &im_[0];
+    const double* const ii = &ii_[0];
+    Contact* const cs = contacts_.empty() ? NULL : &contacts_[0];
+    const int n = static_cast<int>(contacts_.size());
+    const int nb = static_cast<int>(boundary_.size());
+    const int* const bidx = boundary_.empty() ? NULL : &boundary_[0];
+    for (int b = 0; b < nb; b++) {
+        Contact& c = cs[bidx[b]];
+        if (!(c.trest > 0.0)) continue;
+        c.tn = c.trest;
+        c.mu = c.mu_close;
+        contact_change(c, vel + 3 * c.i, omg + 3 * c.i, vel + 3 * c.j, omg + 3 * c.j, c.dn, c.dt);
+    }
+    for (int b = 0; b < nb; b++) {
+        const Contact& c = cs[bidx[b]];
+        if (!(c.trest > 0.0)) continue;
+        kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
+    }
+    for (int k = 0; k < n; k++) {
+        Contact& c = cs[k];
+        if (c.boundary || !(c.trest > 0.0)) continue;
+        c.tn = c.trest;
+        c.mu = c.mu_close;
+        const bool wall = c.j < 0;
+        const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, wall ? c.vwall : vel + 3 * c.j,
+                                        wall ? zero : omg + 3 * c.j, c.dn, c.dt);
+        if (m == 0.0) continue;
+        kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
+        if (!wall) kick(vel + 3 * c.j, omg + 3 * c.j, im[c.j], ii[c.j], c.rj, c.en, c.dn, c.dt, -1.0);
+    }
+    if (any_boundary_) forward(kCommVelocity);
+}
+
+// The active set (active_set yes; our choice, the "selective" Gauss-Seidel of contact solvers): a
+// contact's change depends only on its two grains' velocities, so a contact whose grains did not
+// move since it was last solved would not change. After the first sweep, a sweep solves only the
+// contacts of the grains that a contact moved in the previous sweep by more than both stopping
+// rules allow (an impulse change above `tolerance` of the largest normal impulse and a relative
+// velocity change above `velocity_tolerance` of the velocity scale); the others already meet a
+// rule. A settling bed's sweeps then follow the grains still moving instead of every contact of the
+// bed (measured: plugin README, "LIGGGHTS' tutorials"). Boundary pairs are solved in every sweep.
+void FixImpulseSolve::build_adjacency(int nlocal) {
+    const int n = static_cast<int>(contacts_.size());
+    adj_start_.assign(static_cast<std::size_t>(nlocal) + 1, 0);
+    for (int k = 0; k < n; k++) {
+        const Contact& c = contacts_[k];
+        if (c.boundary) continue;
+        adj_start_[c.i + 1]++;
+        if (c.j >= 0) adj_start_[c.j + 1]++;
+    }
+    for (int a = 0; a < nlocal; a++) adj_start_[a + 1] += adj_start_[a];
+    adj_.resize(adj_start_[nlocal]);
+    fill_.assign(adj_start_.begin(), adj_start_.end() - 1);
+    for (int k = 0; k < n; k++) {
+        const Contact& c = contacts_[k];
+        if (c.boundary) continue;
+        adj_[fill_[c.i]++] = k;
+        if (c.j >= 0) adj_[fill_[c.j]++] = k;
+    }
 }
 
 int FixImpulseSolve::solve_velocities(int nlocal) {
@@ -529,41 +633,99 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
     const int n = static_cast<int>(contacts_.size());
     const int nb = static_cast<int>(boundary_.size());
     const int* const bidx = boundary_.empty() ? NULL : &boundary_[0];
-    (void)nlocal;
+    // the first sweep's work list: every contact but the boundary pairs, in order
+    work_.clear();
+    for (int k = 0; k < n; k++)
+        if (!cs[k].boundary) work_.push_back(k);
+    if (active_set_) {
+        build_adjacency(nlocal);
+        moved_.assign(static_cast<std::size_t>(nlocal), 0);
+        listed_.assign(contacts_.size(), 0);
+        marked_.clear();
+    }
+    // the largest normal impulse, kept exact as the active contacts change
+    double scale = 0.0;
+    for (int k = 0; k < n; k++)
+        if (cs[k].pn > scale) scale = cs[k].pn;
+    // the velocity rule's limit (velocity_tolerance of the step's velocity scale), squared
+    const double vlim2 = velocity_tolerance_ * vref_ * velocity_tolerance_ * vref_;
     int sweep = 0;
     last_change_ = 0.0;
     while (sweep < iterations_) {
         ++sweep;
-        double change = 0.0, scale = 0.0, vchange = 0.0;  // vchange: of a relative velocity (squared)
+        double change = 0.0, vchange = 0.0;  // vchange: of a relative velocity (squared)
+        const double ilim2 = tolerance_ * tolerance_ * scale * scale;
+        double top = 0.0;     // the largest normal impulse of the contacts solved in this sweep
+        bool lowered = false;  // a contact at the largest normal impulse went down: find it again
+        // a grain moved beyond both rules by a contact: its contacts are solved in the next sweep
+        auto mark = [&](int a) {
+            if (a < 0 || a >= nlocal || moved_[a] == sweep) return;
+            moved_[a] = sweep;
+            marked_.push_back(a);
+        };
         // boundary pairs: all from the end of the previous sweep, as the grain's other owner does
         for (int b = 0; b < nb; b++) {
             Contact& c = cs[bidx[b]];
             const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, vel + 3 * c.j, omg + 3 * c.j, c.dn, c.dt);
             if (m > change) change = m;
-            if (m > 0.0 && m > vchange * c.mn * c.mn) vchange = m / (c.mn * c.mn);
+            const double v2 = m * c.wn * c.wn;  // the change of relative velocity it made, squared
+            if (v2 > vchange) vchange = v2;
+            if (c.pn > top) top = c.pn;
+            if (c.pn < scale && c.pn - c.dn >= scale) lowered = true;
+            if (active_set_ && m > ilim2 && v2 > vlim2) mark(c.i);
         }
         for (int b = 0; b < nb; b++) {
             const Contact& c = cs[bidx[b]];
             kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
         }
         // the others in sequence, each seeing the changes before it
-        for (int k = 0; k < n; k++) {
-            Contact& c = cs[k];
-            if (c.boundary) continue;
+        const int nw = static_cast<int>(work_.size());
+        for (int w = 0; w < nw; w++) {
+            Contact& c = cs[work_[w]];
             const bool wall = c.j < 0;
+            double dn, dt[3];
             const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, wall ? c.vwall : vel + 3 * c.j,
-                                            wall ? zero : omg + 3 * c.j, c.dn, c.dt);
+                                            wall ? zero : omg + 3 * c.j, dn, dt);
+            if (c.pn > top) top = c.pn;
             if (m > change) change = m;
             if (m == 0.0) continue;
-            if (m > vchange * c.mn * c.mn) vchange = m / (c.mn * c.mn);  // the change of velocity it made
-            kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
-            if (!wall) kick(vel + 3 * c.j, omg + 3 * c.j, im[c.j], ii[c.j], c.rj, c.en, c.dn, c.dt, -1.0);
+            if (c.pn < scale && c.pn - dn >= scale) lowered = true;
+            const double v2 = m * c.wn * c.wn;  // the change of relative velocity it made, squared
+            if (v2 > vchange) vchange = v2;
+            kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, dn, dt, 1.0);
+            if (!wall) kick(vel + 3 * c.j, omg + 3 * c.j, im[c.j], ii[c.j], c.rj, c.en, dn, dt, -1.0);
+            if (active_set_ && m > ilim2 && v2 > vlim2) {
+                mark(c.i);
+                mark(c.j);
+            }
         }
-        for (int k = 0; k < n; k++)
-            if (cs[k].pn > scale) scale = cs[k].pn;
+        run_solved_ += nw + nb;
+        if (lowered) {
+            scale = 0.0;
+            for (int k = 0; k < n; k++)
+                if (cs[k].pn > scale) scale = cs[k].pn;
+        } else if (top > scale) {
+            scale = top;
+        }
         if (any_boundary_) forward(kCommVelocity);
         if (velocities_done(std::sqrt(change), scale, std::sqrt(vchange))) break;  // the largest squares
+        if (!active_set_) continue;
+        // the next sweep's work list: the contacts of the marked grains, grain by grain in the order
+        // they were marked (no sort: it cost more than the sweeps it ordered)
+        work_.clear();
+        for (const int a : marked_)
+            for (int e = adj_start_[a]; e < adj_start_[a + 1]; e++) {
+                const int k = adj_[e];
+                if (listed_[k] == sweep) continue;
+                listed_[k] = sweep;
+                work_.push_back(k);
+            }
+        marked_.clear();
     }
+    // speculative on: after the solve, one sequential pass gives each impact its rebound, with
+    // accumulated, clamped impulses and friction in its Coulomb disc. An isolated impact: the solve
+    // stops it, this pass gives -e v_n: the single pass's velocities (test_liggghts_speculative).
+    if (speculative_) rebound_pass();
     return sweep;
 }
 
@@ -573,12 +735,21 @@ int FixImpulseSolve::solve_positions(double dt, int nlocal) {
     const int n = static_cast<int>(contacts_.size());
     Contact* const cs = contacts_.empty() ? NULL : &contacts_[0];
     int mine = 0;
+    const double* const vel = &vel_[0];
     for (int k = 0; k < n; k++) {
         Contact& c = cs[k];
         const double excess = c.overlap - slop_ * (c.ri + c.rj);
         c.b = c.separate && excess > 0.0 ? correction_ * excess / dt : 0.0;
         c.q = 0.0;
         if (c.b > 0.0) mine = 1;
+        if (!(c.gap > 0.0)) continue;
+        // speculative on: a close contact may close what the solved velocities leave of its gap,
+        // g + dt v_n' >= 0, but not overlap: pseudo-velocity v_n >= -(g/dt + v_n') (<= 0)
+        const double* const vi = vel + 3 * c.i;
+        const double* const vj = c.j < 0 ? c.vwall : vel + 3 * c.j;
+        const double vn = (vi[0] - vj[0]) * c.en[0] + (vi[1] - vj[1]) * c.en[1] + (vi[2] - vj[2]) * c.en[2];
+        c.b = -(c.gap / dt + vn);
+        if (c.b > 0.0) c.b = 0.0;
     }
     int any = mine;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
@@ -717,7 +888,8 @@ void FixImpulseSolve::unpack_comm(int n, int first, double* buf) {
 // contacts of the last step (all ranks; a pair across ranks counts on both), 6 the last step's
 // final relative change (largest impulse change / largest normal impulse), 7 the last step's
 // largest overlap / (r_i + r_j), 8 steps of this run with an overlap beyond overlap_limit, 9 the
-// largest overlap of this run / (r_i + r_j).
+// largest overlap of this run / (r_i + r_j), 10 mean contact solves per step of this run (velocity
+// sweeps; with the active set fewer than sweeps times contacts).
 double FixImpulseSolve::compute_vector(int k) {
     if (superseded_) return active()->compute_vector(k);
     switch (k) {
@@ -734,6 +906,7 @@ double FixImpulseSolve::compute_vector(int k) {
         case 6: return last_overlap_;
         case 7: return static_cast<double>(run_bad_steps_);
         case 8: return run_max_overlap_;
+        case 9: return run_steps_ > 0 ? static_cast<double>(run_solved_) / static_cast<double>(run_steps_) : 0.0;
         default: return 0.0;
     }
 }

@@ -41,6 +41,8 @@ private:
     void grow(int nall);
     void prepare(double dt, int nlocal);
     int solve_velocities(int nlocal);
+    void build_adjacency(int nlocal);
+    void rebound_pass();
     int solve_positions(double dt, int nlocal);
     void apply_forces(double dt, int nlocal, bool store_history);
     void forward(int mode);
@@ -59,6 +61,7 @@ private:
     double slop_;         // overlap left uncorrected, fraction of r_i + r_j
     double correction_;   // fraction of the rest removed per step
     double velocity_tolerance_;  // ... or the largest velocity change / the step's velocity scale, to stop
+    bool active_set_;            // after the first sweep, solve only contacts whose grains moved
     double vref_;                // the step's velocity scale (this rank; prepare)
     double overlap_limit_;  // an overlap beyond this fraction of r_i + r_j was not removed: warn
     bool overlap_error_;    // ... or stop (keyword overlaps warn|error)
@@ -66,6 +69,10 @@ private:
     // per atom (owned and ghost), grown only: velocities being solved, inverse mass and inertia,
     // boundary-contact counts (mass splitting), pseudo-velocities
     std::vector<double> vel_, omg_, im_, ii_, split_, pv_;
+    // active set (solve_velocities): each owned grain's contacts (CSR: adj_start_, adj_), the sweep
+    // that last moved a grain beyond the stopping rules, the grains it moved, the sweep that listed a
+    // contact, and the sweep's work list (contact indices, in order)
+    std::vector<int> adj_start_, adj_, fill_, moved_, marked_, listed_, work_;
     std::vector<int> boundary_;  // indices of the boundary contacts of this step
     int comm_mode_;
     bool any_boundary_;          // on any rank: then ghosts are refreshed after every sweep
@@ -77,7 +84,7 @@ private:
     // statistics (compute_vector, post_run)
     int last_sweeps_, last_position_sweeps_;
     double last_change_;
-    bigint run_steps_, run_sweeps_, run_capped_;
+    bigint run_steps_, run_sweeps_, run_capped_, run_solved_;
     // overlaps (fix_impulse_solve_watch.cpp): the largest of the last step (fraction of r_i + r_j),
     // steps of this run with overlaps not removed, the largest of the run and its step, warnings
     double last_overlap_, run_max_overlap_;

@@ -135,7 +135,7 @@ ModelText model_text(const Settings& s) {
             fmt::format(" beta0 {} separate {}{}{}", s.beta0, s.separate ? "on" : "off",
                         s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "",
                         // iterate explicit: the model's default is on
-                        s.iterated      ? " iterate on"
+                        s.iterated      ? (s.speculative ? " iterate on speculative on" : " iterate on")
                         : s.impact_time ? " iterate off impact_time on"
                         : s.speculative ? " iterate off speculative on"
                                         : " iterate off")};

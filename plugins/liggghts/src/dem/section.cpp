@@ -35,10 +35,11 @@ BoundKeys<Settings> declare() {
               "do; removes the single pass's first-order flight-timing error (plugin doc gran_model_impulse)");
     s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
     k.boolean("speculative", &Settings::speculative, false,
-              "contact_solve = 'single_pass': also act on grains and walls close but not yet touching, so that "
-              "surfaces meeting within the step stop at contact (restitution on a real impact) and no overlap is "
-              "made at the contact (speculative contacts; plugin doc gran_model_impulse); does not remove the loaded "
-              "cells' time-step error (docs/measurements/liggghts.md) and costs about 1.6x the single pass");
+              "impulse model: also act on grains and walls close but not yet touching, so that surfaces meeting "
+              "within the step stop at contact (restitution on a real impact) and no overlap is made at the contact "
+              "(speculative contacts; plugin doc gran_model_impulse); with contact_solve = 'iterated' the close "
+              "contacts join the solve with their gap. Neither removes the loaded cells' time-step error "
+              "(docs/measurements/liggghts.md); cost: about 1.6x the single pass, and far more iterated");
     s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
     k.real("solve_tolerance", &Settings::solve_tolerance, 1e-4, Range::closed(1e-12, 0.5), "",
            "contact_solve = 'iterated': stop when the largest impulse change of a sweep is at most this times the "

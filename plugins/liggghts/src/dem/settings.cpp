@@ -40,10 +40,10 @@ void read_contact(const Section& s, Settings& st) {
     if (st.impact_time && (!impulse || st.iterated))
         s.fail("impact_time", "true is an option of the impulse model's single pass: it needs model = 'impulse' and "
                               "contact_solve = 'single_pass' (allowed: false with any model, true with those two)");
-    if (st.speculative && (!impulse || st.iterated || st.impact_time))
-        s.fail("speculative", "true is an option of the impulse model's single pass: it needs model = 'impulse', "
-                              "contact_solve = 'single_pass' and impact_time = false (allowed: false with any "
-                              "model, true with those three)");
+    if (st.speculative && (!impulse || st.impact_time))
+        s.fail("speculative", "true is an option of the impulse model (single pass or iterated): it needs model = "
+                              "'impulse' and impact_time = false (allowed: false with any model, true with those "
+                              "two)");
 }
 
 // The time step by the law's rule (contact_laws.h): derived from the case, or given and checked.
