@@ -1,4 +1,4 @@
-// The regime section of the report (postproc regime_section.h) end to end on synthetic results: a
+// The regime section of the report (postproc regimes.h) end to end on synthetic results: a
 // case that sweeps speed and load draws the map, the lift-off, mu(I) and tau(U) per load, says
 // which criterion decided each point and draws a transient hollow; a one-point case and a
 // speed-only sweep draw no map and say why.

@@ -7,7 +7,7 @@
 
 #include "granlub/postproc/command.h"
 #include "granlub/results/file_io.h"
-#include "figures/section_map.h"
+#include "figures/cross_section_map.h"
 #include "report/summary.h"
 #include "results/collect.h"
 #include "synthetic.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "figures/figures.h"
-#include "figures/section_map.h"
+#include "figures/cross_section_map.h"
 
 namespace granlub::postproc {
 

@@ -1,6 +1,6 @@
 // A solver's points in one figure, split by result state: the steady ones under `label`, then one
 // series per other state ("dem: transient"), drawn hollow and faded and left out of every fit (as
-// figures.cpp draws them). Used by the regime figures (regime_section.h) and figures.cpp.
+// figures.cpp draws them). Used by the regime figures (regimes.h) and figures.cpp.
 #pragma once
 #include <optional>
 #include <string>

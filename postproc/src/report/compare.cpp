@@ -16,7 +16,7 @@
 #include "granlub/postproc/command.h"
 #include "granlub/run/run_lock.h"
 #include "report/paraview.h"
-#include "report/regime_section.h"
+#include "report/regimes.h"
 #include "report/report_builder.h"
 #include "report/ring_slice.h"
 #include "results/collect.h"

@@ -18,7 +18,7 @@
 #include <vtkXMLMultiBlockDataWriter.h>
 
 #include "figures/figures.h"
-#include "figures/section_map.h"
+#include "figures/cross_section_map.h"
 #include "granlub/error.h"
 
 namespace granlub::postproc {

@@ -8,7 +8,7 @@
 #include "formats/format.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
-#include "report/regime_section.h"
+#include "report/regimes.h"
 #include "report/summary.h"
 #include "results/scope.h"
 #include "report/ring_slice.h"

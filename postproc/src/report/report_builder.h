@@ -21,7 +21,7 @@ struct FigureGroup {
 struct ReportFigures {
     std::vector<FigureGroup> groups;    // the registry's rows drawn, in its order (figures/registry.h)
     std::vector<FigureRef> ring_slice;  // ring_slice.h
-    std::vector<FigureRef> regime;      // regime_section.h
+    std::vector<FigureRef> regime;      // regimes.h
     bool pdf = true;                    // each figure also as a PDF (formats/pdf.h)
     std::vector<FigureRef> of(const std::string& heading, const std::string& point = "") const;
 };

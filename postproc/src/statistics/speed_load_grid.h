@@ -1,6 +1,6 @@
 // Which operating points form a (speed, load) grid: the question of Sawyer & Tichy's two
 // regimes (contact and collision lubrication) is asked over U and P, so the regime figures
-// (regime_section.h) are drawn only for a case whose points sweep both. Otherwise the report says
+// (regimes.h) are drawn only for a case whose points sweep both. Otherwise the report says
 // why not, in one sentence.
 #pragma once
 #include <string>

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "deck.h"
-#include "engine.h"
+#include "launch.h"
 #include "granlub/particles/annulus.h"
 #include "granlub/error.h"
 #include "granlub/particles/particle_pipeline.h"

@@ -1,6 +1,6 @@
-// LIGGGHTS runs (see engine.h) through core's process runner: no shell (paths with spaces or
+// LIGGGHTS runs (see launch.h) through core's process runner: no shell (paths with spaces or
 // quotes cannot break the command), and the engine dies with granlub.
-#include "engine.h"
+#include "launch.h"
 
 #include <unistd.h>
 

@@ -1,5 +1,5 @@
-// Cross-section heat maps (see section_map.h).
-#include "figures/section_map.h"
+// Cross-section heat maps (see cross_section_map.h).
+#include "figures/cross_section_map.h"
 
 #include <algorithm>
 #include <array>

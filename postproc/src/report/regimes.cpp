@@ -1,4 +1,4 @@
-#include "report/regime_section.h"
+#include "report/regimes.h"
 
 #include <fmt/format.h>
 
