@@ -560,37 +560,30 @@ bool FixImpulseSolve::all_done(double change, double scale) {
 // the grain's other owner does), then the others in sequence, each seeing the changes before it.
 void FixImpulseSolve::rebound_pass() {
     static const double zero[3] = {0.0, 0.0, 0.0};
-    double* const vel = &vel_[0];
-    double* const omg = &omg_[0];
-    const double* const im = &im_[0];
-    const double* const ii = &ii_[0];
-    Contact* const cs = contacts_.empty() ? NULL : &contacts_[0];
-    const int n = static_cast<int>(contacts_.size());
-    const int nb = static_cast<int>(boundary_.size());
-    const int* const bidx = boundary_.empty() ? NULL : &boundary_[0];
-    for (int b = 0; b < nb; b++) {
-        Contact& c = cs[bidx[b]];
+    double* const v = &vel_[0];
+    double* const w = &omg_[0];
+    for (std::size_t b = 0; b < boundary_.size(); b++) {
+        Contact& c = contacts_[boundary_[b]];
         if (!(c.trest > 0.0)) continue;
         c.tn = c.trest;
         c.mu = c.mu_close;
-        contact_change(c, vel + 3 * c.i, omg + 3 * c.i, vel + 3 * c.j, omg + 3 * c.j, c.dn, c.dt);
+        contact_change(c, v + 3 * c.i, w + 3 * c.i, v + 3 * c.j, w + 3 * c.j, c.dn, c.dt);
     }
-    for (int b = 0; b < nb; b++) {
-        const Contact& c = cs[bidx[b]];
-        if (!(c.trest > 0.0)) continue;
-        kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
+    for (std::size_t b = 0; b < boundary_.size(); b++) {
+        const Contact& c = contacts_[boundary_[b]];
+        if (c.trest > 0.0) kick(v + 3 * c.i, w + 3 * c.i, im_[c.i], ii_[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
     }
-    for (int k = 0; k < n; k++) {
-        Contact& c = cs[k];
+    for (std::size_t k = 0; k < contacts_.size(); k++) {
+        Contact& c = contacts_[k];
         if (c.boundary || !(c.trest > 0.0)) continue;
         c.tn = c.trest;
         c.mu = c.mu_close;
         const bool wall = c.j < 0;
-        const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, wall ? c.vwall : vel + 3 * c.j,
-                                        wall ? zero : omg + 3 * c.j, c.dn, c.dt);
-        if (m == 0.0) continue;
-        kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
-        if (!wall) kick(vel + 3 * c.j, omg + 3 * c.j, im[c.j], ii[c.j], c.rj, c.en, c.dn, c.dt, -1.0);
+        if (contact_change(c, v + 3 * c.i, w + 3 * c.i, wall ? c.vwall : v + 3 * c.j, wall ? zero : w + 3 * c.j,
+                           c.dn, c.dt) == 0.0)
+            continue;
+        kick(v + 3 * c.i, w + 3 * c.i, im_[c.i], ii_[c.i], c.ri, c.en, c.dn, c.dt, 1.0);
+        if (!wall) kick(v + 3 * c.j, w + 3 * c.j, im_[c.j], ii_[c.j], c.rj, c.en, c.dn, c.dt, -1.0);
     }
     if (any_boundary_) forward(kCommVelocity);
 }
