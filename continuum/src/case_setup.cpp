@@ -39,7 +39,7 @@ Settings resolve_settings(const Case& c) {
         sec.fail("friction_restitution", fmt::format("{} gives e_eff = {:.4f} for e_p = {} and [grains] friction = {}; "
                                                      "it must lie in [0, 1)",
                                                      fr, lp.dissipation_restitution, lp.restitution, c.grains.friction));
-    const std::string cl = sec.string("correlation_length");
+    const std::string& cl = s.correlation_length_name = sec.string("correlation_length");
     lp.correlation_length = cl == "jenkins2007"     ? CorrelationLength::Jenkins2007
                             : cl == "jenkins_berzi" ? CorrelationLength::JenkinsBerzi
                                                     : CorrelationLength::None;
@@ -238,9 +238,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     m.run["dissipation_restitution"] = s.closures->params().e_eff();
     const ClosureParams& cp = s.closures->params();
     m.run["correlation_length"] = cp.correlation_length == CorrelationLength::JenkinsBerzi
-                                      ? fmt::format("jenkins_berzi, c = {}", cp.correlation_constant)
-                                  : cp.correlation_length == CorrelationLength::Jenkins2007 ? "jenkins2007"
-                                                                                           : "none";
+                                      ? fmt::format("{}, c = {}", s.correlation_length_name, cp.correlation_constant)
+                                      : s.correlation_length_name;
     m.run["wall_roughness"] = {{"source", s.roughness_from_bumps ? "bumps" : "declared"},
                                {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
                                {"top", wall_roughness(c, s, p, p.top, "top")}};

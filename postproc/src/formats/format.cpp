@@ -46,6 +46,8 @@ std::string value_pm(const std::optional<double>& v, const std::optional<double>
     return num(*v, digits);
 }
 
+std::string z_text(double z) { return std::abs(z) < 10 ? fmt::format("z = {:.1f}", z) : fmt::format("z = {:.0f}", z); }
+
 std::string list_text(const std::vector<std::string>& v) {
     std::string s;
     for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];

@@ -79,9 +79,6 @@ struct Disagreement {
     std::string text;
 };
 
-// z to one decimal near the |z| = 2 threshold, to the unit beyond 10, where a decimal says nothing.
-std::string z_text(double z) { return std::abs(z) < 10 ? fmt::format("z = {:.1f}", z) : fmt::format("z = {:.0f}", z); }
-
 std::string size_text(const Asked& q, const Answer& ref, const Answer& b) {
     const double d = b.v - ref.v;
     const double se = std::hypot(ref.se, b.se);

@@ -57,7 +57,7 @@ void difference_tables(Report& rep, const Collection& col, const std::vector<Met
                         continue;
                     }
                     std::string t = value_pm(r->difference, r->combined_stderr, 3);
-                    if (r->z) t += fmt::format(" (z = {:.1f})", *r->z);
+                    if (r->z) t += " (" + z_text(*r->z) + ")";
                     srow.push_back({t, r->significant() ? "significant" : ""});
                 }
                 prof.rows.push_back(std::move(prow));

@@ -15,7 +15,7 @@ enum class Method { FiniteVolume, Shooting };
 // The [continuum] section, resolved once per case.
 struct Settings {
     Method method = Method::FiniteVolume;
-    std::string g0_name, wall_name, closures_name;
+    std::string g0_name, wall_name, closures_name, correlation_length_name;
     bool gap_from_inventory = false;  // [continuum] gap = "inventory"
     bool wall_at_bump_tops = false;   // [continuum] wall_plane = "bump_tops"
     bool roughness_from_bumps = false;  // [continuum] wall_roughness = "bumps"
