@@ -50,7 +50,7 @@ const std::vector<Operator> kOperators = {
 struct Run {
     std::string op;
     double fraction = 0;  // step_fraction (0: Hertz at its own step)
-    double dt = 0, tau_bot = 0, tau_top = 0, tau_bot_se = 0, tau_top_se = 0, nu = 0, z = 0, overlap = 0;
+    double dt = 0, p_top = 0, tau_bot = 0, tau_top = 0, tau_bot_se = 0, tau_top_se = 0, nu = 0, z = 0, overlap = 0;
     double cpu_per_s = 0;  // CPU seconds per simulated second
     std::string status;
     bool ok = false;
@@ -79,17 +79,37 @@ std::string read(const fs::path& p) {
     return s.str();
 }
 
-// The case with the operator's keys: [dem] gets time, the step and the keys; Hertz's grains 1 GPa.
-std::string case_text(const std::string& base, const Operator& op, double time, double fraction) {
+// The servo window in simulated time, the same for every step: 100 steps at step_fraction 0.02.
+// The plate moves once per window (servo_every = sample_every), so a window counted in steps would
+// make the servo 2x faster in time at each halving and mix its dynamics into the step's error: the
+// first bench (2026-11-27, session 24) did, and its finest steps lost the load (P_top 34 % above P
+// at step_fraction 0.0025). Hertz gets the window at its own step: time_step = window / 1100.
+constexpr double kWindowStepsAt002 = 100, kHertzWindowSteps = 1100;
+
+std::string sci(double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6e", x);
+    return b;
+}
+
+// The case with the operator's keys: [dem] gets time, the step, the window and the keys; Hertz's
+// grains 1 GPa. window_s: the servo window in s (from an impulse run's step).
+std::string case_text(const std::string& base, const Operator& op, double time, double fraction, double window_s) {
     std::string t = base;
     std::string dem = "[dem]\ntime = " + std::to_string(time) + "\n" + op.dem_keys;
-    if (!op.hertz) dem += "step_fraction = " + std::to_string(fraction) + "\n";
+    if (!op.hertz)
+        dem += "step_fraction = " + std::to_string(fraction) + "\nsample_every = " +
+               std::to_string(std::llround(kWindowStepsAt002 * 0.02 / fraction)) + "\n";
+    else
+        dem += "time_step = " + sci(window_s / kHertzWindowSteps) + "\n" +
+               "sample_every = " + std::to_string(std::llround(kHertzWindowSteps)) + "\n";
     t.replace(t.find("[dem]\n"), 6, dem);
     if (op.hertz) t.replace(t.find("[grains]\n"), 9, "[grains]\nyoungs_modulus = 1e9\n");
     return t;
 }
 
-Run run_one(const fs::path& root, const std::string& base, const Operator& op, double time, double fraction, int seed) {
+Run run_one(const fs::path& root, const std::string& base, const Operator& op, double time, double fraction, int seed,
+            double window_s) {
     Run r;
     r.op = op.name;
     r.fraction = op.hertz ? 0 : fraction;
@@ -98,7 +118,7 @@ Run run_one(const fs::path& root, const std::string& base, const Operator& op, d
     const fs::path dir = root / tag;
     fs::remove_all(dir);
     fs::create_directories(dir);
-    std::ofstream(dir / "case.toml") << case_text(base, op, time, fraction);
+    std::ofstream(dir / "case.toml") << case_text(base, op, time, fraction, window_s);
     const std::string cmd = std::string(GRANLUB_CLI_PATH) + " dem '" + dir.string() + "' --seed " +
                             std::to_string(seed) + " > '" + (dir / "granlub.out").string() + "' 2>&1";
     const double cpu0 = children_cpu();
@@ -115,6 +135,7 @@ Run run_one(const fs::path& root, const std::string& base, const Operator& op, d
     r.dt = run.at("time_step_s").get<double>();
     r.tau_bot = o.at("shear_stress_bottom").at("value").get<double>();
     r.tau_top = o.at("shear_stress_top").at("value").get<double>();
+    r.p_top = o.at("normal_stress_top").at("value").get<double>();  // the load held? (the servo's answer)
     r.tau_bot_se = o.at("shear_stress_bottom").value("stderr", 0.0);
     r.tau_top_se = o.at("shear_stress_top").value("stderr", 0.0);
     r.nu = o.at("mean_solid_fraction").at("value").get<double>();
@@ -164,6 +185,7 @@ int main(int argc, char** argv) {
     }
     const std::string base = read(GRANLUB_DT_ERROR_CASE);
     std::vector<Run> runs;
+    double window_s = 0;  // the servo window, s: from the first impulse run
     for (const auto& name : ops) {
         const Operator* op = nullptr;
         for (const auto& o : kOperators)
@@ -174,9 +196,15 @@ int main(int argc, char** argv) {
             return 2;
         }
         // the steps coarse to fine, as given; Hertz once
+        if (op->hertz && !(window_s > 0)) {
+            std::fprintf(stderr, "--operators: hertz takes the impulse runs' servo window: name an impulse operator "
+                                 "before it\n");
+            return 2;
+        }
         for (const double f : op->hertz ? std::vector<double>{0.0} : steps) {
-            runs.push_back(run_one(root, base, *op, time, f, seed));
+            runs.push_back(run_one(root, base, *op, time, f, seed, window_s));
             const Run& r = runs.back();
+            if (r.ok && !op->hertz) window_s = kWindowStepsAt002 * r.dt * 0.02 / f;
             if (r.ok)
                 std::fprintf(stderr, "  %-21s step_fraction %-6g dt %.3g s: tau_bot %.0f, tau_top %.0f Pa, %s, %.0f CPU s per s\n",
                              r.op.c_str(), r.fraction, r.dt, r.tau_bot, r.tau_top, r.status.c_str(), r.cpu_per_s);
@@ -185,8 +213,8 @@ int main(int argc, char** argv) {
 
     std::printf("\nSmall periodic loaded cell (448 grains, U = 2 m/s, 5.5 kPa), %.3g s simulated, seed %d\n", time, seed);
     std::printf("error: against the operator's finest step | against its first-order limit 2 x(finest) - x(next)\n");
-    std::printf("%-21s %8s %9s %8s %8s %7s %5s %8s %9s %9s %9s %9s %10s  %s\n", "operator", "step_fr", "dt (us)",
-                "tau_bot", "tau_top", "nu", "Z", "ovl/d", "bot fine", "top fine", "bot lim", "top lim", "CPU s/s", "status");
+    std::printf("%-21s %8s %9s %7s %8s %8s %7s %5s %8s %9s %9s %9s %9s %10s  %s\n", "operator", "step_fr", "dt (us)",
+                "P_top", "tau_bot", "tau_top", "nu", "Z", "ovl/d", "bot fine", "top fine", "bot lim", "top lim", "CPU s/s", "status");
     std::map<std::string, std::vector<const Run*>> by_op;
     for (const auto& r : runs)
         if (r.ok) by_op[r.op].push_back(&r);
@@ -203,13 +231,13 @@ int main(int argc, char** argv) {
         const double lim_bot = next ? 2 * fine->tau_bot - next->tau_bot : NAN;
         const double lim_top = next ? 2 * fine->tau_top - next->tau_top : NAN;
         for (const Run* r : v)
-            std::printf("%-21s %8g %9.3f %8.0f %8.0f %7.4f %5.2f %8.4f %+8.1f%% %+8.1f%% %+8.1f%% %+8.1f%% %10.0f  %s\n",
-                        r->op.c_str(), r->fraction, 1e6 * r->dt, r->tau_bot, r->tau_top, r->nu, r->z, r->overlap,
+            std::printf("%-21s %8g %9.3f %7.0f %8.0f %8.0f %7.4f %5.2f %8.4f %+8.1f%% %+8.1f%% %+8.1f%% %+8.1f%% %10.0f  %s\n",
+                        r->op.c_str(), r->fraction, 1e6 * r->dt, r->p_top, r->tau_bot, r->tau_top, r->nu, r->z, r->overlap,
                         100 * (r->tau_bot / fine->tau_bot - 1), 100 * (r->tau_top / fine->tau_top - 1),
                         100 * (r->tau_bot / lim_bot - 1), 100 * (r->tau_top / lim_top - 1), r->cpu_per_s,
                         r->status.c_str());
     }
-    std::printf("(step_fr 0: Hertz at its own step; ovl/d: the deepest overlap / d over the regime snapshots; one seed: the\n"
+    std::printf("(P_top: the top wall's normal stress, the servo holds it at the load 5500 Pa; step_fr 0: Hertz at its own step; ovl/d: the deepest overlap / d over the regime snapshots; one seed: the\n"
                 " seeds' spread of tau on this cell is 2-4 %%, so errors below that are not resolved by one seed)\n");
     return 0;
 }
