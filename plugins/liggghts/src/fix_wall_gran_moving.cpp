@@ -17,6 +17,21 @@
 // mesh at the start of the step, and v is its surface velocity along the normal. Contacts are
 // found over all owned grains (one subtraction each): the primitive's neighbour list is built
 // for where the plane was.
+//
+// Under a load (normal_load F M lo hi, planes): a weighted plate, the experiment's loaded upper
+// disc (Sawyer & Tichy 2001). The plate is a rigid body of mass M moving along the normal only:
+//     M dv/dt = F + F_grains,
+// F_grains the grains' force on it (minus the wall's force on them, store_force, summed over all
+// ranks at the end of each step, after every contact pass and fix impulse/solve). Semi-implicit
+// Euler: the velocity takes the step's force at its end, the plane moves by the new velocity at the
+// next step's start. Within a step the plate is a wall of infinite mass for the contacts (the
+// impulse models' walls are): the plate takes the momentum the grains took from it one step later,
+// so momentum is conserved and the time-averaged F_grains equals -F in a steady state, with no
+// controller in between (a servo window's clamps biased that average: docs/measurements/liggghts.md).
+// With `carry G` the atoms of group G (a rough top's bumps, moved at the plate's velocity by fix
+// move variable ... v_vplate, vplate = f_ID[2]) are part of the plate: the forces on them count.
+// [ASSUMPTION] ours: this explicit coupling; it needs M well above a grain's mass, which the deck's
+// M (a multiple of all the grains') is by far. At lo or hi the plate stops.
 #include "fix_wall_gran_moving.h"
 
 #include <cmath>
@@ -29,8 +44,10 @@
 #include "fix_contact_property_atom_wall.h"
 #include "fix_property_atom.h"
 #include "force.h"
+#include "group.h"
 #include "granular_wall.h"
 #include "input.h"
+#include "mpi.h"
 #include "neighbor.h"
 #include "primitive_wall.h"
 #include "update.h"
@@ -45,25 +62,32 @@ namespace {
 const char* const kUsage =
     "fix wall/gran/moving: expected the fix wall/gran arguments of a primitive wall followed by "
     "'surface_ang_vel origin ox oy oz axis ax ay az omega w' (the syntax of fix mesh/surface), "
-    "'normal_velocity v_name' (a plane; an equal-style variable), or both";
+    "'normal_velocity v_name' (a plane; an equal-style variable) or 'normal_load F M lo hi' (a plane: a plate of "
+    "mass M under the force F along the axis, travelling in [lo, hi]; 'carry group-ID' adds the force on that "
+    "group's atoms, moved with the plate by fix move), or a turning and a moving plane both";
 const int kTurnWords = 11;    // surface_ang_vel origin x y z axis x y z omega w
 const int kNormalWords = 2;   // normal_velocity v_name
+const int kLoadWords = 5;     // normal_load F M lo hi
+const int kCarryWords = 2;    // carry group-ID
 
 // Moves the words of this fix's own keywords to the end of arg, in the order met, so that fix
 // wall/gran parses the rest as its own; returns the count it is to read. Runs before the base
 // class exists.
 int set_keywords_aside(LAMMPS* lmp, int narg, char** arg) {
     int kept = 3, aside = 0;
-    char* tail[2 * (kTurnWords + kNormalWords)];
+    char* tail[kTurnWords + kNormalWords + kLoadWords + kCarryWords];
     for (int k = 3; k < narg;) {
         const int words = std::strcmp(arg[k], "surface_ang_vel") == 0   ? kTurnWords
                           : std::strcmp(arg[k], "normal_velocity") == 0 ? kNormalWords
+                          : std::strcmp(arg[k], "normal_load") == 0     ? kLoadWords
+                          : std::strcmp(arg[k], "carry") == 0           ? kCarryWords
                                                                         : 0;
         if (words == 0) {
             arg[kept++] = arg[k++];
             continue;
         }
-        if (narg - k < words || aside + words > 2 * (kTurnWords + kNormalWords)) lmp->error->all(FLERR, kUsage);
+        if (narg - k < words || aside + words > kTurnWords + kNormalWords + kLoadWords + kCarryWords)
+            lmp->error->all(FLERR, kUsage);
         for (int w = 0; w < words; w++) tail[aside++] = arg[k++];
     }
     if (aside == 0) lmp->error->all(FLERR, kUsage);
@@ -96,26 +120,57 @@ FixWallGranMoving::FixWallGranMoving(LAMMPS* lmp, int narg, char** arg)
             for (int c = 0; c < 3; c++) omega_[c] = w * axis[c] / norm;
             turning_ = true;
             k += kTurnWords;
+        } else if (std::strcmp(t[0], "normal_load") == 0) {
+            if (loaded_ || !variable_.empty())
+                error->all(FLERR, "fix wall/gran/moving: a plane moves by one normal_velocity or one normal_load");
+            load_ = force->numeric(FLERR, t[1]);
+            mass_ = force->numeric(FLERR, t[2]);
+            lowest_ = force->numeric(FLERR, t[3]);
+            highest_ = force->numeric(FLERR, t[4]);
+            if (!(mass_ > 0) || !(lowest_ < highest_))
+                error->all(FLERR, "fix wall/gran/moving: normal_load F M lo hi needs M > 0 and lo < hi");
+            loaded_ = true;
+            k += kLoadWords;
+        } else if (std::strcmp(t[0], "carry") == 0) {
+            const int g = group->find(t[1]);
+            if (g < 0 || carrybit_) error->all(FLERR, "fix wall/gran/moving: carry takes one existing group-ID");
+            carrybit_ = group->bitmask[g];
+            k += kCarryWords;
         } else {
-            if (!variable_.empty() || std::strncmp(t[1], "v_", 2) != 0 || !t[1][2])
-                error->all(FLERR, "fix wall/gran/moving: normal_velocity takes one equal-style variable, v_name");
+            if (!variable_.empty() || loaded_ || std::strncmp(t[1], "v_", 2) != 0 || !t[1][2])
+                error->all(FLERR, "fix wall/gran/moving: normal_velocity takes one equal-style variable, v_name, "
+                                  "and excludes normal_load");
             variable_ = t[1] + 2;
             k += kNormalWords;
         }
     }
-    if (!variable_.empty()) {  // the plane: primitive type T xplane|yplane|zplane position
+    if (!variable_.empty() || loaded_) {  // the plane: primitive type T xplane|yplane|zplane position
         int p = 3;
         while (p < narg_ && std::strcmp(arg[p], "primitive") != 0) p++;
         const char* style = p + 4 < narg_ ? arg[p + 3] : "";
         plane_axis_ = !std::strcmp(style, "xplane") ? 0 : !std::strcmp(style, "yplane") ? 1 : !std::strcmp(style, "zplane") ? 2 : -1;
         if (plane_axis_ < 0)
-            error->all(FLERR, "fix wall/gran/moving: normal_velocity moves a plane (xplane, yplane, zplane) only");
+            error->all(FLERR, "fix wall/gran/moving: normal_velocity and normal_load move a plane (xplane, yplane, "
+                              "zplane) only");
         position_ = force->numeric(FLERR, arg[p + 4]);
+        if (carrybit_ && !loaded_) error->all(FLERR, "fix wall/gran/moving: carry belongs to normal_load");
+        if (loaded_ && !store_force())
+            error->all(FLERR, "fix wall/gran/moving: normal_load needs store_force yes (the grains' force on the plate)");
+        if (loaded_ && (position_ < lowest_ || position_ > highest_))
+            error->all(FLERR, "fix wall/gran/moving: normal_load: the plane starts outside [lo, hi]");
+        vector_flag = 1;
+        size_vector = 2;
+        global_freq = 1;
+        extvector = 0;
     }
 }
 
+int FixWallGranMoving::setmask() { return FixWallGran::setmask() | (loaded_ ? FixConst::END_OF_STEP : 0); }
+
 void FixWallGranMoving::init() {
     FixWallGran::init();
+    if (loaded_ && !fix_wallforce())
+        error->all(FLERR, "fix wall/gran/moving: normal_load needs store_force yes (the grains' force on the plate)");
     if (variable_.empty()) return;
     ivariable_ = input->variable->find(const_cast<char*>(variable_.c_str()));
     if (ivariable_ < 0 || !input->variable->equalstyle(ivariable_)) {
@@ -128,10 +183,31 @@ void FixWallGranMoving::init() {
 // rest before the first step), as fix move/mesh leaves a mesh: it sets the velocity when it moves.
 void FixWallGranMoving::advance() {
     if (update->setupflag || moved_at_ == update->ntimestep) return;  // a setup's forces, or moved already
-    velocity_ = input->variable->compute_equal(ivariable_);
+    if (!loaded_) velocity_ = input->variable->compute_equal(ivariable_);
     position_ += velocity_ * update->dt;
     moved_at_ = update->ntimestep;
 }
+
+void FixWallGranMoving::end_of_step() {
+    if (!loaded_) return;
+    double** f = fix_wallforce()->array_atom;  // the wall's force on each grain this step
+    const int* mask = atom->mask;
+    double mine = 0.0, all = 0.0;
+    double** fa = atom->f;  // the force on each atom this step: on a carried atom, the grains'
+    for (int i = 0; i < atom->nlocal; i++) {
+        if (mask[i] & groupbit) mine -= f[i][plane_axis_];
+        if (mask[i] & carrybit_) mine += fa[i][plane_axis_];
+    }
+    MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+    const double dt = update->dt;
+    velocity_ += (load_ + all) * dt / mass_;
+    // at a stop the plate halts there (the carried atoms move by the same velocity: fix move)
+    const double next = position_ + velocity_ * dt;
+    if (next < lowest_) velocity_ = (lowest_ - position_) / dt;
+    if (next > highest_) velocity_ = (highest_ - position_) / dt;
+}
+
+double FixWallGranMoving::compute_vector(int n) { return n == 0 ? position_ : velocity_; }
 
 double FixWallGranMoving::resolve(const double* x, double r, double* delta) const {
     if (plane_axis_ < 0) return primitiveWall_->resolveContact(const_cast<double*>(x), r, delta);
