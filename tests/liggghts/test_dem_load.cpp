@@ -1,6 +1,7 @@
-// `granlub dem` with control = "load": the servo-controlled top plate reaches the target normal
-// stress (within the measured block standard error), a higher load gives a smaller gap and a
-// denser packing, the result files are complete, and bad servo settings give clear errors.
+// `granlub dem` with control = "load": the top plate, weighted (the default) or moved by the window
+// servo, reaches the target normal stress (within the measured block standard error), a higher
+// load gives a smaller gap and a denser packing, the result files are complete, and bad servo
+// settings give clear errors.
 #define BOOST_TEST_MODULE liggghts_dem_load
 #include <boost/test/unit_test.hpp>
 
@@ -8,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <regex>
 #include <sstream>
 
@@ -36,17 +38,27 @@ const std::string kCase = test::tiny_cell("tiny_load", "control = \"load\"\nnorm
                                               "snapshots = 20\nstations = 6\n");
 
 Schema schema() { return test::dem_schema(); }
+
+std::string text_of(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
 using test::edit;
 
+// stress < 0: the window servo at -stress (servo_plate = "window")
 const test::LoadRun& run_load(double stress) {
-    return test::cached_load_run(stress, [](double P) {
+    return test::cached_load_run(stress, [](double signed_P) {
+        const double P = std::abs(signed_P);
         std::string text = edit(kCase, "normal_stress = \\[30.0\\]", "normal_stress = [" + std::to_string(P) + "]");
+        if (signed_P < 0) text = edit(text, "servo_gain = 0.02", "servo_gain = 0.02\nservo_plate = \"window\"");
         // the higher load needs the plate to travel ~1.3 d: at gain 0.02 it still crept at 0.4 s
         // (P_top/P = 0.75, measured 2026-11-23), a transient; 0.05 does not overshoot at this load
         if (P > 30.0) text = edit(text, "servo_gain = 0.02", "servo_gain = 0.05");
         const Case c = parse_case(text, "tiny_load.toml", schema());
         RunOptions o;
-        o.results_root = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_dem_load" / std::to_string(int(P));
+        o.results_root = fs::path(GRANLUB_BINARY_DIR) / "tests" / "liggghts_dem_load" / std::to_string(int(signed_P));
         fs::remove_all(o.results_root);
         return std::pair(dem::run(c, o), result_dir(o.results_root, "dem", c.points.front().id));
     });
@@ -58,6 +70,7 @@ BOOST_AUTO_TEST_CASE(plate_reaches_the_target_normal_stress) {
     const test::LoadRun& r = run_load(30.0);
     BOOST_TEST_REQUIRE(r.code == 0);
     test::check_target_reached(r.summary, 30.0, 6e-3, 0.4);
+    BOOST_TEST(r.summary.run.at("load_control").at("plate") == "weight");
     // a loaded bed of rigid grains does not sink into itself (the model's default overlap removal)
     const auto& fr = r.summary.run.at("flow_regime");
     BOOST_TEST_MESSAGE("overlap/(r_i+r_j): max " << fr.at("max_overlap") << " mean " << fr.at("mean_overlap"));
@@ -71,12 +84,29 @@ BOOST_AUTO_TEST_CASE(load_results_are_complete_and_use_the_mean_gap) {
     BOOST_TEST((result_status(r.dir, c.inputs_hash("dem")).state == ResultState::Complete));
     test::check_load_results(r.summary, r.dir, r.summary.run.at("atoms").get<double>(), 1e-3, 8e-3 * 6e-3, 6,
                              100);  // 10000 steps / 100
-    // the readable deck carries the servo
-    std::ifstream deck(r.dir / "in.granlub");
-    std::stringstream ss;
-    ss << deck.rdbuf();
-    BOOST_TEST(ss.str().find("label servo") != std::string::npos);
-    BOOST_TEST(ss.str().find("yplane ${hplate}") != std::string::npos);
+    // the readable deck carries the weighted plate: pressed by -P A along y, as heavy as the grains
+    // (plate_mass 1), free between its limits, in one run (no servo loop)
+    const std::string deck = text_of(r.dir / "in.granlub");
+    std::smatch m;
+    BOOST_TEST_REQUIRE(std::regex_search(deck, m, std::regex("normal_load (\\S+) (\\S+) (\\S+) (\\S+)")));
+    BOOST_TEST(std::stod(m[1]) == -30.0 * 8e-3 * 6e-3, boost::test_tools::tolerance(1e-12));
+    double grains = 0;  // the grains' mass from the initial file the deck was written for
+    const ParticleSet init = read_particles_csv(r.summary.run.at("initial_configuration").get<std::string>());
+    for (const double rad : init.radius) grains += c.grains.density * 4.0 / 3.0 * std::numbers::pi * rad * rad * rad;
+    BOOST_TEST(std::stod(m[2]) == grains, boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(std::stod(m[3]) < std::stod(m[4]));
+    BOOST_TEST(deck.find("label servo") == std::string::npos);
+}
+
+// The window servo (servo_plate = "window") still reaches the target, moving the plate in jumps.
+BOOST_AUTO_TEST_CASE(window_servo_reaches_the_target_normal_stress) {
+    const test::LoadRun& r = run_load(-30.0);
+    BOOST_TEST_REQUIRE(r.code == 0);
+    test::check_target_reached(r.summary, 30.0, 6e-3, 0.4);
+    BOOST_TEST(r.summary.run.at("load_control").at("plate") == "window");
+    const std::string deck = text_of(r.dir / "in.granlub");
+    BOOST_TEST(deck.find("label servo") != std::string::npos);
+    BOOST_TEST(deck.find("yplane ${hplate}") != std::string::npos);
 }
 
 // The final state (another run's warm start): every grain with its spin, the plate where the

@@ -37,10 +37,12 @@ std::vector<double> window_stresses(const ServoSettings& s, std::span<const doub
 std::string gap_csv(const ServoSettings& s, double time_step, std::span<const double> wall_step,
                     std::span<const double> top_stress, const PlateSeries& plate, const std::string& comment) {
     const std::vector<double> p_w = window_stresses(s, wall_step, top_stress, plate);
-    std::string out = fmt::format("# {}\n# plate (top wall) position after each servo window of {} steps; stress = "
+    std::string out = fmt::format("# {}\n# plate (top wall{}) position after each {} of {} steps; stress = "
                                   "top-wall normal stress averaged over the window; target {} Pa\n# {}\n"
                                   "time_s,gap_m,normal_stress_top_Pa\n",
-                                  comment, s.servo_every, s.target_stress, run_id_comment());
+                                  comment, s.weight_plate ? ", a weighted plate" : "",
+                                  s.weight_plate ? "window" : "servo window", s.servo_every, s.target_stress,
+                                  run_id_comment());
     for (std::size_t j = 0; j < plate.step.size(); ++j)
         out += fmt::format("{},{},{}\n", plate.step[j] * time_step, plate.gap[j],
                            p_w[j] >= 0 ? fmt::format("{}", p_w[j]) : std::string(""));
@@ -58,13 +60,15 @@ nlohmann::json load_summary(const LoadSummaryInputs& in, std::map<std::string, S
     auto at_a_limit = [&](double h) { return h <= s.gap_min * (1 + 1e-9) || h >= s.gap_max * (1 - 1e-9); };
     const auto at_limit = static_cast<std::size_t>(std::count_if(plate.gap.begin(), plate.gap.end(), at_a_limit));
     const bool limit_now = at_a_limit(plate.gap.back());
-    // windows whose stress error hit the upper clamp (their plate move was capped)
+    // the window servo: windows whose stress error hit the upper clamp (their plate move was
+    // capped); a weighted plate has no clamp
     std::size_t clamped = 0;
     for (double pw : window_stresses(s, in.wall_step, in.top_stress, plate))
         if (pw > (1.0 + s.servo_max_error) * s.target_stress) ++clamped;
     line = fmt::format(" gap={:.4g} mm (P_top/P={:.3f}{})", 1e3 * g.mean, top.value / s.target_stress,
                        limit_now ? ", PLATE AT ITS LIMIT: target not reachable" : "");
-    return {{"target_normal_stress_Pa", s.target_stress},
+    nlohmann::json j = {{"target_normal_stress_Pa", s.target_stress},
+            {"plate", s.weight_plate ? "weight" : "window"},
             {"normal_stress_top_over_target", top.value / s.target_stress},
             {"deviation_in_stderr",  // 0 when there is no error bar (never inf/NaN in a result)
              top.stderr_.value_or(0) > 0 ? (top.value - s.target_stress) / *top.stderr_ : 0.0},
@@ -75,9 +79,10 @@ nlohmann::json load_summary(const LoadSummaryInputs& in, std::map<std::string, S
             {"servo_updates", plate.gap.size()},
             {"servo_updates_used", plate.gap.size() - in.window.plate_start},
             {"updates_at_plate_limit", at_limit},
-            {"updates_error_clamped", clamped},
             {"plate_at_limit_at_end", limit_now},
             {"gap_file", kGapFile}};
+    if (!s.weight_plate) j["updates_error_clamped"] = clamped;
+    return j;
 }
 
 }  // namespace granlub

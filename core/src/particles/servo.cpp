@@ -15,6 +15,14 @@ namespace granlub {
 void add_servo_keys(SectionSpec& s) {
     s.real("fill_for_load", 0.55, Range::open(0, 0.74), "",
            "control = load: solid fraction inserted when [operating] solid_fraction is not given");
+    s.choice("servo_plate", "weight", {"window", "weight"},
+             "control = load: weight = a loaded plate free along the gap (mass: plate_mass), pressed by P A, one "
+             "rigid body with a rough top's bumps: its mean force on the grains is P A by Newton's law; window = "
+             "the plate moved every servo_every steps by servo_gain times the window's stress error (capped at one "
+             "grain-plate overlap at the load on soft contacts)");
+    s.real("plate_mass", 1.0, Range::positive(), "",
+           "servo_plate = \"weight\": the plate's mass as a multiple of the grains' (a numerical choice: a light "
+           "plate follows the bed within a millisecond, a dead weight P A / g oscillates for tens of ms)");
     s.integer("servo_every", 0, Range::closed(0, 1e8),
               "control = load: steps between top-plate updates (force averaged over them); 0 = sample_every");
     s.real("servo_gain", 0.05, Range::open_closed(0, 0.1), "",
@@ -35,6 +43,8 @@ ServoSettings resolve_servo(const Case& c, const OperatingPoint& p, const Sectio
         return v;
     }
     v.load = true;
+    v.weight_plate = s.string("servo_plate") == "weight";
+    v.plate_mass = s.real("plate_mass");
     v.target_stress = p.normal_stress;
     if (!(v.target_stress > 0))  // core rejects this already; a guard for hand-built points
         throw SolverError(fmt::format("point {}: control = \"load\" needs [operating] normal_stress > 0 (got {:g} Pa)",
@@ -85,6 +95,8 @@ double plate_response_time(const Grains& g, double load, double overlap, bool he
 nlohmann::json ServoSettings::to_json() const {
     return {{"control", load ? "load" : "fill"},
             {"target_normal_stress_Pa", target_stress},
+            {"servo_plate", weight_plate ? "weight" : "window"},
+            {"plate_mass", plate_mass},
             {"servo_every", servo_every},
             {"servo_gain", servo_gain},
             {"servo_max_error", servo_max_error},

@@ -47,8 +47,6 @@ nlohmann::json settings_json(const Settings& s) {
                             {"velocity_noise", s.insertion.velocity_noise},
                             {"periodic_depth", s.periodic_depth},
                             {"start", s.warm_start ? "warm" : "cold"},
-                            {"servo_plate", s.weight_plate ? "weight" : "window"},
-                            {"plate_mass", s.plate_mass},
                             {"persistence_every", s.persistence_every},
                             {"persistence_intervals", s.persistence_intervals}});
     if (s.servo.load) j.update(nlohmann::json{{"servo_gain_used", s.plate_gain}, {"plate_overlap_m", s.plate_overlap}});
@@ -185,7 +183,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
                                    warm.at("time_s").get<double>())
                      : std::string("cold, from the shared initial grains ([particles])");
     if (s.servo.load)
-        r.summary.run["plate"] = s.weight_plate ? fmt::format("a loaded plate of {:g} x the grains' mass", s.plate_mass)
+        r.summary.run["plate"] = s.servo.weight_plate ? fmt::format("a loaded plate of {:g} x the grains' mass", s.servo.plate_mass)
                                                 : std::string("the window servo of granlub dem");
     fs::remove(dir / "samples.bin");  // raw snapshots: large, and reproducible from params.json
     fs::remove(dir / "contacts.bin");  // the persistence snapshots, likewise

@@ -99,8 +99,8 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
                       {"max_error", v.servo_max_error},
                       {"gap_min", v.gap_min},
                       {"gap_max", v.gap_max},
-                      {"plate", s.weight_plate ? "weight" : "window"},
-                      {"plate_mass_ratio", s.plate_mass}};
+                      {"plate", s.servo.weight_plate ? "weight" : "window"},
+                      {"plate_mass_ratio", s.servo.plate_mass}};
     }
     return j;
 }

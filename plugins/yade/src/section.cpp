@@ -44,15 +44,8 @@ BoundKeys<Settings> declare() {
              "initial grains: cold = the shared initial file ([particles]); warm = granlub dem's final "
              "state of the same point (results/dem/<point>/final_state.csv: positions, velocities, spins, "
              "plate), so the run starts in the DEM's steady state");
-    s.choice("servo_plate", "weight", {"window", "weight"},
-             "control = load: weight = a loaded plate free along y (mass: plate_mass), pressed by P A, one rigid "
-             "body with a rough top's bumps; window = granlub dem's servo (the plate moved every servo_every steps "
-             "by servo_gain, capped at one grain-plate overlap at the load: slow on soft contacts)");
-    k.real("plate_mass", &Settings::plate_mass, 1.0, Range::positive(), "",
-           "servo_plate = \"weight\": the plate's mass as a multiple of the grains' (a numerical choice: a light "
-           "plate follows the bed within a millisecond, a dead weight P A / g oscillates for tens of ms)");
     add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
-    add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/particles/servo.h)
+    add_servo_keys(s);     // fill_for_load, servo_plate, plate_mass, servo_every, ... (granlub/particles/servo.h)
     k.bind("sample_every", &Settings::sample_every).bind("stations", &Settings::stations).bind("blocks", &Settings::blocks);
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with dem
     return k;

@@ -30,7 +30,7 @@ void resolve_window_servo(const Case& c, const OperatingPoint& p, const Section&
         r.plate_overlap = linear_plate_overlap(g, P, kn);
     }
     r.plate_gain = capped_plate_gain(r.servo.servo_gain, r.plate_overlap, g.diameter);
-    if (r.weight_plate) return;
+    if (r.servo.weight_plate) return;
     const double response = plate_response_time(g, P, r.plate_overlap, hertz);
     const double window = static_cast<double>(r.servo.servo_every) * r.time_step;
     if (window < response)
@@ -81,8 +81,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     yade_keys().read(r, s);  // the plain keys (src/section.cpp)
     r.law = &contact_law(s.string("model"));
     r.warm_start = s.string("start") == "warm";
-    r.weight_plate = s.string("servo_plate") == "weight";
-
+    
     // The initial grains of `granlub dem` too: [particles] is one section for both engines.
     const ParticleStart start = particle_start(c, p, o.seed);
     r.insertion = start.insertion;

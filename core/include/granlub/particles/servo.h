@@ -27,6 +27,11 @@ inline constexpr std::int64_t kMinServoUpdates = 20;
 
 struct ServoSettings {
     bool load = false;                // control = "load"; all below but insert_fill* unused otherwise
+    // servo_plate = "weight": the top is a rigid plate of plate_mass x the grains' mass, free along
+    // the gap and pressed by P A (the experiment's weighted upper disc): its own Newton's law, no
+    // window, no gain. "window": the plate moved every servo_every steps by the rule below.
+    bool weight_plate = false;
+    double plate_mass = 0;            // multiples of the grains' mass (weight_plate)
     double target_stress = 0;         // Pa, the point's normal_stress
     std::int64_t servo_every = 0;     // steps between plate updates (a multiple of sample_every)
     double servo_gain = 0;            // plate move per update, diameters per unit relative error
@@ -64,7 +69,8 @@ double capped_plate_gain(double servo_gain, double overlap, double diameter);
 // answered the last move: the moves pile up (the window servo "rams").
 double plate_response_time(const Grains& g, double load, double overlap, bool hertz);
 
-// Adds fill_for_load, servo_every, servo_gain and servo_max_gap to an engine's section.
+// Adds fill_for_load, servo_plate, plate_mass, servo_every, servo_gain and servo_max_gap to an
+// engine's section.
 void add_servo_keys(SectionSpec& s);
 
 // The servo of point p from the servo keys of section `s` (the engine's own, which add_servo_keys

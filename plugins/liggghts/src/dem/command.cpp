@@ -79,8 +79,8 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     if (s.ring && s.ring_mesh) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facet_count);
     else
         for (const char* mesh : kRingMeshes) fs::remove(dir / mesh);  // an earlier run's, not this deck's
-    write_file_atomic(dir / kDeck, s.ring ? ring_deck(c, p, s, init.particles.size(), prov)
-                                          : deck(c, p, s, init.particles.size(), prov));
+    write_file_atomic(dir / kDeck, s.ring ? ring_deck(c, p, s, init.particles, prov)
+                                          : deck(c, p, s, init.particles, prov));
     for (const char* f :
          {kSnapshots, kContactsFile, kPlateFile, kSectionFile, kWidthProfileFile, kFinalDump, kFinalPlateFile})
         fs::remove(dir / f);

@@ -3,6 +3,8 @@
 // docs/liggghts-notes.md (walls, stress sampling, traps).
 #include "deck.h"
 
+#include <numbers>
+
 #include <fmt/format.h>
 
 #include "granlub/error.h"
@@ -89,6 +91,23 @@ void servo_rule_block(const Settings& s, const DeckLine& line, const std::string
     line(fmt::format("variable hnew equal v_htry*(v_htry>={0})*(v_htry<={1})+{0}*(v_htry<{0})+{1}*(v_htry>{1})",
                      s.gap_min, s.gap_max));
     line(fmt::format("variable update loop {}", s.steps / s.servo_every));
+}
+
+std::string weight_plate_words(const Case& c, const Settings& s, const ParticleSet& grains, double area,
+                               bool carry_bumps) {
+    double volume = 0;  // of the grains, m^3
+    for (const double r : grains.radius) volume += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+    const double mass = s.plate_mass * c.grains.density * volume;
+    return fmt::format("normal_load {:.17g} {:.17g} {:.17g} {:.17g}{}", -s.target_stress * area, mass, s.gap_min,
+                       s.gap_max, carry_bumps ? " carry tbump" : "");
+}
+
+void weight_plate_run(const Settings& s, const DeckLine& line, const std::string& top_fix) {
+    line(fmt::format("# load control: the weighted plate, P = {} Pa; its position every {} steps in {}", s.target_stress,
+                     s.servo_every, kPlateFile));
+    line(fmt::format("fix plate all ave/time {0} 1 {0} f_{1}[1] file {2}", s.servo_every, top_fix, kPlateFile));
+    line(fmt::format("run             {}", s.steps));
+    line(fmt::format("variable hplate equal f_{}[1]", top_fix));
 }
 
 void persistence_block(const Settings& s, const DeckLine& line) {
@@ -272,7 +291,7 @@ void slice_header(const Case& c, const OperatingPoint& p, const Settings& s, std
     line(fmt::format("# Shear cell: x along the flow (periodic, L = {:g} m), y across the gap (H = {:g} m):", box.length,
                      box.gap));
     line(fmt::format("# bottom wall y = 0 sliding at U = {:g} m/s, top wall {}, z across the width{}.", U,
-                     s.load ? fmt::format("a plate servo-controlled to {:g} Pa (starts at y = {})", s.target_stress,
+                     s.load ? fmt::format("a plate {} to {:g} Pa (starts at y = {})", s.weight_plate ? "weighted" : "servo-controlled", s.target_stress,
                                           s.plate_start == box.gap ? std::string("H")
                                                                    : fmt::format("{:g} m", s.plate_start))
                             : std::string("y = H fixed"),
@@ -285,7 +304,8 @@ void slice_header(const Case& c, const OperatingPoint& p, const Settings& s, std
 
 // The slice's walls: the floor, the top (a plate at ${hplate} under load control) and, without a
 // periodic width, the side walls. Returns the top wall's fix line: the servo loop remakes it.
-std::string slice_walls(const OperatingPoint& p, const Settings& s, const DeckLine& line) {
+std::string slice_walls(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleSet& grains,
+                        const DeckLine& line) {
     const auto& box = s.box;
     const double U = p.speed;
     const ModelText mt = model_text(s);
@@ -296,15 +316,27 @@ std::string slice_walls(const OperatingPoint& p, const Settings& s, const DeckLi
     line("# store_force gives the force of each wall on each grain (f_force_<id>), summed every step");
     line(fmt::format("fix wbot {} wall/gran {} primitive type 2 yplane 0.0 shear x {} store_force yes{}", g, model, U,
                      settings));
+    const bool weight = s.load && s.weight_plate;
     const std::string top_wall =
-        fmt::format("fix wtop {} wall/gran {} primitive type 3 yplane {} store_force yes{}", g, model,
-                    s.load ? std::string("${hplate}") : fmt::format("{}", box.gap), settings);
-    if (s.load) {
+        weight ? fmt::format("fix wtop {} wall/gran/moving {} primitive type 3 yplane {} store_force yes{} {}", g, model,
+                             s.plate_start, settings,
+                             weight_plate_words(c, s, grains, box.length * box.width, s.bumps_top.has_value()))
+               : fmt::format("fix wtop {} wall/gran {} primitive type 3 yplane {} store_force yes{}", g, model,
+                             s.load ? std::string("${hplate}") : fmt::format("{}", box.gap), settings);
+    if (weight) {
+        line(fmt::format("# top wall: a weighted plate (servo_plate = \"weight\"), free along y between {} and {} m, "
+                         "pressed by P A;", s.gap_min, s.gap_max));
+        line("# its position and velocity are f_wtop[1] and f_wtop[2]");
+    } else if (s.load) {
         line(fmt::format("# top wall: a plate at y = hplate, moved by the servo loop at the end (box top {} m)",
                          s.gap_max));
         line(fmt::format("variable hplate equal {}", s.plate_start));
     }
     line(top_wall);
+    if (weight && s.bumps_top) {  // the top's bumps ride the plate: one rigid body (normal_load ... carry)
+        line("variable vplate equal f_wtop[2]");
+        line("fix tmove tbump move variable NULL NULL NULL NULL v_vplate NULL");
+    }
     if (!box.periodic_z) {
         line(fmt::format("fix wsid1 {} wall/gran {} primitive type 4 zplane {} shear x {} store_force yes{}", g,
                          model, -0.5 * box.width, U, settings));
@@ -354,6 +386,7 @@ void slice_servo_loop(const Case& c, const Settings& s, const std::string& top_w
     const double A = s.box.length * s.box.width;
     const double d_g = c.grains.diameter;
     line("");
+    if (s.weight_plate) return weight_plate_run(s, line, "wtop");
     line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress,
                      A));
     line(fmt::format("# every {} steps: hplate += {} * err, err = clamp((P_top - P)/P, -1, {}),", s.servo_every,
@@ -378,18 +411,18 @@ void slice_servo_loop(const Case& c, const Settings& s, const std::string& top_w
 
 }  // namespace
 
-std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleSet& grains,
                  const std::string& provenance) {
     std::string d;
     const DeckLine line = deck_lines(d);
-    slice_header(c, p, s, grains, provenance, line);
+    slice_header(c, p, s, grains.size(), provenance, line);
     line("");
     engine_block(s, line, s.box.periodic_z ? "p f p" : "p f f", "* 1 1   # split along the flow only");
     line("");
     contact_block(c, p, s, line);
     line("");
     if (s.bumps()) bump_block(s, line, p.speed);
-    const std::string top_wall = slice_walls(p, s, line);
+    const std::string top_wall = slice_walls(c, p, s, grains, line);
     line("");
     slice_body_forces(c, s, line);
     line("");

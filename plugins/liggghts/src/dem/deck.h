@@ -66,7 +66,7 @@ std::string data_file(const ParticleSet& p, const DataBounds& b, double density,
                       const std::vector<BumpAtoms>& bumps = {});
 
 // The slice's deck: geometry, materials, contact model, walls, body forces, sampling, run.
-std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+std::string deck(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleSet& grains,
                  const std::string& provenance);
 
 // Pieces both decks (the slice's and the ring's, ring_deck.h) share.
@@ -92,6 +92,14 @@ void output_block(const Settings& s, const DeckLine& line);
 // plate to hnew = hplate + gain d err within [gap_min, gap_max]; `update` counts the windows.
 void servo_rule_block(const Settings& s, const DeckLine& line, const std::string& force, const std::string& sign,
                       double A, double d);
+// servo_plate = "weight": the top plane's words for fix wall/gran/moving, `normal_load F M lo hi`
+// (F = -P A along y, M = plate_mass x the grains' mass, lo hi = gap_min gap_max) and, for a rough
+// top, `carry tbump`; the plate's position and velocity are the fix's f_<id>[1], f_<id>[2].
+std::string weight_plate_words(const Case& c, const Settings& s, const ParticleSet& grains, double area,
+                               bool carry_bumps);
+// The weighted plate's run: its position every servo_every steps into the plate file, one run of
+// s.steps, and hplate = where it ended (the final state prints it).
+void weight_plate_run(const Settings& s, const DeckLine& line, const std::string& top_fix);
 // the final state at 17 digits (and the plate position under load)
 void final_state_block(const Settings& s, const DeckLine& line);
 // Both decks' ending without load control (a fixed top): the run, then the persistence snapshots

@@ -45,7 +45,10 @@ WallText mesh_walls(const Settings& s, const ModelText& m, const std::string& tu
 // contact points (the walls' on the grains: negated here, so that the wall file means what the
 // meshes' does). A plain primitive top could only be re-made where the servo puts it: in a small
 // ring at 1 kPa those jumps left a fifth of the grains' weight out of the walls' forces (2026-11-26).
-WallText primitive_walls(const Settings& s, const ModelText& m, const std::string& turn, const DeckLine& line) {
+// `motion`: the top's fix wall/gran/moving words under load (normal_velocity, or a weighted plate's
+// normal_load).
+WallText primitive_walls(const Settings& s, const ModelText& m, const std::string& turn, const std::string& motion,
+                         const DeckLine& line) {
     const Annulus& an = s.annulus;
     line("# walls: exact primitives; the floor (type 2) and the cylinders (type 4) turn about the axis, the top");
     line("# (type 3) is a plane over the trough; store_force gives each wall's force on each grain");
@@ -56,9 +59,9 @@ WallText primitive_walls(const Settings& s, const ModelText& m, const std::strin
     line(fmt::format("fix inner all wall/gran/moving {} primitive type 4 ycylinder {} 0 0 store_force yes{} {}", m.model,
                      an.inner(), m.settings, turn));
     if (s.load) {
-        top_velocity(s, line);
-        line(fmt::format("fix top all wall/gran/moving {} primitive type 3 yplane {} store_force yes{} normal_velocity v_vtop",
-                         m.model, s.plate_start, m.settings));
+        if (!s.weight_plate) top_velocity(s, line);
+        line(fmt::format("fix top all wall/gran/moving {} primitive type 3 yplane {} store_force yes{} {}", m.model,
+                         s.plate_start, m.settings, motion));
     } else {
         line(fmt::format("fix top all wall/gran {} primitive type 3 yplane {} store_force yes{}", m.model, s.plate_start,
                          m.settings));
@@ -106,7 +109,7 @@ DataBounds ring_bounds(const Settings& s, double d) {
 
 double ring_wall_height(const Settings& s, double d) { return s.box_top() + d; }
 
-std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleSet& grains,
                       const std::string& provenance) {
     const Annulus& an = s.annulus;
     const double U = p.speed, omega = U / an.R, A = an.area(), d_g = c.grains.diameter;
@@ -121,11 +124,12 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
     line(fmt::format("# floor at y = 0; the floor and both cylinders turn at Omega = U/R = {:g} rad/s (U = {:g} m/s at "
                      "R); the annular top {}.",
                      omega, U,
-                     s.load ? fmt::format("is a plate servo-controlled to {:g} Pa (starts at y = {:g} m)", s.target_stress,
+                     s.load ? fmt::format("is a plate {} to {:g} Pa (starts at y = {:g} m)",
+                                          s.weight_plate ? "weighted" : "servo-controlled", s.target_stress,
                                           s.plate_start)
                             : fmt::format("is still at y = H = {:g} m", s.box.gap)));
     line(fmt::format("# {} grains of d = {:g} m; contact model: {}. No centripetal body force: the curvature makes it.",
-                     grains, d_g,
+                     grains.size(), d_g,
                      s.law->title));
     if (s.ring_mesh)
         line(fmt::format("# Meshes ({} facets per circle): {}, {}, {}, {}. Rerun by hand in this folder: "
@@ -140,7 +144,8 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
     contact_block(c, p, s, line);
     line("");
     const std::string turn = fmt::format("surface_ang_vel origin 0 0 0 axis 0 1 0 omega {}", omega);
-    const WallText walls = s.ring_mesh ? mesh_walls(s, m, turn, line) : primitive_walls(s, m, turn, line);
+    const std::string motion = s.weight_plate ? weight_plate_words(c, s, grains, A, false) : "normal_velocity v_vtop";
+    const WallText walls = s.ring_mesh ? mesh_walls(s, m, turn, line) : primitive_walls(s, m, turn, motion, line);
     line("");
     line("# body forces: gravity along -y (the axis)");
     if (c.gravity > 0) line(fmt::format("fix grav all gravity {} vector 0 -1 0", c.gravity));
@@ -158,8 +163,13 @@ std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s,
     output_block(s, line);
     if (fixed_top_ending(s, line)) return d;
     line("");
-    line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress, A));
-    servo(s, line, A, d_g, walls.top);
+    if (s.weight_plate) {
+        weight_plate_run(s, line, "top");
+    } else {
+        line(fmt::format("# load control: top plate servo, target normal stress P = {} Pa on A = {} m^2", s.target_stress,
+                         A));
+        servo(s, line, A, d_g, walls.top);
+    }
     persistence_block(s, line);
     final_state_block(s, line);
     return d;

@@ -24,7 +24,7 @@ DataBounds ring_bounds(const Settings& s, double diameter);
 // Height of the ring's cylinders: a diameter above the box top (the plate's highest position).
 double ring_wall_height(const Settings& s, double diameter);
 
-std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s, std::size_t grains,
+std::string ring_deck(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleSet& grains,
                       const std::string& provenance);
 
 }  // namespace granlub::dem

@@ -109,6 +109,9 @@ void resolve_run_length(const Case& c, const OperatingPoint& p, const RunOptions
 void resolve_ring(const Case& c, const Section& s, Settings& st) {
     st.annulus = annulus(c);
     st.ring_mesh = s.string("ring_walls") == "mesh";
+    if (st.ring_mesh && st.load && st.weight_plate)  // move/mesh moves a mesh at a given speed, not by its load
+        s.fail("servo_plate", "'weight' needs ring_walls = 'primitive' (the meshes' top moves only at a given "
+                              "speed); allowed with ring_walls = 'mesh': 'window'");
     if (st.ring_mesh) {  // the meshes' facets, and how far inside the outer circle their chords lie
         const double chord = s.real("ring_facet") * c.grains.diameter, ro = st.annulus.outer();
         st.ring_facet_count =

@@ -49,8 +49,6 @@ struct Settings {
     // servo of `granlub dem` (granlub/particles/servo.h) with the same keys in [yade]; or, with
     // servo_plate = "weight", a plate of plate_mass x the grains' mass pressed by P A
     ServoSettings servo;
-    bool weight_plate = false;
-    double plate_mass = 0;                 // multiples of the grains' mass
     // the window servo's gain capped from the contact stiffness (servo.h capped_plate_gain), as
     // granlub dem caps it: a unit error moves the plate by one grain-plate overlap at the load
     double plate_overlap = 0;              // m
