@@ -119,20 +119,20 @@ BOOST_AUTO_TEST_CASE(load_control_settings) {
 BOOST_AUTO_TEST_CASE(weight_plate_and_warm_start_settings) {
     const Case c = tiny_case(kFill, kLoad, "servo_plate = \"weight\"\nplate_mass = 2.5\nstart = \"warm\"\n");
     const Settings s = resolve_settings(c, c.points.at(0), RunOptions{});
-    BOOST_TEST(s.weight_plate);
+    BOOST_TEST(s.servo.weight_plate);
     BOOST_TEST(s.warm_start);
-    BOOST_TEST(s.plate_mass == 2.5);
+    BOOST_TEST(s.servo.plate_mass == 2.5);
     const ParticleBox box{c.cell.length, c.cell.gap, c.cell.width, false};
     const auto j = couette_params(c, c.points.at(0), s, box, "/tmp/particles.csv");
     BOOST_TEST(j.at("servo").at("plate").get<std::string>() == "weight");
     BOOST_TEST(j.at("servo").at("plate_mass_ratio").get<double>() == 2.5);
     const Case d = tiny_case(kFill, kLoad);  // the default: a weight plate (issue 50)
     const Settings sd = resolve_settings(d, d.points.at(0), RunOptions{});
-    BOOST_TEST(sd.weight_plate);
+    BOOST_TEST(sd.servo.weight_plate);
     BOOST_TEST(!sd.warm_start);
     const Case w = tiny_case(kFill, kLoad, "servo_plate = \"window\"\n");
     const Settings sw = resolve_settings(w, w.points.at(0), RunOptions{});
-    BOOST_TEST(!sw.weight_plate);
+    BOOST_TEST(!sw.servo.weight_plate);
     BOOST_TEST(couette_params(w, w.points.at(0), sw, box, "/tmp/p.csv").at("servo").at("plate").get<std::string>() ==
                "window");
     BOOST_TEST(has(error_of([] { tiny_case("", "", "servo_plate = \"spring\"\n"); }), "servo_plate"));
@@ -171,12 +171,12 @@ BOOST_AUTO_TEST_CASE(window_servo_capped_and_refused_where_it_would_ram) {
     // ... which a weight plate does not have
     const Case wt = tiny_case_edits({{kFill, kLoad}, {"sample_every = 50", "sample_every = 10"}},
                                     "servo_every = 10\nservo_plate = \"weight\"\n");
-    BOOST_TEST(resolve_settings(wt, wt.points.at(0), RunOptions{}).weight_plate);
+    BOOST_TEST(resolve_settings(wt, wt.points.at(0), RunOptions{}).servo.weight_plate);
     // a weight plate on a rough top: allowed, the bumps go to the driver
     const Case rough = tiny_case_edits({{kFill, kLoad}, {"roughness = 0.5", "roughness = 0.5\nsurface = \"bumps\""}},
                                        "servo_plate = \"weight\"\nservo_max_gap = 1.75\n");
     const Settings sr = resolve_settings(rough, rough.points.at(0), RunOptions{});
-    BOOST_TEST(sr.weight_plate);
+    BOOST_TEST(sr.servo.weight_plate);
     BOOST_TEST(sr.bumps_top.has_value());
 }
 
