@@ -24,7 +24,8 @@ void add_servo_keys(SectionSpec& s) {
            "servo_plate = \"weight\": the plate's mass as a multiple of the grains' (a numerical choice: a light "
            "plate follows the bed within a millisecond, a dead weight P A / g oscillates for tens of ms)");
     s.integer("servo_every", 0, Range::closed(0, 1e8),
-              "control = load: steps between top-plate updates (force averaged over them); 0 = sample_every");
+              "control = load: steps between the window servo's plate updates (force averaged over them), and "
+              "between the plate positions recorded (plate.txt, gap.csv); 0 = sample_every");
     s.real("servo_gain", 0.05, Range::open_closed(0, 0.1), "",
            "control = load: plate move per update in grain diameters per unit relative stress error "
            "(soft contacts, granlub dem's hertz and granlub yade: at most one grain-plate contact overlap at the "

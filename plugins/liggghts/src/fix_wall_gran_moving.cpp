@@ -23,8 +23,8 @@
 //     M dv/dt = F + F_grains,
 // F_grains the grains' force on it (minus the wall's force on them, store_force, summed over all
 // ranks at the end of each step, after every contact pass and fix impulse/solve). Semi-implicit
-// Euler: the velocity takes the step's force at its end, the plane moves by the new velocity at the
-// next step's start. Within a step the plate is a wall of infinite mass for the contacts (the
+// Euler: the velocity takes the step's force at its end, the plane moves by the new velocity in the
+// next step's contact pass (advance()). Within a step the plate is a wall of infinite mass for the contacts (the
 // impulse models' walls are): the plate takes the momentum the grains took from it one step later,
 // so momentum is conserved and the time-averaged F_grains equals -F in a steady state, with no
 // controller in between (a servo window's clamps biased that average: docs/measurements/liggghts.md).

@@ -291,7 +291,8 @@ void slice_header(const Case& c, const OperatingPoint& p, const Settings& s, std
     line(fmt::format("# Shear cell: x along the flow (periodic, L = {:g} m), y across the gap (H = {:g} m):", box.length,
                      box.gap));
     line(fmt::format("# bottom wall y = 0 sliding at U = {:g} m/s, top wall {}, z across the width{}.", U,
-                     s.load ? fmt::format("a plate {} to {:g} Pa (starts at y = {})", s.weight_plate ? "weighted" : "servo-controlled", s.target_stress,
+                     s.load ? fmt::format("a plate {} to {:g} Pa (starts at y = {})",
+                                          s.weight_plate ? "weighted" : "servo-controlled", s.target_stress,
                                           s.plate_start == box.gap ? std::string("H")
                                                                    : fmt::format("{:g} m", s.plate_start))
                             : std::string("y = H fixed"),
@@ -303,7 +304,7 @@ void slice_header(const Case& c, const OperatingPoint& p, const Settings& s, std
 }
 
 // The slice's walls: the floor, the top (a plate at ${hplate} under load control) and, without a
-// periodic width, the side walls. Returns the top wall's fix line: the servo loop remakes it.
+// periodic width, the side walls. Returns the top wall's fix line: the window servo's loop remakes it.
 std::string slice_walls(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleSet& grains,
                         const DeckLine& line) {
     const auto& box = s.box;
