@@ -20,7 +20,9 @@
 #include "granlub/results/results.h"
 #include "granlub/results/table.h"
 #include "granlub/run/sweep.h"
+#include "granlub/error.h"
 #include "load_checks.h"
+#include "settings.h"
 #include "tiny_cell.h"
 
 using namespace granlub;
@@ -60,8 +62,10 @@ gravity = 9.81
 [dem]
 time = {7}
 ring_walls = "{6}"
+servo_plate = "{8}"
 )",
-                       kD, kDensity, kH, kW, kR, load, walls, walls == "mesh" ? 0.15 : 0.25);
+                       kD, kDensity, kH, kW, kR, load, walls, walls == "mesh" ? 0.15 : 0.25,
+                       walls == "mesh" ? "window" : "weight");  // move/mesh moves the mesh top only at a speed
 }
 
 // The settled bed in ~0.07 s with mesh walls (measured 2026-11-24, 5.5 kPa: steady from 0.066 s of
@@ -166,6 +170,23 @@ BlockEstimate outer_over_inner(const test::LoadRun& r) {
 BOOST_AUTO_TEST_CASE(ring_under_the_cases_load) { check_ring(5500.0); }
 
 BOOST_AUTO_TEST_CASE(ring_with_mesh_walls) { check_ring(5500.0, "mesh"); }
+
+// A weighted plate needs the exact top (fix wall/gran/moving normal_load): with mesh walls it is
+// refused, naming the key and what is allowed.
+BOOST_AUTO_TEST_CASE(weighted_plate_with_mesh_walls_is_refused) {
+    std::string text = ring_case(5500.0, "mesh");
+    text.replace(text.find("servo_plate = \"window\""), 22, "servo_plate = \"weight\"");
+    const Case c = parse_case(text, "small_ring.toml", test::dem_schema());
+    try {
+        dem::resolve_settings(c, c.points.front(), RunOptions{});
+        BOOST_FAIL("mesh walls with a weighted plate were accepted");
+    } catch (const CaseError& e) {
+        const std::string m = e.what();
+        BOOST_TEST(m.find("servo_plate") != std::string::npos, m);
+        BOOST_TEST(m.find("primitive") != std::string::npos, m);
+        BOOST_TEST(m.find("window") != std::string::npos, m);
+    }
+}
 
 BOOST_AUTO_TEST_CASE(ring_under_a_light_load_on_two_ranks) {
     check_ring(1000.0);
