@@ -144,6 +144,7 @@ FixWallGranMoving::FixWallGranMoving(LAMMPS* lmp, int narg, char** arg)
             k += kNormalWords;
         }
     }
+    if (carrybit_ && !loaded_) error->all(FLERR, "fix wall/gran/moving: carry belongs to normal_load");
     if (!variable_.empty() || loaded_) {  // the plane: primitive type T xplane|yplane|zplane position
         int p = 3;
         while (p < narg_ && std::strcmp(arg[p], "primitive") != 0) p++;
@@ -153,7 +154,6 @@ FixWallGranMoving::FixWallGranMoving(LAMMPS* lmp, int narg, char** arg)
             error->all(FLERR, "fix wall/gran/moving: normal_velocity and normal_load move a plane (xplane, yplane, "
                               "zplane) only");
         position_ = force->numeric(FLERR, arg[p + 4]);
-        if (carrybit_ && !loaded_) error->all(FLERR, "fix wall/gran/moving: carry belongs to normal_load");
         if (loaded_ && !store_force())
             error->all(FLERR, "fix wall/gran/moving: normal_load needs store_force yes (the grains' force on the plate)");
         if (loaded_ && (position_ < lowest_ || position_ > highest_))
