@@ -57,6 +57,26 @@ BOOST_AUTO_TEST_CASE(one_line_when_everything_agrees) {
                std::string::npos);
 }
 
+// Engines on either side of Z = 4 give one short verdict, "at the transition", with each engine's
+// Z and reading (the regime table has the thresholds and persistence): it has to fit the summary.
+BOOST_AUTO_TEST_CASE(engines_on_either_side_read_at_the_transition) {
+    auto s = test::make_case("summary_transition");
+    for (const char* solver : {"dem", "yade"}) test::write_solver(s, solver);
+    const std::string id = s.c.points.front().id;
+    auto regime = [](const char* verdict, double z) {
+        return nlohmann::json{{"verdict_version", 2}, {"regime", verdict}, {"criterion", "test"},
+                              {"coordination_number", z}, {"coordination_number_stderr", 0.02},
+                              {"contact_persistence", 0.8}};
+    };
+    test::patch_run(s, "dem", id, {{"flow_regime", regime("contact lubrication", 4.35)}});
+    test::patch_run(s, "yade", id, {{"flow_regime", regime("collision lubrication", 3.92)}});
+    const auto r = postproc::regime_reading(postproc::collect(s.c, s.o), id);
+    BOOST_TEST_REQUIRE(r.has_value());
+    BOOST_TEST(r->uncertain);
+    BOOST_TEST(r->text == "at the transition (engines disagree): dem Z = 4.35 (contact), yade Z = 3.92 (collision)",
+               r->text);
+}
+
 // Each state named as what it is: a dt-unconverged run's cross-section is not stamped "TRANSIENT".
 BOOST_AUTO_TEST_CASE(cross_section_stamps_name_the_state) {
     auto s = test::make_case("stamps");
