@@ -196,7 +196,9 @@ std::optional<RegimeReading> regime_reading(const Collection& col, const std::st
                 if (!first) first = l;
                 each += fmt::format("{}{} Z = {:.3g} ({})", each.empty() ? "" : ", ", x.engine,
                                     x.flow_regime.value("coordination_number", std::nan("")),
-                                    l == Lubrication::Contact ? "contact" : l == Lubrication::Collision ? "collision" : "?");
+                                    l == Lubrication::Contact     ? "contact"
+                                    : l == Lubrication::Collision ? "collision"
+                                                                  : "?");
             }
             return RegimeReading{fmt::format("at the transition ({}): {}", disagree ? "engines disagree" : "Z near 4",
                                              each),

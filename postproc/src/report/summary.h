@@ -16,7 +16,8 @@ namespace granlub::postproc {
 // agree; "at the transition" with each engine's coordination number when they straddle the
 // enduring-contact threshold (core granlub/statistics/flow_regime.h, Z = 4) or disagree.
 struct RegimeReading {
-    std::string text;      // "contact lubrication (dem, yade)", "at the transition (engines disagree): dem Z = 4.17 (contact), …"
+    // "contact lubrication (dem, yade)", "at the transition (engines disagree): dem Z = 4.17 (contact), …"
+    std::string text;
     bool uncertain = false;
 };
 std::optional<RegimeReading> regime_reading(const Collection& col, const std::string& point);
