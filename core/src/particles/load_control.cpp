@@ -60,11 +60,6 @@ nlohmann::json load_summary(const LoadSummaryInputs& in, std::map<std::string, S
     auto at_a_limit = [&](double h) { return h <= s.gap_min * (1 + 1e-9) || h >= s.gap_max * (1 - 1e-9); };
     const auto at_limit = static_cast<std::size_t>(std::count_if(plate.gap.begin(), plate.gap.end(), at_a_limit));
     const bool limit_now = at_a_limit(plate.gap.back());
-    // the window servo: windows whose stress error hit the upper clamp (their plate move was
-    // capped); a weighted plate has no clamp
-    std::size_t clamped = 0;
-    for (double pw : window_stresses(s, in.wall_step, in.top_stress, plate))
-        if (pw > (1.0 + s.servo_max_error) * s.target_stress) ++clamped;
     line = fmt::format(" gap={:.4g} mm (P_top/P={:.3f}{})", 1e3 * g.mean, top.value / s.target_stress,
                        limit_now ? ", PLATE AT ITS LIMIT: target not reachable" : "");
     nlohmann::json j = {{"target_normal_stress_Pa", s.target_stress},
@@ -81,7 +76,12 @@ nlohmann::json load_summary(const LoadSummaryInputs& in, std::map<std::string, S
             {"updates_at_plate_limit", at_limit},
             {"plate_at_limit_at_end", limit_now},
             {"gap_file", kGapFile}};
-    if (!s.weight_plate) j["updates_error_clamped"] = clamped;
+    if (!s.weight_plate) {  // the window servo's windows whose stress error hit the upper clamp (a weight has none)
+        std::size_t clamped = 0;
+        for (double pw : window_stresses(s, in.wall_step, in.top_stress, plate))
+            if (pw > (1.0 + s.servo_max_error) * s.target_stress) ++clamped;
+        j["updates_error_clamped"] = clamped;
+    }
     return j;
 }
 

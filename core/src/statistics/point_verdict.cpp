@@ -39,6 +39,14 @@ std::string numbers(const EngineRegime& r, const FlowVerdict& v) {
     return s + " (" + to_string(v.lubrication) + ")";
 }
 
+// "dem Z = 4.35 (contact)"
+std::string brief(const EngineRegime& r, const FlowVerdict& v) {
+    const auto z = number(r.flow_regime, "coordination_number");
+    const std::string name = to_string(v.lubrication);
+    return r.engine + " Z = " + (z ? fmt::format("{:.3g}", *z) : std::string("not measured")) + " (" +
+           name.substr(0, name.find(' ')) + ")";
+}
+
 bool straddles(const nlohmann::json& fr) {
     const auto z = number(fr, "coordination_number");
     const auto se = number(fr, "coordination_number_stderr");
@@ -48,12 +56,13 @@ bool straddles(const nlohmann::json& fr) {
 }  // namespace
 
 PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
-    std::string each;
+    std::string each, briefs;
     std::optional<Lubrication> agreed;
     bool disagree = false, near = false;
     for (const EngineRegime& r : runs) {
         const FlowVerdict v = read_flow_verdict(r.flow_regime);
         each += (each.empty() ? "" : "; ") + numbers(r, v);
+        briefs += (briefs.empty() ? "" : ", ") + brief(r, v);
         if (v.lubrication == Lubrication::Undetermined) continue;
         if (agreed && *agreed != v.lubrication) disagree = true;
         agreed = v.lubrication;
@@ -61,14 +70,16 @@ PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
     }
     const std::string thresholds =
         fmt::format("thresholds Z = {:g}, {:.0f} % persisting", kEnduringMinCoordination, 100 * kEnduringMinPersistence);
-    if (!agreed) return {PointRegime::Undetermined, each.empty() ? "no flow-regime record" : each};
+    if (!agreed) return {PointRegime::Undetermined, each.empty() ? "no flow-regime record" : each, briefs};
     if (disagree)
-        return {PointRegime::Transition, fmt::format("the engines fall on either side: {} ({})", each, thresholds)};
+        return {PointRegime::Transition, fmt::format("the engines fall on either side: {} ({})", each, thresholds),
+                briefs, true};
     if (near)
         return {PointRegime::Transition,
                 fmt::format("Z within {:g} block errors of {:g}: {} ({})", kTransitionSigmas, kEnduringMinCoordination,
-                            each, thresholds)};
-    return {*agreed == Lubrication::Contact ? PointRegime::Contact : PointRegime::Collision, each};
+                            each, thresholds),
+                briefs};
+    return {*agreed == Lubrication::Contact ? PointRegime::Contact : PointRegime::Collision, each, briefs};
 }
 
 }  // namespace granlub

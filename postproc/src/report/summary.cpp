@@ -186,24 +186,12 @@ std::optional<RegimeReading> regime_reading(const Collection& col, const std::st
     switch (v.regime) {
         case PointRegime::Contact:
         case PointRegime::Collision: return RegimeReading{fmt::format("{} ({})", to_string(v.regime), names), false};
-        case PointRegime::Transition: {  // short: the regime table has the numbers and the thresholds
-            std::string each;
-            std::optional<Lubrication> first;
-            bool disagree = false;
-            for (const auto& x : engines) {
-                const Lubrication l = read_flow_verdict(x.flow_regime).lubrication;
-                if (first && *first != l) disagree = true;
-                if (!first) first = l;
-                each += fmt::format("{}{} Z = {:.3g} ({})", each.empty() ? "" : ", ", x.engine,
-                                    x.flow_regime.value("coordination_number", std::nan("")),
-                                    l == Lubrication::Contact     ? "contact"
-                                    : l == Lubrication::Collision ? "collision"
-                                                                  : "?");
-            }
-            return RegimeReading{fmt::format("at the transition ({}): {}", disagree ? "engines disagree" : "Z near 4",
-                                             each),
+        case PointRegime::Transition:  // short: the regime table has the numbers and the thresholds
+            return RegimeReading{fmt::format("at the transition ({}): {}",
+                                             v.engines_disagree ? "engines disagree"
+                                                                : fmt::format("Z near {:g}", kEnduringMinCoordination),
+                                             v.brief),
                                  true};
-        }
         case PointRegime::Undetermined: break;
     }
     return RegimeReading{fmt::format("undetermined: {}", v.criterion), true};

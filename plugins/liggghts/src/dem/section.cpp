@@ -81,7 +81,7 @@ BoundKeys<Settings> declare() {
            "[cell] geometry = annulus: longest facet edge along the ring's circles, in grain diameters (the "
            "meshes' facets per circle follow from the outer wall's circumference; ring_walls = 'mesh' only)");
     add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
-    add_servo_keys(s);     // fill_for_load, servo_every, servo_gain, servo_max_gap (granlub/particles/servo.h)
+    add_servo_keys(s);     // fill_for_load, servo_plate, plate_mass, servo_every, ... (granlub/particles/servo.h)
     k.bind("sample_every", &Settings::sample_every).bind("snapshots", &Settings::snapshots);
     k.bind("stations", &Settings::stations).bind("blocks", &Settings::blocks);
     s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with yade
