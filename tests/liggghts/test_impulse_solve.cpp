@@ -155,8 +155,10 @@ BOOST_AUTO_TEST_CASE(values_out_of_range_stop_with_the_plugins_error) {
         {"rest_factor -1", "rest_factor must be a number in [0, 100]"},
         {"rest_factor 101", "rest_factor must be a number in [0, 100]"},
         {"active_set some", "active_set must be yes or no; got 'some'"},
+        {"impact_tolerance -0.01", "impact_tolerance must be a number in [0, 0.5] (0: off); got '-0.01'"},
+        {"impact_tolerance 0.6", "impact_tolerance must be a number in [0, 0.5] (0: off); got '0.6'"},
         {"tol 1e-3", "unknown keyword 'tol' (tolerance, iterations, warm_start, restitution, rest_factor, slop, correction, "
-                     "velocity_tolerance, active_set, overlap_limit, overlaps)"},
+                     "velocity_tolerance, impact_tolerance, active_set, overlap_limit, overlaps)"},
     };
     int k = 0;
     for (const Bad& b : bad)

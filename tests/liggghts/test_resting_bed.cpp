@@ -8,11 +8,13 @@
 #define BOOST_TEST_MODULE liggghts_resting_bed
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "overlaps.h"
 
@@ -95,12 +97,23 @@ BOOST_AUTO_TEST_CASE(solved_to_convergence_the_bed_comes_to_rest) {
 // and closes again gets no restitution (fix impulse/solve's rest_factor), so the bed still comes to
 // rest. Measured 2026-11-25 (0.5 s + 0.5 s): with rest_factor 0 it kept chattering, 9e-11 J and 17
 // um of sinking in 0.5 s, 60 % of the steps at the cap; with the default 1e-14 J and 0.01 um.
+// Three packings (the lattice's displacement seed): a glass bed at rest can still give way once in
+// a while, a grain slipping into a pore. Measured 2026-11-27 over five packings, the mean height's
+// change in the 0.41 s at rest: 0, 0, 0.10, 1.19, 0.74 um with impact_tolerance 0 and 3.37, 0, 0,
+// 0, 0 um with the default 0.05 (the first three packings are these); chattering sinks 17 um.
 BOOST_AUTO_TEST_CASE(glass_like_restitution_comes_to_rest_too) {
-    std::map<std::string, double> r;
-    run_bed("on", " -var e 0.9 -var steps 10000 -var more 10000", kFolder + "_glass", &r);
-    BOOST_TEST_REQUIRE(r.count("ke2") == 1u);
-    BOOST_TEST_MESSAGE("e = 0.9, iterated: ke " << r.at("ke1") << " -> " << r.at("ke2") << " J, mean height "
-                                                << r.at("zc1") << " -> " << r.at("zc2") << " m");
-    BOOST_TEST(r.at("ke2") < 1e-6 * kEnergyScale);
-    BOOST_TEST(std::abs(r.at("zc1") - r.at("zc2")) < 1e-6);
+    std::vector<double> sink;
+    for (const char* seed : {"15485863", "32452843", "49979687"}) {
+        std::map<std::string, double> r;
+        run_bed("on", std::string(" -var e 0.9 -var steps 10000 -var more 10000 -var seed ") + seed,
+                kFolder + "_glass", &r);
+        BOOST_TEST_REQUIRE(r.count("ke2") == 1u);
+        BOOST_TEST_MESSAGE("e = 0.9, packing " << seed << ", iterated: ke " << r.at("ke1") << " -> " << r.at("ke2")
+                                               << " J, mean height " << r.at("zc1") << " -> " << r.at("zc2") << " m");
+        BOOST_TEST(r.at("ke2") < 1e-6 * kEnergyScale);
+        sink.push_back(std::abs(r.at("zc1") - r.at("zc2")));
+    }
+    std::sort(sink.begin(), sink.end());
+    BOOST_TEST(sink[1] < 1e-6);  // the median packing: no sinking (m)
+    BOOST_TEST(sink[2] < 5e-6);  // none sinks as a chattering bed does
 }

@@ -47,7 +47,7 @@ private:
     void apply_forces(double dt, int nlocal, bool store_history);
     void forward(int mode);
     bool all_done(double change, double scale);
-    bool velocities_done(double change, double scale, double vchange);
+    bool velocities_done(double change, double scale, double excess);
     void watch_overlaps(bool positions_capped);  // fix_impulse_solve_watch.cpp
     void report_overlaps() const;
     FixImpulseSolve* active();                   // the fix that solves (the deck's, if this is superseded)
@@ -60,15 +60,19 @@ private:
     double rest_factor_;    // approaches below this times the contact's load velocity: no restitution
     double slop_;         // overlap left uncorrected, fraction of r_i + r_j
     double correction_;   // fraction of the rest removed per step
-    double velocity_tolerance_;  // ... or the largest velocity change / the step's velocity scale, to stop
+    double velocity_tolerance_;  // ... or the largest velocity change / the bed's velocity scale (g dt), to stop
+    double impact_tolerance_;    // ... or / the step's fastest impact (whichever limit is larger)
     bool active_set_;            // after the first sweep, solve only contacts whose grains moved
-    double vref_;                // the step's velocity scale (this rank; prepare)
+    double vlim_;                // velocity_tolerance's limit of this step (all ranks; prepare)
     double overlap_limit_;  // an overlap beyond this fraction of r_i + r_j was not removed: warn
     bool overlap_error_;    // ... or stop (keyword overlaps warn|error)
 
     // per atom (owned and ghost), grown only: velocities being solved, inverse mass and inertia,
     // boundary-contact counts (mass splitting), pseudo-velocities
     std::vector<double> vel_, omg_, im_, ii_, split_, pv_;
+    // per atom: the fastest impact that reached the grain in this step (its approach speed; prepare,
+    // carried along by the sweeps: impact_tolerance)
+    std::vector<double> jolt_;
     // active set (solve_velocities): each owned grain's contacts (CSR: adj_start_, adj_), the sweep
     // that last moved a grain beyond the stopping rules, the grains it moved, the sweep that listed a
     // contact, and the sweep's work list (contact indices, in order)

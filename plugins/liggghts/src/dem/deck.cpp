@@ -202,8 +202,9 @@ void contact_block(const Case& c, const OperatingPoint& p, const Settings& s, co
     line("pair_coeff      * *");
     if (s.law->impulse_options && s.iterated) {
         line("# contact_solve = iterated: every impulse contact of a step (pair and walls, `iterate on`) solved together");
-        line("# to convergence (plugins/liggghts/doc/fix_impulse_solve.txt)");
-        line(fmt::format("fix solve all impulse/solve tolerance {} iterations {}", s.solve_tolerance,
+        line("# to convergence (plugins/liggghts/doc/fix_impulse_solve.txt); impact_tolerance 0: an impact's");
+        line("# jolt solved like any change (the fix's default stops it at 5 % of the approach speed, for settling beds)");
+        line(fmt::format("fix solve all impulse/solve tolerance {} iterations {} impact_tolerance 0", s.solve_tolerance,
                          s.solve_iterations));
     }
     line(fmt::format("timestep        {}", s.time_step));
