@@ -194,7 +194,7 @@ BOOST_AUTO_TEST_CASE(iterated_contact_solve_writes_the_solver_and_runs) {
     BOOST_TEST_REQUIRE(b.code == 0);
     BOOST_TEST_REQUIRE(two.code == 0);
     const std::string deck = test::read_text(a.dir / "in.granlub");
-    BOOST_TEST(deck.find("fix solve all impulse/solve tolerance 1e-05 iterations 300\n") != std::string::npos);
+    BOOST_TEST(deck.find("fix solve all impulse/solve tolerance 1e-05 iterations 300 impact_tolerance 0\n") != std::string::npos);
     // pair style, bottom, top and the two side walls
     const std::regex iterate_on(" iterate on\n");
     BOOST_TEST(std::distance(std::sregex_iterator(deck.begin(), deck.end(), iterate_on), std::sregex_iterator()) == 5);

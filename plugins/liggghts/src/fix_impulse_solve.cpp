@@ -657,7 +657,7 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
     // the changes that exceed the bed's limit, so grains it did not reach keep the bed's limit.
     const double vlim2 = vlim_ * vlim_;
     const double it2 = impact_tolerance_ * impact_tolerance_;
-    double* const jolt = &jolt_[0];
+    double* const jolt = jolt_.data();
     // a contact's velocity change against its limit (> 1: beyond); passes the jolt on
     auto beyond = [&](const Contact& c, double v2, bool owned_only) {
         const bool pair = c.j >= 0;
