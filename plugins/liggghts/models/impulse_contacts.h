@@ -70,6 +70,17 @@ struct ImpulseContact {
   double q;            // S: accumulated pseudo-impulse
   double trest;        // S: speculative on: Newton's target of an impact, applied after the solve (0: none)
   double mu_close;     // S: speculative on: mu, kept while a close contact's friction waits for the rebound pass
+
+  // Only the fields a model leaves unset for some contacts (friction without tangential impulse, the
+  // gap unless close, a wall's fields on a pair); every other F field is written by every collect and
+  // every S field by the solver before it is read. Not the whole record: zeroing ~370 bytes per
+  // contact per step was a tenth of a resting bed's time (perf, heatTransfer_1 at rest).
+  ImpulseContact()
+      : i(0), j(-1), mu(0.0), tri(-1), gap(0.0), beta0(0.0), history(NULL), wallforce(NULL), mesh(NULL)
+  {
+    vwall[0] = vwall[1] = vwall[2] = 0.0;
+    delta[0] = delta[1] = delta[2] = 0.0;
+  }
 };
 
 // The contacts of one step, filled by the models and read by the solver. A model reaches it
@@ -82,7 +93,7 @@ public:
   inline void begin_collection() { contacts_.clear(); speculative_ = false; }
 
   inline ImpulseContact & add_contact() {
-    contacts_.push_back(ImpulseContact());  // capacity is kept across steps: no allocation once warm
+    contacts_.emplace_back();  // built in place; capacity is kept across steps: no allocation once warm
     return contacts_.back();
   }
 

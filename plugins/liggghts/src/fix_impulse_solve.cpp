@@ -426,8 +426,8 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
             c.tn = c.gap > 0.0 ? -c.gap / dt : 0.0;
         }
         c.impact = c.tn > 0.0 || c.trest > 0.0;
-        const double dv = dt * im[i] * std::sqrt(f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]);
-        if (dv > vbed) vbed = dv;
+        const double dv2 = im[i] * im[i] * (f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]);
+        if (dv2 > vbed) vbed = dv2;  // squared here (no root per contact), the speed after the loop
         if (c.impact) {
             if (-vn > jolt_[i]) jolt_[i] = -vn;
             if (!wall && -vn > jolt_[j]) jolt_[j] = -vn;
@@ -481,6 +481,7 @@ void FixImpulseSolve::prepare(double dt, int nlocal) {
                 omg[3 * j + d] -= c.rj * ii[j] * txp[d];
             }
     }
+    vbed = dt * std::sqrt(vbed);
     if (comm->nprocs > 1) {  // one limit for all ranks (the rule and the active set alike)
         double mine = vbed;
         MPI_Allreduce(&mine, &vbed, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -547,14 +548,15 @@ inline void kick(double* vel, double* omg, double im, double ii, double r, const
 }  // namespace
 
 // Velocity sweeps: done when the impulses changed by at most `tolerance` of the largest normal
-// impulse, or when no contact's relative velocity changed by more than its limit (excess <= 1:
+// impulse, or when no contact's relative velocity changed by more than its limit (`over` false:
 // `velocity_tolerance` of the step's own velocity scale, or `impact_tolerance` of the impact that
 // reached its grains; all ranks).
-bool FixImpulseSolve::velocities_done(double change, double scale, double excess) {
-    double local[3] = {change, scale, excess}, global[3] = {change, scale, excess};
+bool FixImpulseSolve::velocities_done(double change, double scale, bool over) {
+    const double o = over ? 1.0 : 0.0;
+    double local[3] = {change, scale, o}, global[3] = {change, scale, o};
     if (comm->nprocs > 1) MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_MAX, world);
     last_change_ = global[1] > 0.0 ? global[0] / global[1] : 0.0;
-    return global[0] <= tolerance_ * global[1] || global[2] <= 1.0;
+    return global[0] <= tolerance_ * global[1] || global[2] == 0.0;
 }
 
 bool FixImpulseSolve::all_done(double change, double scale) {
@@ -658,7 +660,7 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
     const double vlim2 = vlim_ * vlim_;
     const double it2 = impact_tolerance_ * impact_tolerance_;
     double* const jolt = jolt_.data();
-    // a contact's velocity change against its limit (> 1: beyond); passes the jolt on
+    // whether a contact's velocity change (squared) is beyond its limit; passes the jolt on
     auto beyond = [&](const Contact& c, double v2, bool owned_only) {
         const bool pair = c.j >= 0;
         const double s = pair && jolt[c.j] > jolt[c.i] ? jolt[c.j] : jolt[c.i];
@@ -666,14 +668,14 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
             jolt[c.i] = s;
             if (pair && !owned_only) jolt[c.j] = s;
         }
-        const double l2 = std::max(vlim2, it2 * s * s);
-        return l2 > 0.0 ? v2 / l2 : (v2 > 0.0 ? HUGE_VAL : 0.0);
+        return v2 > std::max(vlim2, it2 * s * s);
     };
     int sweep = 0;
     last_change_ = 0.0;
     while (sweep < iterations_) {
         ++sweep;
-        double change = 0.0, excess = 0.0;  // excess: a relative velocity's change / its limit, squared
+        double change = 0.0;
+        bool over = false;  // a relative velocity changed by more than its limit
         const double ilim2 = tolerance_ * tolerance_ * scale * scale;
         double top = 0.0;     // the largest normal impulse of the contacts solved in this sweep
         bool lowered = false;  // a contact at the largest normal impulse went down: find it again
@@ -688,11 +690,11 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
             Contact& c = cs[bidx[b]];
             const double m = contact_change(c, vel + 3 * c.i, omg + 3 * c.i, vel + 3 * c.j, omg + 3 * c.j, c.dn, c.dt);
             if (m > change) change = m;
-            const double x = beyond(c, m * c.wn * c.wn, true);  // m wn^2: its relative velocity change, squared
-            if (x > excess) excess = x;
+            const bool x = beyond(c, m * c.wn * c.wn, true);  // m wn^2: its relative velocity change, squared
+            over = over || x;
             if (c.pn > top) top = c.pn;
             if (c.pn < scale && c.pn - c.dn >= scale) lowered = true;
-            if (active_set_ && m > ilim2 && x > 1.0) mark(c.i);
+            if (active_set_ && m > ilim2 && x) mark(c.i);
         }
         for (int b = 0; b < nb; b++) {
             const Contact& c = cs[bidx[b]];
@@ -710,11 +712,11 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
             if (m > change) change = m;
             if (m == 0.0) continue;
             if (c.pn < scale && c.pn - dn >= scale) lowered = true;
-            const double x = beyond(c, m * c.wn * c.wn, false);  // m wn^2: its relative velocity change, squared
-            if (x > excess) excess = x;
+            const bool x = beyond(c, m * c.wn * c.wn, false);  // m wn^2: its relative velocity change, squared
+            over = over || x;
             kick(vel + 3 * c.i, omg + 3 * c.i, im[c.i], ii[c.i], c.ri, c.en, dn, dt, 1.0);
             if (!wall) kick(vel + 3 * c.j, omg + 3 * c.j, im[c.j], ii[c.j], c.rj, c.en, dn, dt, -1.0);
-            if (active_set_ && m > ilim2 && x > 1.0) {
+            if (active_set_ && m > ilim2 && x) {
                 mark(c.i);
                 mark(c.j);
             }
@@ -728,7 +730,7 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
             scale = top;
         }
         if (any_boundary_) forward(kCommVelocity);
-        if (velocities_done(std::sqrt(change), scale, excess)) break;  // the largest squares
+        if (velocities_done(std::sqrt(change), scale, over)) break;  // the largest impulse change, squared
         if (!active_set_) continue;
         // the next sweep's work list: the contacts of the marked grains, grain by grain in the order
         // they were marked (no sort: it cost more than the sweeps it ordered)
@@ -842,20 +844,21 @@ void FixImpulseSolve::apply_forces(double dt, int nlocal, bool store_history) {
     double** const torque = atom->torque;
     const double step = static_cast<double>(update->ntimestep);
     const int n = static_cast<int>(contacts_.size());
+    const double inv = 1.0 / dt;  // impulses to one-step forces
     for (int k = 0; k < n; k++) {
         Contact& c = contacts_[k];
         const int i = c.i, j = c.j;
         double F[3], txp[3];
-        for (int d = 0; d < 3; d++) F[d] = (c.pn * c.en[d] + c.pt[d]) / dt;
+        for (int d = 0; d < 3; d++) F[d] = (c.pn * c.en[d] + c.pt[d]) * inv;
         cross(c.en, c.pt, txp);
         for (int d = 0; d < 3; d++) {
             f[i][d] += F[d];
-            torque[i][d] -= c.ri * txp[d] / dt;
+            torque[i][d] -= c.ri * txp[d] * inv;
         }
         if (j >= 0 && j < nlocal)
             for (int d = 0; d < 3; d++) {
                 f[j][d] -= F[d];
-                torque[j][d] -= c.rj * txp[d] / dt;
+                torque[j][d] -= c.rj * txp[d] * inv;
             }
         if (c.wallforce)
             for (int d = 0; d < 3; d++) c.wallforce[d] += F[d];

@@ -47,7 +47,7 @@ private:
     void apply_forces(double dt, int nlocal, bool store_history);
     void forward(int mode);
     bool all_done(double change, double scale);
-    bool velocities_done(double change, double scale, double excess);
+    bool velocities_done(double change, double scale, bool over);
     void watch_overlaps(bool positions_capped);  // fix_impulse_solve_watch.cpp
     void report_overlaps() const;
     FixImpulseSolve* active();                   // the fix that solves (the deck's, if this is superseded)
