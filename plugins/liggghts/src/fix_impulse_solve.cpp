@@ -28,8 +28,10 @@
 //    fixed, the accumulated normal impulse clamped to >= 0 and the tangential one to the disc
 //    mu P_n, so a later sweep can take back what an earlier one gave. Sweeps repeat until the
 //    largest change of any impulse in a sweep is at most `tolerance` times the largest normal
-//    impulse of the step (all ranks), or `iterations` sweeps. An isolated contact converges in
-//    one sweep to the single pass's answer: the collision tests hold to 1e-12 either way.
+//    impulse of the step (all ranks), or no contact's relative velocity changed beyond its limit
+//    (ours: `velocity_tolerance` of g dt, or `impact_tolerance` of the approach speed of an impact
+//    whose change reached it; solve_velocities), or `iterations` sweeps. An isolated contact
+//    converges in one sweep to the single pass's answer: the collision tests hold to 1e-12 either way.
 //  * Active set (ours, switchable: active_set): after a step's first sweep only the contacts of
 //    grains the previous sweep moved beyond the stopping rules are solved (build_adjacency).
 //  * Warm start (Catto 2005): each contact starts from its impulses of the previous step, kept
@@ -655,8 +657,9 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
     // impact that reached a contact's grains. Our choice (switchable: impact_tolerance 0 solves an
     // impact's jolt to the bed's limit): an impact's change spreads through a rigid network within the
     // step, and resolving it to g dt where it arrived at 100-1000 g dt cost a settling bed most of its
-    // sweeps; 5 % of the approach speed is within what restitution is known to. The jolt travels with
-    // the changes that exceed the bed's limit, so grains it did not reach keep the bed's limit.
+    // sweeps; 5 % of the approach speed is of the order of how well a coefficient of restitution is
+    // known. The jolt travels with the changes that exceed the bed's limit, so grains it did not
+    // reach keep the bed's limit (measured: plugin README, "LIGGGHTS' tutorials").
     const double vlim2 = vlim_ * vlim_;
     const double it2 = impact_tolerance_ * impact_tolerance_;
     double* const jolt = jolt_.data();
@@ -730,7 +733,7 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
             scale = top;
         }
         if (any_boundary_) forward(kCommVelocity);
-        if (velocities_done(std::sqrt(change), scale, over)) break;  // the largest impulse change, squared
+        if (velocities_done(std::sqrt(change), scale, over)) break;  // change: the largest, squared
         if (!active_set_) continue;
         // the next sweep's work list: the contacts of the marked grains, grain by grain in the order
         // they were marked (no sort: it cost more than the sweeps it ordered)
