@@ -61,7 +61,7 @@ private:
     double slop_;         // overlap left uncorrected, fraction of r_i + r_j
     double correction_;   // fraction of the rest removed per step
     double velocity_tolerance_;  // ... or the largest velocity change / the bed's velocity scale (g dt), to stop
-    double impact_tolerance_;    // ... or / the step's fastest impact (whichever limit is larger)
+    double impact_tolerance_;    // ... or / the approach speed of the impact that reached its grains (jolt_), if larger
     bool active_set_;            // after the first sweep, solve only contacts whose grains moved
     double vlim_;                // velocity_tolerance's limit of this step (all ranks; prepare)
     double overlap_limit_;  // an overlap beyond this fraction of r_i + r_j was not removed: warn
