@@ -5,9 +5,13 @@
 // a step from (plugins/liggghts/README.md, "Error against cost"); the measured table:
 // docs/measurements/liggghts.md.
 //
-//   bench_liggghts_dt_error [--time T] [--seed N] [--fractions 0.04,0.02,0.01]
-//                           [--operators single_pass,iterated,speculative,iterated_speculative,hertz]
+//   bench_liggghts_dt_error [--time T] [--seed N] [--speed U] [--fractions 0.04,0.02,0.01]
+//                           [--operators single_pass,impact_time,iterated,speculative,
+//                                        iterated_speculative,hertz]
 //                           [--dir FOLDER]
+//
+// --speed: the wall speed (m/s, default 2.0); 1.4 is the densest point of cases/sawyer2001, where
+// the main job's single pass drifts (Z 4.5-4.8 on this cell).
 //
 // Operators: the impulse model's single pass (Sawyer & Tichy), the iterated solve (fix
 // impulse/solve), speculative contacts in the single pass and in the iterated solve, at every
@@ -41,6 +45,7 @@ struct Operator {
 
 const std::vector<Operator> kOperators = {
     {"single_pass", "contact_solve = \"single_pass\"\n"},
+    {"impact_time", "contact_solve = \"single_pass\"\nimpact_time = true\n"},
     {"iterated", "contact_solve = \"iterated\"\n"},
     {"speculative", "contact_solve = \"single_pass\"\nspeculative = true\n"},
     {"iterated_speculative", "contact_solve = \"iterated\"\nspeculative = true\n"},
@@ -94,8 +99,11 @@ std::string sci(double x) {
 
 // The case with the operator's keys: [dem] gets time, the step, the window and the keys; Hertz's
 // grains 1 GPa. window_s: the servo window in s (from an impulse run's step).
-std::string case_text(const std::string& base, const Operator& op, double time, double fraction, double window_s) {
+std::string case_text(const std::string& base, const Operator& op, double time, double fraction, double window_s,
+                      const std::string& speed) {
     std::string t = base;
+    const std::string point = "speed = [2.0]";
+    t.replace(t.find(point), point.size(), "speed = [" + speed + "]");
     std::string dem = "[dem]\ntime = " + std::to_string(time) + "\n" + op.dem_keys;
     if (!op.hertz)
         dem += "step_fraction = " + std::to_string(fraction) + "\nsample_every = " +
@@ -109,7 +117,7 @@ std::string case_text(const std::string& base, const Operator& op, double time, 
 }
 
 Run run_one(const fs::path& root, const std::string& base, const Operator& op, double time, double fraction, int seed,
-            double window_s) {
+            double window_s, const std::string& speed) {
     Run r;
     r.op = op.name;
     r.fraction = op.hertz ? 0 : fraction;
@@ -118,13 +126,13 @@ Run run_one(const fs::path& root, const std::string& base, const Operator& op, d
     const fs::path dir = root / tag;
     fs::remove_all(dir);
     fs::create_directories(dir);
-    std::ofstream(dir / "case.toml") << case_text(base, op, time, fraction, window_s);
+    std::ofstream(dir / "case.toml") << case_text(base, op, time, fraction, window_s, speed);
     const std::string cmd = std::string(GRANLUB_CLI_PATH) + " dem '" + dir.string() + "' --seed " +
                             std::to_string(seed) + " > '" + (dir / "granlub.out").string() + "' 2>&1";
     const double cpu0 = children_cpu();
     const int rc = std::system(cmd.c_str());
     const double cpu = children_cpu() - cpu0;
-    const fs::path summary = dir / "results" / "dem" / "U2.0" / "summary.json";
+    const fs::path summary = dir / "results" / "dem" / ("U" + speed) / "summary.json";
     if (rc != 0 || !fs::exists(summary)) {
         std::fprintf(stderr, "%s: granlub dem failed (see %s)\n", tag, (dir / "granlub.out").c_str());
         return r;
@@ -153,6 +161,7 @@ Run run_one(const fs::path& root, const std::string& base, const Operator& op, d
 int main(int argc, char** argv) {
     double time = 0.1;
     int seed = 1;
+    std::string speed = "2.0";  // as the case names its point folder (U2.0)
     std::vector<std::string> fractions = {"0.04", "0.02", "0.01"};
     std::vector<std::string> ops = {"single_pass", "iterated", "speculative", "iterated_speculative", "hertz"};
     fs::path root = fs::path(GRANLUB_BENCH_DIR) / "dt_error";
@@ -161,11 +170,12 @@ int main(int argc, char** argv) {
         const bool has = k + 1 < argc;
         if (a == "--time" && has) time = std::atof(argv[++k]);
         else if (a == "--seed" && has) seed = std::atoi(argv[++k]);
+        else if (a == "--speed" && has) speed = argv[++k];
         else if (a == "--fractions" && has) fractions = split(argv[++k]);
         else if (a == "--operators" && has) ops = split(argv[++k]);
         else if (a == "--dir" && has) root = argv[++k];
         else {
-            std::fprintf(stderr, "usage: %s [--time T] [--seed N] [--fractions a,b,...] [--operators a,b,...] "
+            std::fprintf(stderr, "usage: %s [--time T] [--seed N] [--speed U] [--fractions a,b,...] [--operators a,b,...] "
                                  "[--dir FOLDER]\n", argv[0]);
             return 2;
         }
@@ -173,6 +183,17 @@ int main(int argc, char** argv) {
     if (!(time > 0) || seed < 1 || fractions.empty()) {
         std::fprintf(stderr, "--time must be > 0, --seed >= 1, --fractions not empty\n");
         return 2;
+    }
+    {
+        // one decimal, as the case names the point's folder (U1.4)
+        char* end = nullptr;
+        const double u = std::strtod(speed.c_str(), &end);
+        char one[32];
+        std::snprintf(one, sizeof one, "%.1f", u);
+        if (*end != '\0' || !(u > 0) || speed != one) {
+            std::fprintf(stderr, "--speed: '%s' is not a positive speed in m/s with one decimal (e.g. 1.4)\n", speed.c_str());
+            return 2;
+        }
     }
     std::vector<double> steps;
     for (const auto& f : fractions) {
@@ -191,7 +212,7 @@ int main(int argc, char** argv) {
         for (const auto& o : kOperators)
             if (o.name == name) op = &o;
         if (!op) {
-            std::fprintf(stderr, "--operators: unknown '%s' (single_pass, iterated, speculative, "
+            std::fprintf(stderr, "--operators: unknown '%s' (single_pass, impact_time, iterated, speculative, "
                                  "iterated_speculative, hertz)\n", name.c_str());
             return 2;
         }
@@ -202,7 +223,7 @@ int main(int argc, char** argv) {
             return 2;
         }
         for (const double f : op->hertz ? std::vector<double>{0.0} : steps) {
-            runs.push_back(run_one(root, base, *op, time, f, seed, window_s));
+            runs.push_back(run_one(root, base, *op, time, f, seed, window_s, speed));
             const Run& r = runs.back();
             if (r.ok && !op->hertz) window_s = kWindowStepsAt002 * r.dt * 0.02 / f;
             if (r.ok)
@@ -211,7 +232,8 @@ int main(int argc, char** argv) {
         }
     }
 
-    std::printf("\nSmall periodic loaded cell (448 grains, U = 2 m/s, 5.5 kPa), %.3g s simulated, seed %d\n", time, seed);
+    std::printf("\nSmall periodic loaded cell (448 grains, U = %s m/s, 5.5 kPa), %.3g s simulated, seed %d\n", speed.c_str(),
+                time, seed);
     std::printf("error: against the operator's finest step | against its first-order limit 2 x(finest) - x(next)\n");
     std::printf("%-21s %8s %9s %7s %8s %8s %7s %5s %8s %9s %9s %9s %9s %10s  %s\n", "operator", "step_fr", "dt (us)",
                 "P_top", "tau_bot", "tau_top", "nu", "Z", "ovl/d", "bot fine", "top fine", "bot lim", "top lim", "CPU s/s", "status");
