@@ -30,6 +30,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -102,8 +103,10 @@ std::string sci(double x) {
 std::string case_text(const std::string& base, const Operator& op, double time, double fraction, double window_s,
                       const std::string& speed) {
     std::string t = base;
-    const std::string point = "speed = [2.0]";
-    t.replace(t.find(point), point.size(), "speed = [" + speed + "]");
+    const std::string point = "speed = [2.0]";  // the bench's case (dt_error/case.toml) has this line
+    const auto at = t.find(point);
+    if (at == std::string::npos) throw std::runtime_error("bench case: no line '" + point + "' to set --speed in");
+    t.replace(at, point.size(), "speed = [" + speed + "]");
     std::string dem = "[dem]\ntime = " + std::to_string(time) + "\n" + op.dem_keys;
     if (!op.hertz)
         dem += "step_fraction = " + std::to_string(fraction) + "\nsample_every = " +
