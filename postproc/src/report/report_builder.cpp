@@ -68,7 +68,11 @@ void how_to_read(Report& rep) {
              "computed for other inputs (rerun the solver). corrupt: cannot be read or fails the checks.");
     rep.text("Tables: in the summary, a = b: steady results agreeing within their combined standard errors "
              "(|z| ≤ 2); the others: their difference from the first. Bold = a significant difference, more than "
-             "twice the combined standard error (|z| > 2); "
+             "twice the combined standard error (|z| > 2). The standard errors are each run's own (block averages "
+             "over one seed's steady window). Runs with other seeds can scatter by more, because each seed packs its "
+             "own way (measured: in ν̄ 3–5 times one run's error on the loose rough cell; in the wall stresses a median "
+             "2 and up to 6 times on the dense, layered default cell), so a bold z says that these two runs differ; whether the "
+             "solvers do needs more seeds (--seed); "
              "between deterministic results every difference is a model difference and has no z. [Δt x]: the "
              "value's time-step error estimate. “(lattice)”, “lattice analogue”: " + std::string(kLatticeStressNote) +
              ". Wall stresses are fitted against U as σ = c Uⁿ over a solver's steady points (at "
