@@ -69,10 +69,10 @@ void how_to_read(Report& rep) {
     rep.text("Tables: in the summary, a = b: steady results agreeing within their combined standard errors "
              "(|z| ≤ 2); the others: their difference from the first. Bold = a significant difference, more than "
              "twice the combined standard error (|z| > 2). The standard errors are each run's own (block averages "
-             "over one seed's steady window). Runs with other seeds can scatter by more, because each seed packs its "
-             "own way (measured: in ν̄ 3–5 times one run's error on the loose rough cell; in the wall stresses a median "
-             "2 and up to 6 times on the dense, layered default cell), so a bold z says that these two runs differ; whether the "
-             "solvers do needs more seeds (--seed); "
+             "over one seed's steady window). Runs with other seeds can scatter by more, because each seed packs "
+             "its own way (measured: in ν̄ 3–5 times one run's error on the loose rough cell; in the wall stresses "
+             "a median 2 and up to 6 times on the dense, layered default cell), so a bold z says that these two "
+             "runs differ; whether the solvers do needs more seeds (--seed); "
              "between deterministic results every difference is a model difference and has no z. [Δt x]: the "
              "value's time-step error estimate. “(lattice)”, “lattice analogue”: " + std::string(kLatticeStressNote) +
              ". Wall stresses are fitted against U as σ = c Uⁿ over a solver's steady points (at "
@@ -172,10 +172,8 @@ void ring_section(Report& rep, const RingSliceSection& ring_s, const ReportFigur
             "walls, the curvature instead of a body force); [report] slice_case = \"{}\" ran the same points as a "
             "periodic slice with the centripetal body force standing in for the curvature. Both are written in the "
             "slice's frame (the ring by an equal-area map: z/W = −1/2 is the outer wall), so they compare quantity by "
-            "quantity. A difference is significant when it exceeds twice the combined standard error (|z| > 2, "
-            "shown bold). The standard errors are each run's own (block averages over one seed's steady window); runs "
-            "with other seeds can scatter by more than that (they do in a dense, layered bed), so a bold z says that "
-            "these two runs differ, and whether the geometries do needs more seeds (--seed). The side walls' shear "
+            "quantity. Bold and z as in every table (“How to read this report”): a bold z says that these "
+            "two runs differ; whether the geometries do needs more seeds (--seed). The side walls' shear "
             "stresses are the ring's torques on the cylinders over their areas and radii.",
             ring->slice_case));
         for (const auto& n : ring->notes) rep.text(n);
