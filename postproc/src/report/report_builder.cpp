@@ -72,8 +72,8 @@ void how_to_read(Report& rep) {
              "over one seed's steady window). Runs with other seeds can scatter by more, because each seed packs "
              "its own way (measured: in ν̄ 3–5 times one run's error on the loose rough cell; in the wall stresses "
              "a median 2 and up to 6 times on the dense, layered default cell), so a bold z says that these two "
-             "runs differ; whether the solvers do needs more seeds (--seed); "
-             "between deterministic results every difference is a model difference and has no z. [Δt x]: the "
+             "runs differ; whether the solvers do needs more seeds (--seed). "
+             "Between deterministic results every difference is a model difference and has no z. [Δt x]: the "
              "value's time-step error estimate. “(lattice)”, “lattice analogue”: " + std::string(kLatticeStressNote) +
              ". Wall stresses are fitted against U as σ = c Uⁿ over a solver's steady points (at "
              "least three) that differ only in speed: rapid (Bagnold) flow at fixed solid fraction gives n = 2, "
