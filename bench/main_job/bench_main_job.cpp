@@ -1,8 +1,9 @@
 // What a user waits for, on this machine, in one go:
 //   main_job  `granlub run cases/sawyer2001` (every solver, the report) from the built tree: its wall
 //             time, and per DEM point the grain-steps per second and the share of the point's time
-//             the Delta-t/2 check took (refine_dt: the full-step run in dt_full/, the answer at
-//             Delta-t/2 beside it)
+//             the Delta-t check took (refine_dt: the full-step run in dt_full/, the answer at
+//             Delta-t/2 beside it; refine_halvings = 2: where that pair failed, the Delta-t/2 run in
+//             dt_half/ and the answer at Delta-t/4)
 //   ring      with --ring only (tens of minutes): `granlub run cases/sawyer2001_ring --np 2` without
 //             YADE (which has no ring), its wall time and the DEM's grain-steps per second
 // Each runs into a results folder of its own under the system's temporary directory (--force: every
@@ -29,7 +30,8 @@ namespace {
 
 struct DemPoint {
     std::string id;
-    double wall_s = 0, full_step_s = 0, grain_steps_per_s = 0;
+    double wall_s = 0, check_s = 0, grain_steps_per_s = 0;  // check_s: the runs the answer was checked with
+    int halvings = 0;                                          // 0: no check; 2: answered at a quarter step
 };
 struct Measured {
     double wall_s = 0;
@@ -48,8 +50,12 @@ std::vector<DemPoint> dem_points(const fs::path& root) {
         p.id = e.path().filename().string();
         p.wall_s = s.run.value("wall_clock_s", 0.0);
         p.grain_steps_per_s = s.run.value("atom_steps_per_s", 0.0);
-        if (s.run.contains("dt_refinement") && s.run.at("dt_refinement").contains("full_step_run"))
-            p.full_step_s = s.run.at("dt_refinement").at("full_step_run").value("wall_clock_s", 0.0);
+        if (s.run.contains("dt_refinement") && s.run.at("dt_refinement").contains("full_step_run")) {
+            const auto& rec = s.run.at("dt_refinement");
+            p.halvings = rec.value("halvings", 1);
+            for (const char* run : {"full_step_run", "half_step_run"})
+                if (rec.contains(run)) p.check_s += rec.at(run).value("wall_clock_s", 0.0);
+        }
         v.push_back(p);
     }
     std::sort(v.begin(), v.end(), [](const DemPoint& a, const DemPoint& b) { return a.id < b.id; });
@@ -89,12 +95,12 @@ void print(const char* what, const Measured& m) {
     std::printf("%s: %.0f s wall\n", what, m.wall_s);
     for (const auto& p : m.dem)
         std::printf("  dem %-8s %6.0f s, %.3g grain-steps/s%s\n", p.id.c_str(), p.wall_s, p.grain_steps_per_s,
-                    p.full_step_s > 0
-                        ? (", the Delta-t/2 run " + std::to_string(static_cast<int>(
-                                                          100 * (p.wall_s - p.full_step_s) / p.wall_s + 0.5)) +
-                           " % of it (the full-step run it is checked against the rest)")
+                    p.halvings > 0
+                        ? (std::string(p.halvings == 2 ? ", the answer at Delta-t/4 " : ", the answer at Delta-t/2 ") +
+                           std::to_string(static_cast<int>(100 * (p.wall_s - p.check_s) / p.wall_s + 0.5)) +
+                           " % of it (the coarser runs it is checked with the rest)")
                               .c_str()
-                        : ", no Delta-t/2 check");
+                        : ", no Delta-t check");
 }
 
 }  // namespace

@@ -266,10 +266,10 @@ std::string result_problem(const std::filesystem::path& dir, const Summary& s, c
 namespace {
 // The tables a point's run may write beside profile.csv (results.h): the cross-section and the
 // profile across the width (cross_section.h), the plate history (load_control.h), dem's final state
-// (particles.h) and the full-step run of its time-step check (kDtCheckDir), the automaton's time
-// series.
-constexpr const char* kPointTables[] = {kSectionFile,     kWidthProfileFile, kGapFile,
-                                        "final_state.csv", "timeseries.csv",  kDtCheckProfile};
+// (particles.h) and the coarser runs of its time-step check (kDtCheckDir, kDtHalfDir), the
+// automaton's time series.
+constexpr const char* kPointTables[] = {kSectionFile,     kWidthProfileFile, kGapFile,       "final_state.csv",
+                                        "timeseries.csv", kDtCheckProfile,   kDtHalfProfile};
 
 // "" when every file of the point names the summary's run (run_id.h), else which does not. Results
 // written before run ids name none: they are corrupt, not trusted, because nothing shows that their

@@ -111,14 +111,19 @@ Regime read_regime(const nlohmann::json& run) {
     if (r.status == RegimeStatus::Steady && run.contains("dt_refinement")) {
         // a check against a run that never reached a steady state is no check: the point is a
         // transient (summaries written before the solver said so itself read the same way)
+        // (after a second halving the answer is checked against the half-step run)
         const auto& rec = run.at("dt_refinement");
-        if (rec.is_object() && rec.contains("full_step_run") && rec.at("full_step_run").is_object()) {
-            const auto& check = rec.at("full_step_run");
+        const bool twice = rec.is_object() && rec.contains("half_step_run");
+        const char* against = twice ? "half_step_run" : "full_step_run";
+        if (rec.is_object() && rec.contains(against) && rec.at(against).is_object()) {
+            const auto& check = rec.at(against);
             if (check.contains("status") && check.at("status") != "steady") {
                 // its own reason, when it gives one, says how to run it longer (e.g. the cap that stopped it)
                 const auto own = check.value("status_reason", std::string());
                 return {RegimeStatus::Transient,
-                        "the full-step run the half-step run checks against did not reach a steady state: " +
+                        std::string(twice ? "the half-step run the quarter-step run checks against"
+                                          : "the full-step run the half-step run checks against") +
+                            " did not reach a steady state: " +
                             (own.empty() ? std::string("run longer (--full, or a longer `time`)") : own)};
             }
         }

@@ -91,9 +91,12 @@ void results_found(Report& rep, const Case& c, const Collection& col) {
     if (any_dt_checked(col))
         rep.text(fmt::format("[Δt x]: the value comes from the run at half the time step, checked against a run at the "
                              "full step; x = |value(Δt) − value(Δt/2)| is its time-step error estimate (the methods "
-                             "converge at first order). A point whose mean solid fraction moves by more than {} or "
-                             "whose wall shear stress moves by more than {} % and {} standard errors is "
-                             "dt-unconverged, and says so above.",
+                             "converge at first order). Where that check failed and the case allows a second halving "
+                             "([dem] refine_halvings = 2), the value comes from a run at a quarter of the step, "
+                             "checked against the half step, and x = |value(Δt/2) − value(Δt/4)|; the solvers' "
+                             "table below names those points. A point whose mean solid fraction moves by more than {} "
+                             "or whose wall shear stress moves by more than {} % and {} standard errors on its last "
+                             "halving is dt-unconverged, and says so above.",
                              num(kDtMaxSolidFractionChange), num(100 * kDtMaxRelativeStressChange),
                              num(kDtMaxStressZ)));
     rep.fold("What each solver's numbers mean: body forces, wall stresses, contacts, run length");

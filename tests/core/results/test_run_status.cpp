@@ -83,6 +83,25 @@ BOOST_AUTO_TEST_CASE(dt_refinement_thresholds) {
     BOOST_TEST(capped.reason.find("raise [dem] time_max_full") != std::string::npos, capped.reason);
 }
 
+// After a second halving ([dem] refine_halvings = 2) the answer is checked against the half-step
+// run: that run's steadiness decides, not the full-step run's, whose check already failed.
+BOOST_AUTO_TEST_CASE(a_second_halving_is_judged_against_the_half_step_run) {
+    nlohmann::json run;
+    set_regime(run, RegimeStatus::Steady);
+    run["dt_refinement"] = refinement(0.0, 0.0, 0.0);
+    run["dt_refinement"]["full_step_run"] = {{"status", "steady"}};
+    run["dt_refinement"]["half_step_run"] = {{"status", "transient"}};
+    const Regime t = read_regime(run);
+    BOOST_TEST((t.status == RegimeStatus::Transient));
+    BOOST_TEST(t.reason.find("half-step run the quarter-step run checks against") != std::string::npos, t.reason);
+    run["dt_refinement"]["half_step_run"]["status"] = "steady";
+    run["dt_refinement"]["full_step_run"]["status"] = "transient";  // not the run the answer was compared with
+    BOOST_TEST((read_regime(run).status == RegimeStatus::Steady));
+    run["dt_refinement"] = refinement(-0.006, 0.0, 0.0);
+    run["dt_refinement"]["half_step_run"] = {{"status", "steady"}};
+    BOOST_TEST((read_regime(run).status == RegimeStatus::DtUnconverged));
+}
+
 BOOST_AUTO_TEST_CASE(failure_record_round_trip) {
     const auto dir = std::filesystem::path(GRANLUB_BINARY_DIR) / "tests" / "core-tmp" / "failure";
     std::filesystem::remove_all(dir);

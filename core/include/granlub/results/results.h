@@ -13,7 +13,7 @@
 // profile.csv without a current summary, which counts as incomplete.
 // Every file of a point names the run that wrote it (run_id.h): summary.json's provenance.run_id
 // and a "# run_id <id>" line in profile.csv and in each of the point's other tables (section.csv,
-// width_profile.csv, gap.csv, final_state.csv, timeseries.csv, dt_full/profile.csv); a point
+// width_profile.csv, gap.csv, final_state.csv, timeseries.csv, dt_full/profile.csv, dt_half/profile.csv); a point
 // whose files name different runs is corrupt.
 #pragma once
 #include <cstdint>
@@ -36,6 +36,10 @@ namespace granlub {
 // against in this folder beside its files; its profile is one of the point's tables.
 inline constexpr const char* kDtCheckDir = "dt_full";
 inline constexpr const char* kDtCheckProfile = "dt_full/profile.csv";
+// Where that check failed and the step was halved once more ([dem] refine_halvings = 2), the run at
+// half the step moves here, and the point's answer (at a quarter) is checked against it.
+inline constexpr const char* kDtHalfDir = "dt_half";
+inline constexpr const char* kDtHalfProfile = "dt_half/profile.csv";
 
 struct Case;
 struct OperatingPoint;

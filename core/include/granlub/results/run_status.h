@@ -48,7 +48,8 @@ void set_regime(nlohmann::json& run, RegimeStatus status, const std::string& rea
 Regime read_regime(const nlohmann::json& run);
 
 // The half-time-step record a solver may add as run.dt_refinement, all changes "refined minus
-// original":
+// original" (the answer minus the run at twice its step; after a second halving, [dem]
+// refine_halvings = 2, that run is "half_step_run" and the failed first pair is "first_check"):
 //   {"time_step_s": <refined step>,
 //    "mean_solid_fraction": {"change": <absolute change of the mean solid fraction>},
 //    "shear_stress_bottom": {"relative_change": <change / original>, "z": <change / combined stderr>},

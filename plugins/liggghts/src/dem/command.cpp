@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -14,6 +15,7 @@
 #include "granlub/particles/particle_pipeline.h"
 #include "granlub/particles/particles.h"
 #include "granlub/particles/until_steady.h"
+#include "granlub/results/failure_record.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
 #include "granlub/statistics/flow_regime.h"
@@ -184,65 +186,130 @@ Continued run_continued(const Case& c, const OperatingPoint& p, const Settings& 
 // The run of the point at half the time step is its answer, checked against the full step
 // ([dem] refine_dt): the full-step run goes into <dir>/dt_full (cold, from the initial grains, the
 // whole `time`, continued until steady under time_max); the half-step run into <dir> itself,
-// warm-started from dt_full's final state for refine_time (or, with refine_time = 0, cold from the initial grains for the whole `time`). Every
-// file of the point folder is then the half-step run's, and each output carries dt_error =
-// |value(dt) - value(dt/2)|, the error estimate of a first-order method at dt/2.
+// warm-started from dt_full's final state for refine_time (or, with refine_time = 0, cold from the
+// initial grains for the whole `time`). With refine_halvings = 2 a pair that fails the rule (both
+// runs steady) is repeated one halving finer: the half-step run moves to <dir>/dt_half and the run
+// at a quarter of the step (cold, the whole `time`) becomes the answer in <dir>. Every file of the
+// point folder is the answer's, and each output carries dt_error = |value(2 dt') - value(dt')|
+// (dt' the answer's step), the error estimate of a first-order method at dt'.
 struct Refined {
-    Continued coarse, fine;
-    Settings h;  // the half-step run's settings
+    std::vector<Continued> runs;     // at the case's step, then each halving: the last is the answer
+    std::vector<Settings> settings;  // their settings
     bool warm = false;
+    const Continued& answer() const { return runs.back(); }
+    const Continued& checked_against() const { return runs[runs.size() - 2]; }
 };
+
+// The pair's record (run_status.h) when both runs are steady, else nothing to judge.
+std::optional<nlohmann::json> pair_record(const Continued& coarse, const Continued& fine, double fine_step) {
+    if (!read_regime(coarse.last.out.run).steady() || !read_regime(fine.last.out.run).steady()) return std::nullopt;
+    return dt_refinement_record(fine_step, coarse.last.out.outputs, fine.last.out.outputs);
+}
+
+// A check run's profile beside its other files (the answer's profile.csv is the sweep's).
+void write_check_profile(const fs::path& folder, const Continued& run, const std::string& what, const std::string& prov) {
+    write_file_atomic(folder / "profile.csv", profile_csv(run.last.out.profile, {what, prov}));
+}
+
+// Moves the run in `dir` (every entry but the check folders and the point's records) into `to`.
+void move_run(const fs::path& dir, const fs::path& to) {
+    fs::create_directories(to);
+    std::vector<fs::path> entries;
+    for (const auto& e : fs::directory_iterator(dir)) {
+        const std::string name = e.path().filename().string();
+        if (name == kDtCheckDir || name == kDtHalfDir || name == "summary.json" || name == kFailureFile) continue;
+        entries.push_back(e.path());
+    }
+    for (const auto& e : entries) fs::rename(e, to / e.filename());
+}
 
 Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
                   const fs::path& dir, const std::string& prov) {
     Refined r;
     const fs::path full = dir / kDtCheckDir;
     fs::create_directories(full);
-    r.coarse = run_continued(c, p, s, init, full, prov);
-    write_file_atomic(full / "profile.csv",
-                      profile_csv(r.coarse.last.out.profile,
-                                  {fmt::format("case {} point {}: the run at the full time step ({:g} s), the check of "
-                                               "the point's result ../profile.csv (at half the step)",
-                                               c.name, p.id, s.time_step),
-                                   prov}));
+    r.settings.push_back(s);
+    r.runs.push_back(run_continued(c, p, s, init, full, prov));
+    write_check_profile(full, r.runs.back(),
+                        fmt::format("case {} point {}: the run at the full time step ({:g} s), the coarsest run of "
+                                    "the time-step check of the point's result ../profile.csv (run.dt_refinement)",
+                                    c.name, p.id, s.time_step),
+                        prov);
     r.warm = s.refine_time > 0;
     InitialParticles start = init;
-    r.h = refine_settings(s);
+    r.settings.push_back(refine_settings(s));
     if (r.warm) {  // from where the full-step run ended: its grains, spins and plate
         const ParticleState st = read_particle_state(full / kFinalState);
         start.particles = st.particles;
         start.file = full / kFinalState;
         start.reused = true;
-        if (s.load) r.h.plate_start = st.gap;
+        if (s.load) r.settings.back().plate_start = st.gap;
     }
-    r.fine = run_continued(c, p, r.h, start, dir, prov);
+    r.runs.push_back(run_continued(c, p, r.settings.back(), start, dir, prov));
+    if (s.refine_halvings < 2) return r;
+    const auto first = pair_record(r.runs[0], r.runs[1], r.settings[1].time_step);
+    if (!first) return r;  // a transient: no verdict to refine
+    const std::string why = dt_unconverged_reason(*first);
+    if (why.empty()) return r;
+    fmt::print(stderr, "dem {}: the run at half the step is not converged in the step ({}); halving it once more "
+               "([dem] refine_halvings = {})\n",
+               p.id, why, s.refine_halvings);
+    move_run(dir, dir / kDtHalfDir);
+    write_check_profile(dir / kDtHalfDir, r.runs[1],
+                        fmt::format("case {} point {}: the run at half the time step ({:g} s), which failed its check "
+                                    "against ../dt_full; the check of the point's result ../profile.csv (at a quarter)",
+                                    c.name, p.id, r.settings[1].time_step),
+                        prov);
+    r.settings.push_back(half_step(r.settings[1]));  // cold: refine_halvings = 2 refuses refine_time > 0
+    r.runs.push_back(run_continued(c, p, r.settings.back(), init, dir, prov));
     return r;
 }
 
-// run.dt_refinement: the full-step run against the half-step run; dt_error on every output both have.
-nlohmann::json refinement_record(const Refined& r, const Settings& s, std::map<std::string, Scalar>& outputs) {
-    const DemOutputs& full = r.coarse.last.out;
-    nlohmann::json rec = dt_refinement_record(r.h.time_step, full.outputs, r.fine.last.out.outputs);
+// A check run's line in run.dt_refinement: its folder, step, status and outputs.
+nlohmann::json check_run_record(const Continued& run, const Settings& s, const char* folder) {
+    const DemOutputs& out = run.last.out;
+    nlohmann::json outputs;
+    for (const auto& [name, v] : out.outputs)
+        outputs[name] = v.stderr_ ? nlohmann::json{{"value", v.value}, {"stderr", *v.stderr_}}
+                                  : nlohmann::json{{"value", v.value}};
+    nlohmann::json rec = {{"folder", folder},
+                          {"time_step_s", s.time_step},
+                          {"steps", s.steps},
+                          {"status", out.run.at("status")},
+                          {"status_reason", out.run.at("status_reason")},
+                          {"steady_state_start_s", out.run.at("steady_state_start_s")},
+                          {"wall_clock_s", run.wall_s},
+                          {"flow_regime", out.run.at("flow_regime")},
+                          {"outputs", outputs}};
+    if (out.run.contains("continuation")) rec["continuation"] = out.run.at("continuation");
+    return rec;
+}
+
+// run.dt_refinement: the answer against the run at twice its step; dt_error on every output both
+// have. After a second halving the failed first pair is kept as first_check.
+nlohmann::json refinement_record(const Refined& r, std::map<std::string, Scalar>& outputs) {
+    const DemOutputs& coarse = r.checked_against().last.out;
+    const Settings& h = r.settings.back();
+    nlohmann::json rec = dt_refinement_record(h.time_step, coarse.outputs, r.answer().last.out.outputs);
     for (auto& [name, v] : outputs)
-        if (const auto it = full.outputs.find(name); it != full.outputs.end())
+        if (const auto it = coarse.outputs.find(name); it != coarse.outputs.end())
             v.dt_error = std::abs(it->second.value - v.value);
-    nlohmann::json coarse;
-    for (const auto& [name, v] : full.outputs)
-        coarse[name] = v.stderr_ ? nlohmann::json{{"value", v.value}, {"stderr", *v.stderr_}}
-                                 : nlohmann::json{{"value", v.value}};
-    rec["reported"] = "the run at half the time step (this folder); dt_error = |value(dt) - value(dt/2)|";
-    rec["start"] = r.warm ? fmt::format("warm: from the full-step run's final state, {:g} s at dt/2", r.h.time)
-                          : std::string("cold: from the initial grains, the whole run at dt/2");
-    rec["full_step_run"] = {{"folder", kDtCheckDir},
-                            {"time_step_s", s.time_step},
-                            {"steps", s.steps},
-                            {"status", full.run.at("status")},
-                            {"status_reason", full.run.at("status_reason")},
-                            {"steady_state_start_s", full.run.at("steady_state_start_s")},
-                            {"wall_clock_s", r.coarse.wall_s},
-                            {"flow_regime", full.run.at("flow_regime")},
-                            {"outputs", coarse}};
-    if (full.run.contains("continuation")) rec["full_step_run"]["continuation"] = full.run.at("continuation");
+    const bool twice = r.runs.size() == 3;
+    rec["halvings"] = static_cast<int>(r.runs.size()) - 1;
+    rec["checked_against"] = twice ? kDtHalfDir : kDtCheckDir;
+    rec["reported"] = twice ? "the run at a quarter of the time step (this folder), after the check at half the step "
+                              "failed (first_check); dt_error = |value(dt/2) - value(dt/4)|"
+                            : "the run at half the time step (this folder); dt_error = |value(dt) - value(dt/2)|";
+    rec["start"] = r.warm ? fmt::format("warm: from the full-step run's final state, {:g} s at dt/2", r.settings[1].time)
+                          : std::string("cold: from the initial grains, the whole run at dt/2");  // and at dt/4
+    rec["full_step_run"] = check_run_record(r.runs[0], r.settings[0], kDtCheckDir);
+    if (twice) {
+        rec["half_step_run"] = check_run_record(r.runs[1], r.settings[1], kDtHalfDir);
+        nlohmann::json first = dt_refinement_record(r.settings[1].time_step, r.runs[0].last.out.outputs,
+                                                    r.runs[1].last.out.outputs);
+        first["verdict"] = dt_unconverged_reason(first);
+        rec["first_check"] = std::move(first);
+    }
     return rec;
 }
 
@@ -257,15 +324,15 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
     fs::remove_all(dir / kDtCheckDir);  // a check of an older result is not this one's
-    fs::remove_all(dir / "dt_half");   // where earlier versions put the half-step rerun
+    fs::remove_all(dir / kDtHalfDir);
     std::optional<Refined> refined;
     Continued single;
     if (s.refine_dt)
         refined = refine_dt(c, p, s, init, dir, prov);
     else
         single = run_continued(c, p, s, init, dir, prov);
-    const Continued& reported = refined ? refined->fine : single;
-    const Settings& rs = refined ? refined->h : s;
+    const Continued& reported = refined ? refined->answer() : single;
+    const Settings& rs = refined ? refined->settings.back() : s;
     const DemOutputs& out = reported.last.out;
 
     PointResult r;
@@ -277,7 +344,9 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     // the loop time covers the run and its persistence snapshots, of both runs when checked, and
     // of every piece of a continued run
     double loop = reported.loop_s, wall = reported.wall_s, engine_steps = reported.engine_steps;
-    if (refined) loop += refined->coarse.loop_s, wall += refined->coarse.wall_s, engine_steps += refined->coarse.engine_steps;
+    if (refined)
+        for (std::size_t k = 0; k + 1 < refined->runs.size(); ++k)
+            loop += refined->runs[k].loop_s, wall += refined->runs[k].wall_s, engine_steps += refined->runs[k].engine_steps;
     r.summary.run = out.run;
     r.summary.run["model"] = s.law->name;
     if (s.law->impulse_options) r.summary.run["contact_solve"] = s.iterated ? "iterated" : "single_pass";
@@ -297,18 +366,21 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
                          init.particles.size(), r.summary.run["steps"].get<std::int64_t>(), r.summary.run["atom_steps_per_s"].get<double>(),
                          verdict.label(), verdict.criterion);
     if (refined) {
-        r.summary.run["dt_refinement"] = refinement_record(*refined, s, r.summary.outputs);
+        r.summary.run["dt_refinement"] = refinement_record(*refined, r.summary.outputs);
         // the point's status is read as the report reads it (read_regime): its own run's, then the
         // check's verdict on it; written out so that summary.json says it too
         const Regime point = read_regime(r.summary.run);
         if (point.status == RegimeStatus::Unknown) throw Error("internal: " + point.reason);
         set_regime(r.summary.run, point.status, point.reason);
+        const bool twice = refined->runs.size() == 3;
+        const std::string at = twice ? " [dt/4, after dt/2 failed its check]" : " [dt/2]", against = twice ? "dt/2" : "dt";
         if (!read_regime(out.run).steady())
-            r.line += " [dt/2] no verdict on dt (this run is not steady)";  // no answer to compare
+            r.line += at + " no verdict on " + against + " (this run is not steady)";  // no answer to compare
         else if (point.status == RegimeStatus::Transient)
-            r.line += " [dt/2] TRANSIENT: " + point.reason + " (no verdict on dt)";
+            r.line += at + " TRANSIENT: " + point.reason + " (no verdict on " + against + ")";
         else
-            r.line += point.steady() ? " [dt/2] converged in dt" : " [dt/2] NOT CONVERGED in dt (" + point.reason + ")";
+            r.line += point.steady() ? at + " converged in " + against
+                                     : at + " NOT CONVERGED in " + against + " (" + point.reason + ")";
     }
     return r;
 }

@@ -54,6 +54,12 @@ BoundKeys<Settings> declare() {
            "refine_dt: 0 = the half-step run is cold, the whole `time` from the initial grains; > 0 = this long, "
            "warm-started from the full-step run's final state (cheaper, but a layered packing keeps the full "
            "step's state: on sawyer2001 it missed the cold run's answer by 3-6 standard errors at 1.4 and 2 m/s)");
+    k.integer("refine_halvings", &Settings::refine_halvings, 1, Range::closed(1, 2),
+              "refine_dt: the most halvings of the step. 1 = the answer at half the step, checked against the full "
+              "step; 2 = where that check fails the rule (both runs steady), the step is halved once more (cold, the "
+              "whole `time`; the half-step run moves to folder dt_half/) and the answer is the run at a quarter of "
+              "the step, checked against the half step");
+    s.keys.back().neutral_default = true;  // 1: what every earlier result was computed with
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
     add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)

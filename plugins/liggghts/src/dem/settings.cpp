@@ -148,6 +148,16 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
         } catch (const CaseError& e) {
             s.fail("refine_time", e.what());
         }
+    if (st.refine_halvings > 1 && !st.refine_dt)
+        s.fail("refine_halvings", fmt::format("{} halvings need the time-step check: set refine_dt = true, or "
+                                              "refine_halvings = 1 (allowed: 1 without the check, 1 or 2 with it)",
+                                              st.refine_halvings));
+    if (st.refine_halvings > 1 && st.refine_time > 0)
+        s.fail("refine_halvings", fmt::format("{} halvings repeat a cold check only: a warm-started half-step run "
+                                              "(refine_time = {:g} s) keeps the coarser step's packing, so a second "
+                                              "halving would check that memory, not the step (allowed: 1 with "
+                                              "refine_time > 0, 2 with refine_time = 0)",
+                                              st.refine_halvings, st.refine_time));
     if (st.ring) resolve_ring(c, s, st);
     st.bumps_bottom = wall_bumps(c, p, p.bottom, "bottom", st.box);
     st.bumps_top = wall_bumps(c, p, p.top, "top", st.box);
@@ -212,6 +222,7 @@ nlohmann::json Settings::to_json() const {
                             {"geometry", ring ? "annulus" : "slice"},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
+    if (refine_halvings != 1) j.update(nlohmann::json{{"refine_halvings", refine_halvings}});  // absent: 1, as every earlier result
     if (impact_time) j.update(nlohmann::json{{"impact_time", true}});  // absent: off, as every earlier result
     if (speculative) j.update(nlohmann::json{{"speculative", true}});  // absent: off, as every earlier result
     if (iterated)

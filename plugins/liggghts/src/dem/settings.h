@@ -46,6 +46,7 @@ struct Settings : ServoSettings {
     bool vtk = false;
     bool refine_dt = false;       // the point's answer at time_step / 2, checked against time_step (run.dt_refinement)
     double refine_time = 0;       // s, the half-step run warm-started from the full-step run's end; 0: cold, `time`
+    std::int64_t refine_halvings = 1;  // refine_dt: 2 = a failed check at dt/2 is repeated at dt/4 (cold)
     std::int64_t snapshots = 0;   // particle snapshots per run ([dem] snapshots)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
