@@ -96,6 +96,37 @@ BOOST_AUTO_TEST_CASE(each_solver_says_what_its_numbers_mean) {
     BOOST_TEST(html.find("stresses are lattice analogues") != std::string::npos);
 }
 
+// A point answered at a quarter step ([dem] refine_halvings = 2) is named with the verdict that sent
+// it there; the run length compares with the runs the answers were checked against.
+BOOST_AUTO_TEST_CASE(a_point_answered_at_a_quarter_step_says_why) {
+    auto s = test::make_case("scope_quarter");
+    test::write_solver(s, "dem");
+    const std::string why = "halving the time step moves shear_stress_bottom by -9.1 % (-11.1 standard errors)";
+    for (const OperatingPoint& p : s.c.points) {
+        const bool quarter = &p == &s.c.points.front();
+        nlohmann::json rec = {{"time_step_s", quarter ? 2.5e-7 : 5e-7},
+                              {"start", "cold: from the initial grains, the whole run at dt/2"},
+                              {"mean_solid_fraction", {{"change", 0.001}}},
+                              {"shear_stress_bottom", {{"relative_change", 0.003}, {"z", 0.2}}},
+                              {"shear_stress_top", {{"relative_change", 0.01}, {"z", 0.5}}},
+                              {"full_step_run", {{"status", "steady"}, {"steps", 1000}, {"time_step_s", 1e-6}}}};
+        if (quarter) {
+            rec["halvings"] = 2;
+            rec["half_step_run"] = {{"status", "steady"}, {"steps", 2000}, {"time_step_s", 5e-7}};
+            rec["first_check"] = {{"verdict", why}};
+        }
+        test::patch_run(s, "dem", p.id, {{"simulated_time_s", 0.001}, {"dt_refinement", rec}});
+    }
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string dem = md_row(test::slurp(s.o.results_root / "report" / "report.md"), kScope, "dem");
+    BOOST_TEST(dem.find("checked against a run of 0.001 s at twice the step") != std::string::npos, dem);
+    BOOST_TEST(dem.find(s.c.points.front().id + ": at a quarter of the step (cold, the whole run), checked against "
+                        "the half step, because the half step failed its check against the full step (" + why + ")") !=
+                   std::string::npos,
+               dem);
+    BOOST_TEST(dem.find(s.c.points.back().id + ": at a quarter") == std::string::npos, dem);
+}
+
 BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) {
     auto s = edited_case("scope_load", "control = \"fill\"", "control = \"load\"");  // target 1000 Pa
     test::write_solver(s, "continuum");
