@@ -207,7 +207,8 @@ std::optional<nlohmann::json> pair_record(const Continued& coarse, const Continu
 }
 
 // A check run's profile beside its other files (the answer's profile.csv is the sweep's).
-void write_check_profile(const fs::path& folder, const Continued& run, const std::string& what, const std::string& prov) {
+void write_check_profile(const fs::path& folder, const Continued& run, const std::string& what,
+                         const std::string& prov) {
     write_file_atomic(folder / "profile.csv", profile_csv(run.last.out.profile, {what, prov}));
 }
 
@@ -345,8 +346,10 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     // of every piece of a continued run
     double loop = reported.loop_s, wall = reported.wall_s, engine_steps = reported.engine_steps;
     if (refined)
-        for (std::size_t k = 0; k + 1 < refined->runs.size(); ++k)
-            loop += refined->runs[k].loop_s, wall += refined->runs[k].wall_s, engine_steps += refined->runs[k].engine_steps;
+        for (std::size_t k = 0; k + 1 < refined->runs.size(); ++k) {
+            const Continued& check = refined->runs[k];
+            loop += check.loop_s, wall += check.wall_s, engine_steps += check.engine_steps;
+        }
     r.summary.run = out.run;
     r.summary.run["model"] = s.law->name;
     if (s.law->impulse_options) r.summary.run["contact_solve"] = s.iterated ? "iterated" : "single_pass";
@@ -373,7 +376,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
         if (point.status == RegimeStatus::Unknown) throw Error("internal: " + point.reason);
         set_regime(r.summary.run, point.status, point.reason);
         const bool twice = refined->runs.size() == 3;
-        const std::string at = twice ? " [dt/4, after dt/2 failed its check]" : " [dt/2]", against = twice ? "dt/2" : "dt";
+        const std::string at = twice ? " [dt/4, after dt/2 failed its check]" : " [dt/2]";
+        const std::string against = twice ? "dt/2" : "dt";
         if (!read_regime(out.run).steady())
             r.line += at + " no verdict on " + against + " (this run is not steady)";  // no answer to compare
         else if (point.status == RegimeStatus::Transient)

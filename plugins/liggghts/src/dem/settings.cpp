@@ -222,7 +222,8 @@ nlohmann::json Settings::to_json() const {
                             {"geometry", ring ? "annulus" : "slice"},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
-    if (refine_halvings != 1) j.update(nlohmann::json{{"refine_halvings", refine_halvings}});  // absent: 1, as every earlier result
+    if (refine_halvings != 1)  // absent: 1, as every earlier result
+        j.update(nlohmann::json{{"refine_halvings", refine_halvings}});
     if (impact_time) j.update(nlohmann::json{{"impact_time", true}});  // absent: off, as every earlier result
     if (speculative) j.update(nlohmann::json{{"speculative", true}});  // absent: off, as every earlier result
     if (iterated)
