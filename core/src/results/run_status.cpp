@@ -62,6 +62,15 @@ std::string dt_unconverged_reason(const nlohmann::json& r) {
     return why;
 }
 
+std::optional<std::string> dt_check_failure(const nlohmann::json& coarse_run, const nlohmann::json& fine_run,
+                                            const nlohmann::json& record) {
+    if (!read_regime(fine_run).steady()) return std::nullopt;
+    if (const Regime coarse = read_regime(coarse_run); !coarse.steady())
+        return "the run at twice the step did not reach a steady state" +
+               (coarse.reason.empty() ? std::string() : " (" + coarse.reason + ")");
+    return dt_unconverged_reason(record);
+}
+
 nlohmann::json dt_refinement_record(double refined_time_step, const std::map<std::string, Scalar>& original,
                                     const std::map<std::string, Scalar>& refined) {
     auto both = [&](const std::string& name) -> std::pair<const Scalar*, const Scalar*> {

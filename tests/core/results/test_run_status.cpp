@@ -83,6 +83,23 @@ BOOST_AUTO_TEST_CASE(dt_refinement_thresholds) {
     BOOST_TEST(capped.reason.find("raise [dem] time_max_full") != std::string::npos, capped.reason);
 }
 
+// When a check is repeated one halving finer: the pair fails the rule, or the coarser run never got
+// steady while the finer one did; never when the finer run (the answer) is itself a transient.
+BOOST_AUTO_TEST_CASE(a_check_is_refined_when_it_fails_or_has_no_steady_coarse_run) {
+    nlohmann::json steady, transient;
+    set_regime(steady, RegimeStatus::Steady);
+    set_regime(transient, RegimeStatus::Transient, "the gap still drifts");
+    const nlohmann::json pass = refinement(0.0, 0.0, 0.0), fail = refinement(-0.006, 0.0, 0.0);
+    BOOST_TEST(dt_check_failure(steady, steady, pass).value() == "");
+    BOOST_TEST(dt_check_failure(steady, steady, fail).value() == dt_unconverged_reason(fail));
+    BOOST_TEST(!dt_check_failure(steady, steady, fail).value().empty());
+    const auto no_coarse = dt_check_failure(transient, steady, pass);
+    BOOST_TEST(no_coarse.value().find("did not reach a steady state (the gap still drifts)") != std::string::npos,
+               no_coarse.value());
+    BOOST_TEST(!dt_check_failure(steady, transient, fail).has_value());
+    BOOST_TEST(!dt_check_failure(transient, transient, pass).has_value());
+}
+
 // After a second halving ([dem] refine_halvings = 2) the answer is checked against the half-step
 // run: that run's steadiness decides, not the full-step run's, whose check already failed.
 BOOST_AUTO_TEST_CASE(a_second_halving_is_judged_against_the_half_step_run) {

@@ -64,6 +64,14 @@ inline constexpr double kDtMaxStressZ = 2.0;
 // the record is malformed.
 std::string dt_unconverged_reason(const nlohmann::json& dt_refinement);
 
+// Whether a Delta-t check should be repeated one halving finer ([dem] refine_halvings = 2), from the
+// two runs' own run blocks and their record (dt_refinement_record): nullopt when the finer run is
+// not steady (it is the answer: a transient, to be run longer, not refined); "" when the pair is
+// converged; otherwise why not: the rule's reason, or that the coarser run never reached a steady
+// state (no check against it is possible, while the finer run can still be checked one step finer).
+std::optional<std::string> dt_check_failure(const nlohmann::json& coarse_run, const nlohmann::json& fine_run,
+                                            const nlohmann::json& record);
+
 // Writes the record above from the outputs of the original run and of the rerun at
 // refined_time_step: mean_solid_fraction {"change", "original", "refined"}, and for each of the
 // stresses and slips present in both, {"relative_change", "z", "original", "refined",

@@ -200,12 +200,6 @@ struct Refined {
     const Continued& checked_against() const { return runs[runs.size() - 2]; }
 };
 
-// The pair's record (run_status.h) when both runs are steady, else nothing to judge.
-std::optional<nlohmann::json> pair_record(const Continued& coarse, const Continued& fine, double fine_step) {
-    if (!read_regime(coarse.last.out.run).steady() || !read_regime(fine.last.out.run).steady()) return std::nullopt;
-    return dt_refinement_record(fine_step, coarse.last.out.outputs, fine.last.out.outputs);
-}
-
 // A check run's profile beside its other files (the answer's profile.csv is the sweep's).
 void write_check_profile(const fs::path& folder, const Continued& run, const std::string& what,
                          const std::string& prov) {
@@ -248,13 +242,13 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
     }
     r.runs.push_back(run_continued(c, p, r.settings.back(), start, dir, prov));
     if (s.refine_halvings < 2) return r;
-    const auto first = pair_record(r.runs[0], r.runs[1], r.settings[1].time_step);
-    if (!first) return r;  // a transient: no verdict to refine
-    const std::string why = dt_unconverged_reason(*first);
-    if (why.empty()) return r;
-    fmt::print(stderr, "dem {}: the run at half the step is not converged in the step ({}); halving it once more "
+    const auto why = dt_check_failure(
+        r.runs[0].last.out.run, r.runs[1].last.out.run,
+        dt_refinement_record(r.settings[1].time_step, r.runs[0].last.out.outputs, r.runs[1].last.out.outputs));
+    if (!why || why->empty()) return r;  // the answer a transient (run it longer), or converged
+    fmt::print(stderr, "dem {}: the run at half the step is not checked by the full step ({}); halving it once more "
                "([dem] refine_halvings = {})\n",
-               p.id, why, s.refine_halvings);
+               p.id, *why, s.refine_halvings);
     move_run(dir, dir / kDtHalfDir);
     write_check_profile(dir / kDtHalfDir, r.runs[1],
                         fmt::format("case {} point {}: the run at half the time step ({:g} s), which failed its check "
@@ -308,7 +302,7 @@ nlohmann::json refinement_record(const Refined& r, std::map<std::string, Scalar>
         rec["half_step_run"] = check_run_record(r.runs[1], r.settings[1], kDtHalfDir);
         nlohmann::json first = dt_refinement_record(r.settings[1].time_step, r.runs[0].last.out.outputs,
                                                     r.runs[1].last.out.outputs);
-        first["verdict"] = dt_unconverged_reason(first);
+        first["verdict"] = dt_check_failure(r.runs[0].last.out.run, r.runs[1].last.out.run, first).value_or("");
         rec["first_check"] = std::move(first);
     }
     return rec;

@@ -56,7 +56,8 @@ BoundKeys<Settings> declare() {
            "step's state: on sawyer2001 it missed the cold run's answer by 3-6 standard errors at 1.4 and 2 m/s)");
     k.integer("refine_halvings", &Settings::refine_halvings, 1, Range::closed(1, 2),
               "refine_dt: the most halvings of the step. 1 = the answer at half the step, checked against the full "
-              "step; 2 = where that check fails the rule (both runs steady), the step is halved once more (cold, the "
+              "step; 2 = where that check fails the rule, or the full-step run never got steady while the half-step run "
+              "did, the step is halved once more (cold, the "
               "whole `time`; the half-step run moves to folder dt_half/) and the answer is the run at a quarter of "
               "the step, checked against the half step");
     s.keys.back().neutral_default = true;  // 1: what every earlier result was computed with
