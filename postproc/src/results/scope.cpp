@@ -75,8 +75,8 @@ std::string grains_and_walls(const Case& c, const Run& first, bool particles) {
 // default case's loaded slice, three seeds at four steps (docs/measurements/liggghts.md, "The main
 // job's slice at its three speeds" and "The gap to Hertz on the slice"): the full step 2-8 % high in
 // the wall shear stresses, the half step within 0.2-3.5 % of the Delta-t -> 0 limit, and that limit
-// 3-10 % above Hertz at 1 GPa; at 2 m/s Hertz at 4 and 16 GPa extrapolates to it within 1 %, so a
-// difference of that size to soft grains is their compliance, not the step.
+// 3-10 % above Hertz at 1 GPa; at 2 and 2.8 m/s Hertz at 4 and 16 GPa extrapolates to it within 1 %,
+// so a difference of that size to soft grains is their compliance, not the step.
 std::string contact_text(const Run& r) {
     const std::string model = run_text(r, "model");
     const ContactLaw* law = find_contact_law(model);
@@ -85,10 +85,10 @@ std::string contact_text(const Run& r) {
     if (model != "impulse") return "";
     const std::string dt_error =
         " (under enduring contacts its wall stresses carry a first-order time-step error, which the Δt check "
-        "measures; on the default case's loaded slice the full step is 2–8 % high and the half step within 0.2–3.5 % "
-        "of the Δt → 0 limit. That limit lies 3–10 % above Hertz–Mindlin at 1 GPa, and at 2 m/s, where stiffer "
-        "Hertz was run, it is Hertz's stiff limit within 1 %: a DEM − soft-sphere difference of that size is the "
-        "soft grains' compliance, not this error)";
+        "measures; on the default case's loaded slice the full step is 2–8 % high and the half step within "
+        "0.2–3.5 % of the Δt → 0 limit. That limit lies 3–10 % above Hertz–Mindlin at 1 GPa, and at 2 and 2.8 m/s, "
+        "where stiffer Hertz was run, it is Hertz's stiff limit within 1 %: a DEM − soft-sphere difference of that "
+        "size is the soft grains' compliance, not this error)";
     if (run_text(r, "contact_solve") == "iterated")
         return "contacts: rigid grains, the impulse operator's contacts of each step solved together to convergence "
                "(contact dynamics)" + dt_error;
