@@ -196,6 +196,8 @@ struct Refined {
     std::vector<Continued> runs;     // at the case's step, then each halving: the last is the answer
     std::vector<Settings> settings;  // their settings
     bool warm = false;
+    nlohmann::json first_check;      // after a second halving: the failed first pair, with its verdict
+    bool twice() const { return runs.size() == 3; }
     const Continued& answer() const { return runs.back(); }
     const Continued& checked_against() const { return runs[runs.size() - 2]; }
 };
@@ -242,10 +244,12 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
     }
     r.runs.push_back(run_continued(c, p, r.settings.back(), start, dir, prov));
     if (s.refine_halvings < 2) return r;
-    const auto why = dt_check_failure(
-        r.runs[0].last.out.run, r.runs[1].last.out.run,
-        dt_refinement_record(r.settings[1].time_step, r.runs[0].last.out.outputs, r.runs[1].last.out.outputs));
+    nlohmann::json first =
+        dt_refinement_record(r.settings[1].time_step, r.runs[0].last.out.outputs, r.runs[1].last.out.outputs);
+    const auto why = dt_check_failure(r.runs[0].last.out.run, r.runs[1].last.out.run, first);
     if (!why || why->empty()) return r;  // the answer a transient (run it longer), or converged
+    first["verdict"] = *why;
+    r.first_check = std::move(first);
     fmt::print(stderr, "dem {}: the run at half the step is not checked by the full step ({}); halving it once more "
                "([dem] refine_halvings = {})\n",
                p.id, *why, s.refine_halvings);
@@ -284,26 +288,24 @@ nlohmann::json check_run_record(const Continued& run, const Settings& s, const c
 // have. After a second halving the failed first pair is kept as first_check.
 nlohmann::json refinement_record(const Refined& r, std::map<std::string, Scalar>& outputs) {
     const DemOutputs& coarse = r.checked_against().last.out;
-    const Settings& h = r.settings.back();
-    nlohmann::json rec = dt_refinement_record(h.time_step, coarse.outputs, r.answer().last.out.outputs);
+    nlohmann::json rec =
+        dt_refinement_record(r.settings.back().time_step, coarse.outputs, r.answer().last.out.outputs);
     for (auto& [name, v] : outputs)
         if (const auto it = coarse.outputs.find(name); it != coarse.outputs.end())
             v.dt_error = std::abs(it->second.value - v.value);
-    const bool twice = r.runs.size() == 3;
+    const bool twice = r.twice();
     rec["halvings"] = static_cast<int>(r.runs.size()) - 1;
     rec["checked_against"] = twice ? kDtHalfDir : kDtCheckDir;
     rec["reported"] = twice ? "the run at a quarter of the time step (this folder), after the check at half the step "
                               "failed (first_check); dt_error = |value(dt/2) - value(dt/4)|"
                             : "the run at half the time step (this folder); dt_error = |value(dt) - value(dt/2)|";
-    rec["start"] = r.warm ? fmt::format("warm: from the full-step run's final state, {:g} s at dt/2", r.settings[1].time)
-                          : std::string("cold: from the initial grains, the whole run at dt/2");  // and at dt/4
+    rec["start"] = r.warm
+                       ? fmt::format("warm: from the full-step run's final state, {:g} s at dt/2", r.settings[1].time)
+                       : std::string("cold: from the initial grains, the whole run at dt/2");  // and at dt/4
     rec["full_step_run"] = check_run_record(r.runs[0], r.settings[0], kDtCheckDir);
     if (twice) {
         rec["half_step_run"] = check_run_record(r.runs[1], r.settings[1], kDtHalfDir);
-        nlohmann::json first = dt_refinement_record(r.settings[1].time_step, r.runs[0].last.out.outputs,
-                                                    r.runs[1].last.out.outputs);
-        first["verdict"] = dt_check_failure(r.runs[0].last.out.run, r.runs[1].last.out.run, first).value_or("");
-        rec["first_check"] = std::move(first);
+        rec["first_check"] = r.first_check;
     }
     return rec;
 }
@@ -369,7 +371,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
         const Regime point = read_regime(r.summary.run);
         if (point.status == RegimeStatus::Unknown) throw Error("internal: " + point.reason);
         set_regime(r.summary.run, point.status, point.reason);
-        const bool twice = refined->runs.size() == 3;
+        const bool twice = refined->twice();
         const std::string at = twice ? " [dt/4, after dt/2 failed its check]" : " [dt/2]";
         const std::string against = twice ? "dt/2" : "dt";
         if (!read_regime(out.run).steady())
