@@ -20,7 +20,7 @@ namespace granlub::cli {
 const std::vector<SolverModule>& solver_modules() {
     static const std::vector<SolverModule> modules = [] {
         std::vector<SolverModule> m;
-#define GRANLUB_SOLVER(name, doc) m.push_back({#name, doc, name::run, name::check});
+#define GRANLUB_SOLVER(name, doc, engine) m.push_back({#name, doc, name::run, name::check, engine});
 #include "solvers.h"
 #undef GRANLUB_SOLVER
         registry_checked(m, "solver");

@@ -14,6 +14,7 @@ struct SolverModule {
     std::string description;
     std::function<int(const Case&, const RunOptions&)> run;
     std::function<void(const Case&, const RunOptions&)> check;  // what run would reject, without running
+    bool engine = false;  // its points are engine processes (solvers.h)
 };
 
 const std::vector<SolverModule>& solver_modules();

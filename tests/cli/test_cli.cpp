@@ -38,7 +38,7 @@ BOOST_AUTO_TEST_CASE(every_shipped_case_checks) {
     // one allowed failure (named as unknown, as bad_input below expects).
     const std::string help = run(exe + " --help").text;
     int checked = 0;
-    for (const fs::path root : {fs::path(src) / "cases", fs::path(src) / "plugins/liggghts/cases",
+    for (const fs::path& root : {fs::path(src) / "cases", fs::path(src) / "plugins/liggghts/cases",
                                 fs::path(src) / "plugins/yade/cases"}) {
         if (!fs::is_directory(root)) continue;
         for (const auto& e : fs::directory_iterator(root)) {

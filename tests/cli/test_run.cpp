@@ -65,3 +65,63 @@ BOOST_AUTO_TEST_CASE(run_writes_results_and_a_well_formed_report) {
     BOOST_TEST(again.text.find("continuum U1.0           complete, skipped") != std::string::npos, again.text);
     fs::remove_all(out);
 }
+
+#ifdef GRANLUB_TEST_ENGINES
+// The engines as one stage (cli/run_all.cpp, granlub/run/pipeline.h): DEM and a warm-started YADE
+// side by side on a cell of 220 grains, each YADE point from its own DEM point's final state; with
+// --threads (a core budget) they are two stages, one after the other.
+BOOST_AUTO_TEST_CASE(dem_and_a_warm_yade_run_side_by_side) {
+    const fs::path dir = fs::temp_directory_path() / "granlub_test_run_engines";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "case.toml") << R"([case]
+name = "tiny_engines"
+[grains]
+diameter = 1.0e-3
+density = 2500.0
+restitution = 0.9
+friction = 0.5
+[walls]
+restitution = 0.8
+roughness = 0.5
+[cell]
+gap = 6.0e-3
+length = 8.0e-3
+width = 6.0e-3
+annulus_radius = 0.05
+[operating]
+speed = [1.0, 2.0]
+solid_fraction = 0.4
+[body_forces]
+gravity = 9.81
+[dem]
+time = 0.02
+sample_every = 20
+[yade]
+start = "warm"
+time = 0.004
+)";
+    const std::string cmd = std::string(GRANLUB_EXE) + " run " + dir.string() + " --solvers dem,yade";
+    auto o = run(cmd);
+    BOOST_TEST(o.rc == 0, o.text);
+    BOOST_TEST(o.text.find("== [1/2] dem and yade on tiny_engines (2 point(s) each, side by side") != std::string::npos,
+               o.text);
+    BOOST_TEST(o.text.find("== [2/2] compare") != std::string::npos, o.text);
+    for (const char* point : {"U1.0", "U2.0"}) {
+        BOOST_TEST_CONTEXT(point) {
+            const auto dem = granlub::read_summary(dir / "results" / "dem" / point / "summary.json");
+            const auto yade = granlub::read_summary(dir / "results" / "yade" / point / "summary.json");
+            // each YADE point started from its DEM point's final state, written before it
+            BOOST_TEST(yade.run.at("start").get<std::string>().starts_with("warm, from granlub dem's final state"));
+            BOOST_TEST(yade.value("mean_solid_fraction") > 0.0);
+            BOOST_TEST(dem.value("mean_solid_fraction") > 0.0);
+        }
+    }
+    // a core budget: the engines one after the other, as two stages
+    auto budget = run(cmd + " --point U1.0 --threads 1 --force");
+    BOOST_TEST(budget.rc == 0, budget.text);
+    BOOST_TEST(budget.text.find("== [1/3] dem on tiny_engines (1 point(s)),") != std::string::npos, budget.text);
+    BOOST_TEST(budget.text.find("== [2/3] yade on tiny_engines") != std::string::npos, budget.text);
+    fs::remove_all(dir);
+}
+#endif

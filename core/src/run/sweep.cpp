@@ -15,6 +15,7 @@
 
 #include "granlub/error.h"
 #include "granlub/results/failure_record.h"
+#include "granlub/run/pipeline.h"
 #include "granlub/run/run_lock.h"
 
 namespace granlub {
@@ -79,11 +80,19 @@ void for_each_run(const Case& c, const RunOptions& o,
 
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve,
               int points_at_once, const std::vector<std::string>& reads) {
+    // In a pipeline (pipeline.h), whatever ends this sweep, nothing waits for it any more.
+    const struct Ended {
+        const std::string& solver;
+        ~Ended() { pipeline::ended(solver); }
+    } ended{solver};
     const auto points = c.select(o.point);
     const auto root = results_root(c, o);
     // Before anything is read: which points are complete is only known once no other run writes.
-    std::vector<LockRequest> locks{{root, solver, LockMode::Exclusive}};
-    for (const auto& r : reads) locks.push_back({root, r, LockMode::Shared});
+    // A pipeline holds the locks of its solvers already.
+    std::vector<LockRequest> locks;
+    if (!pipeline::holds(root, solver)) locks.push_back({root, solver, LockMode::Exclusive});
+    for (const auto& r : reads)
+        if (!pipeline::holds(root, r)) locks.push_back({root, r, LockMode::Shared});
     const ResultsLock held(std::move(locks), o.wait);
     const ResultKey key = result_key(c, solver);
     std::atomic<int> failed{0};
@@ -148,7 +157,18 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
 
     // Points are independent (own folder, own seed): up to points_at_once of them run side by
     // side, each exactly as it would alone, so the results do not depend on the count.
-    run_side_by_side(points, static_cast<std::size_t>(std::max(1, points_at_once)), run_point);
+    // In a pipeline a point starts once the solvers it reads have finished it, and says when it
+    // has finished itself, whatever its outcome.
+    const auto run_when_ready = [&](const OperatingPoint* p) {
+        for (const auto& r : reads) pipeline::wait_for(r, p->id);
+        const struct Finished {
+            const std::string& solver;
+            const std::string& point;
+            ~Finished() { pipeline::finished(solver, point); }
+        } finished{solver, p->id};
+        run_point(p);
+    };
+    run_side_by_side(points, static_cast<std::size_t>(std::max(1, points_at_once)), run_when_ready);
     if (failed)
         fmt::print(stderr, "{}: {} of {} point(s) failed; their results were not written\n", solver, failed.load(),
                    points.size());

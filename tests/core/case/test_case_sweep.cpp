@@ -81,8 +81,14 @@ BOOST_AUTO_TEST_CASE(hashes_track_what_results_depend_on) {
     BOOST_TEST(a.inputs_hash("other") != physics_changed.inputs_hash("other"));
     // a key with a neutral default ([walls] sides = "plane", added after results existed) is no
     // input at its default, whether defaulted or written out; any other value is
-    toy.keys.push_back({.name = "added", .type = KeyType::Choice, .default_value = Value(std::string("off")),
-                        .choices = {"off", "on"}, .doc = "added later", .neutral_default = true});
+    KeySpec added;
+    added.name = "added";
+    added.type = KeyType::Choice;
+    added.default_value = Value(std::string("off"));
+    added.choices = {"off", "on"};
+    added.doc = "added later";
+    added.neutral_default = true;
+    toy.keys.push_back(added);
     Schema later = Schema::common();
     later.add(toy);
     const Case at_default = parse_case(kValidCase + "\n[toy]\nadded = \"off\"\n", "t.toml", later);

@@ -52,7 +52,8 @@ void for_each_run(const Case& c, const RunOptions& o,
 // points run side by side (solvers whose points are separate processes: see points_at_once()).
 // The sweep holds its solver's results locked (exclusive) from start to end, and the results of
 // the solvers in `reads` shared (yade's warm start reads dem's): o.wait says whether it waits
-// for another run holding them or throws ResultsInUse.
+// for another run holding them or throws ResultsInUse. Under a SweepPipeline of the solver
+// (pipeline.h) the pipeline holds those locks, and each point waits for the points it reads.
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve,
               int points_at_once = 1, const std::vector<std::string>& reads = {});
 
