@@ -92,14 +92,24 @@ bool holds(const std::filesystem::path& results_root, const std::string& solver)
     return b.active && b.root == results_root && b.solvers.contains(solver);
 }
 
+namespace {
+bool ready(const Board& b, const std::string& solver, const std::string& point) {
+    if (!b.active) return true;
+    const auto it = b.solvers.find(solver);
+    return it == b.solvers.end() || it->second.ended || it->second.finished.contains(point);
+}
+}  // namespace
+
+bool pending(const std::string& solver, const std::string& point) {
+    Board& b = board();
+    std::lock_guard lock(b.m);
+    return !ready(b, solver, point);
+}
+
 void wait_for(const std::string& solver, const std::string& point) {
     Board& b = board();
     std::unique_lock lock(b.m);
-    b.changed.wait(lock, [&] {
-        if (!b.active) return true;
-        const auto it = b.solvers.find(solver);
-        return it == b.solvers.end() || it->second.ended || it->second.finished.contains(point);
-    });
+    b.changed.wait(lock, [&] { return ready(b, solver, point); });
 }
 
 void finished(const std::string& solver, const std::string& point) {

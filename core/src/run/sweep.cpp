@@ -160,7 +160,11 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
     // In a pipeline a point starts once the solvers it reads have finished it, and says when it
     // has finished itself, whatever its outcome.
     const auto run_when_ready = [&](const OperatingPoint* p) {
-        for (const auto& r : reads) pipeline::wait_for(r, p->id);
+        for (const auto& r : reads) {
+            if (pipeline::pending(r, p->id))
+                say(stdout, fmt::format("{} {:<14} waits for {} {}, whose results it reads\n", solver, p->id, r, p->id));
+            pipeline::wait_for(r, p->id);
+        }
         const struct Finished {
             const std::string& solver;
             const std::string& point;

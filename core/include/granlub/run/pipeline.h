@@ -37,6 +37,8 @@ private:
 namespace pipeline {
 // Whether this process's pipeline holds `solver`'s results lock under `results_root`.
 bool holds(const std::filesystem::path& results_root, const std::string& solver);
+// Whether wait_for(solver, point) would block now.
+bool pending(const std::string& solver, const std::string& point);
 // Blocks until `solver`'s sweep has finished `point` or ended; at once when `solver` is not in
 // the pipeline (or there is none).
 void wait_for(const std::string& solver, const std::string& point);
