@@ -8,6 +8,9 @@
 #include "granlub/results/results.h"
 #include "run_command.h"
 #include "xml_check.h"
+#ifdef GRANLUB_TEST_ENGINES
+#include "tiny_cell_text.h"
+#endif
 
 using granlub::test::run;
 namespace fs = std::filesystem;
@@ -74,33 +77,10 @@ BOOST_AUTO_TEST_CASE(dem_and_a_warm_yade_run_side_by_side) {
     const fs::path dir = fs::temp_directory_path() / "granlub_test_run_engines";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    std::ofstream(dir / "case.toml") << R"([case]
-name = "tiny_engines"
-[grains]
-diameter = 1.0e-3
-density = 2500.0
-restitution = 0.9
-friction = 0.5
-[walls]
-restitution = 0.8
-roughness = 0.5
-[cell]
-gap = 6.0e-3
-length = 8.0e-3
-width = 6.0e-3
-annulus_radius = 0.05
-[operating]
-speed = [1.0, 2.0]
-solid_fraction = 0.4
-[body_forces]
-gravity = 9.81
-[dem]
-time = 0.02
-sample_every = 20
-[yade]
-start = "warm"
-time = 0.004
-)";
+    std::string text = granlub::test::tiny_cell("tiny_engines", "", "time = 0.02\nsample_every = 20\n") +
+                       "[yade]\nstart = \"warm\"\ntime = 0.004\n";
+    text.replace(text.find("speed = [1.0]"), 13, "speed = [1.0, 2.0]");
+    std::ofstream(dir / "case.toml") << text;
     const std::string cmd = std::string(GRANLUB_EXE) + " run " + dir.string() + " --solvers dem,yade";
     auto o = run(cmd);
     BOOST_TEST(o.rc == 0, o.text);

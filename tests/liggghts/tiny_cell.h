@@ -1,6 +1,5 @@
-// The small shear cell the `granlub dem` tests run: d = 1 mm grains in an 8 x 6 x 6 mm cell,
-// inserted at solid fraction 0.4 (220 grains), gravity and a centripetal force. Each test adds
-// its own [operating] keys and [dem] settings. Small enough for a few seconds per run.
+// The small shear cell the `granlub dem` tests run (tiny_cell_text.h), with the dem section's
+// schema and the tests' helpers.
 #pragma once
 #include <filesystem>
 #include <regex>
@@ -8,33 +7,9 @@
 
 #include "granlub/case/case.h"
 #include "granlub/dem/command.h"
+#include "tiny_cell_text.h"
 
 namespace granlub::test {
-
-inline std::string tiny_cell(const std::string& name, const std::string& operating, const std::string& dem) {
-    return "[case]\nname = \"" + name + R"("
-[grains]
-diameter = 1.0e-3
-density = 2500.0
-restitution = 0.9
-friction = 0.5
-[walls]
-restitution = 0.8
-roughness = 0.5
-[cell]
-gap = 6.0e-3
-length = 8.0e-3
-width = 6.0e-3
-annulus_radius = 0.05
-[operating]
-speed = [1.0]
-solid_fraction = 0.4
-)" + operating + R"(
-[body_forces]
-gravity = 9.81
-[dem]
-)" + dem;
-}
 
 inline Schema dem_schema() {
     Schema s = Schema::common();

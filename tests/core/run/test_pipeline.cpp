@@ -18,18 +18,18 @@
 #include "granlub/run/pipeline.h"
 #include "granlub/run/run_lock.h"
 #include "granlub/run/sweep.h"
+#include "toy_sweep.h"
 
 using namespace granlub;
+using granlub::test::toy_result;
 namespace fs = std::filesystem;
 
 namespace {
 
 // --no-wait: a sweep that meets a lock fails at once (ResultsInUse) instead of hanging the test.
-RunOptions fresh_results(const std::string& name) {
-    RunOptions o;
-    o.results_root = fs::temp_directory_path() / name;
+RunOptions no_wait_results(const std::string& name) {
+    RunOptions o = test::fresh_results(name);
     o.wait = false;
-    fs::remove_all(o.results_root);
     return o;
 }
 
@@ -41,16 +41,6 @@ int sweep(const Case& c, const std::string& solver, const RunOptions& o, const P
     } catch (const ResultsInUse&) {
         return -2;
     }
-}
-
-PointResult toy_result(const Case& c, const OperatingPoint& p, const std::string& solver) {
-    PointResult r;
-    r.profile.add("y_over_H", {0, 1}).add("u_over_U", {1, 0}).add("solid_fraction", {0.5, 0.5}).add(
-        "temperature_over_U2", {0.01, 0.01});
-    r.summary = make_summary(c, p, solver);
-    for (const char* name : kStandardOutputs) r.summary.set(name, p.speed, "");
-    r.line = "ok";
-    return r;
 }
 
 // What happened, in order, across the threads.
@@ -79,7 +69,7 @@ void wait_until(const std::atomic<bool>& flag) {
 
 BOOST_AUTO_TEST_CASE(a_reader_point_starts_once_the_point_it_reads_is_done) {
     const Case c = parse_case(granlub::test::kValidCase, "t.toml", Schema::common());  // points U1.0, U2.0
-    const RunOptions o = fresh_results("granlub_test_pipeline");
+    const RunOptions o = no_wait_results("granlub_test_pipeline");
     const fs::path root = o.results_root;
     const ResultKey key_a = result_key(c, "a");
     Events ev;
@@ -124,7 +114,7 @@ BOOST_AUTO_TEST_CASE(a_reader_point_starts_once_the_point_it_reads_is_done) {
 
 BOOST_AUTO_TEST_CASE(a_failed_point_or_a_stopped_sweep_ends_the_wait) {
     const Case c = parse_case(granlub::test::kValidCase, "t.toml", Schema::common());
-    const RunOptions o = fresh_results("granlub_test_pipeline_fail");
+    const RunOptions o = no_wait_results("granlub_test_pipeline_fail");
     Events ev;
     const auto fails_u1 = [&](const OperatingPoint& p, const fs::path&) -> PointResult {
         if (p.id == "U1.0") throw SolverError("U1.0: the toy failed");

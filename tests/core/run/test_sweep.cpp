@@ -10,31 +10,13 @@
 #include "granlub/results/failure_record.h"
 #include "granlub/results/run_id.h"
 #include "granlub/run/sweep.h"
+#include "toy_sweep.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;
 
-namespace {
-
-// Options that write into a fresh results folder of this name in the temporary directory.
-RunOptions fresh_results(const std::string& name) {
-    RunOptions o;
-    o.results_root = fs::temp_directory_path() / name;
-    fs::remove_all(o.results_root);
-    return o;
-}
-
-PointResult toy_result(const Case& c, const OperatingPoint& p) {
-    PointResult r;
-    r.profile.add("y_over_H", {0, 1}).add("u_over_U", {1, 0}).add("solid_fraction", {0.5, 0.5}).add(
-        "temperature_over_U2", {0.01, 0.01});
-    r.summary = make_summary(c, p, "toy");
-    for (const char* name : kStandardOutputs) r.summary.set(name, p.speed, "");
-    r.line = "ok";
-    return r;
-}
-
-}  // namespace
+using granlub::test::fresh_results;
+using granlub::test::toy_result;
 
 BOOST_AUTO_TEST_CASE(skip_force_stale_and_failures) {
     RunOptions o = fresh_results("granlub_test_sweep");
