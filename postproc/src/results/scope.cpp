@@ -86,8 +86,8 @@ std::string contact_text(const Run& r) {
     const std::string dt_error =
         " (under enduring contacts its wall stresses carry a first-order time-step error, which the Δt check "
         "measures; on the default case's loaded slice the full step is 2–8 % high and the half step within "
-        "0.2–3.5 % of the Δt → 0 limit. That limit lies 3–10 % above Hertz–Mindlin at 1 GPa, and at 2 and 2.8 m/s, "
-        "where stiffer Hertz was run, it is Hertz's stiff limit within 1 %: a DEM − soft-sphere difference of that "
+        "0.2–3.5 % of the Δt → 0 limit. That limit lies 3–10 % above Hertz–Mindlin at 1 GPa, and at 1.4, 2 and 2.8 "
+        "m/s, where stiffer Hertz was run, it is Hertz's stiff limit within 1 %: a DEM − soft-sphere difference of that "
         "size is the soft grains' compliance, not this error)";
     if (run_text(r, "contact_solve") == "iterated")
         return "contacts: rigid grains, the impulse operator's contacts of each step solved together to convergence "
