@@ -36,15 +36,14 @@ std::vector<std::vector<const SolverModule*>> stages_of(const std::vector<const 
     return stages;
 }
 
-// The engines' sweeps of one stage, each in a thread of its own, under one pipeline (its locks
-// taken once; a point that reads another solver's starts once that one is done). Each engine after
+// The engines' sweeps of one stage (`names`: their solvers), each in a thread of its own, under one
+// pipeline (its locks taken once; a point that reads another solver's starts once that one is
+// done). Each engine after
 // the first yields the cores to the ones before it: the last of them to finish is the longest
 // chain of points, whose readers have to wait for it (the DEM point checked at a quarter step, then
 // its YADE point). Returns false when a sweep failed.
-bool run_side_by_side(const std::vector<const SolverModule*>& group, const Case& c, const RunOptions& o,
-                      const std::function<bool(const SolverModule*)>& run_one) {
-    std::vector<std::string> names;
-    for (const auto* m : group) names.push_back(m->name);
+bool run_side_by_side(const std::vector<const SolverModule*>& group, const std::vector<std::string>& names,
+                      const Case& c, const RunOptions& o, const std::function<bool(const SolverModule*)>& run_one) {
     const SweepPipeline pipeline(c, o, names);
     std::vector<char> ok(group.size(), 0);
     std::vector<std::exception_ptr> thrown(group.size());
@@ -58,7 +57,7 @@ bool run_side_by_side(const std::vector<const SolverModule*>& group, const Case&
                 } catch (...) {
                     thrown[k] = std::current_exception();
                 }
-                pipeline::ended(group[k]->name);  // also when it failed before its sweep began
+                pipeline::ended(names[k]);  // also when it failed before its sweep began
             });
     }
     for (const auto& e : thrown)
@@ -118,7 +117,7 @@ int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& 
             if (!run_one(group.front())) rc = 1;
             continue;
         }
-        if (!run_side_by_side(group, c, o, run_one)) rc = 1;
+        if (!run_side_by_side(group, names, c, o, run_one)) rc = 1;
     }
     if (have_compare()) {
         fmt::print("== [{}/{}] compare, {:.0f} s elapsed\n", ++stage, stages, elapsed());

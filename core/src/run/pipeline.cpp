@@ -55,7 +55,6 @@ void register_pipeline(const Case& c, const RunOptions& o, const std::vector<std
     if (b.active) throw Error("internal: a second sweep pipeline in one process");
     b.active = true;
     b.root = results_root(c, o);
-    b.solvers.clear();
     for (const auto& s : solvers) b.solvers[s] = {};
 }
 
@@ -112,22 +111,25 @@ void wait_for(const std::string& solver, const std::string& point) {
     b.changed.wait(lock, [&] { return ready(b, solver, point); });
 }
 
-void finished(const std::string& solver, const std::string& point) {
+namespace {
+// Applies `change` to `solver`'s state, if it is in the pipeline, and wakes the waiting points.
+template <class Change>
+void update(const std::string& solver, Change change) {
     Board& b = board();
     std::lock_guard lock(b.m);
     const auto it = b.solvers.find(solver);
     if (!b.active || it == b.solvers.end()) return;
-    it->second.finished.insert(point);
+    change(it->second);
     b.changed.notify_all();
+}
+}  // namespace
+
+void finished(const std::string& solver, const std::string& point) {
+    update(solver, [&](SolverState& st) { st.finished.insert(point); });
 }
 
 void ended(const std::string& solver) {
-    Board& b = board();
-    std::lock_guard lock(b.m);
-    const auto it = b.solvers.find(solver);
-    if (!b.active || it == b.solvers.end()) return;
-    it->second.ended = true;
-    b.changed.notify_all();
+    update(solver, [](SolverState& st) { st.ended = true; });
 }
 
 }  // namespace pipeline

@@ -75,7 +75,7 @@ std::string grains_and_walls(const Case& c, const Run& first, bool particles) {
 // default case's loaded slice, three seeds at four steps (docs/measurements/liggghts.md, "The main
 // job's slice at its three speeds" and "The gap to Hertz on the slice"): the full step 2-8 % high in
 // the wall shear stresses, the half step within 0.2-3.5 % of the Delta-t -> 0 limit, and that limit
-// 3-10 % above Hertz at 1 GPa; at 2 and 2.8 m/s Hertz at 4 and 16 GPa extrapolates to it within 1 %,
+// 3-10 % above Hertz at 1 GPa; at 1.4, 2 and 2.8 m/s Hertz at 4 and 16 GPa extrapolates to it within 1 %,
 // so a difference of that size to soft grains is their compliance, not the step.
 std::string contact_text(const Run& r) {
     const std::string model = run_text(r, "model");
