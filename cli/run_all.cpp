@@ -104,9 +104,8 @@ int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& 
     for (const auto& group : groups) {
         std::vector<std::string> names;
         for (const auto* m : group) names.push_back(m->name);
-        fmt::print("== [{}/{}] {} on {} ({} point(s){}), {:.0f} s elapsed\n", ++stage, stages, fmt::join(names, " and "),
-                   c.name,
-                   c.select(o.point).size(),
+        fmt::print("== [{}/{}] {} on {} ({} point(s){}), {:.0f} s elapsed\n", ++stage, stages,
+                   fmt::join(names, " and "), c.name, c.select(o.point).size(),
                    group.size() > 1 ? fmt::format(" each, side by side: a point of {} starts once the {} point it "
                                                   "reads is done",
                                                   fmt::join(names.begin() + 1, names.end(), " or "), names.front())

@@ -162,7 +162,8 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
     const auto run_when_ready = [&](const OperatingPoint* p) {
         for (const auto& r : reads) {
             if (pipeline::pending(r, p->id))
-                say(stdout, fmt::format("{} {:<14} waits for {} {}, whose results it reads\n", solver, p->id, r, p->id));
+                say(stdout,
+                    fmt::format("{} {:<14} waits for {} {}, whose results it reads\n", solver, p->id, r, p->id));
             pipeline::wait_for(r, p->id);
         }
         const struct Finished {
