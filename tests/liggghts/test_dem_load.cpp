@@ -170,6 +170,61 @@ BOOST_AUTO_TEST_CASE(bad_servo_settings_give_clear_errors) {
     }
 }
 
+// [dem] dense_inertial_number: a point whose nominal inertial number U d / (H sqrt(P / rho)) is below
+// the key runs at half the case's step, with every window, block and snapshot the same in seconds
+// (half_step) and its Delta-t check kept; a point above it is untouched. Bad combinations name the key.
+BOOST_AUTO_TEST_CASE(a_dense_point_runs_at_half_the_step) {
+    const auto with = [](const std::string& dem) { return edit(kCase, "\\[dem\\]", "[dem]\n" + dem); };
+    const Case off = parse_case(with("refine_dt = true"), "tiny_load.toml", schema());
+    const OperatingPoint& p = off.points.front();
+    const dem::Settings s0 = dem::resolve_settings(off, p, RunOptions{});
+    const double I = p.speed / off.cell.gap * off.grains.diameter / std::sqrt(p.normal_stress / off.grains.density);
+    BOOST_TEST_REQUIRE(I > 0.0);
+    BOOST_TEST(!s0.to_json().contains("dense_inertial_number"));  // off: the settings every earlier result had
+
+    const Case above = parse_case(with("refine_dt = true\ndense_inertial_number = " + std::to_string(2 * I)),
+                                  "tiny_load.toml", schema());
+    const dem::Settings sd = dem::resolve_settings(above, p, RunOptions{});
+    BOOST_TEST(sd.dense_halved);
+    BOOST_TEST(sd.inertial_nominal == I, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(sd.time_step == 0.5 * s0.time_step);
+    BOOST_TEST(sd.steps == 2 * s0.steps);
+    BOOST_TEST(sd.sample_every == 2 * s0.sample_every);
+    BOOST_TEST(sd.servo_every == 2 * s0.servo_every);
+    BOOST_TEST(sd.snapshot_every == 2 * s0.snapshot_every);
+    BOOST_TEST(sd.refine_dt);  // the check stays, at half the dense step
+    BOOST_TEST(sd.to_json().at("dense_step_halved").get<bool>());
+
+    const Case below = parse_case(with("refine_dt = true\ndense_inertial_number = " + std::to_string(0.5 * I)),
+                                  "tiny_load.toml", schema());
+    const dem::Settings sn = dem::resolve_settings(below, p, RunOptions{});
+    BOOST_TEST(!sn.dense_halved);
+    BOOST_TEST(sn.time_step == s0.time_step);
+    BOOST_TEST(sn.steps == s0.steps);
+    BOOST_TEST(!sn.to_json().at("dense_step_halved").get<bool>());
+    BOOST_TEST(sn.to_json().at("inertial_number_nominal").get<double>() == I, boost::test_tools::tolerance(1e-12));
+
+    const auto refused = [](const std::string& text, const std::string& why) {
+        try {
+            const Case c = parse_case(text, "tiny_load.toml", schema());
+            dem::resolve_settings(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("accepted: " + why);
+        } catch (const CaseError& e) {
+            const std::string w = e.what();
+            BOOST_TEST(w.find("dense_inertial_number") != std::string::npos, w);
+            BOOST_TEST(w.find(why) != std::string::npos, w);
+        }
+    };
+    refused(with("dense_inertial_number = 0.5\ntime_step = 1e-5"), "time_step = 1e-05 s is given");
+    refused(with("dense_inertial_number = -0.5"), "allowed");
+    refused(edit(with("dense_inertial_number = 0.5"), "control = \"load\"\nnormal_stress = \\[30.0\\]",
+                 "control = \"fill\""),
+            "holds a fill, not a load");
+    refused(edit(with("dense_inertial_number = 0.5\nmodel = \"hertz\""), "friction = 0.5\n\\[walls\\]",
+                 "friction = 0.5\nyoungs_modulus = 1e9\n[walls]"),
+            "model = 'hertz' sets its own step");
+}
+
 // Hertz contacts: the plate's gain is capped at one grain-plate overlap at the load per unit
 // error (a jump must not hammer the loaded contacts, settings.h); impulse contacts keep theirs.
 BOOST_AUTO_TEST_CASE(hertz_plate_moves_at_most_one_contact_overlap_per_unit_error) {

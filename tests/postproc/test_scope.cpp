@@ -127,6 +127,25 @@ BOOST_AUTO_TEST_CASE(a_point_answered_at_a_quarter_step_says_why) {
     BOOST_TEST(dem.find(s.c.points.back().id + ": at a quarter") == std::string::npos, dem);
 }
 
+// A dense point ([dem] dense_inertial_number) ran at half the case's step: the run length names it,
+// with its nominal inertial number and the threshold; a point above the threshold is not named.
+BOOST_AUTO_TEST_CASE(a_dense_point_at_half_the_step_is_named) {
+    auto s = test::make_case("scope_dense");
+    test::write_solver(s, "dem");
+    const OperatingPoint& dense = s.c.points.front();
+    test::patch_run(s, "dem", dense.id,
+                    {{"simulated_time_s", 0.001},
+                     {"dense_step",
+                      {{"inertial_number_nominal", 0.1837}, {"dense_inertial_number", 0.2}, {"case_time_step_s", 1e-6}}}});
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string dem = md_row(test::slurp(s.o.results_root / "report" / "report.md"), kScope, "dem");
+    BOOST_TEST(dem.find("dense points, whose nominal inertial number U d/(H √(P/ρ)) is below 0.2 ([dem] "
+                        "dense_inertial_number), run at half the case's step, and so do their checks: " +
+                        dense.id + " (nominal I 0.18)") != std::string::npos,
+               dem);
+    BOOST_TEST(dem.find(s.c.points.back().id + " (nominal I") == std::string::npos, dem);
+}
+
 BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) {
     auto s = edited_case("scope_load", "control = \"fill\"", "control = \"load\"");  // target 1000 Pa
     test::write_solver(s, "continuum");

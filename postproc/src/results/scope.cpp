@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "formats/format.h"
 #include "granlub/particles/contact_laws.h"
@@ -104,6 +105,8 @@ struct RunLengths {
     std::string check_start;                                  // how the first checked run's half-step run began
     std::vector<std::string> quarter;                         // points answered at a quarter step (second halving)
     std::vector<std::string> first_failed;                    // their first checks' verdicts
+    std::vector<std::string> dense;                           // points at half the case's step ([dem] dense_inertial_number)
+    double dense_below = 0;                                   // that key's value
     double cap = 0;                                           // [dem] time_max: runs continued until steady
     int continued = 0;
 };
@@ -116,6 +119,12 @@ RunLengths run_lengths(const std::vector<const Run*>& runs) {
         if (auto v = run_number(*r, "steps")) l.steps.push_back(*v);
         if (auto v = run_number(*r, "iterations")) l.iterations.push_back(*v);
         const auto& run = r->summary->run;
+        if (run.is_object() && run.contains("dense_step") && run["dense_step"].is_object()) {
+            const auto& d = run["dense_step"];
+            l.dense.push_back(fmt::format("{} (nominal I {})", r->point ? r->point->id : r->dir.filename().string(),
+                                          num(d.value("inertial_number_nominal", 0.0), 2)));
+            l.dense_below = d.value("dense_inertial_number", 0.0);
+        }
         if (run.is_object() && run.contains("continuation")) {
             l.cap = run["continuation"].value("time_max_s", 0.0);
             if (run["continuation"].value("pieces", 1) > 1) ++l.continued;
@@ -198,6 +207,10 @@ std::string particle_run_length(const Run& first, const RunLengths& l, std::size
                              "step, because the half step failed its check against the full step ({})",
                              l.quarter[k], l.first_failed[k].empty() ? "reason not recorded" : l.first_failed[k]);
     }
+    if (!l.dense.empty())  // [dem] dense_inertial_number: the step of every run of these points, checks too
+        s += fmt::format("; dense points, whose nominal inertial number U d/(H √(P/ρ)) is below {} ([dem] "
+                         "dense_inertial_number), run at half the case's step, and so do their checks: {}",
+                         num(l.dense_below, 3), fmt::join(l.dense, ", "));
     if (const std::string start = run_text(first, "start"); !start.empty()) s += "; start: " + start;
     if (const std::string plate = run_text(first, "plate"); !plate.empty()) s += "; load: " + plate;
     return s;

@@ -61,6 +61,12 @@ BoundKeys<Settings> declare() {
               "whole `time`; the half-step run moves to folder dt_half/) and the answer is the run at a quarter of "
               "the step, checked against the half step");
     s.keys.back().neutral_default = true;  // 1: what every earlier result was computed with
+    k.real("dense_inertial_number", &Settings::dense_inertial_number, 0.0, Range::closed(0, 10), "",
+           "impulse model under load control: a point whose nominal inertial number U d / (H sqrt(P / rho)) is "
+           "below this is dense and runs at half the step step_fraction gives, its time-step check too (in dense "
+           "flows with enduring contacts the single pass's full step is several per cent from its limit: plugin "
+           "README, the step rule); 0 = off");
+    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
     add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)

@@ -47,6 +47,11 @@ struct Settings : ServoSettings {
     bool refine_dt = false;       // the point's answer at time_step / 2, checked against time_step (run.dt_refinement)
     double refine_time = 0;       // s, the half-step run warm-started from the full-step run's end; 0: cold, `time`
     std::int64_t refine_halvings = 1;  // refine_dt: 2 = a failed check at dt/2 is repeated at dt/4 (cold)
+    // [dem] dense_inertial_number: a point whose nominal inertial number is below it runs at half the
+    // step the case derives (apply_dense_step); 0 = off
+    double dense_inertial_number = 0;
+    double inertial_nominal = 0;  // U d / (H sqrt(P / rho)) of the point, when that rule is on
+    bool dense_halved = false;    // the rule halved this point's step: the case's step is 2 time_step
     std::int64_t snapshots = 0;   // particle snapshots per run ([dem] snapshots)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
