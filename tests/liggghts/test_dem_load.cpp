@@ -185,7 +185,7 @@ BOOST_AUTO_TEST_CASE(a_dense_point_runs_at_half_the_step) {
     const Case above = parse_case(with("refine_dt = true\ndense_inertial_number = " + std::to_string(2 * I)),
                                   "tiny_load.toml", schema());
     const dem::Settings sd = dem::resolve_settings(above, p, RunOptions{});
-    BOOST_TEST(sd.dense_halved);
+    BOOST_TEST(sd.dense_halved());
     BOOST_TEST(sd.inertial_nominal == I, boost::test_tools::tolerance(1e-12));
     BOOST_TEST(sd.time_step == 0.5 * s0.time_step);
     BOOST_TEST(sd.steps == 2 * s0.steps);
@@ -198,7 +198,7 @@ BOOST_AUTO_TEST_CASE(a_dense_point_runs_at_half_the_step) {
     const Case below = parse_case(with("refine_dt = true\ndense_inertial_number = " + std::to_string(0.5 * I)),
                                   "tiny_load.toml", schema());
     const dem::Settings sn = dem::resolve_settings(below, p, RunOptions{});
-    BOOST_TEST(!sn.dense_halved);
+    BOOST_TEST(!sn.dense_halved());
     BOOST_TEST(sn.time_step == s0.time_step);
     BOOST_TEST(sn.steps == s0.steps);
     BOOST_TEST(!sn.to_json().at("dense_step_halved").get<bool>());

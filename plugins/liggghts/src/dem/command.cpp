@@ -359,18 +359,18 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     r.summary.run["ranks"] = reported.last.er.ranks;
     r.summary.run["initial_configuration"] = init.file.string();
     r.summary.run["initial_configuration_reused"] = init.reused;
-    if (s.dense_halved)  // [dem] dense_inertial_number: every run of the point at half the case's step
-        r.summary.run["dense_step"] = {{"inertial_number_nominal", s.inertial_nominal},
-                                       {"dense_inertial_number", s.dense_inertial_number},
-                                       {"case_time_step_s", 2 * s.time_step}};
     const auto& fr = out.run.at("flow_regime");
     const FlowVerdict verdict = read_flow_verdict(fr);
     r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s] regime: {} ({})", out.line,
                          init.particles.size(), r.summary.run["steps"].get<std::int64_t>(), r.summary.run["atom_steps_per_s"].get<double>(),
                          verdict.label(), verdict.criterion);
-    if (s.dense_halved)
+    if (s.dense_halved()) {  // [dem] dense_inertial_number: every run of the point at half the case's step
+        r.summary.run["dense_step"] = {{"inertial_number_nominal", s.inertial_nominal},
+                                       {"dense_inertial_number", s.dense_inertial_number},
+                                       {"case_time_step_s", 2 * s.time_step}};
         r.line += fmt::format(" [dense: nominal I {:.3g} < {:g}, dt half the case's]", s.inertial_nominal,
                               s.dense_inertial_number);
+    }
     if (refined) {
         r.summary.run["dt_refinement"] = refinement_record(*refined, r.summary.outputs);
         // the point's status is read as the report reads it (read_regime): its own run's, then the

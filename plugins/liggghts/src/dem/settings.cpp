@@ -145,11 +145,10 @@ void apply_dense_step(const Case& c, const OperatingPoint& p, const Section& s, 
     const auto I = inertial_number(p.speed / c.cell.gap, c.grains.diameter, p.normal_stress, c.grains.density);
     if (!I) throw Error(fmt::format("internal: point {} has no nominal inertial number", p.id));
     st.inertial_nominal = *I;
-    if (*I >= st.dense_inertial_number) return;
+    if (!st.dense_halved()) return;
     const bool refine = st.refine_dt;
     st = half_step(st);  // the same windows, blocks and snapshots in seconds, twice the steps
     st.refine_dt = refine;
-    st.dense_halved = true;
     if (!(static_cast<double>(st.steps) <= kMaxSteps))
         s.fail(key, fmt::format("point {} is dense (nominal inertial number {:.3g} < {:g}): at half the step its run "
                                 "is {} steps; at most {:g} are allowed (shorten time, or raise step_fraction)",
@@ -263,7 +262,7 @@ nlohmann::json Settings::to_json() const {
     if (dense_inertial_number > 0)  // absent: off, as every earlier result
         j.update(nlohmann::json{{"dense_inertial_number", dense_inertial_number},
                                 {"inertial_number_nominal", inertial_nominal},
-                                {"dense_step_halved", dense_halved}});
+                                {"dense_step_halved", dense_halved()}});
     if (impact_time) j.update(nlohmann::json{{"impact_time", true}});  // absent: off, as every earlier result
     if (speculative) j.update(nlohmann::json{{"speculative", true}});  // absent: off, as every earlier result
     if (iterated)

@@ -51,7 +51,8 @@ struct Settings : ServoSettings {
     // step the case derives (apply_dense_step); 0 = off
     double dense_inertial_number = 0;
     double inertial_nominal = 0;  // U d / (H sqrt(P / rho)) of the point, when that rule is on
-    bool dense_halved = false;    // the rule halved this point's step: the case's step is 2 time_step
+    // the rule halved this point's step: the case's step is 2 time_step
+    bool dense_halved() const { return dense_inertial_number > 0 && inertial_nominal < dense_inertial_number; }
     std::int64_t snapshots = 0;   // particle snapshots per run ([dem] snapshots)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
