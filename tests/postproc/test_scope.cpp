@@ -8,6 +8,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/postproc/command.h"
+#include "granlub/results/file_io.h"
 #include "granlub/results/results.h"
 #include "synthetic.h"
 
@@ -144,6 +145,29 @@ BOOST_AUTO_TEST_CASE(a_dense_point_at_half_the_step_is_named) {
                         dense.id + " (nominal I 0.18)") != std::string::npos,
                dem);
     BOOST_TEST(dem.find(s.c.points.back().id + " (nominal I") == std::string::npos, dem);
+}
+
+// The [Δt x] note says that a dense point's Δt is half the case's step, only when there is one.
+BOOST_AUTO_TEST_CASE(the_dt_note_names_the_dense_step_only_with_a_dense_point) {
+    const std::string clause = "For a dense point ([dem] dense_inertial_number) Δt is itself half the case's step";
+    for (const bool dense : {false, true}) {
+        auto s = test::make_case(dense ? "dt_note_dense" : "dt_note_plain");
+        test::write_solver(s, "dem");
+        const OperatingPoint& p = s.c.points.front();
+        // a checked value (the note is written only then)
+        const auto file = result_dir(s.o.results_root, "dem", p.id) / "summary.json";
+        auto j = nlohmann::json::parse(test::slurp(file));
+        j["outputs"]["shear_stress_bottom"]["dt_error"] = 5.0;
+        write_file_atomic(file, j.dump(2));
+        if (dense)
+            test::patch_run(s, "dem", p.id,
+                            {{"dense_step",
+                              {{"inertial_number_nominal", 0.1837}, {"dense_inertial_number", 0.2}, {"case_time_step_s", 1e-6}}}});
+        BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+        const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
+        BOOST_TEST(md.find("[Δt x]: the value comes from the run at half the time step") != std::string::npos);
+        BOOST_TEST((md.find(clause) != std::string::npos) == dense, dense);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) {

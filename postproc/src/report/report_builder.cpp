@@ -96,9 +96,14 @@ void results_found(Report& rep, const Case& c, const Collection& col) {
                              "checked against the half step, and x = |value(Δt/2) − value(Δt/4)|; the solvers' "
                              "table below names those points. A point whose mean solid fraction moves by more than {} "
                              "or whose wall shear stress moves by more than {} % and {} standard errors on its last "
-                             "halving is dt-unconverged, and says so above.",
+                             "halving is dt-unconverged, and says so above.{}",
                              num(kDtMaxSolidFractionChange), num(100 * kDtMaxRelativeStressChange),
-                             num(kDtMaxStressZ)));
+                             num(kDtMaxStressZ),
+                             any_dense_step(col)
+                                 ? " For a dense point ([dem] dense_inertial_number) Δt is itself half the case's "
+                                   "step: its value comes from a run at a quarter of the case's step, checked against "
+                                   "half of it; the solvers' table below names those points."
+                                 : ""));
     rep.fold("What each solver's numbers mean: body forces, wall stresses, contacts, run length");
     rep.table(scope_table(c, col));
     rep.end_fold();

@@ -118,6 +118,15 @@ bool any_dt_checked(const Collection& col) {
     return false;
 }
 
+bool any_dense_step(const Collection& col) {
+    for (const OperatingPoint* p : col.points)
+        for (const auto& s : col.solvers) {
+            const Run& r = col.run(s, p->id);
+            if (r.usable() && r.summary->run.is_object() && r.summary->run.contains("dense_step")) return true;
+        }
+    return false;
+}
+
 Table scope_table(const Case& c, const Collection& col) {
     Table t;
     t.header = {"solver", "grains and walls", "body forces", "wall stresses", "run length and start"};
