@@ -16,10 +16,11 @@
 // Operators: the impulse model's single pass (Sawyer & Tichy), the iterated solve (fix
 // impulse/solve; iterated_2: cut after two sweeps), speculative contacts in the single pass and
 // in the iterated solve, at every step_fraction given; Hertz (1 GPa) once, at its own step
-// (hertz_step_fraction's default), as the soft reference. Each run is `granlub dem FOLDER --seed N` on a copy of the case with these
-// [dem] keys; CPU is user + system time of that process tree (the driver included), so on a
-// shared machine compare the ratios of one invocation, not absolute seconds. Slow: a run of the
-// iterated solves takes minutes per 0.1 s simulated; never part of the test suite.
+// (hertz_step_fraction's default), as the soft reference. Each run is `granlub dem FOLDER --seed
+// N` on a copy of the case with these [dem] keys; CPU is user + system time of that process tree
+// (the driver included), so on a shared machine compare the ratios of one invocation, not absolute
+// seconds. Slow: a run of the iterated solves takes minutes per 0.1 s simulated; never part of
+// the test suite.
 #include <sys/resource.h>
 
 #include <cmath>

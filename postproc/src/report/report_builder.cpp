@@ -102,7 +102,7 @@ void results_found(Report& rep, const Case& c, const Collection& col) {
                              any_dense_step(col)
                                  ? " For a dense point ([dem] dense_inertial_number) Δt is itself half the case's "
                                    "step: its value comes from a run at a quarter of the case's step, checked against "
-                                   "half of it; the solvers' table below names those points."
+                                   "half of it (named in the same table)."
                                  : ""));
     rep.fold("What each solver's numbers mean: body forces, wall stresses, contacts, run length");
     rep.table(scope_table(c, col));

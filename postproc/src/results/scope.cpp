@@ -119,11 +119,10 @@ RunLengths run_lengths(const std::vector<const Run*>& runs) {
         if (auto v = run_number(*r, "steps")) l.steps.push_back(*v);
         if (auto v = run_number(*r, "iterations")) l.iterations.push_back(*v);
         const auto& run = r->summary->run;
-        if (run.is_object() && run.contains("dense_step") && run["dense_step"].is_object()) {
-            const auto& d = run["dense_step"];
+        if (const nlohmann::json* d = run_object(*r, "dense_step")) {
             l.dense.push_back(fmt::format("{} (nominal I {})", r->point ? r->point->id : r->dir.filename().string(),
-                                          num(d.value("inertial_number_nominal", 0.0), 2)));
-            l.dense_below = d.value("dense_inertial_number", 0.0);
+                                          num(d->value("inertial_number_nominal", 0.0), 2)));
+            l.dense_below = d->value("dense_inertial_number", 0.0);
         }
         if (run.is_object() && run.contains("continuation")) {
             l.cap = run["continuation"].value("time_max_s", 0.0);
@@ -230,6 +229,11 @@ std::string run_length(const Run& first, const RunLengths& l, std::size_t runs) 
 std::string run_text(const Run& r, const char* key) {
     const auto& run = r.summary->run;
     return run.is_object() && run.contains(key) && run[key].is_string() ? run[key].get<std::string>() : "";
+}
+
+const nlohmann::json* run_object(const Run& r, const char* key) {
+    const auto& run = r.summary->run;
+    return run.is_object() && run.contains(key) && run[key].is_object() ? &run[key] : nullptr;
 }
 
 bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }

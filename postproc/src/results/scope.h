@@ -23,6 +23,8 @@ bool lattice_stresses(const std::string& solver);
 
 // A text field of a run's summary (run.<key>), or "" when it has none.
 std::string run_text(const Run& r, const char* key);
+// An object field of a run's summary (run.<key>, e.g. the dense_step record), or null when it has none.
+const nlohmann::json* run_object(const Run& r, const char* key);
 inline constexpr const char* kLatticeStressNote =
     "the automaton's stresses are lattice analogues (wall momentum per lattice step × ρ_p ν_max U², so ∝ U² by "
     "construction), drawn in Pa for scale only: not a measured stress, neither its magnitude nor its exponent "

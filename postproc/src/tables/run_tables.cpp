@@ -122,7 +122,7 @@ bool any_dense_step(const Collection& col) {
     for (const OperatingPoint* p : col.points)
         for (const auto& s : col.solvers) {
             const Run& r = col.run(s, p->id);
-            if (r.usable() && r.summary->run.is_object() && r.summary->run.contains("dense_step")) return true;
+            if (r.usable() && run_object(r, "dense_step")) return true;
         }
     return false;
 }
