@@ -118,18 +118,18 @@ RunLengths run_lengths(const std::vector<const Run*>& runs) {
         if (auto v = run_number(*r, "steady_state_start_s")) l.steady_from.push_back(*v);
         if (auto v = run_number(*r, "steps")) l.steps.push_back(*v);
         if (auto v = run_number(*r, "iterations")) l.iterations.push_back(*v);
-        const auto& run = r->summary->run;
         if (const nlohmann::json* d = run_object(*r, "dense_step")) {
             l.dense.push_back(fmt::format("{} (nominal I {})", r->point ? r->point->id : r->dir.filename().string(),
                                           num(d->value("inertial_number_nominal", 0.0), 2)));
             l.dense_below = d->value("dense_inertial_number", 0.0);
         }
-        if (run.is_object() && run.contains("continuation")) {
-            l.cap = run["continuation"].value("time_max_s", 0.0);
-            if (run["continuation"].value("pieces", 1) > 1) ++l.continued;
+        if (const nlohmann::json* c = run_object(*r, "continuation")) {
+            l.cap = c->value("time_max_s", 0.0);
+            if (c->value("pieces", 1) > 1) ++l.continued;
         }
-        if (run.is_object() && run.contains("dt_refinement") && run["dt_refinement"].contains("full_step_run")) {
-            const auto& rec = run["dt_refinement"];
+        const nlohmann::json* refinement = run_object(*r, "dt_refinement");
+        if (refinement && refinement->contains("full_step_run")) {
+            const auto& rec = *refinement;
             const bool twice = rec.contains("half_step_run") && rec["half_step_run"].is_object();
             const auto& f = rec[twice ? "half_step_run" : "full_step_run"];  // the run the answer was compared with
             if (twice) {
