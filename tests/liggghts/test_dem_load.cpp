@@ -4,6 +4,7 @@
 // settings give clear errors.
 #define BOOST_TEST_MODULE liggghts_dem_load
 #include <boost/test/unit_test.hpp>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
@@ -223,6 +224,53 @@ BOOST_AUTO_TEST_CASE(a_dense_point_runs_at_half_the_step) {
     refused(edit(with("dense_inertial_number = 0.5\nmodel = \"hertz\""), "friction = 0.5\n\\[walls\\]",
                  "friction = 0.5\nyoungs_modulus = 1e9\n[walls]"),
             "model = 'hertz' sets its own step");
+}
+
+// [dem] quarter_step_inertial_number: below it (and below dense_inertial_number) a point runs at a quarter
+// of the case's step, every window the same in seconds, its check kept; between the two thresholds at half;
+// the settings and the refusals name the key.
+BOOST_AUTO_TEST_CASE(a_point_below_the_quarter_threshold_runs_at_a_quarter_of_the_step) {
+    const auto with = [](const std::string& dem) { return edit(kCase, "\\[dem\\]", "[dem]\n" + dem); };
+    const Case off = parse_case(with("refine_dt = true"), "tiny_load.toml", schema());
+    const OperatingPoint& p = off.points.front();
+    const dem::Settings s0 = dem::resolve_settings(off, p, RunOptions{});
+    const double I = p.speed / off.cell.gap * off.grains.diameter / std::sqrt(p.normal_stress / off.grains.density);
+    const auto keys = [&](double dense, double quarter) {
+        return with(fmt::format("refine_dt = true\ndense_inertial_number = {}\nquarter_step_inertial_number = {}",
+                                dense, quarter));
+    };
+    const dem::Settings sq = dem::resolve_settings(parse_case(keys(4 * I, 2 * I), "tiny_load.toml", schema()), p,
+                                                   RunOptions{});
+    BOOST_TEST(sq.dense_halvings() == 2);
+    BOOST_TEST(sq.time_step == 0.25 * s0.time_step);
+    BOOST_TEST(sq.steps == 4 * s0.steps);
+    BOOST_TEST(sq.sample_every == 4 * s0.sample_every);
+    BOOST_TEST(sq.servo_every == 4 * s0.servo_every);
+    BOOST_TEST(sq.snapshot_every == 4 * s0.snapshot_every);
+    BOOST_TEST(sq.refine_dt);  // its check at an eighth
+    BOOST_TEST(sq.to_json().at("dense_step_halvings").get<int>() == 2);
+
+    const dem::Settings sh = dem::resolve_settings(parse_case(keys(4 * I, 0.5 * I), "tiny_load.toml", schema()), p,
+                                                   RunOptions{});
+    BOOST_TEST(sh.dense_halvings() == 1);  // between the thresholds: half the step
+    BOOST_TEST(sh.time_step == 0.5 * s0.time_step);
+    BOOST_TEST(sh.to_json().at("dense_step_halvings").get<int>() == 1);
+
+    const auto refused = [](const std::string& text, const std::string& why) {
+        try {
+            const Case c = parse_case(text, "tiny_load.toml", schema());
+            dem::resolve_settings(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("accepted: " + why);
+        } catch (const CaseError& e) {
+            const std::string w = e.what();
+            BOOST_TEST(w.find("quarter_step_inertial_number") != std::string::npos, w);
+            BOOST_TEST(w.find(why) != std::string::npos, w);
+        }
+    };
+    refused(keys(0.2, 0.2), "must lie below dense_inertial_number = 0.2");
+    refused(keys(0.2, 0.3), "allowed: 0 = off, or 0 < value < dense_inertial_number");
+    refused(with("quarter_step_inertial_number = 0.1"), "dense_inertial_number is off");
+    refused(with("dense_inertial_number = 0.2\nquarter_step_inertial_number = -0.1"), "allowed");
 }
 
 // Hertz contacts: the plate's gain is capped at one grain-plate overlap at the load per unit

@@ -147,6 +147,44 @@ BOOST_AUTO_TEST_CASE(a_dense_point_at_half_the_step_is_named) {
     BOOST_TEST(dem.find(s.c.points.back().id + " (nominal I") == std::string::npos, dem);
 }
 
+// [dem] quarter_step_inertial_number: a point below it ran at a quarter of the case's step (dense_step
+// halvings 2): the run length names it in its own clause, with that threshold, and not among the half-step
+// points; the [Δt x] note adds the eighth-against-a-quarter sentence only then.
+BOOST_AUTO_TEST_CASE(a_dense_point_at_a_quarter_of_the_step_is_named_apart) {
+    auto s = test::make_case("scope_dense_quarter");
+    test::write_solver(s, "dem");
+    const OperatingPoint& quarter = s.c.points.front();
+    const OperatingPoint& half = s.c.points.back();
+    BOOST_TEST_REQUIRE(quarter.id != half.id);
+    test::patch_run(s, "dem", quarter.id,
+                    {{"simulated_time_s", 0.001},
+                     {"dense_step",
+                      {{"inertial_number_nominal", 0.0841}, {"dense_inertial_number", 0.2}, {"halvings", 2},
+                       {"quarter_step_inertial_number", 0.1}, {"case_time_step_s", 4e-6}}}});
+    test::patch_run(s, "dem", half.id,
+                    {{"simulated_time_s", 0.001},
+                     {"dense_step",
+                      {{"inertial_number_nominal", 0.1837}, {"dense_inertial_number", 0.2}, {"halvings", 1},
+                       {"case_time_step_s", 2e-6}}}});
+    const auto file = result_dir(s.o.results_root, "dem", quarter.id) / "summary.json";
+    auto j = nlohmann::json::parse(test::slurp(file));
+    j["outputs"]["shear_stress_bottom"]["dt_error"] = 5.0;  // a checked value: the [Δt x] note is written
+    write_file_atomic(file, j.dump(2));
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
+    const std::string dem = md_row(md, kScope, "dem");
+    BOOST_TEST(dem.find("run at half the case's step, and so do their checks: " + half.id + " (nominal I 0.18)") !=
+                   std::string::npos,
+               dem);
+    BOOST_TEST(dem.find("; dense points whose nominal inertial number is below 0.1 ([dem] "
+                        "quarter_step_inertial_number) run at a quarter of the case's step, and so do their checks: " +
+                        quarter.id + " (nominal I 0.084)") != std::string::npos,
+               dem);
+    BOOST_TEST(dem.find(quarter.id + " (nominal I 0.084), ") == std::string::npos, dem);  // named once
+    BOOST_TEST(md.find("below [dem] quarter_step_inertial_number Δt is a quarter of the case's step, the value comes "
+                       "from an eighth, checked against a quarter") != std::string::npos);
+}
+
 // The [Δt x] note says that a dense point's Δt is half the case's step, only when there is one.
 BOOST_AUTO_TEST_CASE(the_dt_note_names_the_dense_step_only_with_a_dense_point) {
     const std::string clause = "For a dense point ([dem] dense_inertial_number) Δt is itself half the case's step";
@@ -167,6 +205,7 @@ BOOST_AUTO_TEST_CASE(the_dt_note_names_the_dense_step_only_with_a_dense_point) {
         const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
         BOOST_TEST(md.find("[Δt x]: the value comes from the run at half the time step") != std::string::npos);
         BOOST_TEST((md.find(clause) != std::string::npos) == dense, dense);
+        BOOST_TEST(md.find("quarter_step_inertial_number") == std::string::npos);  // no point at a quarter
     }
 }
 

@@ -80,6 +80,18 @@ void how_to_read(Report& rep) {
              "quasi-static flow n → 0.");
 }
 
+// The Delta-t note's sentence on dense points ([dem] dense_inertial_number, quarter_step_inertial_number):
+// their Delta-t is itself half or a quarter of the case's step. halvings: the most any run had (0: none).
+std::string dense_step_note(int halvings) {
+    if (halvings == 0) return "";
+    std::string s = " For a dense point ([dem] dense_inertial_number) Δt is itself half the case's step: its value "
+                    "comes from a run at a quarter of the case's step, checked against half of it";
+    if (halvings >= 2)
+        s += "; below [dem] quarter_step_inertial_number Δt is a quarter of the case's step, the value comes from an "
+             "eighth, checked against a quarter";
+    return s + " (named in the same table).";
+}
+
 // What was found: the states, their reasons, the key numbers, what each solver's numbers mean and
 // how ordered the particle packings are.
 void results_found(Report& rep, const Case& c, const Collection& col) {
@@ -99,11 +111,7 @@ void results_found(Report& rep, const Case& c, const Collection& col) {
                              "halving is dt-unconverged, and says so above.{}",
                              num(kDtMaxSolidFractionChange), num(100 * kDtMaxRelativeStressChange),
                              num(kDtMaxStressZ),
-                             any_dense_step(col)
-                                 ? " For a dense point ([dem] dense_inertial_number) Δt is itself half the case's "
-                                   "step: its value comes from a run at a quarter of the case's step, checked against "
-                                   "half of it (named in the same table)."
-                                 : ""));
+                             dense_step_note(dense_step_halvings(col))));
     rep.fold("What each solver's numbers mean: body forces, wall stresses, contacts, run length");
     rep.table(scope_table(c, col));
     rep.end_fold();

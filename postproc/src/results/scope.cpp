@@ -106,7 +106,9 @@ struct RunLengths {
     std::vector<std::string> quarter;                         // points answered at a quarter step (second halving)
     std::vector<std::string> first_failed;                    // their first checks' verdicts
     std::vector<std::string> dense;                           // points at half the case's step ([dem] dense_inertial_number)
-    double dense_below = 0;                                   // that key's value
+    std::vector<std::string> dense_quarter;                   // points at a quarter of it ([dem] quarter_step_inertial_number)
+    double dense_below = 0;                                   // those keys' values
+    double quarter_below = 0;
     double cap = 0;                                           // [dem] time_max: runs continued until steady
     int continued = 0;
 };
@@ -119,9 +121,12 @@ RunLengths run_lengths(const std::vector<const Run*>& runs) {
         if (auto v = run_number(*r, "steps")) l.steps.push_back(*v);
         if (auto v = run_number(*r, "iterations")) l.iterations.push_back(*v);
         if (const nlohmann::json* d = run_object(*r, "dense_step")) {
-            l.dense.push_back(fmt::format("{} (nominal I {})", r->point ? r->point->id : r->dir.filename().string(),
-                                          num(d->value("inertial_number_nominal", 0.0), 2)));
+            const bool quarter = d->value("halvings", 1) == 2;  // absent: one halving, as every earlier result
+            (quarter ? l.dense_quarter : l.dense)
+                .push_back(fmt::format("{} (nominal I {})", r->point ? r->point->id : r->dir.filename().string(),
+                                       num(d->value("inertial_number_nominal", 0.0), 2)));
             l.dense_below = d->value("dense_inertial_number", 0.0);
+            if (quarter) l.quarter_below = d->value("quarter_step_inertial_number", 0.0);
         }
         if (const nlohmann::json* c = run_object(*r, "continuation")) {
             l.cap = c->value("time_max_s", 0.0);
@@ -210,6 +215,11 @@ std::string particle_run_length(const Run& first, const RunLengths& l, std::size
         s += fmt::format("; dense points, whose nominal inertial number U d/(H √(P/ρ)) is below {} ([dem] "
                          "dense_inertial_number), run at half the case's step, and so do their checks: {}",
                          num(l.dense_below, 3), fmt::join(l.dense, ", "));
+    if (!l.dense_quarter.empty())  // [dem] quarter_step_inertial_number: the same, one halving more
+        s += fmt::format("; dense points whose nominal inertial number is below {} ([dem] "
+                         "quarter_step_inertial_number) run at a quarter of the case's step, and so do their "
+                         "checks: {}",
+                         num(l.quarter_below, 3), fmt::join(l.dense_quarter, ", "));
     if (const std::string start = run_text(first, "start"); !start.empty()) s += "; start: " + start;
     if (const std::string plate = run_text(first, "plate"); !plate.empty()) s += "; load: " + plate;
     return s;

@@ -118,13 +118,16 @@ bool any_dt_checked(const Collection& col) {
     return false;
 }
 
-bool any_dense_step(const Collection& col) {
+int dense_step_halvings(const Collection& col) {
+    int most = 0;
     for (const OperatingPoint* p : col.points)
         for (const auto& s : col.solvers) {
             const Run& r = col.run(s, p->id);
-            if (r.usable() && run_object(r, "dense_step")) return true;
+            if (!r.usable()) continue;
+            if (const nlohmann::json* d = run_object(r, "dense_step"))
+                most = std::max(most, d->value("halvings", 1));  // absent: one halving, as every earlier result
         }
-    return false;
+    return most;
 }
 
 Table scope_table(const Case& c, const Collection& col) {

@@ -18,8 +18,9 @@ Table state_reasons(const Collection& col);
 Table key_numbers(const Case& c, const Collection& col);
 // Whether any run's values were checked at half the time step (the key numbers carry [Δt x]).
 bool any_dt_checked(const Collection& col);
-// Whether any usable run is a dense point run at half the case's step ([dem] dense_inertial_number).
-bool any_dense_step(const Collection& col);
+// The most halvings of the case's step the dense rule gave any usable run: 0 (none), 1 (half the
+// case's step, [dem] dense_inertial_number) or 2 (a quarter, [dem] quarter_step_inertial_number).
+int dense_step_halvings(const Collection& col);
 // Per solver: the body forces it models, what its wall stresses are, how long it ran (scope.h).
 Table scope_table(const Case& c, const Collection& col);
 // The packing's order and contacts of the particle solvers (run.order, run.flow_regime).

@@ -364,12 +364,14 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     r.line = fmt::format("{}  [{} grains, {} steps, {:.3g} atom-steps/s] regime: {} ({})", out.line,
                          init.particles.size(), r.summary.run["steps"].get<std::int64_t>(), r.summary.run["atom_steps_per_s"].get<double>(),
                          verdict.label(), verdict.criterion);
-    if (s.dense_halved()) {  // [dem] dense_inertial_number: every run of the point at half the case's step
+    if (const int n = s.dense_halvings()) {  // [dem] dense_inertial_number: every run of the point at 1/2^n the case's step
         r.summary.run["dense_step"] = {{"inertial_number_nominal", s.inertial_nominal},
                                        {"dense_inertial_number", s.dense_inertial_number},
-                                       {"case_time_step_s", 2 * s.time_step}};
-        r.line += fmt::format(" [dense: nominal I {:.3g} < {:g}, dt half the case's]", s.inertial_nominal,
-                              s.dense_inertial_number);
+                                       {"halvings", n},
+                                       {"case_time_step_s", std::ldexp(s.time_step, n)}};
+        if (n == 2) r.summary.run["dense_step"]["quarter_step_inertial_number"] = s.quarter_step_inertial_number;
+        r.line += fmt::format(" [dense: nominal I {:.3g} < {:g}, dt {}]", s.inertial_nominal,
+                              n == 2 ? s.quarter_step_inertial_number : s.dense_inertial_number, dense_step_name(n));
     }
     if (refined) {
         r.summary.run["dt_refinement"] = refinement_record(*refined, r.summary.outputs);

@@ -127,6 +127,10 @@ void resolve_ring(const Case& c, const Section& s, Settings& st) {
 // before the run, which the measured density (Z, I mid-gap) is not. The threshold is the case's
 // choice: measured on sawyer2001's slice (single pass, step_fraction 0.02, 3-4 seeds), the full step
 // is +8.3 % from its limit in tau_bot at I = 0.19, +3.7 % at 0.27 and +1.8 % at 0.38.
+// [dem] quarter_step_inertial_number: below it, a quarter of the case's step (the check at an
+// eighth). Measured on sawyer2001_regimes at 0.4 m/s and 2250 Pa (I 0.084; cold, 1 s, three seeds):
+// half to a quarter of the step moves tau by about 8-10 %, a quarter to an eighth by a few per cent
+// (that case's README). Also the case's choice.
 void apply_dense_step(const Case& c, const OperatingPoint& p, const Section& s, Settings& st) {
     const char* key = "dense_inertial_number";
     if (st.law->step != StepRule::Travel)
@@ -145,14 +149,16 @@ void apply_dense_step(const Case& c, const OperatingPoint& p, const Section& s, 
     const auto I = inertial_number(p.speed / c.cell.gap, c.grains.diameter, p.normal_stress, c.grains.density);
     if (!I) throw Error(fmt::format("internal: point {} has no nominal inertial number", p.id));
     st.inertial_nominal = *I;
-    if (!st.dense_halved()) return;
+    const int halvings = st.dense_halvings();
     const bool refine = st.refine_dt;
-    st = half_step(st);  // the same windows, blocks and snapshots in seconds, twice the steps
+    for (int k = 0; k < halvings; ++k) st = half_step(st);  // the same windows, blocks and snapshots in seconds
     st.refine_dt = refine;
     if (!(static_cast<double>(st.steps) <= kMaxSteps))
-        s.fail(key, fmt::format("point {} is dense (nominal inertial number {:.3g} < {:g}): at half the step its run "
-                                "is {} steps; at most {:g} are allowed (shorten time, or raise step_fraction)",
-                                p.id, *I, st.dense_inertial_number, st.steps, kMaxSteps));
+        s.fail(halvings == 2 ? "quarter_step_inertial_number" : key,
+               fmt::format("point {} is dense (nominal inertial number {:.3g} < {:g}): at {} its run is {} steps; "
+                           "at most {:g} are allowed (shorten time, or raise step_fraction)",
+                           p.id, *I, halvings == 2 ? st.quarter_step_inertial_number : st.dense_inertial_number,
+                           dense_step_name(halvings), st.steps, kMaxSteps));
 }
 
 }  // namespace
@@ -200,6 +206,17 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     // impulse/solve treats such atoms as kinematic (infinite mass), as the walls they are
     // a shear strain of kPersistenceStrain at U/H, at most a hundredth of the run
     st.persistence_every = persistence_every_steps(p.speed / c.cell.gap, st.time_step, st.steps);
+    if (st.quarter_step_inertial_number > 0 && !(st.quarter_step_inertial_number < st.dense_inertial_number))
+        s.fail("quarter_step_inertial_number",
+               st.dense_inertial_number > 0
+                   ? fmt::format("{:g} must lie below dense_inertial_number = {:g}: the step is quartered at "
+                                 "inertial numbers below those where it is halved (allowed: 0 = off, or 0 < value "
+                                 "< dense_inertial_number)",
+                                 st.quarter_step_inertial_number, st.dense_inertial_number)
+                   : fmt::format("{:g} quarters the step below the threshold where dense_inertial_number halves it, "
+                                 "and dense_inertial_number is off (allowed: 0 = off, or 0 < value < "
+                                 "dense_inertial_number with dense_inertial_number > 0)",
+                                 st.quarter_step_inertial_number));
     if (st.dense_inertial_number > 0) apply_dense_step(c, p, s, st);
     return st;
 }
@@ -263,6 +280,9 @@ nlohmann::json Settings::to_json() const {
         j.update(nlohmann::json{{"dense_inertial_number", dense_inertial_number},
                                 {"inertial_number_nominal", inertial_nominal},
                                 {"dense_step_halved", dense_halved()}});
+    if (quarter_step_inertial_number > 0)  // absent: off, as every earlier result
+        j.update(nlohmann::json{{"quarter_step_inertial_number", quarter_step_inertial_number},
+                                {"dense_step_halvings", dense_halvings()}});
     if (impact_time) j.update(nlohmann::json{{"impact_time", true}});  // absent: off, as every earlier result
     if (speculative) j.update(nlohmann::json{{"speculative", true}});  // absent: off, as every earlier result
     if (iterated)

@@ -48,11 +48,17 @@ struct Settings : ServoSettings {
     double refine_time = 0;       // s, the half-step run warm-started from the full-step run's end; 0: cold, `time`
     std::int64_t refine_halvings = 1;  // refine_dt: 2 = a failed check at dt/2 is repeated at dt/4 (cold)
     // [dem] dense_inertial_number: a point whose nominal inertial number is below it runs at half the
-    // step the case derives (apply_dense_step); 0 = off
+    // step the case derives (apply_dense_step); 0 = off. [dem] quarter_step_inertial_number (below
+    // dense_inertial_number): below it, a quarter of that step; 0 = off
     double dense_inertial_number = 0;
+    double quarter_step_inertial_number = 0;
     double inertial_nominal = 0;  // U d / (H sqrt(P / rho)) of the point, when that rule is on
-    // the rule halved this point's step: the case's step is 2 time_step
-    bool dense_halved() const { return dense_inertial_number > 0 && inertial_nominal < dense_inertial_number; }
+    // how often the rule halved this point's step (0, 1 or 2): the case's step is 2^n time_step
+    int dense_halvings() const {
+        if (!(dense_inertial_number > 0 && inertial_nominal < dense_inertial_number)) return 0;
+        return quarter_step_inertial_number > 0 && inertial_nominal < quarter_step_inertial_number ? 2 : 1;
+    }
+    bool dense_halved() const { return dense_halvings() > 0; }
     std::int64_t snapshots = 0;   // particle snapshots per run ([dem] snapshots)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
@@ -105,6 +111,12 @@ const BoundKeys<Settings>& dem_keys();
 // The same run at half the time step: the same simulated time, blocks, snapshots, servo windows
 // and persistence interval in seconds, twice the steps.
 Settings half_step(const Settings& s);
+
+// The step the dense rule gives a point, in words: "half the case's step" (1 halving) or "a quarter of
+// the case's step" (2)
+inline const char* dense_step_name(int halvings) {
+    return halvings >= 2 ? "a quarter of the case's step" : "half the case's step";
+}
 
 // The half-step run of refine_dt: half_step(s), and with refine_time > 0 that simulated time (whole
 // servo windows, the same number of snapshots). Throws CaseError (why, without the key: resolve_settings()
