@@ -128,9 +128,10 @@ void resolve_ring(const Case& c, const Section& s, Settings& st) {
 // choice: measured on sawyer2001's slice (single pass, step_fraction 0.02, 3-4 seeds), the full step
 // is +8.3 % from its limit in tau_bot at I = 0.19, +3.7 % at 0.27 and +1.8 % at 0.38.
 // [dem] quarter_step_inertial_number: below it, a quarter of the case's step (the check at an
-// eighth). Measured on sawyer2001_regimes at 0.4 m/s and 2250 Pa (I 0.084; cold, 1 s, three seeds):
-// half to a quarter of the step moves tau by about 8-10 %, a quarter to an eighth by a few per cent
-// (that case's README). Also the case's choice.
+// eighth). Measured on sawyer2001_regimes at 0.4 m/s (cold, 1 s, two or three seeds): at 2250 Pa (I
+// 0.084) half to a quarter of the step moves tau by 8 %, a quarter to an eighth by 2-4 %; at 5550 Pa
+// (I 0.053) a quarter to an eighth still by 10 %. At a fixed step the error grows about as 1/I^2
+// (docs/measurements/liggghts.md, "The slowest loaded points"). Also the case's choice.
 void apply_dense_step(const Case& c, const OperatingPoint& p, const Section& s, Settings& st) {
     const char* key = "dense_inertial_number";
     if (st.law->step != StepRule::Travel)
