@@ -235,9 +235,9 @@ BOOST_AUTO_TEST_CASE(a_point_below_the_quarter_threshold_runs_at_a_quarter_of_th
     const OperatingPoint& p = off.points.front();
     const dem::Settings s0 = dem::resolve_settings(off, p, RunOptions{});
     const double I = p.speed / off.cell.gap * off.grains.diameter / std::sqrt(p.normal_stress / off.grains.density);
-    const auto keys = [&](double dense, double quarter) {
-        return with(fmt::format("refine_dt = true\ndense_inertial_number = {}\nquarter_step_inertial_number = {}",
-                                dense, quarter));
+    const auto keys = [&](double dense, double quarter, const std::string& more = "") {
+        return with(fmt::format("refine_dt = true\ndense_inertial_number = {}\nquarter_step_inertial_number = {}\n{}",
+                                dense, quarter, more));
     };
     const dem::Settings sq = dem::resolve_settings(parse_case(keys(4 * I, 2 * I), "tiny_load.toml", schema()), p,
                                                    RunOptions{});
@@ -271,6 +271,10 @@ BOOST_AUTO_TEST_CASE(a_point_below_the_quarter_threshold_runs_at_a_quarter_of_th
     refused(keys(0.2, 0.3), "allowed: 0 = off, or 0 < value < dense_inertial_number");
     refused(with("quarter_step_inertial_number = 0.1"), "dense_inertial_number is off");
     refused(with("dense_inertial_number = 0.2\nquarter_step_inertial_number = -0.1"), "allowed");
+    refused(keys(0.2, 0.1, "refine_time = 0.05"), "measures the step change's own transient");
+    // a cold check is allowed (refine_time = 0, the default)
+    (void)dem::resolve_settings(parse_case(keys(0.2, 0.1, "refine_time = 0"), "tiny_load.toml", schema()), p,
+                                RunOptions{});
 }
 
 // Hertz contacts: the plate's gain is capped at one grain-plate overlap at the load per unit

@@ -70,7 +70,8 @@ BoundKeys<Settings> declare() {
     k.real("quarter_step_inertial_number", &Settings::quarter_step_inertial_number, 0.0, Range::closed(0, 10), "",
            "with dense_inertial_number: a point whose nominal inertial number is below this (a smaller value) runs "
            "at a quarter of the step step_fraction gives, its time-step check at an eighth (at the slowest loaded "
-           "points half the step is still several per cent from its limit: plugin README, the step rule); 0 = off");
+           "points half the step is still several per cent from its limit: plugin README, the step rule); needs a "
+           "cold check (refine_time = 0) or none; 0 = off");
     s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
     s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
     s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
