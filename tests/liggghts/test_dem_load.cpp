@@ -13,6 +13,7 @@
 #include <numbers>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 #include "granlub/case/case.h"
 #include "granlub/dem/command.h"
@@ -63,6 +64,19 @@ const test::LoadRun& run_load(double stress) {
         fs::remove_all(o.results_root);
         return std::pair(dem::run(c, o), result_dir(o.results_root, "dem", c.points.front().id));
     });
+}
+
+// The case text is refused when its settings are resolved (a CaseError), with every word in the message.
+void expect_refused(const std::string& text, const std::vector<std::string>& words) {
+    try {
+        const Case c = parse_case(text, "tiny_load.toml", schema());
+        dem::resolve_settings(c, c.points.front(), RunOptions{});
+        BOOST_FAIL("accepted, expected a CaseError naming: " + words.front());
+    } catch (const CaseError& e) {
+        const std::string w = e.what();
+        BOOST_TEST_MESSAGE(w);
+        for (const auto& word : words) BOOST_TEST(w.find(word) != std::string::npos, word << " in: " << w);
+    }
 }
 
 }  // namespace
@@ -140,17 +154,7 @@ BOOST_AUTO_TEST_CASE(higher_load_gives_a_smaller_gap_and_denser_packing) {
 }
 
 BOOST_AUTO_TEST_CASE(bad_servo_settings_give_clear_errors) {
-    auto expect = [](const std::string& text, const std::vector<std::string>& words) {
-        try {
-            const Case c = parse_case(text, "tiny_load.toml", schema());
-            dem::resolve_settings(c, c.points.front(), RunOptions{});
-            BOOST_FAIL("expected a CaseError");
-        } catch (const CaseError& e) {
-            const std::string w = e.what();
-            BOOST_TEST_MESSAGE(w);
-            for (const auto& word : words) BOOST_TEST(w.find(word) != std::string::npos, word << " in: " << w);
-        }
-    };
+    const auto expect = expect_refused;
     // kCase with `key_value` in [dem], replacing the key's line if kCase has one
     const auto with = [](const std::string& key_value) {
         const std::string key = key_value.substr(0, key_value.find(' '));
@@ -206,15 +210,7 @@ BOOST_AUTO_TEST_CASE(a_dense_point_runs_at_half_the_step) {
     BOOST_TEST(sn.to_json().at("inertial_number_nominal").get<double>() == I, boost::test_tools::tolerance(1e-12));
 
     const auto refused = [](const std::string& text, const std::string& why) {
-        try {
-            const Case c = parse_case(text, "tiny_load.toml", schema());
-            dem::resolve_settings(c, c.points.front(), RunOptions{});
-            BOOST_FAIL("accepted: " + why);
-        } catch (const CaseError& e) {
-            const std::string w = e.what();
-            BOOST_TEST(w.find("dense_inertial_number") != std::string::npos, w);
-            BOOST_TEST(w.find(why) != std::string::npos, w);
-        }
+        expect_refused(text, {"dense_inertial_number", why});
     };
     refused(with("dense_inertial_number = 0.5\ntime_step = 1e-5"), "time_step = 1e-05 s is given");
     refused(with("dense_inertial_number = -0.5"), "allowed");
@@ -257,15 +253,7 @@ BOOST_AUTO_TEST_CASE(a_point_below_the_quarter_threshold_runs_at_a_quarter_of_th
     BOOST_TEST(sh.to_json().at("dense_step_halvings").get<int>() == 1);
 
     const auto refused = [](const std::string& text, const std::string& why) {
-        try {
-            const Case c = parse_case(text, "tiny_load.toml", schema());
-            dem::resolve_settings(c, c.points.front(), RunOptions{});
-            BOOST_FAIL("accepted: " + why);
-        } catch (const CaseError& e) {
-            const std::string w = e.what();
-            BOOST_TEST(w.find("quarter_step_inertial_number") != std::string::npos, w);
-            BOOST_TEST(w.find(why) != std::string::npos, w);
-        }
+        expect_refused(text, {"quarter_step_inertial_number", why});
     };
     refused(keys(0.2, 0.2), "must lie below dense_inertial_number = 0.2");
     refused(keys(0.2, 0.3), "allowed: 0 = off, or 0 < value < dense_inertial_number");
