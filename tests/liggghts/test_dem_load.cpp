@@ -154,18 +154,19 @@ BOOST_AUTO_TEST_CASE(higher_load_gives_a_smaller_gap_and_denser_packing) {
 }
 
 BOOST_AUTO_TEST_CASE(bad_servo_settings_give_clear_errors) {
-    const auto expect = expect_refused;
     // kCase with `key_value` in [dem], replacing the key's line if kCase has one
     const auto with = [](const std::string& key_value) {
         const std::string key = key_value.substr(0, key_value.find(' '));
         return edit(edit(kCase, "\n" + key + " = [^\n]*", ""), "\\[dem\\]", "[dem]\n" + key_value);
     };
-    expect(with("servo_gain = 0.5"), {"tiny_load.toml", "servo_gain", "0.5", "allowed", "(0, 0.1]"});
-    expect(with("servo_gain = 0.0"), {"tiny_load.toml", "servo_gain"});
-    expect(with("servo_max_gap = 1.0"), {"tiny_load.toml", "servo_max_gap", "1"});
-    expect(with("servo_max_gap = 5.0"), {"tiny_load.toml", "servo_max_gap", "5", "allowed", "(1, 4]"});
-    expect(edit(kCase, "servo_every = 100", "servo_every = 50"), {"tiny_load.toml", "servo_every", "50", "sample_every"});
-    expect(edit(kCase, "servo_every = 100", "servo_every = 1000"), {"tiny_load.toml", "servo_every", "10 plate updates"});
+    expect_refused(with("servo_gain = 0.5"), {"tiny_load.toml", "servo_gain", "0.5", "allowed", "(0, 0.1]"});
+    expect_refused(with("servo_gain = 0.0"), {"tiny_load.toml", "servo_gain"});
+    expect_refused(with("servo_max_gap = 1.0"), {"tiny_load.toml", "servo_max_gap", "1"});
+    expect_refused(with("servo_max_gap = 5.0"), {"tiny_load.toml", "servo_max_gap", "5", "allowed", "(1, 4]"});
+    expect_refused(edit(kCase, "servo_every = 100", "servo_every = 50"),
+                   {"tiny_load.toml", "servo_every", "50", "sample_every"});
+    expect_refused(edit(kCase, "servo_every = 100", "servo_every = 1000"),
+                   {"tiny_load.toml", "servo_every", "10 plate updates"});
     // load control without normal_stress: rejected by core when the case is read
     try {
         parse_case(edit(kCase, "normal_stress = \\[30.0\\]\n", ""), "tiny_load.toml", schema());

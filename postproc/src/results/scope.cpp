@@ -121,7 +121,7 @@ RunLengths run_lengths(const std::vector<const Run*>& runs) {
         if (auto v = run_number(*r, "steps")) l.steps.push_back(*v);
         if (auto v = run_number(*r, "iterations")) l.iterations.push_back(*v);
         if (const nlohmann::json* d = run_object(*r, "dense_step")) {
-            const bool quarter = d->value("halvings", 1) == 2;  // absent: one halving, as every earlier result
+            const bool quarter = dense_step_halvings(*r) == 2;
             (quarter ? l.dense_quarter : l.dense)
                 .push_back(fmt::format("{} (nominal I {})", r->point ? r->point->id : r->dir.filename().string(),
                                        num(d->value("inertial_number_nominal", 0.0), 2)));
@@ -244,6 +244,11 @@ std::string run_text(const Run& r, const char* key) {
 const nlohmann::json* run_object(const Run& r, const char* key) {
     const auto& run = r.summary->run;
     return run.is_object() && run.contains(key) && run[key].is_object() ? &run[key] : nullptr;
+}
+
+int dense_step_halvings(const Run& r) {
+    const nlohmann::json* d = run_object(r, "dense_step");
+    return d ? d->value("halvings", 1) : 0;
 }
 
 bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }

@@ -25,6 +25,9 @@ bool lattice_stresses(const std::string& solver);
 std::string run_text(const Run& r, const char* key);
 // An object field of a run's summary (run.<key>, e.g. the dense_step record), or null when it has none.
 const nlohmann::json* run_object(const Run& r, const char* key);
+// How often [dem]'s dense rule halved the case's step for this run (run.dense_step.halvings): 0 without
+// the record, 1 when the record has no count (every result before quarter_step_inertial_number), else 2.
+int dense_step_halvings(const Run& r);
 inline constexpr const char* kLatticeStressNote =
     "the automaton's stresses are lattice analogues (wall momentum per lattice step × ρ_p ν_max U², so ∝ U² by "
     "construction), drawn in Pa for scale only: not a measured stress, neither its magnitude nor its exponent "

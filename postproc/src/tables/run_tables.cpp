@@ -123,9 +123,7 @@ int dense_step_halvings(const Collection& col) {
     for (const OperatingPoint* p : col.points)
         for (const auto& s : col.solvers) {
             const Run& r = col.run(s, p->id);
-            if (!r.usable()) continue;
-            if (const nlohmann::json* d = run_object(r, "dense_step"))
-                most = std::max(most, d->value("halvings", 1));  // absent: one halving, as every earlier result
+            if (r.usable()) most = std::max(most, dense_step_halvings(r));
         }
     return most;
 }

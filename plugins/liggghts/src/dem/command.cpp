@@ -370,8 +370,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
                                        {"halvings", n},
                                        {"case_time_step_s", std::ldexp(s.time_step, n)}};
         if (n == 2) r.summary.run["dense_step"]["quarter_step_inertial_number"] = s.quarter_step_inertial_number;
-        r.line += fmt::format(" [dense: nominal I {:.3g} < {:g}, dt {}]", s.inertial_nominal,
-                              n == 2 ? s.quarter_step_inertial_number : s.dense_inertial_number, dense_step_name(n));
+        r.line += fmt::format(" [dense: nominal I {:.3g} < {:g}, dt {}]", s.inertial_nominal, s.dense_threshold(),
+                              dense_step_name(n));
     }
     if (refined) {
         r.summary.run["dt_refinement"] = refinement_record(*refined, r.summary.outputs);

@@ -155,11 +155,10 @@ void apply_dense_step(const Case& c, const OperatingPoint& p, const Section& s, 
     for (int k = 0; k < halvings; ++k) st = half_step(st);  // the same windows, blocks and snapshots in seconds
     st.refine_dt = refine;
     if (!(static_cast<double>(st.steps) <= kMaxSteps))
-        s.fail(halvings == 2 ? "quarter_step_inertial_number" : key,
+        s.fail(st.dense_key(),
                fmt::format("point {} is dense (nominal inertial number {:.3g} < {:g}): at {} its run is {} steps; "
                            "at most {:g} are allowed (shorten time, or raise step_fraction)",
-                           p.id, *I, halvings == 2 ? st.quarter_step_inertial_number : st.dense_inertial_number,
-                           dense_step_name(halvings), st.steps, kMaxSteps));
+                           p.id, *I, st.dense_threshold(), dense_step_name(halvings), st.steps, kMaxSteps));
 }
 
 }  // namespace

@@ -59,6 +59,13 @@ struct Settings : ServoSettings {
         return quarter_step_inertial_number > 0 && inertial_nominal < quarter_step_inertial_number ? 2 : 1;
     }
     bool dense_halved() const { return dense_halvings() > 0; }
+    // the threshold of the tier the point is in, and its key (dense_halved() points only)
+    double dense_threshold() const {
+        return dense_halvings() == 2 ? quarter_step_inertial_number : dense_inertial_number;
+    }
+    const char* dense_key() const {
+        return dense_halvings() == 2 ? "quarter_step_inertial_number" : "dense_inertial_number";
+    }
     std::int64_t snapshots = 0;   // particle snapshots per run ([dem] snapshots)
     // contact persistence: after the run, persistence_intervals + 1 snapshots persistence_every
     // steps apart (a shear strain U/H t of kPersistenceStrain each; flow_regime.h)
