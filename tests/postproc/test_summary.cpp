@@ -77,6 +77,35 @@ BOOST_AUTO_TEST_CASE(engines_on_either_side_read_at_the_transition) {
                r->text);
 }
 
+// A verdict the time step turns: collision at the answer's step, contact in its Δt check's run at
+// twice the step. The summary says so with both numbers; the regime table's criterion has them too.
+BOOST_AUTO_TEST_CASE(a_verdict_the_time_step_turns_reads_at_the_transition) {
+    auto s = test::make_case("summary_step_transition");
+    test::write_solver(s, "dem");
+    const std::string id = s.c.points.front().id;
+    auto regime = [](const char* verdict, double z) {
+        return nlohmann::json{{"verdict_version", 2}, {"regime", verdict}, {"criterion", "test"},
+                              {"coordination_number", z}, {"coordination_number_stderr", 0.02},
+                              {"contact_persistence", 0.8}};
+    };
+    const nlohmann::json small = {{"relative_change", -0.01}, {"z", -0.5}};
+    const nlohmann::json check = {{"mean_solid_fraction", {{"change", -0.001}}},
+                                  {"shear_stress_bottom", small},
+                                  {"shear_stress_top", small},
+                                  {"full_step_run", {{"status", "steady"}, {"flow_regime", regime("contact lubrication", 4.12)}}}};
+    test::patch_run(s, "dem", id, {{"flow_regime", regime("collision lubrication", 3.93)}, {"dt_refinement", check}});
+    const auto col = postproc::collect(s.c, s.o);
+    const auto r = postproc::regime_reading(col, id);
+    BOOST_TEST_REQUIRE(r.has_value());
+    BOOST_TEST(r->uncertain);
+    BOOST_TEST(r->text == "at the transition (Z within its time-step error of 4): dem Z = 3.93 (collision; 4.12 at "
+                          "twice the step)",
+               r->text);
+    // the other point has no check: its verdict stands
+    const auto other = postproc::regime_reading(col, s.c.points.back().id);
+    BOOST_TEST((!other || other->text.find("twice the step") == std::string::npos));
+}
+
 // Each state named as what it is: a dt-unconverged run's cross-section is not stamped "TRANSIENT".
 BOOST_AUTO_TEST_CASE(cross_section_stamps_name_the_state) {
     auto s = test::make_case("stamps");

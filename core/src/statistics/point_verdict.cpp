@@ -28,7 +28,15 @@ std::optional<double> number(const nlohmann::json& j, const char* key) {
     return it != j.end() && it->is_number() ? std::optional<double>(it->get<double>()) : std::nullopt;
 }
 
-// "dem: Z = 4.17 ± 0.03, 87 % persist (contact lubrication)"
+// "Z = 4.12, contact" for the time-step check's coarser run; empty without one
+std::string coarser_numbers(const EngineRegime& r) {
+    if (!r.coarser.is_object()) return "";
+    const auto z = number(r.coarser, "coordination_number");
+    const std::string name = to_string(read_flow_verdict(r.coarser).lubrication);
+    return (z ? fmt::format("Z = {:.3g}", *z) : std::string("Z not measured")) + ", " + name.substr(0, name.find(' '));
+}
+
+// "dem: Z = 4.17 ± 0.03, 87 % persist (contact lubrication; at twice the step Z = 4.31, contact)"
 std::string numbers(const EngineRegime& r, const FlowVerdict& v) {
     const auto z = number(r.flow_regime, "coordination_number");
     const auto se = number(r.flow_regime, "coordination_number_stderr");
@@ -36,15 +44,30 @@ std::string numbers(const EngineRegime& r, const FlowVerdict& v) {
     std::string s = r.engine + ": Z = " + (z ? fmt::format("{:.3g}", *z) : std::string("not measured"));
     if (z && se) s += fmt::format(" ± {:.2g}", *se);
     s += p ? fmt::format(", {:.0f} % persist", 100 * *p) : std::string(", persistence not measured");
-    return s + " (" + to_string(v.lubrication) + ")";
+    const std::string coarse = coarser_numbers(r);
+    return s + " (" + to_string(v.lubrication) + (coarse.empty() ? "" : "; at twice the step " + coarse) + ")";
 }
 
-// "dem Z = 4.35 (contact)"
+// "dem Z = 4.35 (contact)", "dem Z = 3.93 (collision; 4.12 at twice the step)"
 std::string brief(const EngineRegime& r, const FlowVerdict& v) {
     const auto z = number(r.flow_regime, "coordination_number");
+    const auto zc = number(r.coarser, "coordination_number");
     const std::string name = to_string(v.lubrication);
     return r.engine + " Z = " + (z ? fmt::format("{:.3g}", *z) : std::string("not measured")) + " (" +
-           name.substr(0, name.find(' ')) + ")";
+           name.substr(0, name.find(' ')) + (zc ? fmt::format("; {:.3g} at twice the step", *zc) : std::string()) +
+           ")";
+}
+
+// The time step's own say (point_verdict.h): the run at twice the step on the other side of the
+// threshold, or Z nearer to it than the check moved Z.
+bool step_moves_across(const EngineRegime& r, const FlowVerdict& v) {
+    if (!r.coarser.is_object()) return false;
+    const Lubrication coarse = read_flow_verdict(r.coarser).lubrication;
+    if (coarse != Lubrication::Undetermined && v.lubrication != Lubrication::Undetermined && coarse != v.lubrication)
+        return true;
+    const auto z = number(r.flow_regime, "coordination_number");
+    const auto zc = number(r.coarser, "coordination_number");
+    return z && zc && std::abs(*z - kEnduringMinCoordination) < std::abs(*zc - *z);
 }
 
 bool straddles(const nlohmann::json& fr) {
@@ -55,10 +78,22 @@ bool straddles(const nlohmann::json& fr) {
 
 }  // namespace
 
+EngineRegime engine_regime(const std::string& engine, const nlohmann::json& run) {
+    if (!run.is_object()) return {engine, nullptr, nullptr};
+    EngineRegime r{engine, run.value("flow_regime", nlohmann::json()), nullptr};
+    const nlohmann::json rec = run.value("dt_refinement", nlohmann::json());
+    if (!rec.is_object()) return r;
+    const char* against = rec.contains("half_step_run") ? "half_step_run" : "full_step_run";
+    const nlohmann::json check = rec.value(against, nlohmann::json());
+    if (check.is_object() && check.contains("flow_regime") && check.at("flow_regime").is_object())
+        r.coarser = check.at("flow_regime");
+    return r;
+}
+
 PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
     std::string each, briefs;
     std::optional<Lubrication> agreed;
-    bool disagree = false, near = false;
+    bool disagree = false, near = false, step = false;
     for (const EngineRegime& r : runs) {
         const FlowVerdict v = read_flow_verdict(r.flow_regime);
         each += (each.empty() ? "" : "; ") + numbers(r, v);
@@ -67,6 +102,7 @@ PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
         if (agreed && *agreed != v.lubrication) disagree = true;
         agreed = v.lubrication;
         near = near || straddles(r.flow_regime);
+        step = step || step_moves_across(r, v);
     }
     const std::string thresholds =
         fmt::format("thresholds Z = {:g}, {:.0f} % persisting", kEnduringMinCoordination, 100 * kEnduringMinPersistence);
@@ -74,6 +110,12 @@ PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
     if (disagree)
         return {PointRegime::Transition, fmt::format("the engines fall on either side: {} ({})", each, thresholds),
                 briefs, true};
+    if (step)
+        return {PointRegime::Transition,
+                fmt::format("Z within its time-step error of {0:g}: halving the step moves it across {0:g}, or by more "
+                            "than Z lies from {0:g}, so its Δt → 0 value may lie on either side: {1} ({2})",
+                            kEnduringMinCoordination, each, thresholds),
+                briefs, false, true};
     if (near)
         return {PointRegime::Transition,
                 fmt::format("Z within {:g} block errors of {:g}: {} ({})", kTransitionSigmas, kEnduringMinCoordination,

@@ -176,7 +176,7 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
             for (const auto& s : col.solvers) {
                 const Run& r = col.run(s, p->id);
                 if (!r.usable()) continue;
-                if (has_verdict(r)) engines.push_back({s, r.summary->run["flow_regime"]});
+                if (has_verdict(r)) engines.push_back(engine_regime(s, r.summary->run));
                 const std::string cls = r.steady() ? "" : r.state_class();
                 std::string verdict = "—", why = "no contact record (run.flow_regime): a model without grain contacts";
                 if (has_verdict(r)) {

@@ -177,7 +177,7 @@ std::optional<RegimeReading> regime_reading(const Collection& col, const std::st
         const auto& run = r->summary->run;
         if (!r->steady() || !run.is_object() || !run.contains("flow_regime") || !run["flow_regime"].contains("regime"))
             continue;
-        engines.push_back({r->solver, run["flow_regime"]});
+        engines.push_back(engine_regime(r->solver, run));
     }
     if (engines.empty()) return std::nullopt;
     const PointVerdict v = point_verdict(engines);
@@ -189,6 +189,8 @@ std::optional<RegimeReading> regime_reading(const Collection& col, const std::st
         case PointRegime::Transition:  // short: the regime table has the numbers and the thresholds
             return RegimeReading{fmt::format("at the transition ({}): {}",
                                              v.engines_disagree ? "engines disagree"
+                                             : v.step_moves     ? fmt::format("Z within its time-step error of {:g}",
+                                                                              kEnduringMinCoordination)
                                                                 : fmt::format("Z near {:g}", kEnduringMinCoordination),
                                              v.brief),
                                  true};

@@ -1,5 +1,6 @@
 // One verdict per operating point (granlub/statistics/point_verdict.h): engines on either side of
-// the threshold, or one engine's Z within its errors of it, read "at the transition" with the numbers.
+// the threshold, one engine's Z within its errors of it, or within its time-step error (the Δt
+// check's run at twice the step), read "at the transition" with the numbers.
 #include <boost/test/unit_test.hpp>
 
 #include <optional>
@@ -14,7 +15,14 @@ EngineRegime run(const std::string& engine, std::optional<double> z, std::option
                  std::optional<double> z_se = std::nullopt) {
     FlowDiagnostics d;
     d.coordination = z, d.persistence = persistence, d.coordination_stderr = z_se;
-    return {engine, flow_regime_json(d)};
+    return {engine, flow_regime_json(d), nullptr};
+}
+// the same engine with its Δt check's run at twice the step
+EngineRegime checked(EngineRegime r, double z_coarse, double persistence_coarse = 0.85) {
+    FlowDiagnostics d;
+    d.coordination = z_coarse, d.persistence = persistence_coarse, d.coordination_stderr = 0.01;
+    r.coarser = flow_regime_json(d);
+    return r;
 }
 bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 }  // namespace
@@ -48,6 +56,51 @@ BOOST_AUTO_TEST_CASE(one_engine_within_its_errors_of_the_threshold) {
     BOOST_TEST((point_verdict({run("dem", 4.05, 0.9, 0.02)}).regime == PointRegime::Contact));
     // no error recorded (older summaries): the engine's own verdict
     BOOST_TEST((point_verdict({run("dem", 4.01, 0.9)}).regime == PointRegime::Contact));
+}
+
+// The rough regimes case: halving the step takes Z down by 0.1-0.4 at the dense points, tens of
+// block errors; a verdict the step can turn is no verdict.
+BOOST_AUTO_TEST_CASE(a_verdict_the_time_step_turns_is_at_the_transition) {
+    // collision at the answer's step, contact at twice it
+    PointVerdict v = point_verdict({checked(run("dem", 3.93, 0.82, 0.02), 4.12)});
+    BOOST_TEST((v.regime == PointRegime::Transition));
+    BOOST_TEST(v.step_moves);
+    BOOST_TEST(!v.engines_disagree);
+    BOOST_TEST(has(v.criterion, "within its time-step error of 4"), v.criterion);
+    BOOST_TEST(has(v.criterion, "(collision lubrication; at twice the step Z = 4.12, contact)"), v.criterion);
+    BOOST_TEST(has(v.brief, "dem Z = 3.93 (collision; 4.12 at twice the step)"), v.brief);
+    // both contact, but the step moved Z by 0.25 and Z lies 0.15 from 4: its dt -> 0 value may not
+    v = point_verdict({checked(run("dem", 4.15, 0.82, 0.01), 4.40)});
+    BOOST_TEST((v.regime == PointRegime::Transition));
+    BOOST_TEST(v.step_moves);
+    // moved by 0.15, 0.6 from the threshold: the verdict stands, with the check's numbers beside it
+    v = point_verdict({checked(run("dem", 4.6, 0.85, 0.01), 4.75)});
+    BOOST_TEST((v.regime == PointRegime::Contact));
+    BOOST_TEST(!v.step_moves);
+    BOOST_TEST(has(v.criterion, "at twice the step Z = 4.75, contact"), v.criterion);
+    // the persistence alone turns it at twice the step (Z clear of 4 at both)
+    v = point_verdict({checked(run("dem", 4.6, 0.6, 0.01), 4.7, 0.4)});
+    BOOST_TEST((v.regime == PointRegime::Transition));
+}
+
+// engine_regime reads the check that checked the answer: full_step_run, or half_step_run after a
+// second halving; a run without a check has no coarser record
+BOOST_AUTO_TEST_CASE(engine_regime_reads_the_answers_own_check) {
+    FlowDiagnostics d;
+    d.coordination = 4.5, d.persistence = 0.8;
+    const nlohmann::json fr = flow_regime_json(d);
+    d.coordination = 4.9;
+    const nlohmann::json full = flow_regime_json(d);
+    d.coordination = 4.7;
+    const nlohmann::json half = flow_regime_json(d);
+    nlohmann::json run = {{"flow_regime", fr}};
+    BOOST_TEST(engine_regime("dem", run).coarser.is_null());
+    run["dt_refinement"] = {{"full_step_run", {{"flow_regime", full}}}};
+    BOOST_TEST(engine_regime("dem", run).coarser.at("coordination_number").get<double>() == 4.9);
+    run["dt_refinement"]["half_step_run"] = {{"flow_regime", half}};
+    BOOST_TEST(engine_regime("dem", run).coarser.at("coordination_number").get<double>() == 4.7);
+    BOOST_TEST(engine_regime("dem", run).flow_regime.at("coordination_number").get<double>() == 4.5);
+    BOOST_TEST(engine_regime("yade", nlohmann::json()).flow_regime.is_null());
 }
 
 BOOST_AUTO_TEST_CASE(nothing_decided_is_undetermined) {
