@@ -79,6 +79,12 @@ int open_steady_markers(const std::string& svg) {
     return n;
 }
 
+int count(const std::string& s, const std::string& part) {
+    int n = 0;
+    for (auto at = s.find(part); at != std::string::npos; at = s.find(part, at + 1)) ++n;
+    return n;
+}
+
 std::string section(const std::string& html) {
     const auto start = html.find("Regimes over speed and load</h2>");
     BOOST_TEST_REQUIRE(start != std::string::npos);
@@ -123,6 +129,9 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     BOOST_TEST(sec.find("contact lubrication") != std::string::npos);
     BOOST_TEST(sec.find("Z = 3 &lt; 4") != std::string::npos);
     BOOST_TEST(sec.find(", enduring contacts") == std::string::npos);  // the old contradictory label
+    // the transient point's own row keeps its run's verdict (marked); the point gets none from it
+    BOOST_TEST(sec.find("no run here is a result") != std::string::npos);
+    BOOST_TEST(count(sec, ">no verdict<") == 1);
     // the experiment's critical shear rate at U = 100 1/s x 5 mm = 0.5 m/s
     const std::string map = test::slurp(rep / "plots" / "regime_map_dem.svg");
     BOOST_TEST(map.find("Sawyer") != std::string::npos);

@@ -12,6 +12,7 @@
 #include "granlub/statistics/flow_regime.h"
 #include "granlub/statistics/point_verdict.h"
 #include "results/scope.h"
+#include "results/verdict_engines.h"
 
 namespace granlub::postproc {
 namespace {
@@ -172,11 +173,11 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
                 "gap (mm)"};
     for (const auto& g : grid.per_load)
         for (const OperatingPoint* p : g.points) {
-            std::vector<EngineRegime> engines;  // the point's one verdict (core point_verdict.h), below
+            bool any = false;
             for (const auto& s : col.solvers) {
                 const Run& r = col.run(s, p->id);
                 if (!r.usable()) continue;
-                if (has_verdict(r)) engines.push_back(engine_regime(s, r.summary->run));
+                any = any || has_verdict(r);
                 const std::string cls = r.steady() ? "" : r.state_class();
                 std::string verdict = "—", why = "no contact record (run.flow_regime): a model without grain contacts";
                 if (has_verdict(r)) {
@@ -197,7 +198,18 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
                                   {I.mid_gap ? num(*I.mid_gap, 3) : "—", cls},
                                   {gap ? num(*gap * 1e3, 3) : "—", cls}});
             }
-            if (engines.empty()) continue;
+            if (!any) continue;
+            // the point's one verdict (core point_verdict.h) from its steady runs only, as the summary's
+            const std::vector<EngineRegime> engines = verdict_engines(col, p->id);
+            if (engines.empty()) {
+                t.rows.push_back({{"point", ""}, {p->id, ""}, {num(p->speed), ""}, {num(p->normal_stress), ""},
+                                  {"", ""}, {"no verdict", "transient"},
+                                  {"no run here is a result (the status column: a transient's contacts are still "
+                                   "on their way, a dt-unconverged run's move with the step)",
+                                   "transient"},
+                                  {"", ""}, {"", ""}, {"", ""}});
+                continue;
+            }
             const PointVerdict v = point_verdict(engines);
             t.rows.push_back({{"point", ""}, {p->id, ""}, {num(p->speed), ""}, {num(p->normal_stress), ""}, {"", ""},
                               {to_string(v.regime), ""}, {v.criterion, ""}, {"", ""}, {"", ""}, {"", ""}});

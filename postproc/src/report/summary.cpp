@@ -11,6 +11,7 @@
 
 #include "formats/format.h"
 #include "granlub/statistics/flow_regime.h"
+#include "results/verdict_engines.h"
 #include "results/scope.h"
 #include "statistics/stats.h"
 
@@ -172,13 +173,7 @@ std::string not_answers(const Collection& col) {
 // The point's one verdict is core's (point_verdict.h), as in the regime table: the engines' verdicts
 // combined, "at the transition" where they straddle the threshold or a Z lies within its errors of it.
 std::optional<RegimeReading> regime_reading(const Collection& col, const std::string& point) {
-    std::vector<EngineRegime> engines;
-    for (const Run* r : col.usable(point)) {
-        const auto& run = r->summary->run;
-        if (!r->steady() || !run.is_object() || !run.contains("flow_regime") || !run["flow_regime"].contains("regime"))
-            continue;
-        engines.push_back(engine_regime(r->solver, run));
-    }
+    const std::vector<EngineRegime> engines = verdict_engines(col, point);
     if (engines.empty()) return std::nullopt;
     const PointVerdict v = point_verdict(engines);
     std::string names;
