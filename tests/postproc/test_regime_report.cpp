@@ -2,6 +2,7 @@
 // case that sweeps speed and load draws the map, the lift-off, mu(I) and tau(U) per load, says
 // which criterion decided each point and draws a transient hollow; a one-point case and a
 // speed-only sweep draw no map and say why.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -100,9 +101,26 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     auto s = grid_case("regime_grid", "speed = [0.5, 1.0, 2.0]\nnormal_stress = [500.0, 2000.0]\n");
     BOOST_TEST_REQUIRE(s.c.points.size() == 6u);
     write_results(s);
+    // one steady point (U = 1 m/s at 2000 Pa, Z = 4.8) whose Δt check's run at twice the step has
+    // Z = 3.5: the step turns its verdict, so the map and the table put it at the transition
+    const auto at = std::find_if(s.c.points.begin(), s.c.points.end(),
+                                 [](const OperatingPoint& p) { return p.speed == 1.0 && p.normal_stress == 2000.0; });
+    BOOST_TEST_REQUIRE((at != s.c.points.end()));
+    const OperatingPoint& turned = *at;
+    FlowDiagnostics coarse{0.05, 0.04, 3.5, 0.9};
+    const nlohmann::json small = {{"relative_change", -0.01}, {"z", -0.5}};
+    test::patch_run(s, "dem", turned.id,
+                    {{"dt_refinement",
+                      {{"mean_solid_fraction", {{"change", -0.001}}},
+                       {"shear_stress_bottom", small},
+                       {"shear_stress_top", small},
+                       {"full_step_run", {{"status", "steady"}, {"flow_regime", flow_regime_json(coarse)}}}}}});
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const fs::path rep = s.o.results_root / "report";
     const std::string sec = section(test::slurp(rep / "index.html"));
+    BOOST_TEST(count(sec, "Z within its time-step error of 4") == 1);
+    BOOST_TEST(sec.find("at twice the step Z = 3.5, collision") != std::string::npos);
+    BOOST_TEST(test::slurp(rep / "plots" / "regime_map_dem.svg").find("at the transition") != std::string::npos);
     for (const char* f : {"regime_map_dem", "regime_liftoff_gap_dem", "regime_liftoff_nu_dem", "regime_liftoff_nu_continuum",
                           "regime_mu_of_i_mid_gap",
                           "regime_mu_of_i_nominal", "regime_nu_of_i", "regime_tau_of_u_bottom_dem", "regime_tau_of_u_top_dem",

@@ -69,21 +69,27 @@ std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, con
         f.caption = fmt::format(
             "{}'s verdict at each point (core flow_regime.h): contact lubrication where the contacts endure (Z ≥ {} "
             "and ≥ {:.0f} % of contacts survive a shear strain of {}), collision lubrication where they do not "
-            "(Sawyer & Tichy 2001's two regimes); undetermined where what decides was not measured. The criterion "
-            "that decided each point is in the table below. Hollow purple diamonds: points of the sweep with no usable "
-            "result.",
-            s, num(kEnduringMinCoordination), 100 * kEnduringMinPersistence, num(kPersistenceStrain));
+            "(Sawyer & Tichy 2001's two regimes); at the transition where Z lies within {} block errors of {} or "
+            "within its time-step error (the Δt check's run at twice the step on the other side, or Z moved by more "
+            "than it lies from {}); undetermined where what decides was not measured. The criterion that decided each "
+            "point is in the table below. Hollow purple diamonds: points of the sweep with no usable result.",
+            s, num(kEnduringMinCoordination), 100 * kEnduringMinPersistence, num(kPersistenceStrain),
+            num(kTransitionSigmas), num(kEnduringMinCoordination), num(kEnduringMinCoordination));
         f.x.label = "wall speed U (m/s)";
         f.y.label = "load P (Pa)";
         f.y.log = true;
-        // contact: blue circles, collision: vermillion squares, undetermined: black triangles (figure.cpp)
-        const int styles[] = {0, 1, 6};
-        int k = 0;
-        for (Lubrication l : {Lubrication::Contact, Lubrication::Collision, Lubrication::Undetermined}) {
-            auto series = series_by_state(col, s, points, to_string(l), styles[k++],
+        // Each marker is this engine's own point verdict (core point_verdict.h: its Z, block error and
+        // Δt check). Contact: blue circles, collision: vermillion squares, at the transition: orange
+        // circles, undetermined: black triangles (formats/figure_style.cpp).
+        const std::pair<PointRegime, int> kinds[] = {{PointRegime::Contact, 0},
+                                                     {PointRegime::Collision, 1},
+                                                     {PointRegime::Transition, 4},
+                                                     {PointRegime::Undetermined, 6}};
+        for (const auto& [kind, style] : kinds) {
+            auto series = series_by_state(col, s, points, to_string(kind), style,
                                           [&](const Run& r, const OperatingPoint& p) {
-                                              if (!has_verdict(r)) return std::optional<std::pair<double, double>>();
-                                              if (read_flow_verdict(r.summary->run["flow_regime"]).lubrication != l)
+                                              if (!has_verdict(r) ||
+                                                  point_verdict({engine_regime(s, r.summary->run)}).regime != kind)
                                                   return std::optional<std::pair<double, double>>();
                                               return std::optional(std::pair(p.speed, p.normal_stress));
                                           });
