@@ -48,16 +48,6 @@ std::string numbers(const EngineRegime& r, const FlowVerdict& v) {
     return s + " (" + to_string(v.lubrication) + (coarse.empty() ? "" : "; at twice the step " + coarse) + ")";
 }
 
-// "dem Z = 4.35 (contact)", "dem Z = 3.93 (collision; 4.12 at twice the step)"
-std::string brief(const EngineRegime& r, const FlowVerdict& v) {
-    const auto z = number(r.flow_regime, "coordination_number");
-    const auto zc = number(r.coarser, "coordination_number");
-    const std::string name = to_string(v.lubrication);
-    return r.engine + " Z = " + (z ? fmt::format("{:.3g}", *z) : std::string("not measured")) + " (" +
-           name.substr(0, name.find(' ')) + (zc ? fmt::format("; {:.3g} at twice the step", *zc) : std::string()) +
-           ")";
-}
-
 // The time step's own say (point_verdict.h): the run at twice the step on the other side of the
 // threshold, or Z nearer to it than the check moved Z.
 bool step_moves_across(const EngineRegime& r, const FlowVerdict& v) {
@@ -74,6 +64,17 @@ bool straddles(const nlohmann::json& fr) {
     const auto z = number(fr, "coordination_number");
     const auto se = number(fr, "coordination_number_stderr");
     return z && se && std::abs(*z - kEnduringMinCoordination) < kTransitionSigmas * *se;
+}
+
+// "dem Z = 4.35 (contact)"; "dem Z = 3.93 (collision; 4.12 at twice the step)" where the step is what
+// puts it at the transition (the summary's short form: the check's Z only where it decides)
+std::string brief(const EngineRegime& r, const FlowVerdict& v, bool step) {
+    const auto z = number(r.flow_regime, "coordination_number");
+    const auto zc = number(r.coarser, "coordination_number");
+    const std::string name = to_string(v.lubrication);
+    return r.engine + " Z = " + (z ? fmt::format("{:.3g}", *z) : std::string("not measured")) + " (" +
+           name.substr(0, name.find(' ')) +
+           (step && zc ? fmt::format("; {:.3g} at twice the step", *zc) : std::string()) + ")";
 }
 
 }  // namespace
@@ -96,13 +97,14 @@ PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
     bool disagree = false, near = false, step = false;
     for (const EngineRegime& r : runs) {
         const FlowVerdict v = read_flow_verdict(r.flow_regime);
+        const bool moved = v.lubrication != Lubrication::Undetermined && step_moves_across(r, v);
         each += (each.empty() ? "" : "; ") + numbers(r, v);
-        briefs += (briefs.empty() ? "" : ", ") + brief(r, v);
+        briefs += (briefs.empty() ? "" : ", ") + brief(r, v, moved);
         if (v.lubrication == Lubrication::Undetermined) continue;
         if (agreed && *agreed != v.lubrication) disagree = true;
         agreed = v.lubrication;
         near = near || straddles(r.flow_regime);
-        step = step || step_moves_across(r, v);
+        step = step || moved;
     }
     const std::string thresholds =
         fmt::format("thresholds Z = {:g}, {:.0f} % persisting", kEnduringMinCoordination, 100 * kEnduringMinPersistence);
