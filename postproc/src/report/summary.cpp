@@ -171,7 +171,8 @@ std::string not_answers(const Collection& col) {
 }  // namespace
 
 // The point's one verdict is core's (point_verdict.h), as in the regime table: the engines' verdicts
-// combined, "at the transition" where they straddle the threshold or a Z lies within its errors of it.
+// combined, "at the transition" where they straddle the threshold or a Z lies within its block errors
+// or its time-step error of it.
 std::optional<RegimeReading> regime_reading(const Collection& col, const std::string& point) {
     const std::vector<EngineRegime> engines = verdict_engines(col, point);
     if (engines.empty()) return std::nullopt;
