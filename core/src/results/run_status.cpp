@@ -71,6 +71,13 @@ std::optional<std::string> dt_check_failure(const nlohmann::json& coarse_run, co
     return dt_unconverged_reason(record);
 }
 
+DtCheckRun dt_check_run(const nlohmann::json& r) {
+    if (!r.is_object()) return {};
+    const bool twice = r.contains("half_step_run");
+    const auto it = r.find(twice ? "half_step_run" : "full_step_run");
+    return {it != r.end() && it->is_object() ? &*it : nullptr, twice};
+}
+
 nlohmann::json dt_refinement_record(double refined_time_step, const std::map<std::string, Scalar>& original,
                                     const std::map<std::string, Scalar>& refined) {
     auto both = [&](const std::string& name) -> std::pair<const Scalar*, const Scalar*> {
@@ -121,11 +128,10 @@ Regime read_regime(const nlohmann::json& run) {
         // a check against a run that never reached a steady state is no check: the point is a
         // transient (summaries written before the solver said so itself read the same way)
         // (after a second halving the answer is checked against the half-step run)
-        const auto& rec = run.at("dt_refinement");
-        const bool twice = rec.is_object() && rec.contains("half_step_run");
-        const char* against = twice ? "half_step_run" : "full_step_run";
-        if (rec.is_object() && rec.contains(against) && rec.at(against).is_object()) {
-            const auto& check = rec.at(against);
+        const DtCheckRun against = dt_check_run(run.at("dt_refinement"));
+        const bool twice = against.second_halving;
+        if (against.run) {
+            const auto& check = *against.run;
             if (check.contains("status") && check.at("status") != "steady") {
                 // its own reason, when it gives one, says how to run it longer (e.g. the cap that stopped it)
                 const auto own = check.value("status_reason", std::string());

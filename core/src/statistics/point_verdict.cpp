@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "granlub/results/run_status.h"
 #include "granlub/statistics/flow_regime.h"
 
 namespace granlub {
@@ -28,12 +29,18 @@ std::optional<double> number(const nlohmann::json& j, const char* key) {
     return it != j.end() && it->is_number() ? std::optional<double>(it->get<double>()) : std::nullopt;
 }
 
+// "contact", "collision", "undetermined": a verdict's first word
+std::string short_name(Lubrication l) {
+    const std::string name = to_string(l);
+    return name.substr(0, name.find(' '));
+}
+
 // "Z = 4.12, contact" for the time-step check's coarser run; empty without one
 std::string coarser_numbers(const EngineRegime& r) {
     if (!r.coarser.is_object()) return "";
     const auto z = number(r.coarser, "coordination_number");
-    const std::string name = to_string(read_flow_verdict(r.coarser).lubrication);
-    return (z ? fmt::format("Z = {:.3g}", *z) : std::string("Z not measured")) + ", " + name.substr(0, name.find(' '));
+    return (z ? fmt::format("Z = {:.3g}", *z) : std::string("Z not measured")) + ", " +
+           short_name(read_flow_verdict(r.coarser).lubrication);
 }
 
 // "dem: Z = 4.17 ± 0.03, 87 % persist (contact lubrication; at twice the step Z = 4.31, contact)"
@@ -51,10 +58,9 @@ std::string numbers(const EngineRegime& r, const FlowVerdict& v) {
 // The time step's own say (point_verdict.h): the run at twice the step on the other side of the
 // threshold, or Z nearer to it than the check moved Z.
 bool step_moves_across(const EngineRegime& r, const FlowVerdict& v) {
-    if (!r.coarser.is_object()) return false;
+    if (!r.coarser.is_object() || v.lubrication == Lubrication::Undetermined) return false;
     const Lubrication coarse = read_flow_verdict(r.coarser).lubrication;
-    if (coarse != Lubrication::Undetermined && v.lubrication != Lubrication::Undetermined && coarse != v.lubrication)
-        return true;
+    if (coarse != Lubrication::Undetermined && coarse != v.lubrication) return true;
     const auto z = number(r.flow_regime, "coordination_number");
     const auto zc = number(r.coarser, "coordination_number");
     return z && zc && std::abs(*z - kEnduringMinCoordination) < std::abs(*zc - *z);
@@ -71,10 +77,9 @@ bool straddles(const nlohmann::json& fr) {
 std::string brief(const EngineRegime& r, const FlowVerdict& v, bool step) {
     const auto z = number(r.flow_regime, "coordination_number");
     const auto zc = number(r.coarser, "coordination_number");
-    const std::string name = to_string(v.lubrication);
     return r.engine + " Z = " + (z ? fmt::format("{:.3g}", *z) : std::string("not measured")) + " (" +
-           name.substr(0, name.find(' ')) +
-           (step && zc ? fmt::format("; {:.3g} at twice the step", *zc) : std::string()) + ")";
+           short_name(v.lubrication) + (step && zc ? fmt::format("; {:.3g} at twice the step", *zc) : std::string()) +
+           ")";
 }
 
 }  // namespace
@@ -82,12 +87,11 @@ std::string brief(const EngineRegime& r, const FlowVerdict& v, bool step) {
 EngineRegime engine_regime(const std::string& engine, const nlohmann::json& run) {
     if (!run.is_object()) return {engine, nullptr, nullptr};
     EngineRegime r{engine, run.value("flow_regime", nlohmann::json()), nullptr};
-    const nlohmann::json rec = run.value("dt_refinement", nlohmann::json());
-    if (!rec.is_object()) return r;
-    const char* against = rec.contains("half_step_run") ? "half_step_run" : "full_step_run";
-    const nlohmann::json check = rec.value(against, nlohmann::json());
-    if (check.is_object() && check.contains("flow_regime") && check.at("flow_regime").is_object())
-        r.coarser = check.at("flow_regime");
+    const auto rec = run.find("dt_refinement");
+    if (rec == run.end()) return r;
+    const nlohmann::json* check = dt_check_run(*rec).run;
+    if (check && check->contains("flow_regime") && check->at("flow_regime").is_object())
+        r.coarser = check->at("flow_regime");
     return r;
 }
 
@@ -97,7 +101,7 @@ PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
     bool disagree = false, near = false, step = false;
     for (const EngineRegime& r : runs) {
         const FlowVerdict v = read_flow_verdict(r.flow_regime);
-        const bool moved = v.lubrication != Lubrication::Undetermined && step_moves_across(r, v);
+        const bool moved = step_moves_across(r, v);
         each += (each.empty() ? "" : "; ") + numbers(r, v);
         briefs += (briefs.empty() ? "" : ", ") + brief(r, v, moved);
         if (v.lubrication == Lubrication::Undetermined) continue;

@@ -1,6 +1,7 @@
 #include "figures/regime_map.h"
 
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -81,15 +82,19 @@ std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, con
         // Each marker is this engine's own point verdict (core point_verdict.h: its Z, block error and
         // Δt check). Contact: blue circles, collision: vermillion squares, at the transition: orange
         // circles, undetermined: black triangles (formats/figure_style.cpp).
+        std::map<std::string, PointRegime> verdict;  // per point id, once
+        for (const OperatingPoint* p : points)
+            if (const Run& r = col.run(s, p->id); has_verdict(r))
+                verdict[p->id] = point_verdict({engine_regime(s, r.summary->run)}).regime;
         const std::pair<PointRegime, int> kinds[] = {{PointRegime::Contact, 0},
                                                      {PointRegime::Collision, 1},
                                                      {PointRegime::Transition, 4},
                                                      {PointRegime::Undetermined, 6}};
         for (const auto& [kind, style] : kinds) {
             auto series = series_by_state(col, s, points, to_string(kind), style,
-                                          [&](const Run& r, const OperatingPoint& p) {
-                                              if (!has_verdict(r) ||
-                                                  point_verdict({engine_regime(s, r.summary->run)}).regime != kind)
+                                          [&](const Run&, const OperatingPoint& p) {
+                                              const auto v = verdict.find(p.id);
+                                              if (v == verdict.end() || v->second != kind)
                                                   return std::optional<std::pair<double, double>>();
                                               return std::optional(std::pair(p.speed, p.normal_stress));
                                           });

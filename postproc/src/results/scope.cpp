@@ -135,8 +135,9 @@ RunLengths run_lengths(const std::vector<const Run*>& runs) {
         const nlohmann::json* refinement = run_object(*r, "dt_refinement");
         if (refinement && refinement->contains("full_step_run")) {
             const auto& rec = *refinement;
-            const bool twice = rec.contains("half_step_run") && rec["half_step_run"].is_object();
-            const auto& f = rec[twice ? "half_step_run" : "full_step_run"];  // the run the answer was compared with
+            const DtCheckRun check = dt_check_run(rec);  // the run the answer was compared with
+            const bool twice = check.second_halving && check.run;
+            const auto& f = twice ? *check.run : rec["full_step_run"];
             if (twice) {
                 l.quarter.push_back(r->point ? r->point->id : r->dir.filename().string());
                 const auto& first = rec.value("first_check", nlohmann::json::object());

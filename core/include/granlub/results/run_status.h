@@ -64,6 +64,15 @@ inline constexpr double kDtMaxStressZ = 2.0;
 // the record is malformed.
 std::string dt_unconverged_reason(const nlohmann::json& dt_refinement);
 
+// The run the answer was checked against, from a run.dt_refinement record: its "half_step_run"
+// after a second halving ([dem] refine_halvings = 2), else its "full_step_run"; run is null when
+// that record is absent or not an object (or dt_refinement is not an object).
+struct DtCheckRun {
+    const nlohmann::json* run = nullptr;
+    bool second_halving = false;  // the answer is the quarter-step run, checked against the half step
+};
+DtCheckRun dt_check_run(const nlohmann::json& dt_refinement);
+
 // Whether a Delta-t check should be repeated one halving finer ([dem] refine_halvings = 2), from the
 // two runs' own run blocks and their record (dt_refinement_record): nullopt when the finer run is
 // not steady (it is the answer: a transient, to be run longer, not refined); "" when the pair is
