@@ -1,6 +1,7 @@
 // compute wall/gran/force (plugins/liggghts/doc/compute_wall_gran_force.txt) through the driver and
 // tests/liggghts/in.wallforce: every step, each wall's summed force equals, to the last bit, the
-// compute reduce sums it replaces, on 1 and 2 ranks and after a wall is unfixed and made again;
+// compute reduce sums it replaces, on 1 and 2 ranks and after a wall is unfixed and made again as a
+// loaded plate (fix wall/gran/moving, whose sums run over the grains its own pass evaluated);
 // the forces are not zero (the comparison means something); bad input stops with a message.
 #define BOOST_TEST_MODULE liggghts_wall_force
 #include <boost/test/unit_test.hpp>
@@ -28,6 +29,13 @@ std::vector<Half> halves(const std::string& out) {
     return h;
 }
 
+// The loaded plate's mean f_y over the second half (it presses on the bed: negative).
+double plate_fy(const std::string& out) {
+    static const std::regex line(R"(RESULT plate fy (\S+))");
+    std::smatch m;
+    return std::regex_search(out, m, line) ? std::stod(m[1].str()) : 0.0;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(same_bits_as_compute_reduce_every_step_on_1_and_2_ranks) {
@@ -43,6 +51,9 @@ BOOST_AUTO_TEST_CASE(same_bits_as_compute_reduce_every_step_on_1_and_2_ranks) {
             BOOST_TEST(x.fy > 0.0, "np " << np);
             BOOST_TEST(x.fx_side != 0.0, "np " << np);
         }
+        // the second half's top wall is a loaded plate (1 N) resting on the bed: its sums, taken
+        // over the grains its own pass evaluated, are compared with grains under it
+        BOOST_TEST(plate_fy(r.output) < -0.5, "np " << np);
     }
 }
 

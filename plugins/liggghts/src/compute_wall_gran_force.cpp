@@ -98,9 +98,14 @@ void ComputeWallGranForce::compute_vector() {
         const FixWallGranMoving* moving = dynamic_cast<const FixWallGranMoving*>(fixes_[w]);
         PrimitiveWall* prim = per_wall_ == 4 ? fixes_[w]->primitiveWall() : NULL;
         // One pass: most grains do not touch the wall this step, and skipping their exact zeros
-        // leaves every sum as compute reduce's, to the bit (x + 0.0 == x).
+        // leaves every sum as compute reduce's, to the bit (x + 0.0 == x). Only the grains the wall
+        // evaluated can hold a nonzero force, so where the wall lists them in index order (a moving
+        // wall's last force pass, a primitive wall's neighbour list) only those are visited.
+        const int* list = NULL;
+        const int n = candidates(fixes_[w], moving, list, nlocal);
         double sx = 0.0, sy = 0.0, sz = 0.0, tq = 0.0;
-        for (int i = 0; i < nlocal; i++) {
+        for (int k = 0; k < n; k++) {
+            const int i = list ? list[k] : k;
             const double* fi = f[i];
             if (!(mask[i] & groupbit) || (fi[0] == 0.0 && fi[1] == 0.0 && fi[2] == 0.0)) continue;
             sx += fi[0];
@@ -115,6 +120,24 @@ void ComputeWallGranForce::compute_vector() {
         if (per_wall_ == 4) out[3] = tq;
     }
     MPI_Allreduce(local_.data(), vector, size_vector, MPI_DOUBLE, MPI_SUM, world);
+}
+
+// The owned grains a wall's stored force can be nonzero for, in index order: a fix wall/gran/moving's
+// evaluated grains, a fixed primitive wall's neighbour list (rebuilt with the pair neighbour lists,
+// within half the skin of the wall: every grain that can touch it until the next rebuild), and for
+// a mesh wall all n owned grains (list = NULL: the indices 0 .. n-1).
+int ComputeWallGranForce::candidates(FixWallGran* wall, const FixWallGranMoving* moving, const int*& list, int n) {
+    list = NULL;
+    if (moving) {
+        list = moving->evaluated().data();
+        return static_cast<int>(moving->evaluated().size());
+    }
+    PrimitiveWall* prim = wall->primitiveWall();
+    if (!prim) return n;
+    int* neigh = NULL;
+    const int size = prim->getNeighbors(neigh);
+    list = neigh;
+    return size;
 }
 
 // a . (p - o) x F for a grain at x that the wall pushes with F, p = x + delta its contact point

@@ -21,6 +21,7 @@ public:
 
 private:
     class FixWallGran* find_wall(const std::string& id);
+    static int candidates(class FixWallGran* wall, const class FixWallGranMoving* moving, const int*& list, int n);
     double torque(const class FixWallGranMoving* moving, class PrimitiveWall* prim, double* x, double r,
                   const double* F) const;
 

@@ -194,9 +194,15 @@ void FixWallGranMoving::end_of_step() {
     const int* mask = atom->mask;
     double mine = 0.0, all = 0.0;
     double** fa = atom->f;  // the force on each atom this step: on a carried atom, the grains'
-    for (int i = 0; i < atom->nlocal; i++) {
-        if (mask[i] & groupbit) mine -= f[i][plane_axis_];
-        if (mask[i] & carrybit_) mine += fa[i][plane_axis_];
+    if (!carrybit_) {
+        // only the grains the force pass evaluated can push the plate; the others' stored force is
+        // 0 and leaves the sum's bits as they are (x - 0.0 == x), so the index order is all that counts
+        for (const int i : evaluated_) mine -= f[i][plane_axis_];
+    } else {
+        for (int i = 0; i < atom->nlocal; i++) {
+            if (mask[i] & groupbit) mine -= f[i][plane_axis_];
+            if (mask[i] & carrybit_) mine += fa[i][plane_axis_];
+        }
     }
     MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, world);
     const double dt = update->dt;
@@ -231,6 +237,7 @@ void FixWallGranMoving::post_force_primitive(int) {
 
     int* neighborList = NULL;
     const int nNeigh = plane_axis_ >= 0 ? atom->nlocal : primitiveWall_->getNeighbors(neighborList);
+    evaluated_.clear();
     for (int iCont = 0; iCont < nNeigh; iCont++) {
         const int iPart = neighborList ? neighborList[iCont] : iCont;
         if (!(mask[iPart] & groupbit)) continue;
@@ -260,6 +267,7 @@ void FixWallGranMoving::post_force_primitive(int) {
                 if (c_history) vectorZeroizeN(c_history[iPart], dnum_);
                 break;  // as fix wall/gran
             }
+            evaluated_.push_back(iPart);
             sidata.deltan = -deltan;
             sidata.delta[0] = -delta[0];
             sidata.delta[1] = -delta[1];

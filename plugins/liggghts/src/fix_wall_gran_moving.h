@@ -13,6 +13,7 @@ FixStyle(wall/gran/moving,FixWallGranMoving)
 #define GRANLUB_FIX_WALL_GRAN_MOVING_H
 
 #include <string>
+#include <vector>
 
 #include "fix_wall_gran.h"
 
@@ -31,6 +32,9 @@ public:
     // The contact of a sphere (centre x, radius r) with the wall where it is now: returns the gap
     // (< 0: overlap), delta from the centre to the contact point on the surface.
     double resolve(const double* x, double r, double* delta) const;
+    // The owned grains whose contact with this wall its last force pass evaluated, in index order:
+    // every grain whose stored force can be nonzero is among them (the sums need not visit the rest).
+    const std::vector<int>& evaluated() const { return evaluated_; }
 
 protected:
     void post_force_primitive(int vflag);
@@ -52,6 +56,7 @@ private:
     double lowest_ = 0.0, highest_ = 0.0;  // its travel along the axis
     int carrybit_ = 0;              // carry: the group whose atoms ride the plate
     bigint moved_at_ = -1;          // the step the plane was last advanced in
+    std::vector<int> evaluated_;    // see evaluated(); refilled by every force pass (keeps its capacity)
 };
 
 }  // namespace LAMMPS_NS
