@@ -7,6 +7,7 @@
 
 #include "block_tridiagonal.h"
 #include "granlub/continuum/homogeneous.h"
+#include "granlub/continuum/walls/wall_condition.h"
 #include "granlub/error.h"
 
 namespace granlub::continuum {
@@ -43,16 +44,18 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
         Ru = (0.5 * (l.Mc + l.Mp) * (l.up - l.uc) - 0.5 * (l.Mm + l.Mc) * (l.uc - l.um)) / h;
         Rn = (0.5 * (l.Kc + l.Kp) * (l.np - l.nc) - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm)) / h - h * src;
     } else if (kind == Kind::Bottom) {
-        const S us = 1.0 - l.uc;
-        const S du = -w->r5 * L * l.b5 * us;
-        const S dn = -(w->r6 * L * l.b6 + w->r7 * L * l.Pi * l.b7 * us * us + w->r8 * l.Pi * l.b8 * us * du);
+        // n = +y^, slip = 1 - u^: the wall condition's gradients are y^-gradients as they stand.
+        const auto g = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(1.0 - l.uc), L, l.Pi);
+        const S& du = g.du;
+        const S& dn = g.dnu;
         const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
         Ru = 0.5 * (l.Mc + l.Mp) * (l.up - l.uc) / h - l.Mc * du;
         Rn = 0.5 * (l.Kc + l.Kp) * (l.np - l.nc) / h - l.Kc * dn - 0.5 * h * src;
     } else {
-        const S us = l.uc;
-        const S du = -w->r5 * L * l.b5 * us;
-        const S dn = w->r6 * L * l.b6 + w->r7 * L * l.Pi * l.b7 * us * us + w->r8 * l.Pi * l.b8 * us * du;
+        // n = -y^, slip = 0 - u^: y^-gradients are minus the wall condition's.
+        const auto g = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(-l.uc), L, l.Pi);
+        const S du = -g.du;
+        const S dn = -g.dnu;
         const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
         Ru = l.Mc * du - 0.5 * (l.Mm + l.Mc) * (l.uc - l.um) / h;
         Rn = l.Kc * dn - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm) / h - 0.5 * h * src;

@@ -1,5 +1,7 @@
 #include "granlub/continuum/problem.h"
 
+#include "granlub/continuum/walls/wall_condition.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -22,11 +24,19 @@ WallCoefficients wall_coefficients(const Problem& p, const WallBC& w, double nu)
     return w.family->coefficients(p.closures->state(nu), w.params, p.closures->numax());
 }
 
-double wall_du(const Problem& p, bool top, double u, double nu) {
+namespace {
+
+// The wall condition's gradients at a wall node, in y^: n = +y^ at the bottom (u^_wall = 1), -y^ at the top
+// (u^_wall = 0).
+WallGradients<double> wall_y_gradients(const Problem& p, bool top, double u, double nu) {
     const WallBC& w = top ? p.top : p.bottom;
-    const double b5 = wall_coefficients(p, w, nu).b5.v;
-    return top ? -w.params.r5 * p.Lambda * b5 * u : -w.params.r5 * p.Lambda * b5 * (1.0 - u);
+    const auto g = wall_gradients(w.params, wall_coefficients(p, w, nu), top ? -u : 1.0 - u, p.Lambda, p.Pi);
+    return top ? WallGradients<double>{-g.du, -g.dnu} : g;
 }
+
+}  // namespace
+
+double wall_du(const Problem& p, bool top, double u, double nu) { return wall_y_gradients(p, top, u, nu).du; }
 
 Problem solved_problem(const Problem& p, const Solution& s) {
     Problem q = p;
@@ -85,15 +95,8 @@ double energy_balance_defect(const Problem& p0, const Solution& s) {
     }
     // wall gradients nu' from the energy wall conditions
     const auto dnu = [&](bool top) {
-        const WallBC& w = top ? p.top : p.bottom;
-        const double nu = top ? s.nu.back() : s.nu.front();
-        const double us = top ? s.u.back() : 1.0 - s.u.front();
-        const double du = wall_du(p, top, top ? s.u.back() : s.u.front(), nu);
-        const auto b = wall_coefficients(p, w, nu);
-        const auto& r = w.params;
-        const double e = r.r6 * L * b.b6.v + r.r7 * L * Pi * b.b7.v * us * us + r.r8 * Pi * b.b8.v * us * du;
-        // bottom: nu' = -e with u_s = 1 - u; top: nu' = +e' with u_s = u (docs/continuum-model.md §5)
-        return top ? e : -e;
+        return top ? wall_y_gradients(p, true, s.u.back(), s.nu.back()).dnu
+                   : wall_y_gradients(p, false, s.u.front(), s.nu.front()).dnu;
     };
     const double K0 = node_coefficients(*p.closures, s.nu.front()).K;
     const double KN = node_coefficients(*p.closures, s.nu.back()).K;
@@ -118,12 +121,9 @@ EnergyBudget energy_budget(const Problem& p0, const Solution& s) {
     for (bool top : {false, true}) {
         const WallBC& w = top ? p.top : p.bottom;
         const double nu = top ? s.nu.back() : s.nu.front();
-        const double us = top ? s.u.back() : 1.0 - s.u.front();
-        const auto c = wall_coefficients(p, w, nu);
-        const double K = node_coefficients(*p.closures, nu).K;
-        const auto& r = w.params;
-        b.wall_dissipation += scale * (K * (r.r6 * L * c.b6.v + r.r7 * L * Pi * c.b7.v * us * us) +
-                                       (1.0 - r.r8) * Pi * tau_hat * us);
+        const double slip = top ? -s.u.back() : 1.0 - s.u.front();
+        b.wall_dissipation += scale * wall_energy_sink(w.params, wall_coefficients(p, w, nu),
+                                                       node_coefficients(*p.closures, nu).K, slip, L, Pi, tau_hat);
     }
     return b;
 }

@@ -9,6 +9,7 @@
 
 #include "gsl_quiet.h"
 #include "granlub/continuum/homogeneous.h"
+#include "granlub/continuum/walls/wall_condition.h"
 #include "granlub/error.h"
 
 namespace granlub::continuum {
@@ -42,13 +43,11 @@ void wall_state(const Shooter& sh, double u0, double nu0, double z[5]) {
     const Problem& p = *sh.p;
     const auto& w = p.bottom.params;
     const auto b = wall_coefficients(p, p.bottom, nu0);
-    const double L = p.Lambda, us = 1.0 - u0;
-    const double du = -w.r5 * L * b.b5.v * us;
-    const double dn = -(w.r6 * L * b.b6.v + w.r7 * L * sh.Pi * b.b7.v * us * us + w.r8 * sh.Pi * b.b8.v * us * du);
+    const auto g = wall_gradients(w, b, 1.0 - u0, p.Lambda, sh.Pi);  // n = +y^
     z[0] = u0;
-    z[1] = du;
+    z[1] = g.du;
     z[2] = nu0;
-    z[3] = dn;
+    z[3] = g.dnu;
     z[4] = 0;
 }
 
@@ -83,10 +82,9 @@ int shoot(const gsl_vector* x, void* params, gsl_vector* f) {
     } else {
         const auto& w = p.top.params;
         const auto b = wall_coefficients(p, p.top, z[2]);
-        const double L = p.Lambda, us = z[0];
-        gsl_vector_set(f, 0, z[1] + w.r5 * L * b.b5.v * us);
-        gsl_vector_set(f, 1, z[3] - (w.r6 * L * b.b6.v + w.r7 * L * sh.Pi * b.b7.v * us * us +
-                                     w.r8 * sh.Pi * b.b8.v * us * z[1]));
+        const auto g = wall_gradients(w, b, -z[0], p.Lambda, sh.Pi);  // n = -y^: y^-gradients are -g
+        gsl_vector_set(f, 0, z[1] + g.du);
+        gsl_vector_set(f, 1, z[3] + g.dnu);
         if (sh.fill) gsl_vector_set(f, 2, z[4] - p.nu_mean);
     }
     return GSL_SUCCESS;
