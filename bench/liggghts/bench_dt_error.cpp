@@ -2,7 +2,7 @@
 // periodic loaded cell (bench/liggghts/dt_error/case.toml, 448 grains) at several time steps for
 // each operator, each against its own finest step and against the first-order (Richardson) limit
 // 2 x(finest) - x(next finest), with the CPU it cost per simulated second. The curve a user picks
-// a step from (plugins/liggghts/README.md, "Error against cost"); the measured table:
+// a step from (docs/measurements/dt-remedies.md, "Error against cost"); the measured table:
 // docs/measurements/liggghts.md.
 //
 //   bench_liggghts_dt_error [--time T] [--seed N] [--speed U] [--fractions 0.04,0.02,0.01]
