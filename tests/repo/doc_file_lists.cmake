@@ -7,11 +7,8 @@ cmake_minimum_required(VERSION 3.16)
 # Each list is the backticked paths at the head of each bullet (before its colon) between its markers; the code's list is a git grep over the
 # tracked sources. A file the grep finds that the list lacks, or one the list names that the grep
 # does not find, fails with both lists.
-find_program(GIT git)
-if(NOT GIT OR NOT EXISTS "${SOURCE_DIR}/.git")
-  message("not a git checkout: skipped")
-  return()
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/TrackedFiles.cmake)
+require_git_checkout()
 set(DOC "${SOURCE_DIR}/docs/architecture.md")
 file(READ "${DOC}" doc)
 set(failures "")
@@ -38,18 +35,6 @@ function(documented mark out)
   list(REMOVE_DUPLICATES files)
   list(SORT files)
   set(${out} "${files}" PARENT_SCOPE)
-endfunction()
-
-function(grepped pattern out)
-  execute_process(COMMAND ${GIT} grep -l -I -E "${pattern}" -- ${ARGN}
-                  WORKING_DIRECTORY "${SOURCE_DIR}" RESULT_VARIABLE rc OUTPUT_VARIABLE hits ERROR_VARIABLE err
-                  OUTPUT_STRIP_TRAILING_WHITESPACE)
-  if(rc GREATER 1)
-    message(FATAL_ERROR "git grep failed (${rc}): ${err}")
-  endif()
-  string(REPLACE "\n" ";" hits "${hits}")
-  list(SORT hits)
-  set(${out} "${hits}" PARENT_SCOPE)
 endfunction()
 
 function(compare mark what documented_files code_files)
@@ -98,13 +83,13 @@ endif()
 string(REPLACE ";" "|" N "${names}")
 string(REPLACE ";" "|" I "${ids}")
 set(law_pattern "(==|!=) *\"(${N})\"|\"(${N})\" *(==|!=)|(==|!=) *(${I})([^A-Z_]|$)|(^|[^A-Z_])(${I}) *(==|!=)|in \\(\"(${N})\"|add(Normal|Tangential)Model\\(|^(NORMAL|TANGENTIAL)_MODEL\\(|^GRAN_MODEL\\(|^ *ContactLaw\\{\\.name = ")
-grepped("${law_pattern}" law_code ":!tests" ":!bench" ":!*.md" ":!*.txt" ":!*.cmake")
+tracked_matching(law_code "${law_pattern}" ":!tests" ":!bench" ":!*.md" ":!*.txt" ":!*.cmake")
 documented(law-files law_doc)
 compare(law-files "names a contact law (${N}; ${I})" "${law_doc}" "${law_code}")
 
 # ---- the files that build figures outside figures/: a Figure declared, or a figures/ builder called
 set(figure_pattern "(^|[^A-Za-z_])Figure [a-z_]+[;{(]|[a-z_]+_figures?\\((c|col|in)[,)]")
-grepped("${figure_pattern}" figure_code "postproc/src" ":!postproc/src/figures")
+tracked_matching(figure_code "${figure_pattern}" "postproc/src" ":!postproc/src/figures")
 documented(figure-sources figure_doc)
 compare(figure-sources "builds or draws figures" "${figure_doc}" "${figure_code}")
 file(READ "${SOURCE_DIR}/postproc/src/figures/registry.cpp" registry)

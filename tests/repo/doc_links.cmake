@@ -5,17 +5,9 @@
 # -2, ...); both sides are compared with non-ASCII letters dropped, which CMake cannot lower-case.
 # Links inside fenced code blocks are not links. External links (scheme:) are not checked.
 cmake_minimum_required(VERSION 3.16)
-find_program(GIT git)
-if(NOT GIT OR NOT EXISTS "${SOURCE_DIR}/.git")
-  message("not a git checkout: skipped")
-  return()
-endif()
-execute_process(COMMAND ${GIT} ls-files "*.md" WORKING_DIRECTORY "${SOURCE_DIR}"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err OUTPUT_STRIP_TRAILING_WHITESPACE)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "git ls-files failed (${rc}): ${err}")
-endif()
-string(REPLACE "\n" ";" pages "${out}")
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/TrackedFiles.cmake)
+require_git_checkout()
+tracked_files(pages "*.md")
 
 # A page's text without fenced code blocks and without ';', '[' and ']' (CMake list syntax): a
 # link's "](" becomes "<link>(".

@@ -1,3 +1,4 @@
+cmake_minimum_required(VERSION 3.16)
 # Fails if a tracked file dates something by a work session (the word, then a number, as in
 # "Sess[i]on 28", "sess[i]ons 27-28", "sess[i]on-3"): a reader outside the project's history cannot
 # find one. Date a measurement and name the commit it was recorded in instead. The rule: session or
@@ -6,18 +7,8 @@
 # passes; a number wrapped onto the next line is not caught (git grep matches line by line). The
 # brackets keep this file from matching itself.
 set(pattern "(^|[^[:alnum:]_])[sS][eE][sS][sS][iI][oO][nN][sS]?([ -]?|–)[0-9]")
-find_program(GIT git)
-if(NOT GIT OR NOT EXISTS "${SOURCE_DIR}/.git")
-    message("not a git checkout: skipped")
-    return()
-endif()
-# git grep searches exactly the tracked files (their working-tree contents); -I skips binaries.
-execute_process(COMMAND ${GIT} grep -n -I -E "${pattern}"
-                WORKING_DIRECTORY "${SOURCE_DIR}" RESULT_VARIABLE rc OUTPUT_VARIABLE hits ERROR_VARIABLE err)
-if(rc EQUAL 0)
-    message(FATAL_ERROR "tracked files date things by a session; write the date and the commit "
-                        "(git log -S'<the sentence>' finds it) instead:\n${hits}")
-elseif(NOT rc EQUAL 1)
-    message(FATAL_ERROR "git grep failed (${rc}): ${err}")
-endif()
-message("no tracked file dates anything by a session")
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/TrackedFiles.cmake)
+require_git_checkout()
+forbid_tracked_text("${pattern}"
+                    "tracked files date things by a session; write the date and the commit (git log -S'<the sentence>' finds it) instead"
+                    "no tracked file dates anything by a session")
