@@ -3,7 +3,8 @@
 # commands: each page has LIGGGHTS' sections in LIGGGHTS' order (Syntax, Examples, Description,
 # Restrictions, Related commands, Default); the keywords its Syntax lists are exactly the ones the
 # code accepts; and every default its [Default:] section (and a "(default X)" in the Syntax) gives
-# is the code's. Where the keywords come from in the code:
+# is the code's; so does the settings table on the first screen of plugins/liggghts/README.md.
+# Where the keywords come from in the code:
 #   model pages     registerSettings(): settings.registerOnOff / registerDoubleSetting (name, default)
 #   fix and compute the parser's keyword comparisons (key == "x", strcmp(arg[..], "x")), and the
 #                   default of the member each keyword sets (its constructor's initialiser)
@@ -258,6 +259,44 @@ foreach(page gran_model_impulse gran_tangential_impulse)
   endforeach()
 endforeach()
 
+# ---- the plugin README's first screen: its settings table ("| `name` | values | default | ...")
+file(READ "${P}/README.md" readme)
+string(REPLACE ";" "<sc>" readme "${readme}")
+string(FIND "${readme}" "## `model impulse` at a glance" at)
+if(at LESS 0)
+  fail("plugins/liggghts/README.md: no '## `model impulse` at a glance' section")
+else()
+  string(SUBSTRING "${readme}" ${at} -1 glance)
+  string(FIND "${glance}" "\n## " end)  # the section ends at the next one
+  if(end GREATER 0)
+    string(SUBSTRING "${glance}" 0 ${end} glance)
+  endif()
+  string(REGEX MATCHALL "\n\\| `[a-z_0-9]+` \\| [^|]+ \\| [^|]+ \\|" rows "${glance}")
+  set(readme_names "")
+  foreach(row IN LISTS rows)
+    string(REGEX MATCH "`([a-z_0-9]+)` \\| [^|]+ \\| ([^|]+) \\|" _ "${row}")
+    set(k "${CMAKE_MATCH_1}")
+    normalise("${CMAKE_MATCH_2}" said)
+    list(APPEND readme_names "${k}")
+    set(want "")
+    foreach(pair IN LISTS normal tangential_own)
+      if(pair MATCHES "^${k}=(.*)$")
+        normalise("${CMAKE_MATCH_1}" want)
+      endif()
+    endforeach()
+    if(want STREQUAL "")
+      fail("plugins/liggghts/README.md: the settings table lists '${k}', which neither model registers")
+    elseif(NOT said STREQUAL want)
+      fail("plugins/liggghts/README.md: the settings table gives ${k} the default ${said}; the code's is ${want}")
+    endif()
+  endforeach()
+  foreach(k IN LISTS normal_names tangential_own_names)
+    if(NOT k IN_LIST readme_names)
+      fail("plugins/liggghts/README.md: the settings table lacks '${k}', which the models register")
+    endif()
+  endforeach()
+endif()
+
 # ---- the fix and compute pages: the parser's keyword comparisons
 # page | source | the regular expression whose first group is a keyword the parser accepts
 set(parsers
@@ -349,4 +388,4 @@ if(failures)
   string(REPLACE "<sc>" ";" failures "${failures}")
   message(FATAL_ERROR "the plugin's doc pages disagree with the code:\n${failures}")
 endif()
-message("the plugin's 7 doc pages: LIGGGHTS' layout, every keyword and default as the code has it")
+message("the plugin's 7 doc pages and its README's settings table: LIGGGHTS' layout, every keyword and default as the code has it")
