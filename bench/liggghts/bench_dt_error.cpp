@@ -2,7 +2,7 @@
 // periodic loaded cell (bench/liggghts/dt_error/case.toml, 448 grains) at several time steps for
 // each operator, each against its own finest step and against the first-order (Richardson) limit
 // 2 x(finest) - x(next finest), with the CPU it cost per simulated second. The curve a user picks
-// a step from (plugins/liggghts/README.md, "Error against cost"); the measured table:
+// a step from (docs/measurements/dt-remedies.md, "Error against cost"); the measured table:
 // docs/measurements/liggghts.md.
 //
 //   bench_liggghts_dt_error [--time T] [--seed N] [--speed U] [--fractions 0.04,0.02,0.01]
@@ -50,7 +50,7 @@ const std::vector<Operator> kOperators = {
     {"impact_time", "contact_solve = \"single_pass\"\nimpact_time = true\n"},
     {"iterated", "contact_solve = \"iterated\"\n"},
     // the iterated solve cut after two warm-started sweeps: on this cell at 1.4 m/s at its limit from
-    // step_fraction 0.02 for 2x the single pass (docs/measurements/liggghts.md, session 33)
+    // step_fraction 0.02 for 2x the single pass (docs/measurements/liggghts.md, 2026-11-28, `2bb0420`)
     {"iterated_2", "contact_solve = \"iterated\"\nsolve_iterations = 2\n"},
     {"speculative", "contact_solve = \"single_pass\"\nspeculative = true\n"},
     {"iterated_speculative", "contact_solve = \"iterated\"\nspeculative = true\n"},
@@ -92,7 +92,7 @@ std::string read(const fs::path& p) {
 // The servo window in simulated time, the same for every step: 100 steps at step_fraction 0.02.
 // The plate moves once per window (servo_every = sample_every), so a window counted in steps would
 // make the servo 2x faster in time at each halving and mix its dynamics into the step's error: the
-// first bench (2026-11-27, session 24) did, and its finest steps lost the load (P_top 34 % above P
+// first bench (2026-11-27, `691cfd5`) did, and its finest steps lost the load (P_top 34 % above P
 // at step_fraction 0.0025). Hertz gets the window at its own step: time_step = window / 1100.
 constexpr double kWindowStepsAt002 = 100, kHertzWindowSteps = 1100;
 

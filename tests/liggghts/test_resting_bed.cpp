@@ -1,6 +1,6 @@
 // Enduring contacts under the impulse model: plugins/liggghts/examples/in.resting_bed (324 grains
 // poured onto a floor, 1 s) with and without `separate on`, in the single pass. Prints the overlap statistics the doc
-// page and README quote (run with --log_level=message) and checks what the page claims: with
+// page and docs/measurements/enduring-contacts.md quote (run with --log_level=message) and checks what the page claims: with
 // separate on no overlap exceeds one step of travel (0.02 d at the deck's step), without it the
 // bed sinks into itself. Then the same bed with the model's defaults, its contacts solved to
 // convergence (iterate on, with the fix impulse/solve pair_style gran makes): it comes to rest,

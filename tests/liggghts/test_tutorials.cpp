@@ -1,7 +1,7 @@
 // LIGGGHTS' own tutorials with and without the impulse model: short decks of our own derived from
 // LIGGGHTS-PUBLIC's examples/LIGGGHTS/Tutorials_public (tests/liggghts/tutorials/, each names its
 // tutorial), run with the tutorial's Hertz model and with `model impulse tangential impulse` and the
-// defaults. What a new user meets there (issue 53; plugin README, "LIGGGHTS' tutorials"): beds at
+// defaults. What a new user meets there (issue 53; docs/measurements/impulse-vs-hertz.md, "LIGGGHTS' tutorials"): beds at
 // rest, no lost grains, overlaps bounded, a packing grown past what rigid spheres fill named by a
 // warning (or stopped with `overlaps error`), and heat conduction refused.
 #define BOOST_TEST_MODULE liggghts_tutorials
@@ -79,7 +79,7 @@ BOOST_AUTO_TEST_CASE(heat_transfer_1_bed_settles_and_its_heat_conduction_is_refu
     BOOST_TEST(imp.o.grains == static_cast<std::size_t>(hertz.r.at("atoms2")));
     BOOST_TEST(imp.r.at("atoms2") > 300);
     // a third of the grains make a bed two or three grains deep whose top grains still roll on (mu =
-    // 0.05) after 14000 steps, with either model (the full bed rests: plugin README, "LIGGGHTS'
+    // 0.05) after 14000 steps, with either model (the full bed rests: docs/measurements/impulse-vs-hertz.md, "LIGGGHTS'
     // tutorials"): at the end it moves less than Hertz's, and sinks less during the last 2000 steps
     BOOST_TEST(imp.r.at("ke2") < hertz.r.at("ke2"));
     BOOST_TEST(std::abs(imp.r.at("zc2") - imp.r.at("zc1")) < std::abs(hertz.r.at("zc2") - hertz.r.at("zc1")));
@@ -114,7 +114,7 @@ BOOST_AUTO_TEST_CASE(heat_transfer_1_bed_settles_and_its_heat_conduction_is_refu
 // the bed is at rest for the 2000 after (this run, measured 2026-11-27: kinetic energy 1.7e-6 J after
 // the settling, 8.1e-9 J at the end, the mean height within 1e-7 m). Over four packings, 5000 steps at rest:
 // kinetic energy 2e-10 to 1.3e-9 J, the mean height within 6.4e-8 m, overlaps at the slop; Hertz's
-// soft bed 1.5e-8 to 2.8e-6 J and sinking 0.9-1.8 um (plugin README, "LIGGGHTS' tutorials").
+// soft bed 1.5e-8 to 2.8e-6 J and sinking 0.9-1.8 um (docs/measurements/impulse-vs-hertz.md, "LIGGGHTS' tutorials").
 BOOST_AUTO_TEST_CASE(heat_transfer_1_full_bed_comes_to_rest) {
     const Run imp = run("in.heat_bed", "-var model " + kImpulse + " -var settle 20000 -var rest 2000", "impulse_full");
     // the bed's energy scale, m g d summed over the grains: r = 4 mm, 8000 kg/m^3

@@ -3,7 +3,7 @@
 // grains, 30 ms, steady after ~10 ms). Run through the `granlub` command as a user would.
 //
 // Tolerances come from measurement, not from the outcome wanted: over six initial states
-// (--seed 1..6, plugins/yade/README.md "Steady-state agreement") the seed-to-seed standard
+// (--seed 1..6, docs/measurements/engines.md "Steady-state agreement") the seed-to-seed standard
 // deviations of one run were, LIGGGHTS / YADE: P_bot 7.2 / 3.2 Pa, P_top 7.6 / 2.6, tau_bot
 // 2.1 / 1.0, tau_top 1.9 / 0.9, slip_bottom 0.013 / 0.008 m/s, slip_top 0.020 / 0.025 m/s.
 // One seed's difference YADE - LIGGGHTS therefore has sd = hypot of the two; the test allows

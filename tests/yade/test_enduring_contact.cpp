@@ -9,7 +9,7 @@
 //     times the current kt = 8 G* sqrt(R delta), tangential_model_history.h) raises F_t by
 //     (delta2/delta1)^(1/2) = (Fn2/Fn1)^(1/3) without any tangential motion; YADE's incremental
 //     Mindlin spring (F_t += kt du) keeps it. Under fluctuating normal forces, as in a dense
-//     sheared bed, LIGGGHTS therefore carries more tangential force per contact (plugins/yade/README.md).
+//     sheared bed, LIGGGHTS therefore carries more tangential force per contact (docs/measurements/engines.md).
 #define BOOST_TEST_MODULE one enduring contact in LIGGGHTS and YADE
 #include <boost/test/unit_test.hpp>
 

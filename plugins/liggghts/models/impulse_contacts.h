@@ -134,7 +134,7 @@ inline ImpulseContactSink * find_solver(M * modify)
 // the contact area of an elastic overlap (LIGGGHTS' contact_area overlap/constant/projection),
 // and a rigid contact has none: its overlap is the solver's slop or one step's approach, so the
 // heat flow would be a fraction of an elastic contact's and change with the time step (measured on
-// LIGGGHTS' heatTransfer_1 tutorial: the plugin README, "LIGGGHTS' tutorials"). Refused at every
+// LIGGGHTS' heatTransfer_1 tutorial: docs/measurements/impulse-vs-hertz.md). Refused at every
 // run (M, E: LAMMPS' Modify and Error; a template, as find_solver).
 template <class M, class E>
 inline void refuse_contact_area_fixes(M * modify, E * error, const std::string & where)

@@ -28,7 +28,7 @@
     velocities at the start of the step: under newton off both owners compute
     it, each seeing only its own grain's impulses so far, and sequential
     impulses would differ between the two sides, so momentum would not be
-    conserved (measured: docs/measurements/liggghts.md, "The recorded wall
+    conserved (measured: docs/measurements/enduring-contacts.md, "The recorded wall
     forces balance the grains' momentum"). From the same start-of-step state
     both sides give the same impulse, equal and opposite.
 
@@ -44,7 +44,7 @@
     Contacts are found by overlap only, so without it grains pressed
     together by gravity, a load or the shear stay overlapped, are re-hit
     every step and sink into each other (measured on a resting bed and on
-    the sawyer2001 cell under load: docs/measurements/liggghts.md, "Rigid
+    the sawyer2001 cell under load: docs/measurements/enduring-contacts.md, "Rigid
     contacts under a load").
 
     bounce_speed V (default 0; our assumption). Restitution only for
@@ -62,8 +62,8 @@
     keeps each contact's impulses (warm start). iterate off is Sawyer &
     Tichy's single pass above. The default is on because only the solved
     contacts let a pile, a hopper or a packing come to rest (the single pass
-    keeps grains under gravity jittering: docs/measurements/liggghts.md and
-    the plugin README, "Piles at rest"); the single pass is about 9x cheaper
+    keeps grains under gravity jittering: docs/measurements/enduring-contacts.md,
+    "Piles at rest"); the single pass is about 9x cheaper
     and gives the same stresses in sheared cells, so granlub's cases choose
     it there (`[dem] contact_solve`). Without a fix impulse/solve in the
     deck, pair_style gran makes one with its defaults (id

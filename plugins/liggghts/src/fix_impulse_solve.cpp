@@ -608,7 +608,7 @@ void FixImpulseSolve::rebound_pass() {
 // rules allow (an impulse change above `tolerance` of the largest normal impulse and a relative
 // velocity change above `velocity_tolerance` of the velocity scale); the others already meet a
 // rule. A settling bed's sweeps then follow the grains still moving instead of every contact of the
-// bed (measured: plugin README, "LIGGGHTS' tutorials"). Boundary pairs are solved in every sweep.
+// bed (measured: docs/measurements/impulse-vs-hertz.md). Boundary pairs are solved in every sweep.
 void FixImpulseSolve::build_adjacency(int nlocal) {
     const int n = static_cast<int>(contacts_.size());
     adj_start_.assign(static_cast<std::size_t>(nlocal) + 1, 0);
@@ -659,7 +659,7 @@ int FixImpulseSolve::solve_velocities(int nlocal) {
     // step, and resolving it to g dt where it arrived at 100-1000 g dt cost a settling bed most of its
     // sweeps; 5 % of the approach speed is of the order of how well a coefficient of restitution is
     // known. The jolt travels with the changes that exceed the bed's limit, so grains it did not
-    // reach keep the bed's limit (measured: plugin README, "LIGGGHTS' tutorials").
+    // reach keep the bed's limit (measured: docs/measurements/impulse-vs-hertz.md).
     const double vlim2 = vlim_ * vlim_;
     const double it2 = impact_tolerance_ * impact_tolerance_;
     double* const jolt = jolt_.data();

@@ -1,10 +1,11 @@
 // The particle engines' contact laws, one row each (src/particles/contact_laws.cpp): the value a
 // case gives to [dem] model or [yade] model, how each engine spells the law, how the law's time
 // step follows from the case and what kind of stiffness it has (the servo's plate cap, servo.h).
-// `granlub dem`'s section, settings and deck writers and `granlub yade`'s settings and driver all
-// read this table, so a new law usable from a case is its row here, its engine's code (for
-// LIGGGHTS: its model header and its line in style_contact_model_user.whitelist) and, where it
-// brings a new step rule or stiffness, that rule's line in the engine's settings.
+// `granlub dem`'s section, settings and deck writers and `granlub yade`'s settings read this table,
+// but a law is also named elsewhere: a plugin law in its LIGGGHTS model header, the whitelist, its
+// registration and unsupported.cpp; a YADE law in granlub_yade.py's list and branches; a new step
+// rule or stiffness in the engine's settings. docs/architecture.md lists every file that names a
+// law (the repo_doc_file_lists test keeps that list true).
 #pragma once
 #include <span>
 #include <string>
