@@ -11,6 +11,7 @@
 #include "granlub/continuum/closures/effective_restitution.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
+#include "granlub/continuum/simple_shear.h"
 #include "granlub/error.h"
 #include "granlub/results/run_status.h"
 
@@ -121,14 +122,30 @@ namespace {
 // The continuum's contact/collision criterion: Chialvo & Sundaresan 2013 (Phys. Fluids 25, 070603, Eq. 35 and
 // Table 2) blend their quasi-static and inertial stresses with chi = 1/[(I0/I_m)^{3/2} + 1], I_m = I/nu,
 // I0 = 0.2 [SRC: read in CFDEM-PRINCETON kineticTheoryModel.C]; the collisional part dominates (chi > 1/2)
-// for I/nu > I0. Here it only labels the point ("contact" below I0, "collision" above).
+// for I/nu > I0. I_m is local (their Eq. 35: the local I over the local nu), so the label takes I and nu at the
+// same place, mid-gap. Here it only labels the point ("contact" below I0, "collision" above).
 constexpr double kTransitionIm = 0.2;
-nlohmann::json lubrication_record(double inertial, double nu_mean) {
-    const double Im = inertial / nu_mean;
+nlohmann::json lubrication_record(double inertial, double nu_local) {
+    const double Im = inertial / nu_local;
     return {{"verdict", Im > kTransitionIm ? "collision lubrication" : "contact lubrication"},
-            {"criterion", "I/nu against I0 = 0.2 (Chialvo & Sundaresan 2013, Eq. 35)"},
+            {"criterion", "I/nu at mid-gap against I0 = 0.2 (Chialvo & Sundaresan 2013, Eq. 35)"},
             {"inertial_number", inertial},
+            {"solid_fraction", nu_local},
             {"inertial_number_over_solid_fraction", Im}};
+}
+
+// The bulk rheology of the same closures at the solution's mid-gap I (simple_shear.h): what the walls add to mu or
+// take from it is the solution's top-wall mu over this one.
+nlohmann::json homogeneous_record(const Closures& c, double inertial, double mu_top) {
+    try {
+        const SimpleShear h = simple_shear_at_inertial(c, inertial);
+        return {{"inertial_number", inertial},
+                {"solid_fraction", h.nu},
+                {"stress_ratio", h.stress_ratio},
+                {"top_over_homogeneous", mu_top / h.stress_ratio}};
+    } catch (const SolverError& e) {
+        return {{"inertial_number", inertial}, {"note", e.what()}};
+    }
 }
 
 // R_k at one wall: [continuum] r<k>_<side>, else r<k>, else the point's wall roughness.
@@ -267,7 +284,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     m.run["wall_roughness"] = {{"source", s.roughness_from_bumps ? "bumps" : "declared"},
                                {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
                                {"top", wall_roughness(c, s, p, p.top, "top")}};
-    m.run["lubrication"] = lubrication_record(inertial, nu_mean);
+    m.run["lubrication"] = lubrication_record(inertial, sol.nu[ic]);  // I and nu at the same node, mid-gap
+    m.run["homogeneous_shear"] = homogeneous_record(*s.closures, inertial, o.tau_top);
     const EnergyBudget eb = energy_budget(q, sol);
     m.run["energy_budget"] = {{"wall_work_W_m2", P * U * eb.wall_work},
                               {"bulk_dissipation_W_m2", P * U * eb.bulk_dissipation},

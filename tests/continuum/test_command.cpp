@@ -333,6 +333,22 @@ BOOST_AUTO_TEST_CASE(wall_energy_convention_by_closures_or_explicit) {
     }
 }
 
+// The contact/collision label (run.lubrication): Chialvo & Sundaresan 2013's I_m = I/nu is local (Eq. 35), so it
+// takes the mid-gap I over the mid-gap nu, not over the gap's mean nu (lower: the walls are dilute).
+BOOST_AUTO_TEST_CASE(lubrication_label_uses_the_local_solid_fraction) {
+    const Case c = parse("");
+    const auto s = continuum::resolve_settings(c);
+    for (const OperatingPoint& p : c.points) {
+        const auto m = continuum::solve_point(c, p, s).summary;
+        const auto& l = m.run.at("lubrication");
+        const double nu_c = m.value("solid_fraction_centre"), I = m.value("inertial_number");
+        BOOST_TEST(l.at("solid_fraction").get<double>() == nu_c);  // N = 200: the centre is a node
+        BOOST_TEST(nu_c > m.value("mean_solid_fraction"));
+        BOOST_TEST(l.at("inertial_number_over_solid_fraction").get<double>() == I / nu_c);
+        BOOST_TEST(l.at("verdict") == (I / nu_c > 0.2 ? "collision lubrication" : "contact lubrication"));
+    }
+}
+
 // wall_roughness = "bumps": a bumpy wall's R5..R8 are sin(theta) = l/(d_w + d) of the layer the particle
 // solvers build (whole bumps in the periodic length: 38 of 0.789 mm over 30 mm, R = 0.5016), not the declared
 // R = 0.5 that asked for them; the summary says which. Plane walls refuse it, naming the key.
