@@ -18,7 +18,7 @@
 namespace granlub::continuum {
 
 namespace {
-// [continuum] wall_energy (docs/continuum-model.md §4.1): S&T's R8-weighted slip work stays the seed's own model
+// [continuum] wall_energy (docs/continuum-model.md §4.5): S&T's R8-weighted slip work stays the seed's own model
 // (lun84); every other closure family takes the slip work whole, as the wall conditions' sources write it.
 void resolve_wall_energy(const Section& sec, Settings& s) {
     const std::string& we = sec.string("wall_energy");

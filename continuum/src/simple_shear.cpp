@@ -18,7 +18,7 @@ SimpleShear simple_shear_at_inertial(const Closures& c, double inertial) {
     // The maximum of I(nu) on a grid, then bisection on the dense side (I falls monotonically there).
     const double cap = c.cap(), top = cap * (1 - 1e-12);
     double lo = 0, best = -1;
-    const int n = 2000;
+    const int n = 200;
     for (int i = 1; i < n; ++i) {
         const double nu = cap * i / n;
         const double I = simple_shear_at_nu(c, nu).inertial;

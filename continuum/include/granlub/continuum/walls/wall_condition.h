@@ -8,7 +8,7 @@
 // b5..b8 are the wall family's coefficients at the wall's nu (wall_family.h). W is the share of the slip work the
 // condition returns to the flow (slip_work_weight): R8 in S&T's GKL form (WallEnergy::GklR8), 1 where the flux
 // into the flow is slip work minus collisional dissipation, as Johnson & Jackson 1987 and Jenkins & Richman 1986 /
-// Richman 1988 write it (WallEnergy::SlipWork; docs/continuum-model.md §4.1). On the 1-D gap's moving
+// Richman 1988 write it (WallEnergy::SlipWork; docs/continuum-model.md §4.5). On the 1-D gap's moving
 // bottom (n = +y^, u^_wall = 1) this is S&T's Eq. 13-15 as written; on the fixed top (n = -y^, u^_wall = 0)
 // it is their top-wall form with u^' = -du/dn, nu' = -dnu/dn.
 #pragma once

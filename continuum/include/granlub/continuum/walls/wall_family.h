@@ -12,7 +12,7 @@
 
 namespace granlub::continuum {
 
-// What the energy wall condition returns of the slip work (docs/continuum-model.md §4.1, [continuum] wall_energy):
+// What the energy wall condition returns of the slip work (docs/continuum-model.md §4.5, [continuum] wall_energy):
 //   GklR8     the fraction R8 (S&T 2001 Eq. 15 as GKL use it): the rest, (1 - R8) of the slip work, is a wall sink
 //             whatever e_w; the seed's own model (closures = "lun84"),
 //   SlipWork  all of it, as Johnson & Jackson 1987, Jenkins & Richman 1986 and Richman 1988 write the flux into the
