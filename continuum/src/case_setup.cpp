@@ -11,10 +11,29 @@
 #include "granlub/continuum/closures/effective_restitution.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
+#include "granlub/continuum/simple_shear.h"
 #include "granlub/error.h"
 #include "granlub/results/run_status.h"
 
 namespace granlub::continuum {
+
+namespace {
+// [continuum] wall_energy (docs/continuum-model.md §4.5): S&T's R8-weighted slip work stays the seed's own model
+// (lun84); every other closure family takes the slip work whole, as the wall conditions' sources write it.
+void resolve_wall_energy(const Section& sec, Settings& s) {
+    const std::string& we = sec.string("wall_energy");
+    const bool gkl = we == "gkl_r8" || (we == "by_closures" && s.closures_name == "lun84");
+    s.wall_energy = gkl ? WallEnergy::GklR8 : WallEnergy::SlipWork;
+    s.wall_energy_source = we == "by_closures" ? fmt::format("closures = {}", s.closures_name) : "[continuum] wall_energy";
+    if (gkl) return;
+    for (const std::string k : {"r8", "r8_bottom", "r8_top"})
+        if (sec.has(k))
+            sec.fail(k, fmt::format("{} weights the slip work in the GKL energy condition (wall_energy = \"gkl_r8\"), "
+                                    "but the slip work enters whole here (wall_energy = \"slip_work\", from {}); "
+                                    "allowed: remove {}, or wall_energy = \"gkl_r8\"",
+                                    k, s.wall_energy_source, k));
+}
+}  // namespace
 
 Settings resolve_settings(const Case& c) {
     const Section& sec = c.section("continuum");
@@ -75,6 +94,7 @@ Settings resolve_settings(const Case& c) {
                                                 lp.alpha, s.closures_name));
     s.closures = std::make_shared<Closures>(lp, g0, family);
     s.slip_dissipation = sec.real("slip_dissipation");
+    resolve_wall_energy(sec, s);
     s.gap_from_inventory = sec.string("gap") == "inventory";
     if (s.gap_from_inventory) {
         for (const OperatingPoint& p : c.points)
@@ -102,14 +122,30 @@ namespace {
 // The continuum's contact/collision criterion: Chialvo & Sundaresan 2013 (Phys. Fluids 25, 070603, Eq. 35 and
 // Table 2) blend their quasi-static and inertial stresses with chi = 1/[(I0/I_m)^{3/2} + 1], I_m = I/nu,
 // I0 = 0.2 [SRC: read in CFDEM-PRINCETON kineticTheoryModel.C]; the collisional part dominates (chi > 1/2)
-// for I/nu > I0. Here it only labels the point ("contact" below I0, "collision" above).
+// for I/nu > I0. I_m is local (their Eq. 35: the local I over the local nu), so the label takes I and nu at the
+// same place, mid-gap. Here it only labels the point ("contact" below I0, "collision" above).
 constexpr double kTransitionIm = 0.2;
-nlohmann::json lubrication_record(double inertial, double nu_mean) {
-    const double Im = inertial / nu_mean;
+nlohmann::json lubrication_record(double inertial, double nu_local) {
+    const double Im = inertial / nu_local;
     return {{"verdict", Im > kTransitionIm ? "collision lubrication" : "contact lubrication"},
-            {"criterion", "I/nu against I0 = 0.2 (Chialvo & Sundaresan 2013, Eq. 35)"},
+            {"criterion", "I/nu at mid-gap against I0 = 0.2 (Chialvo & Sundaresan 2013, Eq. 35)"},
             {"inertial_number", inertial},
+            {"solid_fraction", nu_local},
             {"inertial_number_over_solid_fraction", Im}};
+}
+
+// The bulk rheology of the same closures at the solution's mid-gap I (simple_shear.h): what the walls add to mu or
+// take from it is the solution's top-wall mu over this one.
+nlohmann::json homogeneous_record(const Closures& c, double inertial, double mu_top) {
+    try {
+        const SimpleShear h = simple_shear_at_inertial(c, inertial);
+        return {{"inertial_number", inertial},
+                {"solid_fraction", h.nu},
+                {"stress_ratio", h.stress_ratio},
+                {"top_over_homogeneous", mu_top / h.stress_ratio}};
+    } catch (const SolverError& e) {
+        return {{"inertial_number", inertial}, {"note", e.what()}};
+    }
 }
 
 // R_k at one wall: [continuum] r<k>_<side>, else r<k>, else the point's wall roughness.
@@ -153,10 +189,13 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
         bc.params.restitution = w.restitution;
         const double r = wall_roughness(c, s, p, w, side);
         bc.params.r5 = roughness_factor(sec, "r5", side, r);
-        bc.params.r6 = roughness_factor(sec, "r6", side, r);
+        // Johnson & Jackson's dissipation carries no specularity: with the slip work whole it is theirs (R6 = 1).
+        const bool r6_is_r = s.wall_energy == WallEnergy::GklR8 || s.family->dissipation_scales_with_roughness();
+        bc.params.r6 = roughness_factor(sec, "r6", side, r6_is_r ? r : 1.0);
         bc.params.r7 = roughness_factor(sec, "r7", side, r);
         bc.params.r8 = roughness_factor(sec, "r8", side, r);
         bc.params.slip_dissipation = s.slip_dissipation;
+        bc.params.energy = s.wall_energy;
         if (!(bc.params.r5 > 0))
             throw SolverError(fmt::format(
                 "R5 = 0 at the {} wall (from [continuum] r5_{}, r5, or the wall roughness {}): a smooth wall exerts "
@@ -234,6 +273,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
     m.run["g0"] = s.g0_name;
     m.run["wall_model"] = s.wall_name;
+    m.run["wall_energy"] = {{"convention", s.wall_energy == WallEnergy::GklR8 ? "gkl_r8" : "slip_work"},
+                            {"source", s.wall_energy_source}};
     m.run["closures"] = s.closures_name;
     m.run["dissipation_restitution"] = s.closures->params().e_eff();
     const ClosureParams& cp = s.closures->params();
@@ -243,11 +284,14 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     m.run["wall_roughness"] = {{"source", s.roughness_from_bumps ? "bumps" : "declared"},
                                {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
                                {"top", wall_roughness(c, s, p, p.top, "top")}};
-    m.run["lubrication"] = lubrication_record(inertial, nu_mean);
+    m.run["lubrication"] = lubrication_record(inertial, sol.nu[ic]);  // I and nu at the same node, mid-gap
+    m.run["homogeneous_shear"] = homogeneous_record(*s.closures, inertial, o.tau_top);
     const EnergyBudget eb = energy_budget(q, sol);
     m.run["energy_budget"] = {{"wall_work_W_m2", P * U * eb.wall_work},
                               {"bulk_dissipation_W_m2", P * U * eb.bulk_dissipation},
                               {"wall_dissipation_W_m2", P * U * eb.wall_dissipation},
+                              {"wall_collisional_W_m2", P * U * eb.wall_collisional},
+                              {"wall_unreturned_slip_work_W_m2", P * U * eb.wall_unreturned_slip_work},
                               {"relative_defect", eb.relative_defect()}};
     m.run["cells"] = s.solver.cells;
     m.run["body_forces"] = "not modelled: GKL has p_yy uniform across the gap (S&T 2001 Eq. 6b)";

@@ -27,11 +27,11 @@ std::string continuum_map_csv(const Case& c, const MapGrid& g, MapStats* stats) 
     MapStats st;
     std::string out = fmt::format(
         "# granlub continuum map of {} ({}): {} speeds x {} loads, each point solved from scratch\n"
-        "# case_hash {}, version {}, closures {}, g0 {}, wall_model {}, gap {}\n"
+        "# case_hash {}, version {}, closures {}, g0 {}, wall_model {}, wall_energy {}, gap {}\n"
         "speed_m_s,normal_stress_Pa,status,mean_solid_fraction,gap_m,stress_ratio_bottom,stress_ratio_top,"
         "inertial_number,slip_bottom_m_s,slip_top_m_s,max_solid_fraction_node,lubrication\n",
         c.name, c.file.string(), g.speeds, g.loads, c.file_hash, version(), s.closures_name, s.g0_name, s.wall_name,
-        s.gap_from_inventory ? "inventory" : "fixed");
+        s.wall_energy == WallEnergy::GklR8 ? "gkl_r8" : "slip_work", s.gap_from_inventory ? "inventory" : "fixed");
     for (int j = 0; j < g.loads; ++j) {
         const double P = g.loads == 1 ? g.load_min
                                       : g.load_min * std::pow(g.load_max / g.load_min, double(j) / (g.loads - 1));

@@ -11,7 +11,7 @@ bool Problem::symmetric() const {
     const auto& a = bottom.params;
     const auto& b = top.params;
     return bottom.family == top.family && a.restitution == b.restitution && a.r5 == b.r5 && a.r6 == b.r6 &&
-           a.r7 == b.r7 && a.r8 == b.r8 && a.slip_dissipation == b.slip_dissipation;
+           a.r7 == b.r7 && a.r8 == b.r8 && a.slip_dissipation == b.slip_dissipation && a.energy == b.energy;
 }
 
 NodeCoefficients node_coefficients(const Closures& c, double nu) {
@@ -122,8 +122,11 @@ EnergyBudget energy_budget(const Problem& p0, const Solution& s) {
         const WallBC& w = top ? p.top : p.bottom;
         const double nu = top ? s.nu.back() : s.nu.front();
         const double slip = top ? -s.u.back() : 1.0 - s.u.front();
-        b.wall_dissipation += scale * wall_energy_sink(w.params, wall_coefficients(p, w, nu),
-                                                       node_coefficients(*p.closures, nu).K, slip, L, Pi, tau_hat);
+        const WallCoefficients c = wall_coefficients(p, w, nu);
+        const double K = node_coefficients(*p.closures, nu).K;
+        b.wall_dissipation += scale * wall_energy_sink(w.params, c, K, slip, L, Pi, tau_hat);
+        b.wall_collisional += scale * wall_collisional_sink(w.params, c, K, slip, L, Pi);
+        b.wall_unreturned_slip_work += scale * wall_unreturned_slip_work(w.params, slip, Pi, tau_hat);
     }
     return b;
 }

@@ -44,6 +44,11 @@ SectionSpec section() {
     s.choice("wall_model", "kinetic", wall_names(),
              "wall-condition family for B5..B8: kinetic (P-based, Jenkins-Richman-structured) or johnson_jackson")
         .old_spellings(wall_old_names());
+    s.choice("wall_energy", "by_closures", {"by_closures", "gkl_r8", "slip_work"},
+             "what the energy wall condition returns of the slip work: gkl_r8 the fraction R8, the rest a wall sink "
+             "whatever e_w (Sawyer & Tichy's GKL form, the seed's own model); slip_work all of it, the flux into the "
+             "flow being slip work minus a collisional dissipation that vanishes at e_w = 1 (Johnson & Jackson 1987, "
+             "Jenkins & Richman 1986); by_closures: gkl_r8 with closures = lun84, slip_work otherwise");
     s.real("viscosity_alpha", 1.0, Range::closed(0.0, 4.0), "",
            "LSJC viscosity factor (2 + alpha)/3; 1 = original theory, 1.6 = MFiX");
     s.boolean("dufour", true, "include the grad-nu heat-flux term of LSJC (sign uncertain, effect < 1e-4)");

@@ -283,6 +283,72 @@ BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
                       CaseError);
 }
 
+// [continuum] wall_energy (docs/continuum-model.md §4.1): by default GKL's R8-weighted slip work with lun84 (the
+// seed's own model) and the slip work whole with any other closure family; the summary names the convention and
+// where it came from; r8 is refused where it weights nothing; Johnson & Jackson's dissipation carries no
+// specularity (R6 = 1) once the slip work is whole.
+BOOST_AUTO_TEST_CASE(wall_energy_convention_by_closures_or_explicit) {
+    const auto convention = [](const Case& c) {
+        const auto s = continuum::resolve_settings(c);
+        return continuum::solve_point(c, c.points[0], s).summary.run.at("wall_energy");
+    };
+    auto w = convention(parse(""));
+    BOOST_TEST(w.at("convention") == "gkl_r8");
+    BOOST_TEST(w.at("source") == "closures = lun84");
+    w = convention(parse("[continuum]\nclosures = \"garzo_dufty\"\n"));
+    BOOST_TEST(w.at("convention") == "slip_work");
+    w = convention(parse("[continuum]\nwall_energy = \"slip_work\"\n"));
+    BOOST_TEST(w.at("convention") == "slip_work");
+    BOOST_TEST(w.at("source") == "[continuum] wall_energy");
+    w = convention(parse("[continuum]\nclosures = \"garzo_dufty\"\nwall_energy = \"gkl_r8\"\n"));
+    BOOST_TEST(w.at("convention") == "gkl_r8");
+    // the slip work returned whole heats the walls: denser centre against the walls than with GKL's sink
+    const Case gkl = parse(""), whole = parse("[continuum]\nwall_energy = \"slip_work\"\n");
+    const auto a = continuum::solve_point(gkl, gkl.points[0], continuum::resolve_settings(gkl));
+    const auto b = continuum::solve_point(whole, whole.points[0], continuum::resolve_settings(whole));
+    BOOST_TEST(b.summary.value("temperature_bottom") > a.summary.value("temperature_bottom"));
+    BOOST_TEST(b.summary.run.at("energy_budget").at("wall_unreturned_slip_work_W_m2").get<double>() == 0.0);
+    BOOST_TEST(a.summary.run.at("energy_budget").at("wall_unreturned_slip_work_W_m2").get<double>() > 0.0);
+    // bad input names the key and what is allowed
+    std::string e = case_error("[continuum]\nwall_energy = \"r8\"\n");
+    BOOST_TEST(contains(e, "wall_energy"), e);
+    BOOST_TEST(contains(e, "slip_work"), e);
+    for (const char* k : {"r8", "r8_top"}) {
+        try {
+            continuum::resolve_settings(parse(fmt::format("[continuum]\nwall_energy = \"slip_work\"\n{} = 0.4\n", k)));
+            BOOST_FAIL("r8 accepted with the slip work whole");
+        } catch (const CaseError& x) {
+            BOOST_TEST(contains(x.what(), k), x.what());
+            BOOST_TEST(contains(x.what(), "gkl_r8"), x.what());
+        }
+    }
+    // Johnson & Jackson: R6 = 1 with the slip work whole, R with GKL's convention; an explicit r6 wins
+    for (const auto& [extra, r6] : {std::pair<std::string, double>{"wall_energy = \"slip_work\"\n", 1.0},
+                                    {"wall_energy = \"gkl_r8\"\n", 0.5},
+                                    {"wall_energy = \"slip_work\"\nr6 = 0.3\n", 0.3}}) {
+        const Case c = parse("[continuum]\nwall_model = \"johnson_jackson\"\n" + extra);
+        const auto p = continuum::problem_for(c, continuum::resolve_settings(c), c.points[0]);
+        BOOST_TEST(p.bottom.params.r6 == r6);
+        BOOST_TEST(p.top.params.r6 == r6);
+    }
+}
+
+// The contact/collision label (run.lubrication): Chialvo & Sundaresan 2013's I_m = I/nu is local (Eq. 35), so it
+// takes the mid-gap I over the mid-gap nu, not over the gap's mean nu (lower: the walls are dilute).
+BOOST_AUTO_TEST_CASE(lubrication_label_uses_the_local_solid_fraction) {
+    const Case c = parse("");
+    const auto s = continuum::resolve_settings(c);
+    for (const OperatingPoint& p : c.points) {
+        const auto m = continuum::solve_point(c, p, s).summary;
+        const auto& l = m.run.at("lubrication");
+        const double nu_c = m.value("solid_fraction_centre"), I = m.value("inertial_number");
+        BOOST_TEST(l.at("solid_fraction").get<double>() == nu_c);  // N = 200: the centre is a node
+        BOOST_TEST(nu_c > m.value("mean_solid_fraction"));
+        BOOST_TEST(l.at("inertial_number_over_solid_fraction").get<double>() == I / nu_c);
+        BOOST_TEST(l.at("verdict") == (I / nu_c > 0.2 ? "collision lubrication" : "contact lubrication"));
+    }
+}
+
 // wall_roughness = "bumps": a bumpy wall's R5..R8 are sin(theta) = l/(d_w + d) of the layer the particle
 // solvers build (whole bumps in the periodic length: 38 of 0.789 mm over 30 mm, R = 0.5016), not the declared
 // R = 0.5 that asked for them; the summary says which. Plane walls refuse it, naming the key.

@@ -4,7 +4,10 @@
 //   b6 = (pi sqrt3/(4 nu_max)) (1 - e_w^2) nu g0 / G
 //   b7 = f_t (pi sqrt3/(6 nu_max)) nu g0 f_p / G            (f_t = 0 default)
 //   b8 = f_mu f_p / G
-// With R5 = phi' and R6 = R8 = 1 this is exactly JJ.
+// With R5 = phi' and R6 = R8 = 1 this is exactly JJ: the slip work phi' pi sqrt3 rho nu g0 sqrt(T) u_s^2/(6 nu_max)
+// enters the flow whole and the dissipation carries no specularity [SRC: OpenFOAM/mousse
+// JohnsonJacksonParticleTheta, the same bc_theta.f terms]. wall_energy = "slip_work" gives exactly that (R6
+// defaults to 1 there, dissipation_scales_with_roughness); GKL's R-scaling of every term is wall_energy = "gkl_r8".
 #include <cmath>
 #include <numbers>
 
@@ -21,6 +24,7 @@ public:
         return {a * ng / s.fmu, 1.5 * a * (1.0 - ew * ew) * ng / s.G, w.slip_dissipation * a * ng * s.fp / s.G,
                 s.fmu * s.fp / s.G};
     }
+    bool dissipation_scales_with_roughness() const override { return false; }
 };
 }  // namespace
 

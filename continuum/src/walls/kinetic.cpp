@@ -5,7 +5,10 @@
 //   b6 = sqrt(2/pi) (1 - e_w) f_p / G                       normal-collision dissipation
 //   b7 = f_t sqrt(2/pi) f_p^2 / ((1 + e_w) G)               slip dissipation (f_t = 0 default)
 //   b8 = f_mu f_p / G                                       slip work (= b4)
-// The default: it reproduces J&H's dilute walls and S&T's equal slip/U.
+// The default: it reproduces J&H's dilute walls and S&T's equal slip/U. Its structure is that of a bumpy wall
+// (Jenkins & Richman 1986; Richman 1988 as Jenkins & Berzi 2010 use it): traction/P proportional to R u_s/sqrt(T),
+// dissipation to R (1 - e_w) P sqrt(T), the flux into the flow slip work minus that (wall_energy = "slip_work");
+// Richman's own C(theta), D(theta) could not be read, R stands in for them [ASSUMPTION].
 #include <cmath>
 #include <numbers>
 

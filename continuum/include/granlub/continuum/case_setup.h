@@ -24,6 +24,9 @@ struct Settings {
     std::shared_ptr<const Closures> closures;
     std::shared_ptr<const WallFamily> family;
     double slip_dissipation = 0;  // f_t
+    // [continuum] wall_energy resolved: the convention and where it came from (the key, or the closure family)
+    WallEnergy wall_energy = WallEnergy::GklR8;
+    std::string wall_energy_source;
 };
 
 // Throws CaseError naming the key for values the section spec cannot check alone.

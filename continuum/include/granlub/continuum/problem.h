@@ -2,10 +2,11 @@
 //   y^ = y/H, u^ = u/U, Lambda = H/sigma, Pi = rho_p U^2 / P_y
 //   (M u^')' = 0,   (K nu')' = Pi M u^'^2 - Lambda^2 C                       (§3, §5)
 //   y^ = 0 (moving):  u^' = -R5 Lambda b5 (1 - u^)
-//                     nu' = -[R6 Lambda b6 + R7 Lambda Pi b7 (1-u^)^2 + R8 Pi b8 (1-u^) u^']
+//                     nu' = -[R6 Lambda b6 + R7 Lambda Pi b7 (1-u^)^2 + W Pi b8 (1-u^) u^']
 //   y^ = 1 (fixed):   u^' = -R5 Lambda b5 u^
-//                     nu' = +R6 Lambda b6 + R7 Lambda Pi b7 u^2 + R8 Pi b8 u^ u^'
-// (S&T 2001 Eqs. 13-15 with the sign table of §1.)
+//                     nu' = +R6 Lambda b6 + R7 Lambda Pi b7 u^2 + W Pi b8 u^ u^'
+// (S&T 2001 Eqs. 13-15 with the sign table of §1; W = R8 in their GKL form, 1 with the slip work returned whole:
+// walls/wall_condition.h.)
 #pragma once
 #include <memory>
 #include <string>
@@ -87,10 +88,12 @@ Observables observe(const Problem& p, const Solution& s);
 
 // The mechanical energy budget of a solution per unit wall area, in units of P_y U (§8.5):
 //   wall work tau U = bulk dissipation int gamma dy + wall dissipation at both walls
-// where a wall dissipates its collisional terms (R6, R7) and the part (1 - R8) of the slip work that the
+// where a wall dissipates its collisional terms (R6, R7) and the part 1 - W of the slip work that the
 // energy wall condition does not return to the flow. Trapezoid rule: O(h^2) for the FV solution.
 struct EnergyBudget {
     double wall_work = 0, bulk_dissipation = 0, wall_dissipation = 0;
+    // wall_dissipation's two parts: the collisional terms and the slip work the condition does not return
+    double wall_collisional = 0, wall_unreturned_slip_work = 0;
     double relative_defect() const { return (wall_work - bulk_dissipation - wall_dissipation) / wall_work; }
 };
 EnergyBudget energy_budget(const Problem& p, const Solution& s);

@@ -4,8 +4,11 @@
 //   n    the unit normal from the wall into the flow (a coordinate scaled by H, like y^),
 //   s    the signed slip u^_wall - u^ (dimensionless by U),
 //   du/dn  = -R5 Lambda b5 s                                                  (momentum)
-//   dnu/dn = -[R6 Lambda b6 + R7 Lambda Pi b7 s^2 + R8 Pi b8 s du/dn]          (fluctuation energy)
-// b5..b8 are the wall family's coefficients at the wall's nu (wall_family.h). On the 1-D gap's moving
+//   dnu/dn = -[R6 Lambda b6 + R7 Lambda Pi b7 s^2 + W Pi b8 s du/dn]           (fluctuation energy)
+// b5..b8 are the wall family's coefficients at the wall's nu (wall_family.h). W is the share of the slip work the
+// condition returns to the flow (slip_work_weight): R8 in S&T's GKL form (WallEnergy::GklR8), 1 where the flux
+// into the flow is slip work minus collisional dissipation, as Johnson & Jackson 1987 and Jenkins & Richman 1986 /
+// Richman 1988 write it (WallEnergy::SlipWork; docs/continuum-model.md §4.5). On the 1-D gap's moving
 // bottom (n = +y^, u^_wall = 1) this is S&T's Eq. 13-15 as written; on the fixed top (n = -y^, u^_wall = 0)
 // it is their top-wall form with u^' = -du/dn, nu' = -dnu/dn.
 #pragma once
@@ -14,6 +17,9 @@
 #include "granlub/continuum/walls/wall_family.h"
 
 namespace granlub::continuum {
+
+// The share W of the slip work that the energy condition returns to the flow.
+inline double slip_work_weight(const WallParams& w) { return w.energy == WallEnergy::GklR8 ? w.r8 : 1.0; }
 
 template <class S>
 struct WallGradients {
@@ -26,7 +32,8 @@ template <class S, class B>
 WallGradients<S> wall_gradients(const WallParams& w, const B& b5, const B& b6, const B& b7, const B& b8, const S& slip,
                                 const S& Lambda, const S& Pi) {
     const S du = -w.r5 * Lambda * b5 * slip;
-    const S dnu = -(w.r6 * Lambda * b6 + w.r7 * Lambda * Pi * b7 * slip * slip + w.r8 * Pi * b8 * slip * du);
+    const S dnu =
+        -(w.r6 * Lambda * b6 + w.r7 * Lambda * Pi * b7 * slip * slip + slip_work_weight(w) * Pi * b8 * slip * du);
     return {du, dnu};
 }
 
@@ -37,13 +44,21 @@ inline WallGradients<double> wall_gradients(const WallParams& w, const WallCoeff
 }
 
 // What a wall removes from the fluctuation energy, per unit wall area in the energy equation's units
-// (the flux K dnu/dn the condition imposes is slip work returned minus this): the collisional terms
-// R6, R7 and the part (1 - R8) of the slip work tau^ |s| the condition does not return (§8.5).
+// (the flux K dnu/dn the condition imposes is slip work returned minus this), in two parts:
+//   collisional: the terms R6, R7 (zero at e_w = 1 with f_t = 0),
+//   unreturned slip work: the part 1 - W of the slip work tau^ |s| the condition does not return (§8.5; 1 - R8 with
+//   GklR8, none with SlipWork).
 // tau_hat = M |du/dn| at the wall.
+inline double wall_collisional_sink(const WallParams& w, const WallCoefficients& b, double K, double slip,
+                                    double Lambda, double Pi) {
+    return K * (w.r6 * Lambda * b.b6.v + w.r7 * Lambda * Pi * b.b7.v * slip * slip);
+}
+inline double wall_unreturned_slip_work(const WallParams& w, double slip, double Pi, double tau_hat) {
+    return (1.0 - slip_work_weight(w)) * Pi * tau_hat * std::abs(slip);
+}
 inline double wall_energy_sink(const WallParams& w, const WallCoefficients& b, double K, double slip, double Lambda,
                                double Pi, double tau_hat) {
-    return K * (w.r6 * Lambda * b.b6.v + w.r7 * Lambda * Pi * b.b7.v * slip * slip) +
-           (1.0 - w.r8) * Pi * tau_hat * std::abs(slip);
+    return wall_collisional_sink(w, b, K, slip, Lambda, Pi) + wall_unreturned_slip_work(w, slip, Pi, tau_hat);
 }
 
 }  // namespace granlub::continuum

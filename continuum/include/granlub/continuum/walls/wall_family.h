@@ -12,12 +12,20 @@
 
 namespace granlub::continuum {
 
-// One wall's parameters: restitution e_w, roughness factors R5..R8 and the slip-dissipation
-// fraction f_t of the R7 term.
+// What the energy wall condition returns of the slip work (docs/continuum-model.md §4.5, [continuum] wall_energy):
+//   GklR8     the fraction R8 (S&T 2001 Eq. 15 as GKL use it): the rest, (1 - R8) of the slip work, is a wall sink
+//             whatever e_w; the seed's own model (closures = "lun84"),
+//   SlipWork  all of it, as Johnson & Jackson 1987, Jenkins & Richman 1986 and Richman 1988 write the flux into the
+//             flow: slip work minus a collisional dissipation that vanishes at e_w = 1.
+enum class WallEnergy { GklR8, SlipWork };
+
+// One wall's parameters: restitution e_w, roughness factors R5..R8, the slip-dissipation
+// fraction f_t of the R7 term and the energy convention (R8 is read only with GklR8).
 struct WallParams {
     double restitution = 0.9;
     double r5 = 0.5, r6 = 0.5, r7 = 0.5, r8 = 0.5;
     double slip_dissipation = 0.0;  // f_t
+    WallEnergy energy = WallEnergy::GklR8;
 };
 
 struct WallCoefficients {
@@ -28,6 +36,11 @@ class WallFamily {
 public:
     virtual ~WallFamily() = default;
     virtual WallCoefficients coefficients(const ClosureState<D1>& s, const WallParams& w, double numax) const = 0;
+    // Whether the family's source scales its collisional dissipation (b6) with the wall's roughness: a bumpy
+    // wall's does (Jenkins & Richman 1986), Johnson & Jackson's does not (their specularity enters the traction
+    // only). With WallEnergy::SlipWork the default R6 is the roughness if true, else 1; GKL (GklR8) scales
+    // every term by R whatever the family.
+    virtual bool dissipation_scales_with_roughness() const { return true; }
 };
 
 struct WallEntry {
