@@ -1,4 +1,4 @@
-// The regime section of the report (postproc regimes.h) end to end on synthetic results: a
+// The regime part of the report (postproc regimes.h) end to end on synthetic results: a
 // case that sweeps speed and load draws the map, the lift-off, mu(I) and tau(U) per load, says
 // which criterion decided each point and draws a transient hollow; a one-point case and a
 // speed-only sweep draw no map and say why.
@@ -86,7 +86,7 @@ int count(const std::string& s, const std::string& part) {
     return n;
 }
 
-std::string section(const std::string& html) {
+std::string regime_part(const std::string& html) {
     const auto start = html.find("Regimes over speed and load</h2>");
     BOOST_TEST_REQUIRE(start != std::string::npos);
     const auto end = html.find("<h2", start);
@@ -117,7 +117,7 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
                        {"full_step_run", {{"status", "steady"}, {"flow_regime", flow_regime_json(coarse)}}}}}});
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const fs::path rep = s.o.results_root / "report";
-    const std::string sec = section(test::slurp(rep / "index.html"));
+    const std::string sec = regime_part(test::slurp(rep / "index.html"));
     BOOST_TEST(count(sec, "Z within its time-step error of 4") == 1);
     BOOST_TEST(sec.find("at twice the step Z = 3.5, collision") != std::string::npos);
     BOOST_TEST(test::slurp(rep / "plots" / "regime_map_dem.svg").find("at the transition") != std::string::npos);
@@ -169,14 +169,14 @@ BOOST_AUTO_TEST_CASE(a_one_point_case_and_a_speed_only_sweep_draw_no_map_and_say
     auto one = grid_case("regime_one", "speed = 1.0\nnormal_stress = 1000.0\n");
     write_results(one);
     BOOST_TEST(postproc::compare(one.c, one.o) == 0);
-    std::string sec = section(test::slurp(one.o.results_root / "report" / "index.html"));
+    std::string sec = regime_part(test::slurp(one.o.results_root / "report" / "index.html"));
     BOOST_TEST(sec.find("No regime map: the case has one operating point") != std::string::npos);
     BOOST_TEST(!fs::exists(one.o.results_root / "report" / "plots" / "regime_map_dem.svg"));
 
     auto speeds = grid_case("regime_speeds", "speed = [0.5, 1.0, 2.0]\nnormal_stress = 1000.0\n");
     write_results(speeds);
     BOOST_TEST(postproc::compare(speeds.c, speeds.o) == 0);
-    sec = section(test::slurp(speeds.o.results_root / "report" / "index.html"));
+    sec = regime_part(test::slurp(speeds.o.results_root / "report" / "index.html"));
     BOOST_TEST(sec.find("No regime map: one load (P = 1000 Pa)") != std::string::npos);
     BOOST_TEST(!fs::exists(speeds.o.results_root / "report" / "plots" / "regime_map_dem.svg"));
 }

@@ -218,9 +218,9 @@ BOOST_AUTO_TEST_CASE(any_other_results_folder_is_a_solver) {
 BOOST_AUTO_TEST_SUITE_END()
 
 // The cross-section maps (section.csv of a particle run): two heat maps per run that has one, in
-// the point's section, marked when the run is a transient; none for runs without the file.
+// the point's part, marked when the run is a transient; none for runs without the file.
 BOOST_AUTO_TEST_CASE(cross_section_maps_where_a_particle_run_has_one) {
-    auto s = test::make_case("report_section");
+    auto s = test::make_case("report_cross_section");
     {  // a trough 10 mm wide (the synthetic case is periodic across z), for the ParaView image
         std::string text = test::slurp(s.dir / "case.toml");
         text.replace(text.find("width = 0.0"), 11, "width = 0.01");
@@ -248,10 +248,10 @@ BOOST_AUTO_TEST_CASE(cross_section_maps_where_a_particle_run_has_one) {
     expect_well_formed(rep / "index.html");
     const auto maps = files_with(rep / "plots", ".svg");
     const auto n = std::count_if(maps.begin(), maps.end(),
-                                 [](const fs::path& f) { return f.stem().string().starts_with("section_dem_"); });
+                                 [](const fs::path& f) { return f.stem().string().starts_with("cross_section_dem_"); });
     BOOST_TEST(n == 4);  // nu and u/U at the two points with a section.csv, none at the third
     for (const auto& f : maps)
-        if (f.stem().string().starts_with("section_dem_")) {
+        if (f.stem().string().starts_with("cross_section_dem_")) {
             expect_well_formed(f);
             BOOST_TEST(fs::exists(f.parent_path() / (f.stem().string().substr(0, f.stem().string().rfind('_')) + ".csv")));
         }

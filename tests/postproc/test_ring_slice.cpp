@@ -1,4 +1,4 @@
-// The report's "whole ring against its slice" section ([report] slice_case): granlub dem's results
+// The report's "whole ring against its slice" part ([report] slice_case): granlub dem's results
 // of a ring case beside a slice case's, quantity by quantity with z, the radial packing from the
 // width profiles, figures that parse; a slice case that is missing or has no results is a note,
 // and the rest of the report stands.

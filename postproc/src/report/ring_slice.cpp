@@ -107,7 +107,7 @@ std::vector<double> stderr_or_empty(const Data& t, const char* name) {
 }
 
 // Across the width (solid fraction, u/U) and across the gap (solid fraction, u/U), ring and slice.
-void add_figures(RingSliceSection& sec, const OperatingPoint& p, const Run& ring, const Run& slice,
+void add_figures(RingSlicePart& sec, const OperatingPoint& p, const Run& ring, const Run& slice,
                  const std::optional<Data>& wr, const std::optional<Data>& ws) {
     const std::string slug = point_slug(p);
     const bool rs = ring.steady(), ss = slice.steady();
@@ -158,8 +158,8 @@ void add_figures(RingSliceSection& sec, const OperatingPoint& p, const Run& ring
 
 }  // namespace
 
-RingSliceSection ring_slice_section(const Case& ring, const Collection& col) {
-    RingSliceSection sec;
+RingSlicePart ring_slice_part(const Case& ring, const Collection& col) {
+    RingSlicePart sec;
     sec.slice_case = ring.section("report").string("slice_case");
     if (sec.slice_case.empty()) return sec;
     Case slice;
@@ -235,7 +235,7 @@ std::optional<std::filesystem::path> slice_results_root(const Case& ring) {
     try {
         return results_root(load_case(ring.dir / slice_case, *ring.schema), RunOptions{});  // as collect() below
     } catch (const Error&) {
-        return std::nullopt;  // ring_slice_section says why in the report
+        return std::nullopt;  // ring_slice_part says why in the report
     }
 }
 
