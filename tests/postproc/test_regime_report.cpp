@@ -7,6 +7,8 @@
 #include <fstream>
 
 #include <boost/test/unit_test.hpp>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "granlub/statistics/flow_regime.h"
@@ -14,6 +16,7 @@
 #include "granlub/results/run_status.h"
 #include "granlub/results/results.h"
 #include "case_text.h"
+#include "report_checks.h"
 #include "synthetic.h"
 #include "xml_check.h"
 
@@ -63,6 +66,13 @@ void write_results(const test::SyntheticCase& s) {
             if (dem) {
                 FlowDiagnostics d{0.05 * U, 0.04 * U, lifted ? 3.0 : 4.8, 0.9};
                 sum.run["flow_regime"] = flow_regime_json(d);
+            }
+            if (solver == std::string("continuum")) {  // its own label, as the continuum writes it
+                const double im = 0.15 * U;            // I/nu: collision above U = 4/3 m/s
+                sum.run["lubrication"] = {{"verdict", im > 0.2 ? "collision lubrication" : "contact lubrication"},
+                                          {"criterion", "I/nu against I0 = 0.2 (Chialvo & Sundaresan 2013, Eq. 35)"},
+                                          {"inertial_number", 0.6 * im},
+                                          {"inertial_number_over_solid_fraction", im}};
             }
             write_result(result_dir(s.o.results_root, solver, p.id), prof, sum);
         }
@@ -147,6 +157,16 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     BOOST_TEST(sec.find("contact lubrication") != std::string::npos);
     BOOST_TEST(sec.find("Z = 3 &lt; 4") != std::string::npos);
     BOOST_TEST(sec.find(", enduring contacts") == std::string::npos);  // the old contradictory label
+    // the continuum's own label, named as its own criterion; "—" only for the automaton, which has none
+    BOOST_TEST(sec.find("continuum&#39;s own criterion, I/ν = 0.3: I/nu against I0 = 0.2") != std::string::npos);
+    BOOST_TEST(sec.find("continuum&#39;s own criterion, I/ν = 0.075:") != std::string::npos);
+    BOOST_TEST(count(sec, "own criterion") == 6);  // the continuum at each of the six points
+    BOOST_TEST(count(sec, "no regime label of its own") == 6);  // the automaton at each
+    // a reader meets no caption sentence more than twice and no title cut at its figure's edge
+    const auto repeated = test::repeated_caption_sentences(test::slurp(rep / "index.html"));
+    BOOST_TEST(repeated.empty(), fmt::format("{}", fmt::join(repeated, "\n")));
+    const auto cut = test::cut_titles(rep / "plots");
+    BOOST_TEST(cut.empty(), fmt::format("{}", fmt::join(cut, "\n")));
     // the transient point's own row keeps its run's verdict (marked); the point gets none from it
     BOOST_TEST(sec.find("no run here is a result") != std::string::npos);
     BOOST_TEST(count(sec, ">no verdict<") == 1);
