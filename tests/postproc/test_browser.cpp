@@ -1,7 +1,7 @@
 // The report as a reader's browser lays it out: headless Chromium (postproc/docs/measure_report.sh)
 // at 1024, 1400 and 1920 px, on a report of small synthetic results shaped like the main job's (four
 // solvers at three points, the dem transient at one and dt-unconverged at another): no horizontal scroll, the summary within the first screen, no image that
-// does not load, the legend's note exactly once; and every link of the page lands on a file of the
+// does not load, the legend's note exactly once, no figure title past its figure's edge; and every link of the page lands on a file of the
 // report or an id in it.
 #include <regex>
 #include <set>
@@ -46,6 +46,9 @@ BOOST_AUTO_TEST_CASE(report_at_three_widths) {
     }
     BOOST_TEST(links > 20);
 
+    int figures = 0;
+    for (auto at = html.find("<figure id="); at != std::string::npos; at = html.find("<figure id=", at + 1)) ++figures;
+    BOOST_TEST(figures > 10);
     const auto chromium = find_executable("chromium");
     BOOST_TEST_REQUIRE(chromium.has_value(), "chromium is not installed (Debian package chromium, .ci/packages)");
     const fs::path script = fs::path(GRANLUB_SOURCE_DIR) / "postproc" / "docs" / "measure_report.sh";
@@ -67,6 +70,8 @@ BOOST_AUTO_TEST_CASE(report_at_three_widths) {
             BOOST_TEST(j["summaryBottom"].get<int>() <= j["innerHeight"].get<int>());  // the summary on the first screen
             BOOST_TEST(j["brokenImages"].get<int>() == 0);
             BOOST_TEST(j["legendNotes"].get<int>() == 1);
+            BOOST_TEST(j["titles"].get<int>() == figures);  // every figure's title measured as rendered
+            BOOST_TEST(j["titlesCut"].get<int>() == 0);  // none past its figure's edge
         }
     }
 }
