@@ -90,12 +90,6 @@ int open_steady_markers(const std::string& svg) {
     return n;
 }
 
-int count(const std::string& s, const std::string& part) {
-    int n = 0;
-    for (auto at = s.find(part); at != std::string::npos; at = s.find(part, at + 1)) ++n;
-    return n;
-}
-
 std::string regime_part(const std::string& html) {
     const auto start = html.find("Regimes over speed and load</h2>");
     BOOST_TEST_REQUIRE(start != std::string::npos);
@@ -128,7 +122,7 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const fs::path rep = s.o.results_root / "report";
     const std::string sec = regime_part(test::slurp(rep / "index.html"));
-    BOOST_TEST(count(sec, "Z within its time-step error of 4") == 1);
+    BOOST_TEST(test::count(sec, "Z within its time-step error of 4") == 1u);
     BOOST_TEST(sec.find("at twice the step Z = 3.5, collision") != std::string::npos);
     BOOST_TEST(test::slurp(rep / "plots" / "regime_map_dem.svg").find("at the transition") != std::string::npos);
     for (const char* f : {"regime_map_dem", "regime_liftoff_gap_dem", "regime_liftoff_nu_dem", "regime_liftoff_nu_continuum",
@@ -160,8 +154,8 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     // the continuum's own label, named as its own criterion; "—" only for the automaton, which has none
     BOOST_TEST(sec.find("continuum&#39;s own criterion, I/ν = 0.3: I/nu against I0 = 0.2") != std::string::npos);
     BOOST_TEST(sec.find("continuum&#39;s own criterion, I/ν = 0.075:") != std::string::npos);
-    BOOST_TEST(count(sec, "own criterion") == 6);  // the continuum at each of the six points
-    BOOST_TEST(count(sec, "no regime label of its own") == 6);  // the automaton at each
+    BOOST_TEST(test::count(sec, "own criterion") == 6u);  // the continuum at each of the six points
+    BOOST_TEST(test::count(sec, "no regime label of its own") == 6u);  // the automaton at each
     // a reader meets no caption sentence more than twice and no title cut at its figure's edge
     const auto repeated = test::repeated_caption_sentences(test::slurp(rep / "index.html"));
     BOOST_TEST(repeated.empty(), fmt::format("{}", fmt::join(repeated, "\n")));
@@ -169,7 +163,7 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     BOOST_TEST(cut.empty(), fmt::format("{}", fmt::join(cut, "\n")));
     // the transient point's own row keeps its run's verdict (marked); the point gets none from it
     BOOST_TEST(sec.find("no run here is a result") != std::string::npos);
-    BOOST_TEST(count(sec, ">no verdict<") == 1);
+    BOOST_TEST(test::count(sec, ">no verdict<") == 1u);
     // the experiment's critical shear rate at U = 100 1/s x 5 mm = 0.5 m/s
     const std::string map = test::slurp(rep / "plots" / "regime_map_dem.svg");
     BOOST_TEST(map.find("Sawyer") != std::string::npos);
