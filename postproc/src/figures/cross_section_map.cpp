@@ -46,8 +46,8 @@ std::optional<CrossSectionMap> read_cross_section(const Run& r) {
     return m;
 }
 
-std::string render_cross_section_svg(const CrossSectionMap& m, const std::vector<double>& values, const std::string& title,
-                               const std::string& bar_label, const std::string& stamp) {
+std::string render_cross_section_svg(const CrossSectionMap& m, const std::vector<double>& values,
+                                     const std::string& title, const std::string& bar_label, const std::string& stamp) {
     constexpr double W = 540, H = 380, x0 = 70, x1 = 430, y0 = 40, y1 = 320, bx0 = 455, bx1 = 475;
     double lo = 0, hi = 0;
     for (double v : values) hi = std::max(hi, v), lo = std::min(lo, v);
