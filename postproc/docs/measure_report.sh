@@ -4,7 +4,8 @@
 # Usage: postproc/docs/measure_report.sh RESULTS/report WIDTH HEIGHT
 # Prints one JSON line: the viewport (clientWidth, innerHeight), the page's scrollWidth and
 # scrollHeight (folds as the report leaves them), the summary's top and bottom (px from the top;
-# -1 without a summary), images that did not load, and how often the legend's note appears.
+# -1 without a summary), images that did not load, how often the legend's note appears, and the
+# figure titles (class "title"): how many, how many pass their figure's edge, by how much at most.
 # Runs as root (CI) with --no-sandbox and a throw-away profile. Needs chromium.
 set -eu
 report=$(cd "$1" && pwd)
@@ -28,6 +29,20 @@ script='<script>
   var m = {clientWidth: d.clientWidth, innerHeight: window.innerHeight, scrollWidth: d.scrollWidth,
            scrollHeight: d.scrollHeight, summaryTop: Math.round(top), summaryBottom: Math.round(bottom),
            images: imgs.length, brokenImages: broken, legendNotes: legend};
+  // Figure titles as rendered, every fold opened (a folded figure is not laid out): a title whose
+  // box passes the viewBox of its figure is cut at the edge.
+  var folds = document.getElementsByTagName("details");
+  for (var k = 0; k < folds.length; ++k) folds[k].open = true;
+  var titles = document.querySelectorAll("svg text.title"), cut = 0, overflow = 0;
+  for (var t = 0; t < titles.length; ++t) {
+    var b = titles[t].getBBox(), vb = titles[t].ownerSVGElement.viewBox.baseVal;
+    var over = Math.max(vb.x - b.x, b.x + b.width - (vb.x + vb.width));
+    if (over > 0) ++cut;
+    overflow = Math.max(overflow, over);
+  }
+  m.titles = titles.length;
+  m.titlesCut = cut;
+  m.titleOverflowPx = Math.round(overflow * 10) / 10;
   var p = document.createElement("pre");
   p.id = "granlub-measure";
   p.textContent = "granlub-" + "measure " + JSON.stringify(m) + " end-" + "measure";  // not this line

@@ -132,4 +132,20 @@ std::map<std::string, std::string> read_metrics_row(const std::filesystem::path&
     return {};
 }
 
+SyntheticCase main_job_results(const std::string& name) {
+    SyntheticCase s = make_case(name);
+    for (const char* solver : {"continuum", "automaton", "dem", "yade"}) write_solver(s, solver);
+    patch_run(s, "dem", s.c.points.back().id,
+              {{"status", "transient"}, {"status_reason", "no steady state detected in 0.1 s of simulated time"}});
+    patch_run(s, "dem", s.c.points.front().id,
+              {{"status", "dt-unconverged"}, {"status_reason", "halving the time step moved tau by 9 %"}});
+    return s;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) ++n;
+    return n;
+}
+
 }  // namespace granlub::test

@@ -30,6 +30,10 @@ SyntheticCase make_case(const std::string& name, const std::string& extra_toml =
 //   nu/nu_max equals the continuum's), u/U as the continuum, T/U^2 = 0.01; stresses 0.9 x continuum.
 void write_solver(const SyntheticCase& s, const std::string& solver);
 
+// Results shaped like the main job's: the four solvers at the three points, the dem transient at
+// the last point and dt-unconverged at the first.
+SyntheticCase main_job_results(const std::string& name);
+
 // Edits the written summary.json of (solver, point): merges `run` into its run block (e.g. a
 // regime status or a dt_refinement record), or removes the keys whose value is null.
 void patch_run(const SyntheticCase& s, const std::string& solver, const std::string& point, const nlohmann::json& run);
@@ -39,5 +43,8 @@ std::map<std::string, std::string> read_metrics_row(const std::filesystem::path&
                                                     const std::string& a, const std::string& b);
 
 std::string slurp(const std::filesystem::path& p);
+
+// How often `what` occurs in `text` (overlapping occurrences counted).
+std::size_t count(const std::string& text, const std::string& what);
 
 }  // namespace granlub::test

@@ -1,8 +1,8 @@
 // The report as a reader's browser lays it out: headless Chromium (postproc/docs/measure_report.sh)
-// at 1024, 1400 and 1920 px, on a report of small synthetic results shaped like the main job's (four
-// solvers at three points, the dem transient at one and dt-unconverged at another): no horizontal scroll, the summary within the first screen, no image that
-// does not load, the legend's note exactly once; and every link of the page lands on a file of the
-// report or an id in it.
+// at 1024, 1400 and 1920 px, on a report of small synthetic results shaped like the main job's
+// (test::main_job_results): no horizontal scroll, the summary within the first screen, no image
+// that does not load, the legend's note exactly once, no figure title past its figure's edge; and
+// every link of the page lands on a file of the report or an id in it.
 #include <regex>
 #include <set>
 
@@ -20,12 +20,7 @@ namespace fs = std::filesystem;
 BOOST_AUTO_TEST_SUITE(browser)
 
 BOOST_AUTO_TEST_CASE(report_at_three_widths) {
-    auto s = test::make_case("browser");
-    for (const char* solver : {"continuum", "automaton", "dem", "yade"}) test::write_solver(s, solver);
-    test::patch_run(s, "dem", s.c.points.back().id,
-                    {{"status", "transient"}, {"status_reason", "no steady state detected in 0.1 s of simulated time"}});
-    test::patch_run(s, "dem", s.c.points.front().id,
-                    {{"status", "dt-unconverged"}, {"status_reason", "halving the time step moved tau by 9 %"}});
+    const auto s = test::main_job_results("browser");
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const fs::path report = s.o.results_root / "report";
     const std::string html = test::slurp(report / "index.html");
@@ -46,6 +41,8 @@ BOOST_AUTO_TEST_CASE(report_at_three_widths) {
     }
     BOOST_TEST(links > 20);
 
+    const auto figures = static_cast<int>(test::count(html, "<figure id="));
+    BOOST_TEST(figures > 10);
     const auto chromium = find_executable("chromium");
     BOOST_TEST_REQUIRE(chromium.has_value(), "chromium is not installed (Debian package chromium, .ci/packages)");
     const fs::path script = fs::path(GRANLUB_SOURCE_DIR) / "postproc" / "docs" / "measure_report.sh";
@@ -67,6 +64,8 @@ BOOST_AUTO_TEST_CASE(report_at_three_widths) {
             BOOST_TEST(j["summaryBottom"].get<int>() <= j["innerHeight"].get<int>());  // the summary on the first screen
             BOOST_TEST(j["brokenImages"].get<int>() == 0);
             BOOST_TEST(j["legendNotes"].get<int>() == 1);
+            BOOST_TEST(j["titles"].get<int>() == figures);  // every figure's title measured as rendered
+            BOOST_TEST(j["titlesCut"].get<int>() == 0);  // none past its figure's edge
         }
     }
 }

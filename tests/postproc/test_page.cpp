@@ -1,5 +1,5 @@
-// The page as a researcher reads it: a navigation bar whose every link lands on a section, the
-// per-point sections folded (the first one open), and provenance as a table (case hash, version,
+// The page as a researcher reads it: a navigation bar whose every link lands on a part, the
+// per-point parts folded (the first one open), and provenance as a table (case hash, version,
 // seed per run; settings per solver as key = value) instead of raw JSON.
 #include <regex>
 #include <set>
@@ -21,7 +21,7 @@ BOOST_AUTO_TEST_CASE(navigation_folds_and_readable_provenance) {
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
 
-    // Every nav link has its target id, and every section (h2) is in the nav.
+    // Every nav link has its target id, and every part (h2) is in the nav.
     const auto nav_begin = html.find("<nav>"), nav_end = html.find("</nav>");
     BOOST_TEST_REQUIRE(nav_end != std::string::npos);
     const std::string nav = html.substr(nav_begin, nav_end - nav_begin);
@@ -53,7 +53,7 @@ BOOST_AUTO_TEST_CASE(navigation_folds_and_readable_provenance) {
     BOOST_TEST(row.find("<td>" + dem.provenance.version + "</td>") != std::string::npos, row);
     BOOST_TEST(row.find("<td>7</td>") != std::string::npos, row);
     const auto files = prov.find("id=\"s-files\"");
-    BOOST_TEST(prov.substr(0, files).find("{&quot;") == std::string::npos);  // no raw JSON before the next section
+    BOOST_TEST(prov.substr(0, files).find("{&quot;") == std::string::npos);  // no raw JSON before the next part
     BOOST_TEST(prov.find("<summary>Settings of dem") < files);
 }
 

@@ -1,4 +1,4 @@
-// The regime section of the report (postproc regimes.h) end to end on synthetic results: a
+// The regime part of the report (postproc regimes.h) end to end on synthetic results: a
 // case that sweeps speed and load draws the map, the lift-off, mu(I) and tau(U) per load, says
 // which criterion decided each point and draws a transient hollow; a one-point case and a
 // speed-only sweep draw no map and say why.
@@ -7,6 +7,8 @@
 #include <fstream>
 
 #include <boost/test/unit_test.hpp>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "granlub/statistics/flow_regime.h"
@@ -14,6 +16,7 @@
 #include "granlub/results/run_status.h"
 #include "granlub/results/results.h"
 #include "case_text.h"
+#include "report_checks.h"
 #include "synthetic.h"
 #include "xml_check.h"
 
@@ -64,6 +67,13 @@ void write_results(const test::SyntheticCase& s) {
                 FlowDiagnostics d{0.05 * U, 0.04 * U, lifted ? 3.0 : 4.8, 0.9};
                 sum.run["flow_regime"] = flow_regime_json(d);
             }
+            if (solver == std::string("continuum")) {  // its own label, as the continuum writes it
+                const double im = 0.15 * U;            // I/nu: collision above U = 4/3 m/s
+                sum.run["lubrication"] = {{"verdict", im > 0.2 ? "collision lubrication" : "contact lubrication"},
+                                          {"criterion", "I/nu against I0 = 0.2 (Chialvo & Sundaresan 2013, Eq. 35)"},
+                                          {"inertial_number", 0.6 * im},
+                                          {"inertial_number_over_solid_fraction", im}};
+            }
             write_result(result_dir(s.o.results_root, solver, p.id), prof, sum);
         }
 }
@@ -80,13 +90,7 @@ int open_steady_markers(const std::string& svg) {
     return n;
 }
 
-int count(const std::string& s, const std::string& part) {
-    int n = 0;
-    for (auto at = s.find(part); at != std::string::npos; at = s.find(part, at + 1)) ++n;
-    return n;
-}
-
-std::string section(const std::string& html) {
+std::string regime_part(const std::string& html) {
     const auto start = html.find("Regimes over speed and load</h2>");
     BOOST_TEST_REQUIRE(start != std::string::npos);
     const auto end = html.find("<h2", start);
@@ -117,8 +121,8 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
                        {"full_step_run", {{"status", "steady"}, {"flow_regime", flow_regime_json(coarse)}}}}}});
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const fs::path rep = s.o.results_root / "report";
-    const std::string sec = section(test::slurp(rep / "index.html"));
-    BOOST_TEST(count(sec, "Z within its time-step error of 4") == 1);
+    const std::string sec = regime_part(test::slurp(rep / "index.html"));
+    BOOST_TEST(test::count(sec, "Z within its time-step error of 4") == 1u);
     BOOST_TEST(sec.find("at twice the step Z = 3.5, collision") != std::string::npos);
     BOOST_TEST(test::slurp(rep / "plots" / "regime_map_dem.svg").find("at the transition") != std::string::npos);
     for (const char* f : {"regime_map_dem", "regime_liftoff_gap_dem", "regime_liftoff_nu_dem", "regime_liftoff_nu_continuum",
@@ -147,9 +151,19 @@ BOOST_AUTO_TEST_CASE(a_speed_by_load_sweep_draws_the_map_and_says_what_decided) 
     BOOST_TEST(sec.find("contact lubrication") != std::string::npos);
     BOOST_TEST(sec.find("Z = 3 &lt; 4") != std::string::npos);
     BOOST_TEST(sec.find(", enduring contacts") == std::string::npos);  // the old contradictory label
+    // the continuum's own label, named as its own criterion; "—" only for the automaton, which has none
+    BOOST_TEST(sec.find("continuum&#39;s own criterion, I/ν = 0.3: I/nu against I0 = 0.2") != std::string::npos);
+    BOOST_TEST(sec.find("continuum&#39;s own criterion, I/ν = 0.075:") != std::string::npos);
+    BOOST_TEST(test::count(sec, "own criterion") == 6u);  // the continuum at each of the six points
+    BOOST_TEST(test::count(sec, "no regime label of its own") == 6u);  // the automaton at each
+    // a reader meets no caption sentence more than twice and no title cut at its figure's edge
+    const auto repeated = test::repeated_caption_sentences(test::slurp(rep / "index.html"));
+    BOOST_TEST(repeated.empty(), fmt::format("{}", fmt::join(repeated, "\n")));
+    const auto cut = test::cut_titles(rep / "plots");
+    BOOST_TEST(cut.empty(), fmt::format("{}", fmt::join(cut, "\n")));
     // the transient point's own row keeps its run's verdict (marked); the point gets none from it
     BOOST_TEST(sec.find("no run here is a result") != std::string::npos);
-    BOOST_TEST(count(sec, ">no verdict<") == 1);
+    BOOST_TEST(test::count(sec, ">no verdict<") == 1u);
     // the experiment's critical shear rate at U = 100 1/s x 5 mm = 0.5 m/s
     const std::string map = test::slurp(rep / "plots" / "regime_map_dem.svg");
     BOOST_TEST(map.find("Sawyer") != std::string::npos);
@@ -169,14 +183,14 @@ BOOST_AUTO_TEST_CASE(a_one_point_case_and_a_speed_only_sweep_draw_no_map_and_say
     auto one = grid_case("regime_one", "speed = 1.0\nnormal_stress = 1000.0\n");
     write_results(one);
     BOOST_TEST(postproc::compare(one.c, one.o) == 0);
-    std::string sec = section(test::slurp(one.o.results_root / "report" / "index.html"));
+    std::string sec = regime_part(test::slurp(one.o.results_root / "report" / "index.html"));
     BOOST_TEST(sec.find("No regime map: the case has one operating point") != std::string::npos);
     BOOST_TEST(!fs::exists(one.o.results_root / "report" / "plots" / "regime_map_dem.svg"));
 
     auto speeds = grid_case("regime_speeds", "speed = [0.5, 1.0, 2.0]\nnormal_stress = 1000.0\n");
     write_results(speeds);
     BOOST_TEST(postproc::compare(speeds.c, speeds.o) == 0);
-    sec = section(test::slurp(speeds.o.results_root / "report" / "index.html"));
+    sec = regime_part(test::slurp(speeds.o.results_root / "report" / "index.html"));
     BOOST_TEST(sec.find("No regime map: one load (P = 1000 Pa)") != std::string::npos);
     BOOST_TEST(!fs::exists(speeds.o.results_root / "report" / "plots" / "regime_map_dem.svg"));
 }

@@ -28,12 +28,6 @@ std::vector<fs::path> files_with(const fs::path& dir, const std::string& ext) {
     return out;
 }
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) ++n;
-    return n;
-}
-
 void expect_well_formed(const fs::path& p) {
     const std::string err = test::xml_error(test::slurp(p));
     BOOST_TEST(err.empty(), p.string() << ": not well-formed XML: " << err);
@@ -55,7 +49,7 @@ BOOST_AUTO_TEST_CASE(full_report_exists_and_parses) {
     // 3 points x 3 profiles + 4 stresses + 2 slips + 1 solid fraction.
     const auto svgs = files_with(rep / "plots", ".svg");
     BOOST_TEST(svgs.size() == 16u);
-    BOOST_TEST(count(html, "<svg ") == 16u);
+    BOOST_TEST(test::count(html, "<svg ") == 16u);
     for (const auto& svg : svgs) {
         expect_well_formed(svg);
         const auto stem = svg.stem().string();
@@ -123,7 +117,7 @@ BOOST_AUTO_TEST_CASE(partial_results_state_missing_solvers) {
     expect_well_formed(s.o.results_root / "report" / "index.html");
     BOOST_TEST(html.find("solvers compared: continuum; missing (no usable results): automaton, dem, yade.") != std::string::npos);
     BOOST_TEST(html.find("No point has results from two solvers") != std::string::npos);
-    BOOST_TEST(count(html, "<td class=\"missing\">missing</td>") == 2u);  // continuum's other two points
+    BOOST_TEST(test::count(html, "<td class=\"missing\">missing</td>") == 2u);  // continuum's other two points
     const std::string table = postproc::summary_table(s.c, s.o);
     BOOST_TEST(table.find("dem") != std::string::npos);
     BOOST_TEST(table.find("no results") != std::string::npos);
@@ -173,7 +167,7 @@ BOOST_AUTO_TEST_CASE(malformed_results_give_clear_reasons) {
     BOOST_TEST(postproc::compare(s.c, s.o) == 1);
     const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
     expect_well_formed(s.o.results_root / "report" / "index.html");
-    BOOST_TEST(count(html, "<td class=\"corrupt\">corrupt</td>") == 6u);  // status table and the list of reasons
+    BOOST_TEST(test::count(html, "<td class=\"corrupt\">corrupt</td>") == 6u);  // status table and the list of reasons
     BOOST_TEST(html.find("&#39;abc&#39; is not a number") != std::string::npos);
     BOOST_TEST(html.find("says solver &quot;yade&quot; but lies in the &quot;automaton&quot; results folder") !=
                std::string::npos);
@@ -218,9 +212,9 @@ BOOST_AUTO_TEST_CASE(any_other_results_folder_is_a_solver) {
 BOOST_AUTO_TEST_SUITE_END()
 
 // The cross-section maps (section.csv of a particle run): two heat maps per run that has one, in
-// the point's section, marked when the run is a transient; none for runs without the file.
+// the point's part, marked when the run is a transient; none for runs without the file.
 BOOST_AUTO_TEST_CASE(cross_section_maps_where_a_particle_run_has_one) {
-    auto s = test::make_case("report_section");
+    auto s = test::make_case("report_cross_section");
     {  // a trough 10 mm wide (the synthetic case is periodic across z), for the ParaView image
         std::string text = test::slurp(s.dir / "case.toml");
         text.replace(text.find("width = 0.0"), 11, "width = 0.01");
@@ -248,10 +242,10 @@ BOOST_AUTO_TEST_CASE(cross_section_maps_where_a_particle_run_has_one) {
     expect_well_formed(rep / "index.html");
     const auto maps = files_with(rep / "plots", ".svg");
     const auto n = std::count_if(maps.begin(), maps.end(),
-                                 [](const fs::path& f) { return f.stem().string().starts_with("section_dem_"); });
+                                 [](const fs::path& f) { return f.stem().string().starts_with("cross_section_dem_"); });
     BOOST_TEST(n == 4);  // nu and u/U at the two points with a section.csv, none at the third
     for (const auto& f : maps)
-        if (f.stem().string().starts_with("section_dem_")) {
+        if (f.stem().string().starts_with("cross_section_dem_")) {
             expect_well_formed(f);
             BOOST_TEST(fs::exists(f.parent_path() / (f.stem().string().substr(0, f.stem().string().rfind('_')) + ".csv")));
         }
@@ -260,7 +254,7 @@ BOOST_AUTO_TEST_CASE(cross_section_maps_where_a_particle_run_has_one) {
     BOOST_TEST(html.find("z/W across the width") != std::string::npos);
     // the transient point's maps say so; the steady one's do not
     BOOST_TEST(html.find("dem " + p1.id + ": solid fraction ν (transient)") != std::string::npos);
-    BOOST_TEST(count(html, "TRANSIENT — not a result") == 2u);
+    BOOST_TEST(test::count(html, "TRANSIENT — not a result") == 2u);
     // ParaView: the point's multiblock file has the cross-section as an image block
     const std::string vtm = test::slurp(rep / "paraview" / "u1-0.vtm");
     BOOST_TEST(vtm.find("name=\"dem cross-section\"") != std::string::npos, vtm);

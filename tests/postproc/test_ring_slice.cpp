@@ -1,4 +1,4 @@
-// The report's "whole ring against its slice" section ([report] slice_case): granlub dem's results
+// The report's "whole ring against its slice" part ([report] slice_case): granlub dem's results
 // of a ring case beside a slice case's, quantity by quantity with z, the radial packing from the
 // width profiles, figures that parse; a slice case that is missing or has no results is a note,
 // and the rest of the report stands.
@@ -40,12 +40,6 @@ void write_width_profiles(const test::SyntheticCase& s, double a, double b) {
     }
 }
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) ++n;
-    return n;
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(ring_slice)
@@ -66,8 +60,8 @@ BOOST_AUTO_TEST_CASE(ring_beside_its_slice) {
     const std::string sec = html.substr(start, html.find("<h2", start) - start);
     // every quantity the synthetic dem writes (7) and the radial packing, at every point; the same
     // results on both sides: no difference
-    for (const OperatingPoint& p : ring.c.points) BOOST_TEST(count(sec, "<tr><td>" + p.id + "</td>") == 8u, p.id);
-    BOOST_TEST(count(sec, "<td>0</td><td>0</td></tr>") == 21u);
+    for (const OperatingPoint& p : ring.c.points) BOOST_TEST(test::count(sec, "<tr><td>" + p.id + "</td>") == 8u, p.id);
+    BOOST_TEST(test::count(sec, "<td>0</td><td>0</td></tr>") == 21u);
     // a quantity neither run has (the synthetic dem writes no side walls) is left out
     BOOST_TEST(sec.find("<td>τ outer side wall (Pa)</td>") == std::string::npos);
     // the radial packing: difference 0.3947 over a combined standard error 0.0078: z = 51, bold

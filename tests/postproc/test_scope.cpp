@@ -17,11 +17,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The Markdown table row that starts with `| first | second |`, the first after `section`.
-std::string md_row(const std::string& md, const std::string& section, const std::string& first,
+// The Markdown table row that starts with `| first | second |`, the first after `heading`.
+std::string md_row(const std::string& md, const std::string& heading, const std::string& first,
                    const std::string& second = "") {
     const std::string start = "| " + first + " |" + (second.empty() ? "" : " " + second + " |");
-    const auto at = md.find(start, md.find(section));
+    const auto at = md.find(start, md.find(heading));
     return at == std::string::npos ? std::string() : md.substr(at, md.find('\n', at) - at);
 }
 

@@ -16,12 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) ++n;
-    return n;
-}
-
 // The <tr> of an HTML table whose text contains `what`, the first one from `from` (empty when none).
 std::string table_row(const std::string& html, const std::string& what, std::size_t from = 0) {
     const auto at = html.find(what, from);
@@ -47,9 +41,9 @@ BOOST_AUTO_TEST_CASE(a_transient_dem_point_is_never_passed_off) {
     BOOST_TEST(test::xml_error(html).empty());
 
     // Status table and the reasons under it; key numbers greyed with a status column.
-    BOOST_TEST(count(html, "<td class=\"transient\">transient</td>") == 3u);  // status grid, reasons, key numbers
+    BOOST_TEST(test::count(html, "<td class=\"transient\">transient</td>") == 3u);  // status grid, reasons, key numbers
     BOOST_TEST(html.find(kReason) != std::string::npos);
-    BOOST_TEST(count(html, "<td class=\"ok\">steady</td>") >= 5u);
+    BOOST_TEST(test::count(html, "<td class=\"ok\">steady</td>") >= 5u);
     const std::string key_row = table_row(html, "<td class=\"transient\">transient</td><td class=\"transient\">");
     BOOST_TEST(key_row.find(p2) != std::string::npos, key_row);
 
@@ -72,13 +66,13 @@ BOOST_AUTO_TEST_CASE(a_transient_dem_point_is_never_passed_off) {
     // Differences tables: the transient pair's cells show no number and are never bold.
     const std::string pair = "continuum − dem (dem: transient)";
     const std::string prof_row = table_row(html, pair), scalar_row = table_row(html, pair, html.find(pair) + 1);
-    BOOST_TEST(count(prof_row, "<td class=\"transient\">—, transient</td>") == 3u);    // every profile
-    BOOST_TEST(count(scalar_row, "<td class=\"transient\">—, transient</td>") == 7u);  // every scalar
+    BOOST_TEST(test::count(prof_row, "<td class=\"transient\">—, transient</td>") == 3u);    // every profile
+    BOOST_TEST(test::count(scalar_row, "<td class=\"transient\">—, transient</td>") == 7u);  // every scalar
     for (const auto& row : {prof_row, scalar_row}) {
         BOOST_TEST(row.find("significant") == std::string::npos, row);
         BOOST_TEST(row.find("z =") == std::string::npos, row);
     }
-    BOOST_TEST(count(html, "<td class=\"transient\">—, transient</td>") == 10u);
+    BOOST_TEST(test::count(html, "<td class=\"transient\">—, transient</td>") == 10u);
     // ... whereas the steady pair at U = 1 has bold cells (sigma ~ U^2 vs U^1.5 with 5 % errors).
     BOOST_TEST(table_row(html, "<td>continuum − dem</td>").find("significant") != std::string::npos);
     BOOST_TEST(test::slurp(rep / "report.md").find("_—, transient_") != std::string::npos);
@@ -138,7 +132,7 @@ BOOST_AUTO_TEST_CASE(failed_unknown_and_dt_unconverged_points_say_why) {
                        {"shear_stress_top", {{"relative_change", 0.01}, {"z", 0.5}}}}}});
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string html = test::slurp(s.o.results_root / "report" / "index.html");
-    BOOST_TEST(count(html, "<td class=\"failed\">failed</td>") == 2u);  // status grid and reasons
+    BOOST_TEST(test::count(html, "<td class=\"failed\">failed</td>") == 2u);  // status grid and reasons
     BOOST_TEST(html.find(msg) != std::string::npos);
     BOOST_TEST(html.find("<td class=\"unknown\">status unknown</td>") != std::string::npos);
     BOOST_TEST(html.find("<td class=\"transient\">dt-unconverged</td>") != std::string::npos);
@@ -159,9 +153,9 @@ BOOST_AUTO_TEST_CASE(failed_unknown_and_dt_unconverged_points_say_why) {
     write_failure(result_dir(s.o.results_root, "dem", pts[2].id), "dem", pts[2].id, none, true);
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string with_none = test::slurp(s.o.results_root / "report" / "index.html");
-    BOOST_TEST(count(with_none, "<td class=\"noanswer\">no answer</td>") == 2u);  // status grid and reasons
+    BOOST_TEST(test::count(with_none, "<td class=\"noanswer\">no answer</td>") == 2u);  // status grid and reasons
     BOOST_TEST(with_none.find(none) != std::string::npos);
-    BOOST_TEST(count(with_none, "<td class=\"failed\">") == 0u);
+    BOOST_TEST(test::count(with_none, "<td class=\"failed\">") == 0u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

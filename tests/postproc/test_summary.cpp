@@ -114,11 +114,11 @@ BOOST_AUTO_TEST_CASE(cross_section_stamps_name_the_state) {
     test::patch_run(s, "dem", p[1].id, {{"status", "transient"}, {"status_reason", "not steady"}});
     test::patch_run(s, "dem", p[2].id, {{"status", "dt-unconverged"}, {"status_reason", "halving dt moved tau by 9 %"}});
     const auto col = postproc::collect(s.c, s.o);
-    BOOST_TEST(postproc::section_stamp(col.run("dem", p[0].id)) == "");
-    BOOST_TEST(postproc::section_stamp(col.run("dem", p[1].id)) == "TRANSIENT — not a result");
-    BOOST_TEST(postproc::section_stamp(col.run("dem", p[2].id)) == "DT-UNCONVERGED — Δt changes it");
-    const std::string svg = postproc::render_section_svg({1, 1, {0.5}, {0}, {0.6}, {0.5}}, {0.6}, "t", "ν",
-                                                         postproc::section_stamp(col.run("dem", p[2].id)));
+    BOOST_TEST(postproc::cross_section_stamp(col.run("dem", p[0].id)) == "");
+    BOOST_TEST(postproc::cross_section_stamp(col.run("dem", p[1].id)) == "TRANSIENT — not a result");
+    BOOST_TEST(postproc::cross_section_stamp(col.run("dem", p[2].id)) == "DT-UNCONVERGED — Δt changes it");
+    const std::string svg = postproc::render_cross_section_svg({1, 1, {0.5}, {0}, {0.6}, {0.5}}, {0.6}, "t", "ν",
+                                                         postproc::cross_section_stamp(col.run("dem", p[2].id)));
     BOOST_TEST(svg.find(">DT-UNCONVERGED — Δt changes it</text>") != std::string::npos);
     BOOST_TEST(svg.find("TRANSIENT") == std::string::npos);
 }

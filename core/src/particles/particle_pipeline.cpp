@@ -203,12 +203,12 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
                                               .solids_volume = solids,
                                               .simulated_s = in.simulated_s,
                                               .time_step = in.time_step,
-                                              .section = &xs,
+                                              .cross_section = &xs,
                                               .plate_start = in.plate_start,
                                               .slip_bottom_from = protrusion(in.bumps_bottom),
                                               .slip_top_from = protrusion(in.bumps_top)});
     write_file_atomic(dir / kSectionFile,
-                      profile_csv(out.section,
+                      profile_csv(out.cross_section,
                                   {in.what, "solid fraction and u/U over the cross-section: y across the gap (0 = moving "
                                             "floor), z across the width (z/W = -1/2: the outer wall, where the "
                                             "centripetal force pushes), averaged along the flow and over the snapshots "

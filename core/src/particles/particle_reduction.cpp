@@ -96,7 +96,7 @@ ParticleReduction reduce_particles(const ParticleReductionInputs& in) {
     while (first < ts.size() && ts[first] < win.t_start - 1e-12) ++first;
     if (ts.size() - first < 2) first = ts.size() >= 2 ? ts.size() - 2 : 0;
     o.profile = in.cg.profile(U, first, in.blocks);
-    if (in.section) o.section = in.section->table(U, first);
+    if (in.cross_section) o.cross_section = in.cross_section->table(U, first);
 
     const auto& u = o.profile.column("u_over_U");
     const auto& ue = o.profile.column("u_over_U_stderr");

@@ -11,6 +11,7 @@
 #include "figures/figures.h"
 #include "formats/svg_plot.h"
 #include "formats/format.h"
+#include "formats/svg_title.h"
 #include "granlub/error.h"
 #include "granlub/particles/cross_section.h"
 
@@ -32,11 +33,11 @@ std::string colour(double t) {
 
 }  // namespace
 
-std::optional<SectionMap> read_section(const Run& r) {
+std::optional<CrossSectionMap> read_cross_section(const Run& r) {
     const auto file = r.dir / kSectionFile;
     if (!std::filesystem::exists(file)) return std::nullopt;
     const Profile t = read_table(file);
-    SectionMap m;
+    CrossSectionMap m;
     m.y = t.column("y_over_H"), m.z = t.column("z_over_W"), m.nu = t.column("solid_fraction"), m.u = t.column("u_over_U");
     m.ny = std::set<double>(m.y.begin(), m.y.end()).size();
     m.nz = std::set<double>(m.z.begin(), m.z.end()).size();
@@ -45,19 +46,23 @@ std::optional<SectionMap> read_section(const Run& r) {
     return m;
 }
 
-std::string render_section_svg(const SectionMap& m, const std::vector<double>& values, const std::string& title,
-                               const std::string& bar_label, const std::string& stamp) {
+std::string render_cross_section_svg(const CrossSectionMap& m, const std::vector<double>& values,
+                                     const std::string& title, const std::string& bar_label, const std::string& stamp) {
     constexpr double W = 540, H = 380, x0 = 70, x1 = 430, y0 = 40, y1 = 320, bx0 = 455, bx1 = 475;
     double lo = 0, hi = 0;
     for (double v : values) hi = std::max(hi, v), lo = std::min(lo, v);
     if (!(hi > lo)) hi = lo + 1;
     const std::vector<Tick> bar = linear_ticks(lo, hi);
     const double cw = (x1 - x0) / static_cast<double>(m.nz), ch = (y1 - y0) / static_cast<double>(m.ny);
+    // A title wrapped onto more lines moves the map below it down by as much.
+    const SvgTitle heading = svg_title(title, 0.5 * W, W, 24);
     std::string out = fmt::format(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
         "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"13\">\n<title>{2}</title>\n"
         "<rect width=\"{0}\" height=\"{1}\" fill=\"#ffffff\"/>\n",
-        W, H, xml_escape(title));
+        W, H + heading.extra_height, xml_escape(title));
+    out += heading.markup;
+    if (heading.extra_height > 0) out += fmt::format("<g transform=\"translate(0,{})\">\n", heading.extra_height);
     // cells: row k (y) from the floor up, column (z) from the outer wall (z/W = -1/2) to the right
     for (std::size_t c = 0; c < values.size(); ++c) {
         const auto k = static_cast<std::size_t>(std::floor(m.y[c] * static_cast<double>(m.ny)));
@@ -87,8 +92,6 @@ std::string render_section_svg(const SectionMap& m, const std::vector<double>& v
     out += fmt::format("<text transform=\"translate(22,{}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">"
                        "y/H across the gap (0: moving floor)</text>\n",
                        0.5 * (y0 + y1));
-    out += fmt::format("<text x=\"{}\" y=\"24\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
-                       0.5 * W, xml_escape(title));
     // colour bar with its ticks
     constexpr int kSteps = 32;
     for (int s = 0; s < kSteps; ++s) {
@@ -113,12 +116,13 @@ std::string render_section_svg(const SectionMap& m, const std::vector<double>& v
         out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"22\" fill=\"#b00000\" "
                            "font-weight=\"bold\">{}</text>\n",
                            0.5 * (x0 + x1), 0.5 * (y0 + y1), xml_escape(stamp));
+    if (heading.extra_height > 0) out += "</g>\n";
     out += "</svg>\n";
     return out;
 }
 
 // What a map of a run that is not steady is stamped with: its state, named as what it is.
-std::string section_stamp(const Run& r) {
+std::string cross_section_stamp(const Run& r) {
     if (r.steady()) return "";
     const std::string state = r.state_name();
     if (state == "transient") return "TRANSIENT — not a result";
@@ -126,15 +130,15 @@ std::string section_stamp(const Run& r) {
     return "STATUS UNKNOWN — not checked";
 }
 
-std::vector<FigureRef> section_figures(const Collection& col, std::size_t i, const std::filesystem::path& plots) {
+std::vector<FigureRef> cross_section_figures(const Collection& col, std::size_t i, const std::filesystem::path& plots) {
     std::vector<FigureRef> refs;
     const OperatingPoint& p = *col.points[i];
     for (const Run* r : col.usable(p.id)) {
-        const auto m = read_section(*r);
+        const auto m = read_cross_section(*r);
         if (!m) continue;
         const bool unsteady = !r->steady();
         const std::string state = unsteady ? fmt::format(" ({})", r->state_name()) : "";
-        const std::string base = fmt::format("section_{}_{}", r->solver, point_slug(p));
+        const std::string base = fmt::format("cross_section_{}_{}", r->solver, point_slug(p));
         struct Q {
             const char* key;
             const std::vector<double>& v;
@@ -144,11 +148,12 @@ std::vector<FigureRef> section_figures(const Collection& col, std::size_t i, con
         for (const Q& q : {Q{"nu", m->nu, "solid fraction ν", "ν"}, Q{"u", m->u, "streamwise velocity u/U", "u/U"}}) {
             const std::string name = base + "_" + q.key;
             const std::string title = fmt::format("{} {}: {}{}", r->solver, p.id, q.label, state);
+            // What the quantity is and whether the run is steady: the title and the stamp. What every
+            // map shares is one sentence, said once above the maps (report/shared_captions.h).
             FigureRef f{name, title,
-                        fmt::format("{} over the trough's cross-section (flow out of the page), averaged along the flow "
-                                    "and over the steady window; cells of about one grain diameter{}.",
-                                    q.label, unsteady ? "; the run is " + r->state_name() : std::string()),
-                        render_section_svg(*m, q.v, title, q.bar, section_stamp(*r)),
+                        "The trough's cross-section, the flow out of the page: averaged along the flow and over the "
+                        "steady window, in cells of about one grain diameter.",
+                        render_cross_section_svg(*m, q.v, title, q.bar, cross_section_stamp(*r)),
                         {{"SVG", "plots/" + name + ".svg"}, {"data (CSV)", "plots/" + base + ".csv"}}};
             write_file_atomic(plots / (name + ".svg"), f.svg);
             std::filesystem::copy_file(r->dir / kSectionFile, plots / (base + ".csv"),

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
 
 #include "figures/figures.h"
 #include "figures/mu_of_i.h"
@@ -26,6 +27,30 @@ std::vector<const OperatingPoint*> grid_points(const SpeedLoadGrid& grid) {
 
 bool has_verdict(const Run& r) {
     return r.usable() && r.summary->run.is_object() && r.summary->run.contains("flow_regime");
+}
+
+// A run's own regime label and what decided it: a particle engine's contact record (run.flow_regime,
+// core flow_regime.h) or the continuum's I/nu against its own threshold (run.lubrication: verdict,
+// criterion, inertial_number_over_solid_fraction; written by the continuum's case_setup.cpp). Read
+// from the summary, whichever solver wrote it; "—" for a run with neither (the automaton).
+struct OwnRegime {
+    std::string label, decided_by;
+};
+OwnRegime own_regime(const Run& r) {
+    const nlohmann::json& run = r.summary->run;
+    if (has_verdict(r)) {
+        const FlowVerdict v = read_flow_verdict(run["flow_regime"]);
+        return {v.label(), v.criterion};
+    }
+    if (!run.is_object() || !run.contains("lubrication") || !run["lubrication"].is_object())
+        return {"—", "no regime label of its own (its summary has neither run.flow_regime nor run.lubrication)"};
+    const nlohmann::json& l = run["lubrication"];
+    const auto text = [&](const char* key) { return l.contains(key) && l[key].is_string() ? l[key].get<std::string>() : ""; };
+    const nlohmann::json& im = l.contains("inertial_number_over_solid_fraction") ? l["inertial_number_over_solid_fraction"]
+                                                                                 : nlohmann::json();
+    return {text("verdict").empty() ? "—" : text("verdict"),
+            fmt::format("{}'s own criterion{}: {}", r.solver, im.is_number() ? ", I/ν = " + num(im.get<double>()) : "",
+                        text("criterion").empty() ? "not recorded" : text("criterion"))};
 }
 
 // The experiment's critical shear rate as a vertical black dotted line at U = 100 1/s x H over [lo, hi].
@@ -190,12 +215,7 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
                 if (!r.usable()) continue;
                 any = any || has_verdict(r);
                 const std::string cls = r.steady() ? "" : r.state_class();
-                std::string verdict = "—", why = "no contact record (run.flow_regime): a model without grain contacts";
-                if (has_verdict(r)) {
-                    const FlowVerdict v = read_flow_verdict(r.summary->run["flow_regime"]);
-                    verdict = v.label();
-                    why = v.criterion;
-                }
+                const OwnRegime own = own_regime(r);
                 const RunInertia I = run_inertia(c, r);
                 const auto gap = r.scalar("gap");
                 t.rows.push_back({{s, ""},
@@ -203,8 +223,8 @@ Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& gr
                                   {num(p->speed), ""},
                                   {num(p->normal_stress), ""},
                                   {r.state_name(), r.state_class()},
-                                  {verdict, cls},
-                                  {why, cls},
+                                  {own.label, cls},
+                                  {own.decided_by, cls},
                                   {I.nominal ? num(*I.nominal, 3) : "—", cls},
                                   {I.mid_gap ? num(*I.mid_gap, 3) : "—", cls},
                                   {gap ? num(*gap * 1e3, 3) : "—", cls}});

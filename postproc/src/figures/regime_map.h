@@ -24,7 +24,9 @@ std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, con
 // The gap (load-controlled solvers that report one) and the mean solid fraction against U, per load:
 // one figure per solver and quantity (not the lattice solvers, named in the caption).
 std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const SpeedLoadGrid& grid);
-// Per solver and point: U, P, state, verdict, the criterion that decided, I (U/H), I (mid-gap), gap.
+// Per solver and point: U, P, state, the solver's own verdict and the criterion that decided it (a
+// particle engine's contacts, the continuum's I/nu; "—" without one), I (U/H), I (mid-gap), gap; per
+// point the particle engines' combined verdict.
 Table regime_table(const Case& c, const Collection& col, const SpeedLoadGrid& grid);
 
 }  // namespace granlub::postproc

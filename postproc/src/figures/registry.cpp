@@ -11,7 +11,7 @@ const std::vector<FigureRow>& figure_registry() {
     static const std::vector<FigureRow> rows = {
         {kProfilesHeading, true, [](const FigureInput& in) { return profile_figures(in.col, in.point); }},
         {kCrossSectionHeading, true, nullptr,
-         [](const FigureInput& in) { return section_figures(in.col, in.point, in.plots); }},
+         [](const FigureInput& in) { return cross_section_figures(in.col, in.point, in.plots); }},
         {kStressHeading, false, [](const FigureInput& in) { return stress_figures(in.col); }},
         {kSlipHeading, false, [](const FigureInput& in) { return slip_figures(in.col); }},
         {kSolidFractionHeading, false,

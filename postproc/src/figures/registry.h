@@ -28,7 +28,7 @@ struct FigureInput {
 };
 
 struct FigureRow {
-    const char* heading;  // the report section it stands under (a new heading gets its own section)
+    const char* heading;  // the report part it stands under (a new heading gets its own part)
     bool per_point;       // drawn once per point with usable results (folded by point), else once per case
     // A line-and-point figure: compare renders the SVG and writes its data, gnuplot source and PDF.
     std::vector<Figure> (*model)(const FigureInput&) = nullptr;

@@ -225,8 +225,10 @@ std::string render_markdown(const Report& r) {
                 for (const auto& f : b.figures) {
                     std::string links;
                     for (const auto& [label, href] : f.files) links += fmt::format("{}[{}]({})", links.empty() ? "" : " · ", label, href);
-                    out += fmt::format("![{}](plots/{}.svg)\n\n*{}*{}\n\n", f.title, f.name, f.caption,
-                                       links.empty() ? "" : " (" + links + ")");
+                    // a caption left empty (its sentences said above the figures) leaves no empty emphasis
+                    const std::string caption = f.caption.empty() ? "" : "*" + f.caption + "*";
+                    const std::string files = links.empty() ? "" : (caption.empty() ? "(" : " (") + links + ")";
+                    out += fmt::format("![{}](plots/{}.svg)\n\n{}{}\n\n", f.title, f.name, caption, files);
                 }
                 break;
             case Block::Kind::Links:

@@ -27,7 +27,7 @@ struct FigureRef {
 };
 
 struct Block {
-    // FoldBegin .. FoldEnd: a section the reader opens (HTML <details>; Markdown a heading).
+    // FoldBegin .. FoldEnd: a part the reader opens (HTML <details>; Markdown a heading).
     enum class Kind { Heading, Text, Note, Table, Figures, Pre, Links, FoldBegin, FoldEnd } kind = Kind::Text;
     int level = 2;                                   // Heading
     bool open = false;                               // FoldBegin: shown unfolded

@@ -9,6 +9,7 @@
 
 #include "formats/figure_style.h"
 #include "formats/format.h"
+#include "formats/svg_title.h"
 
 namespace granlub::postproc {
 namespace {
@@ -284,7 +285,7 @@ void svg_open(const Figure& f, double height, const std::string& clip, std::stri
                        clip, kX0, kY0, kX1 - kX0, kY1 - kY0);
 }
 
-// Grid, ticks, tick labels, the axes' titles and the figure's title.
+// Grid, ticks, tick labels and the axes' titles.
 void svg_axes(const Figure& f, const Mapper& m, std::string& out) {
     std::vector<Tick> xt, yt;
     if (!f.x.categories.empty()) {
@@ -340,8 +341,6 @@ void svg_axes(const Figure& f, const Mapper& m, std::string& out) {
     out += fmt::format(
         "<text transform=\"translate({:.1f},{}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n",
         ylabel_x, (kY0 + kY1) / 2, xml_escape(f.y.label));
-    out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
-                       (kX0 + kX1) / 2, 21, xml_escape(f.title));
 }
 
 // Data: bands, then lines, then error bars and markers, all clipped to the frame; the frame.
@@ -428,12 +427,17 @@ std::string render_svg(const Figure& f) {
     Mapper m{axis_range(f.x, f.series, true), axis_range(f.y, f.series, false)};
     const int corner = legend_corner(f, m);
     const std::string clip = f.name + "-clip";
+    // A title wrapped onto more lines moves everything below it down by as much.
+    const SvgTitle title = svg_title(f.title, (kX0 + kX1) / 2, kWidth, 21);
     std::string out;
     out.reserve(16384);
-    svg_open(f, height_of(f, corner), clip, out);
+    svg_open(f, height_of(f, corner) + title.extra_height, clip, out);
+    out += title.markup;
+    if (title.extra_height > 0) out += fmt::format("<g transform=\"translate(0,{})\">\n", title.extra_height);
     svg_axes(f, m, out);
     svg_data(f, m, clip, out);
     svg_legend(f, corner, out);
+    if (title.extra_height > 0) out += "</g>\n";
     out += "</svg>\n";
     return out;
 }

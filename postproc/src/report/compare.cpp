@@ -157,9 +157,9 @@ int compare(const Case& c, const RunOptions& o) {
                                "no PDF\n");
         ReportFigures figs = draw_figures(c, col, plots, converter);
         figs.pdf = converter.has_value();
-        const RingSliceSection ring = ring_slice_section(c, col);
+        const RingSlicePart ring = ring_slice_part(c, col);
         figs.ring_slice = emit(ring.figures, plots, converter);
-        const RegimeSection regime = regime_section(c, col);
+        const RegimePart regime = regime_part(c, col);
         figs.regime = emit(regime.figures, plots, converter);
         const auto vtm = write_paraview(col, c.cell.gap, c.cell.width, staging / "paraview");
         const Report rep = build_report(c, col, metrics, figs, vtm, &ring, &regime);

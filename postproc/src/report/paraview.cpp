@@ -68,7 +68,7 @@ vtkSmartPointer<vtkPolyData> profile_polydata(const Run& r, double gap) {
 
 // The cross-section (section.csv) as an image of 1 x ny x nz cells over y in [0, gap] and
 // z in [-width/2, width/2], cell data solid_fraction and u_over_U.
-vtkSmartPointer<vtkImageData> section_image(const SectionMap& m, double gap, double width) {
+vtkSmartPointer<vtkImageData> cross_section_image(const CrossSectionMap& m, double gap, double width) {
     auto im = vtkSmartPointer<vtkImageData>::New();
     im->SetDimensions(2, static_cast<int>(m.ny) + 1, static_cast<int>(m.nz) + 1);
     im->SetOrigin(0.0, 0.0, -0.5 * width);
@@ -103,8 +103,8 @@ std::vector<std::filesystem::path> write_paraview(const Collection& col, double 
             mb->GetMetaData(block++)->Set(vtkCompositeDataSet::NAME(), r->solver.c_str());
         }
         for (const Run* r : runs)  // the particle runs' cross-sections (y x z), where recorded
-            if (const auto m = read_section(*r); m && width > 0) {
-                mb->SetBlock(block, section_image(*m, gap, width));
+            if (const auto m = read_cross_section(*r); m && width > 0) {
+                mb->SetBlock(block, cross_section_image(*m, gap, width));
                 mb->GetMetaData(block++)->Set(vtkCompositeDataSet::NAME(), (r->solver + " cross-section").c_str());
             }
         const auto file = dir / (point_slug(*p) + ".vtm");

@@ -10,8 +10,8 @@
 
 namespace granlub::postproc {
 
-RegimeSection regime_section(const Case& c, const Collection& col) {
-    RegimeSection out;
+RegimePart regime_part(const Case& c, const Collection& col) {
+    RegimePart out;
     out.grid = speed_load_grid(col.points);
     if (!out.grid.drawn()) return out;
     for (auto&& f : regime_map_figures(c, col, out.grid)) out.figures.push_back(std::move(f));
@@ -38,7 +38,7 @@ RegimeSection regime_section(const Case& c, const Collection& col) {
     return out;
 }
 
-void add_regime_section(Report& rep, const RegimeSection& s, const std::vector<FigureRef>& refs) {
+void add_regime_part(Report& rep, const RegimePart& s, const std::vector<FigureRef>& refs) {
     rep.heading("Regimes over speed and load");
     if (!s.grid.drawn()) {
         rep.text(fmt::format("No regime map: {}.", s.grid.why_not));

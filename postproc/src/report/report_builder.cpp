@@ -12,6 +12,7 @@
 #include "report/summary.h"
 #include "results/scope.h"
 #include "report/ring_slice.h"
+#include "report/shared_captions.h"
 #include "tables/differences.h"
 #include "tables/exponents.h"
 #include "tables/provenance.h"
@@ -33,7 +34,7 @@ void opening(Report& rep, const Case& c, const Collection& col) {
 }
 
 // The answer first (summary.h): who agrees on what, the largest disagreement, what is not an answer.
-void summary_section(Report& rep, const Collection& col) {
+void summary_part(Report& rep, const Collection& col) {
     rep.heading("Summary");
     const CaseSummary s = case_summary(col);
     std::vector<std::string> with;
@@ -134,7 +135,7 @@ void results_found(Report& rep, const Case& c, const Collection& col) {
 
 // The figures the registry puts under `heading` (figures/registry.h): per point in folds (the
 // profiles of the first point unfolded), or once for the case.
-void figure_section(Report& rep, const Collection& col, const ReportFigures& figs, const std::string& heading) {
+void figure_part(Report& rep, const Collection& col, const ReportFigures& figs, const std::string& heading) {
     // A heading without a figure (no row drew one: no particle run with a cross-section) is left out.
     if (std::none_of(figs.groups.begin(), figs.groups.end(), [&](const FigureGroup& g) { return g.heading == heading; }))
         return;
@@ -179,8 +180,8 @@ void exponents(Report& rep, const Collection& col, const std::vector<MetricRow>&
         rep.table(std::move(ex));
 }
 
-void ring_section(Report& rep, const RingSliceSection& ring_s, const ReportFigures& figs) {
-    const RingSliceSection* ring = &ring_s;
+void ring_part(Report& rep, const RingSlicePart& ring_s, const ReportFigures& figs) {
+    const RingSlicePart* ring = &ring_s;
     if (!ring->slice_case.empty()) {
         rep.heading("The whole ring against its slice");
         rep.text(fmt::format(
@@ -233,33 +234,34 @@ std::vector<FigureRef> ReportFigures::of(const std::string& heading, const std::
 
 Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
                     const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
-                    const RingSliceSection* ring, const RegimeSection* regime) {
+                    const RingSlicePart* ring, const RegimePart* regime) {
     Report rep;
     opening(rep, c, col);
-    summary_section(rep, col);
+    summary_part(rep, col);
     how_to_read(rep);
     results_found(rep, c, col);
-    // The registry's sections in its order; the stress exponents after the stress figures, the
+    // The registry's headings in its order; the stress exponents after the stress figures, the
     // regimes after them, the ring after the figures.
     for (const auto& heading : figure_headings()) {
-        figure_section(rep, col, figs, heading);
+        figure_part(rep, col, figs, heading);
         if (heading == kStressHeading) {
             exponents(rep, col, metrics);
-            if (regime) add_regime_section(rep, *regime, figs.regime);
+            if (regime) add_regime_part(rep, *regime, figs.regime);
         }
     }
-    if (ring) ring_section(rep, *ring, figs);
+    if (ring) ring_part(rep, *ring, figs);
     differences(rep, col, metrics);
     rep.heading("Provenance of every run");
     rep.text(fmt::format("This report: written {} by granlub {}.", utc_now(), version()));
     rep.fold("Versions, seeds and hashes of every run; each solver's settings");
-    provenance_section(rep, col);
+    provenance_part(rep, col);
     rep.end_fold();
     files(rep, paraview_files, figs.pdf);
     rep.heading("The case");
     rep.fold("The case as granlub check resolves it (defaults marked)");
     rep.pre(describe(c));
     rep.end_fold();
+    say_shared_captions_once(rep);
     return rep;
 }
 

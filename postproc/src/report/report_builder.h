@@ -26,11 +26,11 @@ struct ReportFigures {
     std::vector<FigureRef> of(const std::string& heading, const std::string& point = "") const;
 };
 
-struct RingSliceSection;
-struct RegimeSection;
+struct RingSlicePart;
+struct RegimePart;
 
 Report build_report(const Case& c, const Collection& col, const std::vector<MetricRow>& metrics,
                     const ReportFigures& figs, const std::vector<std::filesystem::path>& paraview_files,
-                    const RingSliceSection* ring = nullptr, const RegimeSection* regime = nullptr);
+                    const RingSlicePart* ring = nullptr, const RegimePart* regime = nullptr);
 
 }  // namespace granlub::postproc

@@ -107,7 +107,7 @@ std::vector<double> stderr_or_empty(const Data& t, const char* name) {
 }
 
 // Across the width (solid fraction, u/U) and across the gap (solid fraction, u/U), ring and slice.
-void add_figures(RingSliceSection& sec, const OperatingPoint& p, const Run& ring, const Run& slice,
+void add_figures(RingSlicePart& part, const OperatingPoint& p, const Run& ring, const Run& slice,
                  const std::optional<Data>& wr, const std::optional<Data>& ws) {
     const std::string slug = point_slug(p);
     const bool rs = ring.steady(), ss = slice.steady();
@@ -134,7 +134,7 @@ void add_figures(RingSliceSection& sec, const OperatingPoint& p, const Run& ring
                                       stderr_or_empty(*wr, fmt::format("{}_stderr", what[k]).c_str())));
             f.series.push_back(series("slice + body force", 1, ss, ws->column("z_over_W"), ws->column(what[k]),
                                       stderr_or_empty(*ws, fmt::format("{}_stderr", what[k]).c_str())));
-            sec.figures.push_back(std::move(f));
+            part.figures.push_back(std::move(f));
         }
         Figure g;
         g.name = fmt::format("ring_slice_{}_gap_{}", slug, suffix[k]);
@@ -152,48 +152,48 @@ void add_figures(RingSliceSection& sec, const OperatingPoint& p, const Run& ring
              {std::tuple{&ring, "whole ring", 0, rs}, std::tuple{&slice, "slice + body force", 1, ss}})
             g.series.push_back(series(who, style, steady, run->y(), run->profile->column(what[k]),
                                       run->profile->has(se) ? run->profile->column(se) : std::vector<double>{}));
-        sec.figures.push_back(std::move(g));
+        part.figures.push_back(std::move(g));
     }
 }
 
 }  // namespace
 
-RingSliceSection ring_slice_section(const Case& ring, const Collection& col) {
-    RingSliceSection sec;
-    sec.slice_case = ring.section("report").string("slice_case");
-    if (sec.slice_case.empty()) return sec;
+RingSlicePart ring_slice_part(const Case& ring, const Collection& col) {
+    RingSlicePart part;
+    part.slice_case = ring.section("report").string("slice_case");
+    if (part.slice_case.empty()) return part;
     Case slice;
     try {
-        slice = load_case(ring.dir / sec.slice_case, *ring.schema);
+        slice = load_case(ring.dir / part.slice_case, *ring.schema);
     } catch (const Error& e) {
-        sec.notes.push_back(fmt::format("[report] slice_case = \"{}\": {}", sec.slice_case, e.what()));
-        return sec;
+        part.notes.push_back(fmt::format("[report] slice_case = \"{}\": {}", part.slice_case, e.what()));
+        return part;
     }
     if (slice.cell.ring()) {
-        sec.notes.push_back(fmt::format("[report] slice_case = \"{}\" is a whole ring too ([cell] geometry = "
+        part.notes.push_back(fmt::format("[report] slice_case = \"{}\" is a whole ring too ([cell] geometry = "
                                         "\"annulus\"): nothing to set it against",
-                                        sec.slice_case));
-        return sec;
+                                        part.slice_case));
+        return part;
     }
     const Collection scol = collect(slice, RunOptions{});
     for (const auto* c : {&col, &scol})
         if (std::find(c->solvers.begin(), c->solvers.end(), kRingSolver) == c->solvers.end()) {
-            sec.notes.push_back(fmt::format("No granlub dem results in {}: run `granlub dem` on {} first.",
+            part.notes.push_back(fmt::format("No granlub dem results in {}: run `granlub dem` on {} first.",
                                             c->root.string(), c == &col ? ring.dir.string() : slice.dir.string()));
-            return sec;
+            return part;
         }
-    sec.table.header = {"point", "quantity", "whole ring", "slice", "ring − slice", "z"};
+    part.table.header = {"point", "quantity", "whole ring", "slice", "ring − slice", "z"};
     for (const OperatingPoint* p : col.points) {
         const OperatingPoint* q = nullptr;
         for (const OperatingPoint* s : scol.points)
             if (s->id == p->id) q = s;
         if (!q) {
-            sec.notes.push_back(fmt::format("point {}: {} has no point of that id", p->id, slice.name));
+            part.notes.push_back(fmt::format("point {}: {} has no point of that id", p->id, slice.name));
             continue;
         }
         if (q->speed != p->speed || q->control != p->control || q->normal_stress != p->normal_stress ||
             (p->control == Control::Fill && q->solid_fraction != p->solid_fraction)) {
-            sec.notes.push_back(fmt::format("point {}: {}'s point of that id asks another question (speed, control, "
+            part.notes.push_back(fmt::format("point {}: {}'s point of that id asks another question (speed, control, "
                                             "load or fill differ)",
                                             p->id, slice.name));
             continue;
@@ -201,7 +201,7 @@ RingSliceSection ring_slice_section(const Case& ring, const Collection& col) {
         const Run& r = col.run(kRingSolver, p->id);
         const Run& s = scol.run(kRingSolver, q->id);
         if (!r.usable() || !s.usable()) {
-            sec.notes.push_back(fmt::format("point {}: granlub dem's result is {} for the ring, {} for the slice ({})",
+            part.notes.push_back(fmt::format("point {}: granlub dem's result is {} for the ring, {} for the slice ({})",
                                             p->id, r.state_name(), s.state_name(), slice.dir.string()));
             continue;
         }
@@ -212,7 +212,7 @@ RingSliceSection ring_slice_section(const Case& ring, const Collection& col) {
                 return v ? std::optional(*v * k.scale) : std::nullopt;
             };
             if (!r.scalar(k.key) && !s.scalar(k.key)) continue;  // neither run has it (older results)
-            add_row(sec.table, p->id, k.label, scaled(r, false), scaled(r, true), scaled(s, false), scaled(s, true),
+            add_row(part.table, p->id, k.label, scaled(r, false), scaled(r, true), scaled(s, false), scaled(s, true),
                     both);
         }
         std::string why_r, why_s;
@@ -220,13 +220,13 @@ RingSliceSection ring_slice_section(const Case& ring, const Collection& col) {
         if (wr && ws) {
             const auto [a, sa] = outer_over_inner(*wr);
             const auto [b, sb] = outer_over_inner(*ws);
-            add_row(sec.table, p->id, "ν outer half / ν inner half", a, sa, b, sb, both);
+            add_row(part.table, p->id, "ν outer half / ν inner half", a, sa, b, sb, both);
         }
         for (const auto* why : {&why_r, &why_s})
-            if (!why->empty()) sec.notes.push_back(fmt::format("point {}: {}", p->id, *why));
-        add_figures(sec, *p, r, s, wr, ws);
+            if (!why->empty()) part.notes.push_back(fmt::format("point {}: {}", p->id, *why));
+        add_figures(part, *p, r, s, wr, ws);
     }
-    return sec;
+    return part;
 }
 
 std::optional<std::filesystem::path> slice_results_root(const Case& ring) {
@@ -235,7 +235,7 @@ std::optional<std::filesystem::path> slice_results_root(const Case& ring) {
     try {
         return results_root(load_case(ring.dir / slice_case, *ring.schema), RunOptions{});  // as collect() below
     } catch (const Error&) {
-        return std::nullopt;  // ring_slice_section says why in the report
+        return std::nullopt;  // ring_slice_part says why in the report
     }
 }
 

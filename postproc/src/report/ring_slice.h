@@ -16,19 +16,19 @@ namespace granlub::postproc {
 
 inline constexpr const char* kRingSolver = "dem";  // the engine that runs the whole ring
 
-struct RingSliceSection {
+struct RingSlicePart {
     std::string slice_case;          // as [report] slice_case gives it
     std::vector<std::string> notes;  // what could not be compared, and why
     Table table;                     // per point and quantity: ring, slice, difference in standard errors
     std::vector<Figure> figures;     // per compared point: across the width and across the gap
 };
 
-// Nothing to show (no slice_case): an empty section with an empty slice_case. A slice case that
+// Nothing to show (no slice_case): an empty part with an empty slice_case. A slice case that
 // cannot be read, or points without steady results on both sides, are notes, not errors: the
 // rest of the report stands.
-RingSliceSection ring_slice_section(const Case& ring, const Collection& col);
+RingSlicePart ring_slice_part(const Case& ring, const Collection& col);
 
-// The slice case's results folder that ring_slice_section reads, when [report] slice_case names a
+// The slice case's results folder that ring_slice_part reads, when [report] slice_case names a
 // case that loads: compare holds its dem results locked (shared) while it reads them.
 std::optional<std::filesystem::path> slice_results_root(const Case& ring);
 

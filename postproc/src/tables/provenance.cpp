@@ -22,7 +22,7 @@ void flatten(const nlohmann::json& j, const std::string& prefix, std::map<std::s
 
 }  // namespace
 
-void provenance_section(Report& rep, const Collection& col) {
+void provenance_part(Report& rep, const Collection& col) {
     Table prov;
     prov.header = {"solver", "point", "granlub", "written (UTC)", "seed", "case hash", "inputs hash"};
     for (const OperatingPoint* p : col.points)

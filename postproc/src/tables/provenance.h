@@ -6,6 +6,6 @@
 
 namespace granlub::postproc {
 
-void provenance_section(Report& rep, const Collection& col);
+void provenance_part(Report& rep, const Collection& col);
 
 }  // namespace granlub::postproc

@@ -66,7 +66,7 @@ struct ParticleReductionInputs {
     double solids_volume;              // m^3, the grains' volume (particles.h, solids_volume)
     double simulated_s;                // the run's simulated time (for the transient message)
     double time_step = 0;              // s: the decorrelation time in seconds (run.wall_stress_blocks)
-    const CrossSection* section = nullptr;  // the same snapshots over y x z, when recorded
+    const CrossSection* cross_section = nullptr;  // the same snapshots over y x z, when recorded
     double plate_start = 0;            // m, where the plate started (0: box.gap)
     // slip is taken at the first station whose centre is at least this far from the wall's plane
     // (a rough wall: its bumps' tops, wall_bumps.h; 0: the station next to the plane)
@@ -75,7 +75,7 @@ struct ParticleReductionInputs {
 
 struct ParticleReduction {
     Profile profile;
-    Profile section;     // y x z over the same snapshots (cross_section.h); empty when not recorded
+    Profile cross_section;  // y x z over the same snapshots (cross_section.h); empty when not recorded
     std::map<std::string, Scalar> outputs;
     nlohmann::json run;  // steady-state facts, status, and under load run.load_control
     std::string line;    // the one-line console report

@@ -58,7 +58,9 @@ struct Scalar {
 
 // The tables a point's run may write beside profile.csv, named here so that the results model
 // (which checks that all of a point's files come from one run) needs nothing of the writers:
-inline constexpr const char* kSectionFile = "section.csv";             // cross_section.h
+// kSectionFile holds the cross-section (cross_section.h) and is named after its file, section.csv,
+// a format of its own (docs/architecture.md, "Results").
+inline constexpr const char* kSectionFile = "section.csv";
 inline constexpr const char* kWidthProfileFile = "width_profile.csv";  // CrossSection::width_profile
 inline constexpr const char* kGapFile = "gap.csv";                     // the plate history (load_control.h)
 
