@@ -33,6 +33,52 @@ void resolve_wall_energy(const Section& sec, Settings& s) {
                                     "allowed: remove {}, or wall_energy = \"gkl_r8\"",
                                     k, s.wall_energy_source, k));
 }
+
+// [continuum] contact_stress (docs/continuum-model.md §2.9): every constant required with it and refused without
+// it; its nu_c is g0's nu_max. Fr stays in Pa here; problem_for divides it by each point's P_y.
+void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, double numax) {
+    static const std::vector<std::pair<const char*, const char*>> keys = {
+        {"contact_coefficient", "Fr, Pa"},
+        {"contact_onset_fraction", "nu_min"},
+        {"contact_exponent_onset", "n"},
+        {"contact_exponent_jamming", "m"},
+        {"contact_friction", "mu_c"}};
+    const std::string& model = sec.string("contact_stress");
+    if (model == "none") {
+        for (const auto& [k, what] : keys)
+            if (sec.has(k))
+                sec.fail(k, fmt::format("{} is a constant ({}) of contact_stress = \"johnson_jackson\", but "
+                                        "contact_stress = \"none\" (allowed: remove it, or contact_stress = "
+                                        "\"johnson_jackson\")",
+                                        k, what));
+        return;
+    }
+    for (const auto& [k, what] : keys)
+        if (!sec.has(k))
+            sec.fail("contact_stress", fmt::format("contact_stress = \"{}\" needs its constant {} ({}); it has no "
+                                                   "default (to be fitted on a bulk-rheology table): set {}",
+                                                   model, k, what, k));
+    ContactStress& cs = s.contact;
+    cs.coefficient = sec.real("contact_coefficient");
+    cs.onset = sec.real("contact_onset_fraction");
+    cs.n = sec.real("contact_exponent_onset");
+    cs.m = sec.real("contact_exponent_jamming");
+    cs.friction = sec.real("contact_friction");
+    cs.jamming = numax;
+    if (!(cs.onset < numax))
+        sec.fail("contact_onset_fraction",
+                 fmt::format("contact_onset_fraction = {} is not below nu_c = {} (g0's nu_max, [continuum] "
+                             "max_solid_fraction or [cell] max_solid_fraction); allowed: below it",
+                             cs.onset, numax));
+    if (s.method == Method::Shooting)
+        sec.fail("method", "method = \"shooting\" has no contact stress (contact_stress); allowed: \"fv\"");
+    for (const OperatingPoint& p : c.points)
+        if (p.control != Control::Load)
+            sec.fail("contact_stress", fmt::format("contact_stress needs each point's load (its pressure over P_y), but "
+                                                   "point {} has [operating] control = fill (allowed: control = "
+                                                   "\"load\", or contact_stress = \"none\")",
+                                                   p.id));
+}
 }  // namespace
 
 Settings resolve_settings(const Case& c) {
@@ -95,6 +141,7 @@ Settings resolve_settings(const Case& c) {
     s.closures = std::make_shared<Closures>(lp, g0, family);
     s.slip_dissipation = sec.real("slip_dissipation");
     resolve_wall_energy(sec, s);
+    resolve_contact_stress(c, sec, s, numax);
     s.gap_from_inventory = sec.string("gap") == "inventory";
     if (s.gap_from_inventory) {
         for (const OperatingPoint& p : c.points)
@@ -175,6 +222,11 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
     const Section& sec = c.section("continuum");
     Problem q;
     q.closures = s.closures;
+    if (s.contact.active()) {  // pi_c = p_c/P_y at this point's load (§2.9)
+        ContactStress cs = s.contact;
+        cs.coefficient /= p.normal_stress;
+        q.closures = std::make_shared<Closures>(s.closures->with_contact(cs));
+    }
     q.Lambda = (c.cell.gap - bump_offset(c, s, p)) / c.grains.diameter;  // the continuum's own domain
     q.mode = p.control == Control::Load ? (s.gap_from_inventory ? Mode::Inventory : Mode::Load) : Mode::Fill;
     // the grains the particle solvers insert: solid_fraction over the gap between the bumps' centres
@@ -273,6 +325,13 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
     m.run["g0"] = s.g0_name;
     m.run["wall_model"] = s.wall_name;
+    if (s.contact.active())
+        m.run["contact_stress"] = {{"model", "johnson_jackson"}, {"coefficient_Pa", s.contact.coefficient},
+                                   {"onset_fraction", s.contact.onset}, {"jamming_fraction", s.contact.jamming},
+                                   {"exponent_onset", s.contact.n}, {"exponent_jamming", s.contact.m},
+                                   {"friction", s.contact.friction}};
+    else
+        m.run["contact_stress"] = "none";
     m.run["wall_energy"] = {{"convention", s.wall_energy == WallEnergy::GklR8 ? "gkl_r8" : "slip_work"},
                             {"source", s.wall_energy_source}};
     m.run["closures"] = s.closures_name;
@@ -292,6 +351,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
                               {"wall_dissipation_W_m2", P * U * eb.wall_dissipation},
                               {"wall_collisional_W_m2", P * U * eb.wall_collisional},
                               {"wall_unreturned_slip_work_W_m2", P * U * eb.wall_unreturned_slip_work},
+                              {"contact_dissipation_W_m2", P * U * eb.contact_dissipation},
                               {"relative_defect", eb.relative_defect()}};
     m.run["cells"] = s.solver.cells;
     m.run["body_forces"] = "not modelled: GKL has p_yy uniform across the gap (S&T 2001 Eq. 6b)";
