@@ -79,7 +79,7 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
             return 0.5 * (pa + pb) * cs->sign(S((ub - ua) / h));
         };
         if (kind == Kind::Interior) {
-            Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - face(l.pcm, l.pcc, l.um, l.uc)) / h;
+            Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - face(l.pcm, l.pcc, l.um, l.uc));  // Ru is a flux difference
         } else if (kind == Kind::Bottom) {
             const S du = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(1.0 - l.uc), L, l.Pi).du;
             Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - l.pcc * cs->sign(du));

@@ -121,16 +121,17 @@ EnergyBudget energy_budget(const Problem& p0, const Solution& s) {
     EnergyBudget b;
     b.wall_work = std::sqrt(Pi) / L * tau_hat;
     // The contact stress's work (§2.9), dissipated in the contacts: mu_c pi_c u^' sgn_eps(u^') (-> |u^'|) across the
-    // gap and mu_c pi_c |sgn_eps(u^'_w)| |slip| at each wall, per P U.
+    // gap, summed over the faces as the FV momentum flux has it (face pi_c the node mean, u^' the face difference),
+    // and mu_c pi_c |sgn_eps(u^'_w)| |slip| at each wall, per P U.
     const ContactStress& cs = p.closures->contact();
     if (cs.active() && cs.friction > 0) {
         const double mu_c = cs.friction;
         const double du0 = wall_du(p, false, s.u.front(), s.nu.front()), du1 = wall_du(p, true, s.u.back(), s.nu.back());
         b.wall_work += mu_c * cs.ratio(s.nu.front()) * std::abs(cs.sign(du0));
         double bulk = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double du = i == 0 ? du0 : i + 1 == n ? du1 : (s.u[i + 1] - s.u[i - 1]) / (2 * h);
-            bulk += (i == 0 || i + 1 == n ? 0.5 : 1.0) * h * cs.ratio(s.nu[i]) * du * cs.sign(du);
+        for (std::size_t i = 0; i + 1 < n; ++i) {
+            const double du = (s.u[i + 1] - s.u[i]) / h;
+            bulk += h * 0.5 * (cs.ratio(s.nu[i]) + cs.ratio(s.nu[i + 1])) * du * cs.sign(du);
         }
         b.contact_dissipation = mu_c * (bulk + cs.ratio(s.nu.front()) * std::abs(cs.sign(du0)) * (1.0 - s.u.front()) +
                                         cs.ratio(s.nu.back()) * std::abs(cs.sign(du1)) * s.u.back());
