@@ -411,3 +411,66 @@ BOOST_AUTO_TEST_CASE(inventory_gap_and_the_ordered_label) {
     BOOST_TEST(contains(so.run.at("status_reason").get<std::string>(), "ordering_fraction"));
     BOOST_TEST(read_summary(tmp2.path / "continuum" / "U2.8" / "summary.json").run.at("status") == "steady");
 }
+
+// [continuum] contact_stress (docs/continuum-model.md §2.9): no default constants, each one required with the branch
+// and refused without it, out-of-range values and the unsupported fill control / shooting method refused naming the
+// key; with its constants the summary records them and the contacts' share of the work.
+BOOST_AUTO_TEST_CASE(contact_stress_needs_its_constants_and_says_what_is_allowed) {
+    const std::string all = "contact_coefficient = 0.05\ncontact_onset_fraction = 0.5\ncontact_exponent_onset = 2\n"
+                            "contact_exponent_jamming = 5\ncontact_friction = 0.2\n";
+    const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
+        try {
+            continuum::resolve_settings(parse(extra, base));
+        } catch (const CaseError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const std::string branch = "[continuum]\ncontact_stress = \"johnson_jackson\"\n";
+    BOOST_TEST(settings_error(branch + all).empty());
+    for (const char* k : {"contact_coefficient", "contact_onset_fraction", "contact_exponent_onset",
+                          "contact_exponent_jamming", "contact_friction"}) {
+        std::string without = all;
+        without.erase(without.find(k), without.find('\n', without.find(k)) - without.find(k) + 1);
+        const std::string e = settings_error(branch + without);
+        BOOST_TEST(contains(e, "contact_stress"), e);
+        BOOST_TEST(contains(e, k), e);
+        // and a constant without the branch
+        const std::string line = all.substr(all.find(k), all.find('\n', all.find(k)) - all.find(k) + 1);
+        const std::string f = settings_error("[continuum]\n" + line);
+        BOOST_TEST(contains(f, k), f);
+        BOOST_TEST(contains(f, "johnson_jackson"), f);
+    }
+    std::string e = case_error("[continuum]\ncontact_coefficient = -1\n");
+    BOOST_TEST(contains(e, "contact_coefficient"), e);
+    e = case_error("[continuum]\ncontact_exponent_jamming = 0\n");
+    BOOST_TEST(contains(e, "contact_exponent_jamming"), e);
+    BOOST_TEST(contains(e, "0.1"), e);
+    e = case_error("[continuum]\ncontact_friction = 3\n");
+    BOOST_TEST(contains(e, "contact_friction"), e);
+    e = case_error("[continuum]\ncontact_stress = \"schaeffer\"\n");
+    BOOST_TEST(contains(e, "contact_stress"), e);
+    BOOST_TEST(contains(e, "johnson_jackson"), e);
+    // nu_min must lie below nu_c (max_solid_fraction = 0.65 here)
+    std::string high = all;
+    high.replace(high.find("contact_onset_fraction = 0.5"), 28, "contact_onset_fraction = 0.7");
+    e = settings_error(branch + high);
+    BOOST_TEST(contains(e, "contact_onset_fraction"), e);
+    BOOST_TEST(contains(e, "0.65"), e);
+    e = settings_error(branch + all + "method = \"shooting\"\n");
+    BOOST_TEST(contains(e, "method"), e);
+    std::string fill(kCase);
+    fill = fill.substr(0, fill.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
+    e = settings_error(branch + all, fill);
+    BOOST_TEST(contains(e, "control"), e);
+    BOOST_TEST(contains(e, "contact_stress"), e);
+    // the summary names the branch and its constants, and books the contacts' dissipation
+    const Case c = parse(branch + all);
+    const auto r = continuum::solve_point(c, c.points[0], continuum::resolve_settings(c));
+    BOOST_TEST(r.summary.run.at("contact_stress").at("model") == "johnson_jackson");
+    BOOST_TEST(r.summary.run.at("contact_stress").at("friction").get<double>() == 0.2);
+    BOOST_TEST(r.summary.run.at("energy_budget").at("contact_dissipation_W_m2").get<double>() > 0.0);
+    const Case none = parse("");
+    const auto n = continuum::solve_point(none, none.points[0], continuum::resolve_settings(none));
+    BOOST_TEST(n.summary.run.at("contact_stress") == "none");
+}
