@@ -301,7 +301,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
 
     PointResult r;
     std::vector<double> T_over_U2(sol.nodes());
-    for (std::size_t i = 0; i < sol.nodes(); ++i) T_over_U2[i] = 1.0 / (sol.Pi * s.closures->state(sol.nu[i]).fp.v);
+    // q's closures: with a contact stress T = (P - p_c)/(rho_p f_p), its f_p the effective one (§2.9)
+    for (std::size_t i = 0; i < sol.nodes(); ++i) T_over_U2[i] = 1.0 / (sol.Pi * q.closures->state(sol.nu[i]).fp.v);
     r.profile.add("y_over_H", sol.y).add("u_over_U", sol.u).add("solid_fraction", sol.nu)
         .add("temperature_over_U2", T_over_U2);
 
@@ -344,7 +345,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
                                {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
                                {"top", wall_roughness(c, s, p, p.top, "top")}};
     m.run["lubrication"] = lubrication_record(inertial, sol.nu[ic]);  // I and nu at the same node, mid-gap
-    m.run["homogeneous_shear"] = homogeneous_record(*s.closures, inertial, o.tau_top);
+    m.run["homogeneous_shear"] = homogeneous_record(*q.closures, inertial, o.tau_top);  // with the contact stress
     const EnergyBudget eb = energy_budget(q, sol);
     m.run["energy_budget"] = {{"wall_work_W_m2", P * U * eb.wall_work},
                               {"bulk_dissipation_W_m2", P * U * eb.bulk_dissipation},

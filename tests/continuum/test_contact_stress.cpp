@@ -66,6 +66,7 @@ BOOST_AUTO_TEST_CASE(homogeneous_shear_reaches_mu_c_at_nu_P) {
     BOOST_TEST(nuP < 0.61);
     const Closures base = *make_closures("ogawa", 0.9);
     const double mu_kt = simple_shear_at_nu(base, nuP).stress_ratio;
+    BOOST_TEST_MESSAGE("kinetic mu at nu_P = " << nuP << ": " << mu_kt);
     BOOST_TEST(mu_kt > 0.25);
     BOOST_TEST(mu_kt < 0.35);
     for (double mu_c : {0.2, 0.36}) {
