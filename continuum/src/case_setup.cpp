@@ -34,6 +34,16 @@ void resolve_wall_energy(const Section& sec, Settings& s) {
                                     k, s.wall_energy_source, k));
 }
 
+// A choice that needs each point's load: refuse fill control, naming the key, the point and the alternative.
+void refuse_fill_control(const Case& c, const Section& sec, const char* key, const std::string& why,
+                         const std::string& alternative) {
+    for (const OperatingPoint& p : c.points)
+        if (p.control != Control::Load)
+            sec.fail(key, fmt::format("{}, but point {} has [operating] control = fill (allowed: control = \"load\", "
+                                      "or {})",
+                                      why, p.id, alternative));
+}
+
 // [continuum] contact_stress (docs/continuum-model.md §2.9): every constant required with it and refused without
 // it; its nu_c is g0's nu_max. Fr stays in Pa here; problem_for divides it by each point's P_y.
 void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, double numax) {
@@ -72,12 +82,8 @@ void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, doub
                              cs.onset, numax));
     if (s.method == Method::Shooting)
         sec.fail("method", "method = \"shooting\" has no contact stress (contact_stress); allowed: \"fv\"");
-    for (const OperatingPoint& p : c.points)
-        if (p.control != Control::Load)
-            sec.fail("contact_stress", fmt::format("contact_stress needs each point's load (its pressure over P_y), but "
-                                                   "point {} has [operating] control = fill (allowed: control = "
-                                                   "\"load\", or contact_stress = \"none\")",
-                                                   p.id));
+    refuse_fill_control(c, sec, "contact_stress", "contact_stress needs each point's load (its pressure over P_y)",
+                        "contact_stress = \"none\"");
 }
 }  // namespace
 
@@ -144,12 +150,7 @@ Settings resolve_settings(const Case& c) {
     resolve_contact_stress(c, sec, s, numax);
     s.gap_from_inventory = sec.string("gap") == "inventory";
     if (s.gap_from_inventory) {
-        for (const OperatingPoint& p : c.points)
-            if (p.control != Control::Load)
-                sec.fail("gap", fmt::format("gap = \"inventory\" solves the gap under a given load, but point {} has "
-                                            "[operating] control = fill (allowed: control = \"load\", or gap = "
-                                            "\"fixed\")",
-                                            p.id));
+        refuse_fill_control(c, sec, "gap", "gap = \"inventory\" solves the gap under a given load", "gap = \"fixed\"");
         if (s.method == Method::Shooting)
             sec.fail("method", "method = \"shooting\" cannot solve for the gap (gap = \"inventory\"); allowed: \"fv\"");
     }

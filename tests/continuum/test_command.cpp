@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include <unistd.h>
 
@@ -73,6 +74,22 @@ struct TempDir {
     }
     ~TempDir() { fs::remove_all(path); }
 };
+
+// The error resolve_settings raises for the case with `extra` appended, or "".
+std::string settings_error(const std::string& extra, const std::string& base = kCase) {
+    try {
+        continuum::resolve_settings(parse(extra, base));
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// The default case with one point under fill control.
+std::string fill_case() {
+    const std::string base(kCase);
+    return base.substr(0, base.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
+}
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
@@ -249,14 +266,6 @@ BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
 
 // Choices that cannot go together stop before anything runs (exit 2 from the command line), naming the key.
 BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
-    const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
-        try {
-            continuum::resolve_settings(parse(extra, base));
-        } catch (const CaseError& e) {
-            return e.what();
-        }
-        return "";
-    };
     std::string e = settings_error("[continuum]\nclosures = \"garzo_dufty\"\nviscosity_alpha = 1.6\n");
     BOOST_TEST(contains(e, "viscosity_alpha"), e);
     BOOST_TEST(contains(e, "lun84"), e);
@@ -272,8 +281,7 @@ BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
     BOOST_TEST(contains(e, "correlation_constant"), e);
     BOOST_TEST(contains(e, "jenkins_berzi"), e);
     BOOST_TEST(settings_error("[continuum]\ncorrelation_length = \"jenkins_berzi\"\ncorrelation_constant = 0.5\n").empty());
-    std::string fill(kCase);
-    fill = fill.substr(0, fill.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
+    const std::string fill = fill_case();
     e = settings_error("[continuum]\ngap = \"inventory\"\n", fill);
     BOOST_TEST(contains(e, "gap"), e);
     BOOST_TEST(contains(e, "control"), e);
@@ -418,14 +426,6 @@ BOOST_AUTO_TEST_CASE(inventory_gap_and_the_ordered_label) {
 BOOST_AUTO_TEST_CASE(contact_stress_needs_its_constants_and_says_what_is_allowed) {
     const std::string all = "contact_coefficient = 0.05\ncontact_onset_fraction = 0.5\ncontact_exponent_onset = 2\n"
                             "contact_exponent_jamming = 5\ncontact_friction = 0.2\n";
-    const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
-        try {
-            continuum::resolve_settings(parse(extra, base));
-        } catch (const CaseError& e) {
-            return e.what();
-        }
-        return "";
-    };
     const std::string branch = "[continuum]\ncontact_stress = \"johnson_jackson\"\n";
     BOOST_TEST(settings_error(branch + all).empty());
     for (const char* k : {"contact_coefficient", "contact_onset_fraction", "contact_exponent_onset",
@@ -441,16 +441,16 @@ BOOST_AUTO_TEST_CASE(contact_stress_needs_its_constants_and_says_what_is_allowed
         BOOST_TEST(contains(f, k), f);
         BOOST_TEST(contains(f, "johnson_jackson"), f);
     }
-    std::string e = case_error("[continuum]\ncontact_coefficient = -1\n");
-    BOOST_TEST(contains(e, "contact_coefficient"), e);
-    e = case_error("[continuum]\ncontact_exponent_jamming = 0\n");
-    BOOST_TEST(contains(e, "contact_exponent_jamming"), e);
-    BOOST_TEST(contains(e, "0.1"), e);
-    e = case_error("[continuum]\ncontact_friction = 3\n");
-    BOOST_TEST(contains(e, "contact_friction"), e);
-    e = case_error("[continuum]\ncontact_stress = \"schaeffer\"\n");
-    BOOST_TEST(contains(e, "contact_stress"), e);
-    BOOST_TEST(contains(e, "johnson_jackson"), e);
+    // out of range or unknown: the key and what is allowed
+    for (const auto& [line, key, allowed] : {std::tuple{"contact_coefficient = -1", "contact_coefficient", "> 0"},
+                                             {"contact_exponent_jamming = 0", "contact_exponent_jamming", "0.1"},
+                                             {"contact_friction = 3", "contact_friction", "2"},
+                                             {"contact_stress = \"schaeffer\"", "contact_stress", "johnson_jackson"}}) {
+        const std::string x = case_error(fmt::format("[continuum]\n{}\n", line));
+        BOOST_TEST(contains(x, key), x);
+        BOOST_TEST(contains(x, allowed), x);
+    }
+    std::string e;
     // nu_min must lie below nu_c (max_solid_fraction = 0.65 here)
     std::string high = all;
     high.replace(high.find("contact_onset_fraction = 0.5"), 28, "contact_onset_fraction = 0.7");
@@ -459,8 +459,7 @@ BOOST_AUTO_TEST_CASE(contact_stress_needs_its_constants_and_says_what_is_allowed
     BOOST_TEST(contains(e, "0.65"), e);
     e = settings_error(branch + all + "method = \"shooting\"\n");
     BOOST_TEST(contains(e, "method"), e);
-    std::string fill(kCase);
-    fill = fill.substr(0, fill.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
+    const std::string fill = fill_case();
     e = settings_error(branch + all, fill);
     BOOST_TEST(contains(e, "control"), e);
     BOOST_TEST(contains(e, "contact_stress"), e);
