@@ -1,6 +1,7 @@
 // `granlub continuum` end to end on small in-memory cases: result files, resume, --point,
 // determinism, the shooting method key, and the bad-input paths (clear CaseError/SolverError).
 #define BOOST_TEST_MODULE continuum_command
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -469,6 +470,12 @@ BOOST_AUTO_TEST_CASE(contact_stress_needs_its_constants_and_says_what_is_allowed
     BOOST_TEST(r.summary.run.at("contact_stress").at("model") == "johnson_jackson");
     BOOST_TEST(r.summary.run.at("contact_stress").at("friction").get<double>() == 0.2);
     BOOST_TEST(r.summary.run.at("energy_budget").at("contact_dissipation_W_m2").get<double>() > 0.0);
+    // T = (P - p_c)/(rho_p f_p) with the kinetic f_p (docs/continuum-model.md §2.9), at mid-gap
+    const double nu = r.summary.value("solid_fraction_centre"), P = 5.5e3;
+    const double pc = 0.05 * std::pow(nu - 0.5, 2) / std::pow(0.65 - nu, 5);
+    const double fp = continuum::resolve_settings(parse("")).closures->state(nu).fp.v;
+    BOOST_TEST(pc > 0.1 * P);
+    BOOST_CHECK_CLOSE_FRACTION(r.summary.value("temperature_centre"), (P - pc) / (2550.0 * fp), 1e-12);
     const Case none = parse("");
     const auto n = continuum::solve_point(none, none.points[0], continuum::resolve_settings(none));
     BOOST_TEST(n.summary.run.at("contact_stress") == "none");
