@@ -33,6 +33,58 @@ void resolve_wall_energy(const Section& sec, Settings& s) {
                                     "allowed: remove {}, or wall_energy = \"gkl_r8\"",
                                     k, s.wall_energy_source, k));
 }
+
+// A choice that needs each point's load: refuse fill control, naming the key, the point and the alternative.
+void refuse_fill_control(const Case& c, const Section& sec, const char* key, const std::string& why,
+                         const std::string& alternative) {
+    for (const OperatingPoint& p : c.points)
+        if (p.control != Control::Load)
+            sec.fail(key, fmt::format("{}, but point {} has [operating] control = fill (allowed: control = \"load\", "
+                                      "or {})",
+                                      why, p.id, alternative));
+}
+
+// [continuum] contact_stress (docs/continuum-model.md §2.9): every constant required with it and refused without
+// it; its nu_c is g0's nu_max. Fr stays in Pa here; problem_for divides it by each point's P_y.
+void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, double numax) {
+    static const std::vector<std::pair<const char*, const char*>> keys = {
+        {"contact_coefficient", "Fr, Pa"},
+        {"contact_onset_fraction", "nu_min"},
+        {"contact_exponent_onset", "n"},
+        {"contact_exponent_jamming", "m"},
+        {"contact_friction", "mu_c"}};
+    const std::string& model = sec.string("contact_stress");
+    if (model == "none") {
+        for (const auto& [k, what] : keys)
+            if (sec.has(k))
+                sec.fail(k, fmt::format("{} is a constant ({}) of contact_stress = \"johnson_jackson\", but "
+                                        "contact_stress = \"none\" (allowed: remove it, or contact_stress = "
+                                        "\"johnson_jackson\")",
+                                        k, what));
+        return;
+    }
+    for (const auto& [k, what] : keys)
+        if (!sec.has(k))
+            sec.fail("contact_stress", fmt::format("contact_stress = \"{}\" needs its constant {} ({}); it has no "
+                                                   "default (to be fitted on a bulk-rheology table): set {}",
+                                                   model, k, what, k));
+    ContactStress& cs = s.contact;
+    cs.coefficient = sec.real("contact_coefficient");
+    cs.onset = sec.real("contact_onset_fraction");
+    cs.n = sec.real("contact_exponent_onset");
+    cs.m = sec.real("contact_exponent_jamming");
+    cs.friction = sec.real("contact_friction");
+    cs.jamming = numax;
+    if (!(cs.onset < numax))
+        sec.fail("contact_onset_fraction",
+                 fmt::format("contact_onset_fraction = {} is not below nu_c = {} (g0's nu_max, [continuum] "
+                             "max_solid_fraction or [cell] max_solid_fraction); allowed: below it",
+                             cs.onset, numax));
+    if (s.method == Method::Shooting)
+        sec.fail("method", "method = \"shooting\" has no contact stress (contact_stress); allowed: \"fv\"");
+    refuse_fill_control(c, sec, "contact_stress", "contact_stress needs each point's load (its pressure over P_y)",
+                        "contact_stress = \"none\"");
+}
 }  // namespace
 
 Settings resolve_settings(const Case& c) {
@@ -95,14 +147,10 @@ Settings resolve_settings(const Case& c) {
     s.closures = std::make_shared<Closures>(lp, g0, family);
     s.slip_dissipation = sec.real("slip_dissipation");
     resolve_wall_energy(sec, s);
+    resolve_contact_stress(c, sec, s, numax);
     s.gap_from_inventory = sec.string("gap") == "inventory";
     if (s.gap_from_inventory) {
-        for (const OperatingPoint& p : c.points)
-            if (p.control != Control::Load)
-                sec.fail("gap", fmt::format("gap = \"inventory\" solves the gap under a given load, but point {} has "
-                                            "[operating] control = fill (allowed: control = \"load\", or gap = "
-                                            "\"fixed\")",
-                                            p.id));
+        refuse_fill_control(c, sec, "gap", "gap = \"inventory\" solves the gap under a given load", "gap = \"fixed\"");
         if (s.method == Method::Shooting)
             sec.fail("method", "method = \"shooting\" cannot solve for the gap (gap = \"inventory\"); allowed: \"fv\"");
     }
@@ -175,6 +223,11 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
     const Section& sec = c.section("continuum");
     Problem q;
     q.closures = s.closures;
+    if (s.contact.active()) {  // pi_c = p_c/P_y at this point's load (§2.9)
+        ContactStress cs = s.contact;
+        cs.coefficient /= p.normal_stress;
+        q.closures = std::make_shared<Closures>(s.closures->with_contact(cs));
+    }
     q.Lambda = (c.cell.gap - bump_offset(c, s, p)) / c.grains.diameter;  // the continuum's own domain
     q.mode = p.control == Control::Load ? (s.gap_from_inventory ? Mode::Inventory : Mode::Load) : Mode::Fill;
     // the grains the particle solvers insert: solid_fraction over the gap between the bumps' centres
@@ -249,7 +302,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
 
     PointResult r;
     std::vector<double> T_over_U2(sol.nodes());
-    for (std::size_t i = 0; i < sol.nodes(); ++i) T_over_U2[i] = 1.0 / (sol.Pi * s.closures->state(sol.nu[i]).fp.v);
+    // q's closures: with a contact stress T = (P - p_c)/(rho_p f_p), its f_p the effective one (§2.9)
+    for (std::size_t i = 0; i < sol.nodes(); ++i) T_over_U2[i] = 1.0 / (sol.Pi * q.closures->state(sol.nu[i]).fp.v);
     r.profile.add("y_over_H", sol.y).add("u_over_U", sol.u).add("solid_fraction", sol.nu)
         .add("temperature_over_U2", T_over_U2);
 
@@ -273,6 +327,13 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
     m.run["g0"] = s.g0_name;
     m.run["wall_model"] = s.wall_name;
+    if (s.contact.active())
+        m.run["contact_stress"] = {{"model", "johnson_jackson"}, {"coefficient_Pa", s.contact.coefficient},
+                                   {"onset_fraction", s.contact.onset}, {"jamming_fraction", s.contact.jamming},
+                                   {"exponent_onset", s.contact.n}, {"exponent_jamming", s.contact.m},
+                                   {"friction", s.contact.friction}};
+    else
+        m.run["contact_stress"] = "none";
     m.run["wall_energy"] = {{"convention", s.wall_energy == WallEnergy::GklR8 ? "gkl_r8" : "slip_work"},
                             {"source", s.wall_energy_source}};
     m.run["closures"] = s.closures_name;
@@ -285,13 +346,14 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
                                {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
                                {"top", wall_roughness(c, s, p, p.top, "top")}};
     m.run["lubrication"] = lubrication_record(inertial, sol.nu[ic]);  // I and nu at the same node, mid-gap
-    m.run["homogeneous_shear"] = homogeneous_record(*s.closures, inertial, o.tau_top);
+    m.run["homogeneous_shear"] = homogeneous_record(*q.closures, inertial, o.tau_top);  // with the contact stress
     const EnergyBudget eb = energy_budget(q, sol);
     m.run["energy_budget"] = {{"wall_work_W_m2", P * U * eb.wall_work},
                               {"bulk_dissipation_W_m2", P * U * eb.bulk_dissipation},
                               {"wall_dissipation_W_m2", P * U * eb.wall_dissipation},
                               {"wall_collisional_W_m2", P * U * eb.wall_collisional},
                               {"wall_unreturned_slip_work_W_m2", P * U * eb.wall_unreturned_slip_work},
+                              {"contact_dissipation_W_m2", P * U * eb.contact_dissipation},
                               {"relative_defect", eb.relative_defect()}};
     m.run["cells"] = s.solver.cells;
     m.run["body_forces"] = "not modelled: GKL has p_yy uniform across the gap (S&T 2001 Eq. 6b)";

@@ -20,6 +20,7 @@ enum Slot { kUm = 0, kSm = 1, kUc = 2, kSc = 3, kUp = 4, kSp = 5, kLam = 6 };
 // Node closures with derivatives taken w.r.t. the logit unknown s.
 struct Node {
     double nu, dnu, M, dM, K, dK, C, dC;
+    double pc, dpc;  // the contact pressure over P_y and its s-derivative (0 without a contact stress, §2.9)
 };
 struct WallNode {
     double b5, db5, b6, db6, b7, db7, b8, db8;
@@ -29,18 +30,31 @@ struct WallNode {
 template <class S>
 struct Local {
     S um, uc, up, nm, nc, np, Mm, Mc, Mp, Km, Kc, Kp, Cc, Pi, L, b5, b6, b7, b8;
+    S pcm, pcc, pcp;  // contact pressure over P_y at the three nodes (§2.9)
 };
 
 enum class Kind { Interior, Bottom, Top };
 
 // Flux balance of node i's control volume (§6.1). Bottom/top are the wall half-cells.
+// The contact stress (§2.9) adds k pi_c sgn_eps(u^') to the signed momentum flux M u^' (k = mu_c Lambda/sqrt(Pi)),
+// at the faces (pi_c the node average, u^' the face difference) and at the walls (the wall node's pi_c and the
+// wall condition's u^': the wall's contact friction taken equal to the bulk's [ASSUMPTION], so that the kinetic
+// wall conditions balance the kinetic stress). cs = nullptr (no contact shear): the residual as without it.
 template <class S>
-void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, S& Ru, S& Rn) {
+void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, bool faces, const ContactStress* cs,
+                   S& Ru, S& Rn) {
     const S& L = l.L;
     const S L2 = L * L;
     if (kind == Kind::Interior) {
+        // The shear work at the node: M u^'^2 with the central u^', or with a contact stress the mean of the two
+        // faces' M u^'^2 (there conduction vanishes with T as nu -> nu_P, and the central difference would let odd
+        // and even nodes decouple).
         const S du = (l.up - l.um) / (2 * h);
-        const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
+        S src = l.Pi * l.Mc * du * du - L2 * l.Cc;  // (this order: bit for bit as without the branch)
+        if (faces) {
+            const S dup = (l.up - l.uc) / h, dum = (l.uc - l.um) / h;
+            src = l.Pi * 0.25 * ((l.Mc + l.Mp) * dup * dup + (l.Mm + l.Mc) * dum * dum) - L2 * l.Cc;
+        }
         Ru = (0.5 * (l.Mc + l.Mp) * (l.up - l.uc) - 0.5 * (l.Mm + l.Mc) * (l.uc - l.um)) / h;
         Rn = (0.5 * (l.Kc + l.Kp) * (l.np - l.nc) - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm)) / h - h * src;
     } else if (kind == Kind::Bottom) {
@@ -60,13 +74,32 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
         Ru = l.Mc * du - 0.5 * (l.Mm + l.Mc) * (l.uc - l.um) / h;
         Rn = l.Kc * dn - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm) / h - 0.5 * h * src;
     }
+    if (cs) {
+        using std::sqrt;
+        const S k = cs->friction * L / sqrt(l.Pi);
+        const auto face = [&](const S& pa, const S& pb, const S& ua, const S& ub) {
+            return 0.5 * (pa + pb) * cs->sign(S((ub - ua) / h));
+        };
+        if (kind == Kind::Interior) {
+            Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - face(l.pcm, l.pcc, l.um, l.uc));  // Ru is a flux difference
+        } else if (kind == Kind::Bottom) {
+            const S du = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(1.0 - l.uc), L, l.Pi).du;
+            Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - l.pcc * cs->sign(du));
+        } else {
+            const S du = -wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(-l.uc), L, l.Pi).du;
+            Ru = Ru + k * (l.pcc * cs->sign(du) - face(l.pcm, l.pcc, l.um, l.uc));
+        }
+    }
 }
 
 class Fv {
 public:
     Fv(const Problem& p, int cells)
         : p_(p), N_(static_cast<std::size_t>(cells)), n_(N_ + 1), h_(1.0 / cells), cap_(p.closures->cap()),
-          fill_(p.mode == Mode::Fill), inventory_(p.mode == Mode::Inventory), nodes_(n_), F_(n_), Fl_(n_), x_(n_), y_(n_), J_(n_) {}
+          fill_(p.mode == Mode::Fill), inventory_(p.mode == Mode::Inventory),
+          contact_(p.closures->contact().active() && p.closures->contact().friction > 0 ? &p.closures->contact() : nullptr),
+          faces_(p.closures->contact().active()), nodes_(n_), F_(n_), Fl_(n_),
+          x_(n_), y_(n_), J_(n_) {}
 
     std::size_t nodes() const { return n_; }
     double h() const { return h_; }
@@ -88,7 +121,8 @@ public:
             const double nu = nu_of(s[i]);
             const double dnu = nu * (1.0 - nu / cap_);
             const auto c = node_coefficients(*p_.closures, nu);
-            nodes_[i] = {nu, dnu, c.M, c.dM * dnu, c.K, c.dK * dnu, c.C, c.dC * dnu};
+            const ContactStress& cs = p_.closures->contact();
+            nodes_[i] = {nu, dnu, c.M, c.dM * dnu, c.K, c.dK * dnu, c.C, c.dC * dnu, cs.ratio(nu), cs.dratio(nu) * dnu};
         }
         wall_[0] = wall_node(p_.bottom, nodes_[0]);
         wall_[1] = wall_node(p_.top, nodes_[N_]);
@@ -101,9 +135,10 @@ public:
             if (!jac) {
                 Local<double> l{u[im], u[i], u[ip], nodes_[im].nu, nodes_[i].nu, nodes_[ip].nu,
                                 nodes_[im].M, nodes_[i].M, nodes_[ip].M, nodes_[im].K, nodes_[i].K, nodes_[ip].K,
-                                nodes_[i].C, Pi, L, wn.b5, wn.b6, wn.b7, wn.b8};
+                                nodes_[i].C, Pi, L, wn.b5, wn.b6, wn.b7, wn.b8,
+                                nodes_[im].pc, nodes_[i].pc, nodes_[ip].pc};
                 double ru, rn;
-                node_residual(kind, l, w, h_, ru, rn);
+                node_residual(kind, l, w, h_, faces_, contact_, ru, rn);
                 F_[i] = {ru, rn};
             } else {
                 const Node& a = nodes_[im];
@@ -116,9 +151,10 @@ public:
                             D7::lifted(c.C, kSc, c.dC), D7::lifted(Pi, kLam, fill_ ? Pi : 0.0),
                             D7::lifted(L, kLam, inventory_ ? L : 0.0),
                             D7::lifted(wn.b5, kSc, wn.db5), D7::lifted(wn.b6, kSc, wn.db6),
-                            D7::lifted(wn.b7, kSc, wn.db7), D7::lifted(wn.b8, kSc, wn.db8)};
+                            D7::lifted(wn.b7, kSc, wn.db7), D7::lifted(wn.b8, kSc, wn.db8),
+                            D7::lifted(a.pc, kSm, a.dpc), D7::lifted(c.pc, kSc, c.dpc), D7::lifted(b.pc, kSp, b.dpc)};
                 D7 ru, rn;
-                node_residual(kind, l, w, h_, ru, rn);
+                node_residual(kind, l, w, h_, faces_, contact_, ru, rn);
                 F_[i] = {ru.v, rn.v};
                 const auto blk = [&](int su, int ss) {
                     Eigen::Matrix2d m;
@@ -144,6 +180,33 @@ public:
             norm = std::max(norm, std::abs(g_));
         }
         return norm;
+    }
+
+    // The largest difference between the exact Jacobian at (u, s) and central differences of the residual with
+    // steps `step` (Load mode: no bordering column), relative to max(1, |entry|); for tests (§2.4).
+    double jacobian_defect(const std::vector<double>& u, const std::vector<double>& s, double step) {
+        const double lam = std::log(p_.Pi);
+        evaluate(u, s, lam, true);
+        const detail::BlockTridiagonal J = J_;
+        double worst = 0;
+        for (std::size_t j = 0; j < n_; ++j) {
+            for (int k = 0; k < 2; ++k) {
+                std::vector<double> up = u, sp = s, um = u, sm = s;
+                (k == 0 ? up : sp)[j] += step;
+                (k == 0 ? um : sm)[j] -= step;
+                evaluate(up, sp, lam, false);
+                const std::vector<Eigen::Vector2d> Fp = F_;
+                evaluate(um, sm, lam, false);
+                for (std::size_t i = (j == 0 ? 0 : j - 1); i <= std::min(N_, j + 1); ++i) {
+                    const Eigen::Matrix2d& blk = i == j ? J.diag[i] : (i < j ? J.upper[i] : J.lower[i]);
+                    for (int r = 0; r < 2; ++r) {
+                        const double fd = (Fp[i][r] - F_[i][r]) / (2 * step), ex = blk(r, k);
+                        worst = std::max(worst, std::abs(fd - ex) / std::max(1.0, std::abs(ex)));
+                    }
+                }
+            }
+        }
+        return worst;
     }
 
     double mean_nu() const {
@@ -193,6 +256,8 @@ private:
     std::size_t N_, n_;
     double h_, cap_;
     bool fill_, inventory_;
+    const ContactStress* contact_;  // its shear (§2.9); nullptr without one or with mu_c = 0
+    bool faces_;  // shear work from the faces' gradients (with a contact stress)
     double L_ = 0;  // Lambda of the last evaluate()
     std::vector<Node> nodes_;
     WallNode wall_[2]{};
@@ -298,6 +363,15 @@ NewtonReport newton_fv(const Problem& p, const SolverSettings& st, Solution& sol
     return rep;
 }
 
+double fv_jacobian_defect(const Problem& p, const Solution& s, double step) {
+    if (p.mode != Mode::Load) throw Error("fv_jacobian_defect: Load mode only");
+    Fv fv(p, static_cast<int>(s.nodes() - 1));
+    const double cap = fv.cap();
+    std::vector<double> lg(s.nodes());
+    for (std::size_t i = 0; i < s.nodes(); ++i) lg[i] = std::log(s.nu[i] / (cap - s.nu[i]));
+    return fv.jacobian_defect(s.u, lg, step);
+}
+
 double fv_residual_norm(const Problem& p, const Solution& s) {
     Fv fv(p, static_cast<int>(s.nodes() - 1));
     const double cap = fv.cap();
@@ -324,9 +398,46 @@ std::string describe(const Problem& p) {
     return m.str();
 }
 
-}  // namespace
+// How a continuation adapts its step: grow it by 1.5 after a Newton solve of at most `easy` iterations, halve it
+// after one of more than `hard`; `headroom` > 0 moves each start below the next problem's cap by that fraction (the
+// contact stress's cap nu_P moves with t, and a start at the cap has a singular Jacobian in the logit unknown).
+struct StepPolicy {
+    int easy = 4, hard = 8;
+    double headroom = 0;
+    double first = 0.1;  // the first step in t
+};
 
-Solution solve_fv(const Problem& p, const SolverSettings& st) {
+// Adaptive continuation from the solution `s` of at(t) to at(1) (§6.1): the step grows after easy Newton solves
+// and halves after failed or hard ones. Returns false (with `rep` the last Newton report) when it stalls.
+template <class At>
+bool continue_to_target(const At& at, const SolverSettings& st, double t, Solution& s, int& total, int& steps,
+                        NewtonReport& rep, const StepPolicy& policy = {}) {
+    double dt = policy.first;
+    while (t < 1.0) {
+        if (++steps > st.max_continuation_steps || dt < 1e-5) return false;
+        const double tn = std::min(1.0, t + dt);
+        const Problem q = at(tn);
+        Solution trial = s;
+        if (policy.headroom > 0) {
+            const double top = q.closures->cap() * (1 - policy.headroom);
+            for (double& nu : trial.nu) nu = std::min(nu, top);
+        }
+        rep = newton_fv(q, st, trial);
+        total += rep.iterations;
+        if (rep.converged) {
+            s = std::move(trial);
+            t = tn;
+            if (rep.iterations <= policy.easy) dt *= 1.5;
+            else if (rep.iterations > policy.hard) dt *= 0.5;  // hard step: go slower next time
+        } else {
+            dt *= 0.5;
+        }
+    }
+    return true;
+}
+
+// Without a contact stress: Newton from the uniform-shear guess, else continuation in ln Lambda and ln Pi / mean nu.
+Solution solve_fv_kinetic(const Problem& p, const SolverSettings& st) {
     int total = 0;
     std::string first_why;
     double first_res = 0;
@@ -372,29 +483,62 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
           << "); try more [continuum] max_iterations or check the operating point";
         throw SolverError(m.str());
     }
-    double t = 0, dt = 0.1;
     int steps = 0;
-    while (t < 1.0) {
-        if (++steps > st.max_continuation_steps || dt < 1e-5) {
-            std::ostringstream m;
-            m << first_why << " (residual " << first_res << "); continuation stalled at " << describe(at(t))
-              << " after " << steps - 1 << " steps (last Newton residual " << rep.residual << ": " << rep.why
-              << "); try more [continuum] cells, a larger max_continuation_steps, or a less extreme operating point";
-            throw SolverError(m.str());
-        }
-        const double tn = std::min(1.0, t + dt);
-        Solution trial = s;
-        rep = newton_fv(at(tn), st, trial);
-        total += rep.iterations;
-        if (rep.converged) {
-            s = std::move(trial);
-            t = tn;
-            if (rep.iterations <= 4) dt *= 1.5;
-            else if (rep.iterations > 8) dt *= 0.5;  // hard step: go slower next time
-        } else {
-            dt *= 0.5;
-        }
+    if (!continue_to_target(at, st, 0.0, s, total, steps, rep)) {
+        std::ostringstream m;
+        m << first_why << " (residual " << first_res << "); continuation stalled before " << describe(p) << " after "
+          << steps - 1 << " steps (last Newton residual " << rep.residual << ": " << rep.why
+          << "); try more [continuum] cells, a larger max_continuation_steps, or a less extreme operating point";
+        throw SolverError(m.str());
     }
+    s.iterations = total;
+    s.continuation_steps = steps;
+    return s;
+}
+
+}  // namespace
+
+Solution solve_fv(const Problem& p, const SolverSettings& st) {
+    const ContactStress& cs = p.closures->contact();
+    if (!cs.active()) return solve_fv_kinetic(p, st);
+    // With a contact stress (§2.9), two continuations: the contact pressure at full strength without its shear
+    // (mu_c = 0; from the uniform-shear guess, or if that fails from the kinetic solution with the coefficient
+    // scaled by t from 0 to 1, the cap nu_P following), then the contact shear, mu_c scaled by t from 0 to 1.
+    const auto scaled = [&](double coefficient, double friction) {
+        ContactStress c = cs;
+        c.coefficient *= coefficient;
+        c.friction *= friction;
+        Problem q = p;
+        q.closures = std::make_shared<Closures>(p.closures->with_contact(c));
+        return q;
+    };
+    // Newton's iterations here are 5-7 at most steps (the residual's floor is near the tolerance): "easy" is 6;
+    // the whole way is tried first (it is enough on the cases measured), halved on failure.
+    const StepPolicy policy{6, 12, 1e-6, 1.0};
+    Solution s;
+    int total = 0, steps = 0;
+    NewtonReport rep;
+    const auto stalled = [&](const char* what) {
+        std::ostringstream m;
+        m << "the contact stress's continuation in " << what << " (§2.9) stalled before " << describe(p) << " after "
+          << steps << " steps (last Newton residual " << rep.residual << ": " << rep.why
+          << "); try a larger [continuum] max_continuation_steps or other contact_* constants";
+        return SolverError(m.str());
+    };
+    try {
+        s = solve_fv_kinetic(scaled(1.0, 0.0), st);
+        total = s.iterations;
+        steps = s.continuation_steps;
+    } catch (const SolverError&) {
+        s = solve_fv_kinetic(scaled(0.0, 0.0), st);
+        total = s.iterations;
+        steps = s.continuation_steps;
+        if (!continue_to_target([&](double t) { return scaled(t, 0.0); }, st, 0.0, s, total, steps, rep, policy))
+            throw stalled("its pressure");
+    }
+    if (cs.friction > 0 &&
+        !continue_to_target([&](double t) { return scaled(1.0, t); }, st, 0.0, s, total, steps, rep, policy))
+        throw stalled("its friction");
     s.iterations = total;
     s.continuation_steps = steps;
     return s;

@@ -68,8 +68,14 @@ Observables observe(const Problem& p0, const Solution& s) {
     o.du_bottom = wall_du(p, false, s.u.front(), s.nu.front());
     o.du_top = wall_du(p, true, s.u.back(), s.nu.back());
     const double scale = std::sqrt(s.Pi) / p.Lambda;
+    const ContactStress& cs = p.closures->contact();  // its shear mu_c pi_c adds to the kinetic one (§2.9)
+    const double mu_c = cs.active() ? cs.friction : 0.0;
     o.tau_bottom = scale * node_coefficients(*p.closures, o.nu_bottom).M * std::abs(o.du_bottom);
     o.tau_top = scale * node_coefficients(*p.closures, o.nu_top).M * std::abs(o.du_top);
+    if (mu_c > 0) {
+        o.tau_bottom += mu_c * cs.ratio(o.nu_bottom) * std::abs(cs.sign(o.du_bottom));
+        o.tau_top += mu_c * cs.ratio(o.nu_top) * std::abs(cs.sign(o.du_top));
+    }
     const auto T = [&](double nu) { return 1.0 / p.closures->state(nu).fp.v; };
     o.T_bottom = T(o.nu_bottom);
     o.T_top = T(o.nu_top);
@@ -114,6 +120,22 @@ EnergyBudget energy_budget(const Problem& p0, const Solution& s) {
     const double scale = 1.0 / (std::sqrt(Pi) * L);  // energy-equation units -> P U
     EnergyBudget b;
     b.wall_work = std::sqrt(Pi) / L * tau_hat;
+    // The contact stress's work (§2.9), dissipated in the contacts: mu_c pi_c u^' sgn_eps(u^') (-> |u^'|) across the
+    // gap, summed over the faces as the FV momentum flux has it (face pi_c the node mean, u^' the face difference),
+    // and mu_c pi_c |sgn_eps(u^'_w)| |slip| at each wall, per P U.
+    const ContactStress& cs = p.closures->contact();
+    if (cs.active() && cs.friction > 0) {
+        const double mu_c = cs.friction;
+        const double du0 = wall_du(p, false, s.u.front(), s.nu.front()), du1 = wall_du(p, true, s.u.back(), s.nu.back());
+        b.wall_work += mu_c * cs.ratio(s.nu.front()) * std::abs(cs.sign(du0));
+        double bulk = 0;
+        for (std::size_t i = 0; i + 1 < n; ++i) {
+            const double du = (s.u[i + 1] - s.u[i]) / h;
+            bulk += h * 0.5 * (cs.ratio(s.nu[i]) + cs.ratio(s.nu[i + 1])) * du * cs.sign(du);
+        }
+        b.contact_dissipation = mu_c * (bulk + cs.ratio(s.nu.front()) * std::abs(cs.sign(du0)) * (1.0 - s.u.front()) +
+                                        cs.ratio(s.nu.back()) * std::abs(cs.sign(du1)) * s.u.back());
+    }
     double bulk = 0;
     for (std::size_t i = 0; i < n; ++i)
         bulk += (i == 0 || i + 1 == n ? 0.5 : 1.0) * h * L * L * node_coefficients(*p.closures, s.nu[i]).C;
@@ -124,9 +146,12 @@ EnergyBudget energy_budget(const Problem& p0, const Solution& s) {
         const double slip = top ? -s.u.back() : 1.0 - s.u.front();
         const WallCoefficients c = wall_coefficients(p, w, nu);
         const double K = node_coefficients(*p.closures, nu).K;
-        b.wall_dissipation += scale * wall_energy_sink(w.params, c, K, slip, L, Pi, tau_hat);
+        // the kinetic traction at this wall: uniform without a contact stress, not with one (only the sum is)
+        const double tau_w = cs.active() ? node_coefficients(*p.closures, nu).M * std::abs(wall_du(p, top, top ? s.u.back() : s.u.front(), nu))
+                                         : tau_hat;
+        b.wall_dissipation += scale * wall_energy_sink(w.params, c, K, slip, L, Pi, tau_w);
         b.wall_collisional += scale * wall_collisional_sink(w.params, c, K, slip, L, Pi);
-        b.wall_unreturned_slip_work += scale * wall_unreturned_slip_work(w.params, slip, Pi, tau_hat);
+        b.wall_unreturned_slip_work += scale * wall_unreturned_slip_work(w.params, slip, Pi, tau_w);
     }
     return b;
 }

@@ -49,6 +49,20 @@ SectionSpec section() {
              "whatever e_w (Sawyer & Tichy's GKL form, the seed's own model); slip_work all of it, the flux into the "
              "flow being slip work minus a collisional dissipation that vanishes at e_w = 1 (Johnson & Jackson 1987, "
              "Jenkins & Richman 1986); by_closures: gkl_r8 with closures = lun84, slip_work otherwise");
+    // The rate-independent contact stress (docs/continuum-model.md §2.9): no default constants, to be fitted on a
+    // bulk-rheology table.
+    s.choice("contact_stress", "none", {"none", "johnson_jackson"},
+             "rate-independent contact stress beside the kinetic one: johnson_jackson (Johnson & Jackson 1987: "
+             "p_c = Fr (nu - nu_min)^n/(nu_c - nu)^m, shear mu_c p_c, nu_c = g0's nu_max), needs every contact_* "
+             "constant; none = kinetic stresses only");
+    s.real_optional("contact_coefficient", Range::positive(), "Pa", "Fr of contact_stress = johnson_jackson");
+    s.real_optional("contact_onset_fraction", Range::closed(0.3, 0.75), "",
+                    "nu_min of contact_stress = johnson_jackson: no contact pressure below it");
+    s.real_optional("contact_exponent_onset", Range::closed(0.0, 10.0), "", "n of contact_stress = johnson_jackson");
+    s.real_optional("contact_exponent_jamming", Range::closed(0.1, 10.0), "",
+                    "m of contact_stress = johnson_jackson (the divergence at nu_c)");
+    s.real_optional("contact_friction", Range::closed(0.0, 2.0), "",
+                    "mu_c of contact_stress = johnson_jackson: its shear over its pressure (sin phi)");
     s.real("viscosity_alpha", 1.0, Range::closed(0.0, 4.0), "",
            "LSJC viscosity factor (2 + alpha)/3; 1 = original theory, 1.6 = MFiX");
     s.boolean("dufour", true, "include the grad-nu heat-flux term of LSJC (sign uncertain, effect < 1e-4)");

@@ -93,6 +93,9 @@ int shoot(const gsl_vector* x, void* params, gsl_vector* f) {
 }  // namespace
 
 Solution solve_shooting(const Problem& p, const SolverSettings& st, const Solution* guess) {
+    // its ODE form has no contact stress (docs/continuum-model.md §2.9); the case's settings refuse it, so does this
+    if (p.closures->contact().active())
+        throw Error("solve_shooting: the shooting cross-check has no contact stress; use solve_fv");
     detail::gsl_quiet();
     Ctx c{};
     c.sh = {&p, p.closures->cap(), p.Pi, p.mode == Mode::Fill, p.symmetric()};

@@ -11,7 +11,9 @@ namespace granlub::continuum {
 SimpleShear simple_shear_at_nu(const Closures& c, double nu) {
     const auto s = c.state(nu);
     const double fp = s.fp.v, fmu = s.fmu.v, fgam = s.fgam.v;
-    return {nu, std::sqrt(fgam / (fmu * fp)), std::sqrt(fmu * fgam) / fp, fmu / fgam};
+    const ContactStress& cs = c.contact();  // its shear mu_c p_c adds to the kinetic one (§2.9)
+    const double contact = cs.active() ? cs.friction * cs.ratio(nu) : 0.0;
+    return {nu, std::sqrt(fgam / (fmu * fp)), std::sqrt(fmu * fgam) / fp + contact, fmu / fgam};
 }
 
 SimpleShear simple_shear_at_inertial(const Closures& c, double inertial) {

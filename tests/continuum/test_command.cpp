@@ -1,10 +1,12 @@
 // `granlub continuum` end to end on small in-memory cases: result files, resume, --point,
 // determinism, the shooting method key, and the bad-input paths (clear CaseError/SolverError).
 #define BOOST_TEST_MODULE continuum_command
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include <unistd.h>
 
@@ -73,6 +75,22 @@ struct TempDir {
     }
     ~TempDir() { fs::remove_all(path); }
 };
+
+// The error resolve_settings raises for the case with `extra` appended, or "".
+std::string settings_error(const std::string& extra, const std::string& base = kCase) {
+    try {
+        continuum::resolve_settings(parse(extra, base));
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// The default case with one point under fill control.
+std::string fill_case() {
+    const std::string base(kCase);
+    return base.substr(0, base.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
+}
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
@@ -249,14 +267,6 @@ BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
 
 // Choices that cannot go together stop before anything runs (exit 2 from the command line), naming the key.
 BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
-    const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
-        try {
-            continuum::resolve_settings(parse(extra, base));
-        } catch (const CaseError& e) {
-            return e.what();
-        }
-        return "";
-    };
     std::string e = settings_error("[continuum]\nclosures = \"garzo_dufty\"\nviscosity_alpha = 1.6\n");
     BOOST_TEST(contains(e, "viscosity_alpha"), e);
     BOOST_TEST(contains(e, "lun84"), e);
@@ -272,8 +282,7 @@ BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
     BOOST_TEST(contains(e, "correlation_constant"), e);
     BOOST_TEST(contains(e, "jenkins_berzi"), e);
     BOOST_TEST(settings_error("[continuum]\ncorrelation_length = \"jenkins_berzi\"\ncorrelation_constant = 0.5\n").empty());
-    std::string fill(kCase);
-    fill = fill.substr(0, fill.find("[operating]")) + "[operating]\nspeed = 2.0\ncontrol = \"fill\"\nsolid_fraction = 0.5\n";
+    const std::string fill = fill_case();
     e = settings_error("[continuum]\ngap = \"inventory\"\n", fill);
     BOOST_TEST(contains(e, "gap"), e);
     BOOST_TEST(contains(e, "control"), e);
@@ -410,4 +419,64 @@ BOOST_AUTO_TEST_CASE(inventory_gap_and_the_ordered_label) {
     BOOST_TEST(so.run.at("status") == "ordered");
     BOOST_TEST(contains(so.run.at("status_reason").get<std::string>(), "ordering_fraction"));
     BOOST_TEST(read_summary(tmp2.path / "continuum" / "U2.8" / "summary.json").run.at("status") == "steady");
+}
+
+// [continuum] contact_stress (docs/continuum-model.md §2.9): no default constants, each one required with the branch
+// and refused without it, out-of-range values and the unsupported fill control / shooting method refused naming the
+// key; with its constants the summary records them and the contacts' share of the work.
+BOOST_AUTO_TEST_CASE(contact_stress_needs_its_constants_and_says_what_is_allowed) {
+    const std::string all = "contact_coefficient = 0.05\ncontact_onset_fraction = 0.5\ncontact_exponent_onset = 2\n"
+                            "contact_exponent_jamming = 5\ncontact_friction = 0.2\n";
+    const std::string branch = "[continuum]\ncontact_stress = \"johnson_jackson\"\n";
+    BOOST_TEST(settings_error(branch + all).empty());
+    for (const char* k : {"contact_coefficient", "contact_onset_fraction", "contact_exponent_onset",
+                          "contact_exponent_jamming", "contact_friction"}) {
+        std::string without = all;
+        without.erase(without.find(k), without.find('\n', without.find(k)) - without.find(k) + 1);
+        const std::string e = settings_error(branch + without);
+        BOOST_TEST(contains(e, "contact_stress"), e);
+        BOOST_TEST(contains(e, k), e);
+        // and a constant without the branch
+        const std::string line = all.substr(all.find(k), all.find('\n', all.find(k)) - all.find(k) + 1);
+        const std::string f = settings_error("[continuum]\n" + line);
+        BOOST_TEST(contains(f, k), f);
+        BOOST_TEST(contains(f, "johnson_jackson"), f);
+    }
+    // out of range or unknown: the key and what is allowed
+    for (const auto& [line, key, allowed] : {std::tuple{"contact_coefficient = -1", "contact_coefficient", "> 0"},
+                                             {"contact_exponent_jamming = 0", "contact_exponent_jamming", "0.1"},
+                                             {"contact_friction = 3", "contact_friction", "2"},
+                                             {"contact_stress = \"schaeffer\"", "contact_stress", "johnson_jackson"}}) {
+        const std::string x = case_error(fmt::format("[continuum]\n{}\n", line));
+        BOOST_TEST(contains(x, key), x);
+        BOOST_TEST(contains(x, allowed), x);
+    }
+    std::string e;
+    // nu_min must lie below nu_c (max_solid_fraction = 0.65 here)
+    std::string high = all;
+    high.replace(high.find("contact_onset_fraction = 0.5"), 28, "contact_onset_fraction = 0.7");
+    e = settings_error(branch + high);
+    BOOST_TEST(contains(e, "contact_onset_fraction"), e);
+    BOOST_TEST(contains(e, "0.65"), e);
+    e = settings_error(branch + all + "method = \"shooting\"\n");
+    BOOST_TEST(contains(e, "method"), e);
+    const std::string fill = fill_case();
+    e = settings_error(branch + all, fill);
+    BOOST_TEST(contains(e, "control"), e);
+    BOOST_TEST(contains(e, "contact_stress"), e);
+    // the summary names the branch and its constants, and books the contacts' dissipation
+    const Case c = parse(branch + all);
+    const auto r = continuum::solve_point(c, c.points[0], continuum::resolve_settings(c));
+    BOOST_TEST(r.summary.run.at("contact_stress").at("model") == "johnson_jackson");
+    BOOST_TEST(r.summary.run.at("contact_stress").at("friction").get<double>() == 0.2);
+    BOOST_TEST(r.summary.run.at("energy_budget").at("contact_dissipation_W_m2").get<double>() > 0.0);
+    // T = (P - p_c)/(rho_p f_p) with the kinetic f_p (docs/continuum-model.md §2.9), at mid-gap
+    const double nu = r.summary.value("solid_fraction_centre"), P = 5.5e3;
+    const double pc = 0.05 * std::pow(nu - 0.5, 2) / std::pow(0.65 - nu, 5);
+    const double fp = continuum::resolve_settings(parse("")).closures->state(nu).fp.v;
+    BOOST_TEST(pc > 0.1 * P);
+    BOOST_CHECK_CLOSE_FRACTION(r.summary.value("temperature_centre"), (P - pc) / (2550.0 * fp), 1e-12);
+    const Case none = parse("");
+    const auto n = continuum::solve_point(none, none.points[0], continuum::resolve_settings(none));
+    BOOST_TEST(n.summary.run.at("contact_stress") == "none");
 }

@@ -21,8 +21,11 @@ public:
     WallCoefficients coefficients(const ClosureState<D1>& s, const WallParams& w, double /*numax*/) const override {
         const double c = std::sqrt(2.0 / std::numbers::pi);
         const double ew = w.restitution;
-        return {c * s.fp / ((1.0 + ew) * s.fmu), c * (1.0 - ew) * s.fp / s.G,
-                w.slip_dissipation * c * s.fp * s.fp / ((1.0 + ew) * s.G), s.fmu * s.fp / s.G};
+        // The collision rate sees the kinetic pressure (fpk); with a contact stress (§2.9) T = P/(rho_p fp), so
+        // the T-powers bring fp: b5 = c fpk/((1+e_w) f_mu), b6 = c (1-e_w) fpk/G, b7 ~ fpk fp/G, b8 = f_mu fp/G
+        // (fpk = fp without one).
+        return {c * s.fpk / ((1.0 + ew) * s.fmu), c * (1.0 - ew) * s.fpk / s.G,
+                w.slip_dissipation * c * s.fpk * s.fp / ((1.0 + ew) * s.G), s.fmu * s.fp / s.G};
     }
 };
 }  // namespace

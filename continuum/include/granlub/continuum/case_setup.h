@@ -27,6 +27,8 @@ struct Settings {
     // [continuum] wall_energy resolved: the convention and where it came from (the key, or the closure family)
     WallEnergy wall_energy = WallEnergy::GklR8;
     std::string wall_energy_source;
+    // [continuum] contact_stress resolved (coefficient = Fr in Pa; inactive = none)
+    ContactStress contact;
 };
 
 // Throws CaseError naming the key for values the section spec cannot check alone.

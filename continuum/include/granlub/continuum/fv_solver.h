@@ -24,6 +24,10 @@ NewtonReport newton_fv(const Problem& p, const SolverSettings& settings, Solutio
 // and ln Lambda) when Newton fails. Throws granlub::SolverError with the last residual.
 Solution solve_fv(const Problem& p, const SolverSettings& settings);
 
+// The largest difference between the exact Jacobian at a Load-mode state and central differences with `step` in
+// u^ and in the logit unknown, relative to max(1, |entry|); for tests (§2.4).
+double fv_jacobian_defect(const Problem& p, const Solution& s, double step);
+
 // The FV residual (flux balance per control volume) of a solution, max norm; for tests.
 double fv_residual_norm(const Problem& p, const Solution& s);
 

@@ -94,7 +94,11 @@ struct EnergyBudget {
     double wall_work = 0, bulk_dissipation = 0, wall_dissipation = 0;
     // wall_dissipation's two parts: the collisional terms and the slip work the condition does not return
     double wall_collisional = 0, wall_unreturned_slip_work = 0;
-    double relative_defect() const { return (wall_work - bulk_dissipation - wall_dissipation) / wall_work; }
+    // the contact stress's work (§2.9), dissipated in the contacts, in the bulk and at the walls (0 without one)
+    double contact_dissipation = 0;
+    double relative_defect() const {
+        return (wall_work - bulk_dissipation - wall_dissipation - contact_dissipation) / wall_work;
+    }
 };
 EnergyBudget energy_budget(const Problem& p, const Solution& s);
 

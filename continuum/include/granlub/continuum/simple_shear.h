@@ -1,7 +1,8 @@
 // Homogeneous simple shear of the closures (docs/continuum-model.md §8.3, §8.6): without walls production equals
 // dissipation, mu_v gamma_dot^2 = gamma, so with p = P
 //   T/(d gamma_dot)^2 = f_mu/f_gamma,   mu = tau/p = sqrt(f_mu f_gamma)/f_p,   I = gamma_dot d/sqrt(P/rho_p) = sqrt(f_gamma/(f_mu f_p))
-// (f_gamma with e_eff and L*, as the solver has it). The bulk rheology mu(I), nu(I) the Couette solutions are
+// (f_gamma with e_eff and L*, as the solver has it; with a contact stress fp is fpk/(1 - p_c/P) and mu gains
+// mu_c p_c/P, §2.9). The bulk rheology mu(I), nu(I) the Couette solutions are
 // measured against: what the walls add or take is the solution's mu over this one at its own mid-gap I.
 #pragma once
 #include "granlub/continuum/closures/closure_set.h"

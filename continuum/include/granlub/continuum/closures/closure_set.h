@@ -3,8 +3,10 @@
 // alone (docs/continuum-model.md §2.6-2.7):
 //   f_gamma = f_gamma(e_p) (1 - e_eff^2)/(1 - e_p^2) / L*(nu)
 #pragma once
+#include <algorithm>
 #include <memory>
 
+#include "granlub/continuum/closures/contact_stress.h"
 #include "granlub/continuum/closures/correlation_length.h"
 #include "granlub/continuum/closures/family.h"
 #include "granlub/continuum/g0/radial_distribution.h"
@@ -23,6 +25,12 @@ public:
     // All functions at nu, with exact d/dnu in the dual parts.
     ClosureState<D1> state(D1 nu) const {
         ClosureState<D1> s = family_->state(p_, nu, g0_->g0(nu), g0_->dg0(nu));
+        s.fpk = s.fp;
+        if (contact_.active()) {  // fp -> fp/(1 - pi_c), with its exact derivative (§2.9)
+            const D1 q = 1.0 - contact_.ratio(nu), dq = -contact_.dratio(nu);
+            s.dfp = (s.dfp * q - s.fpk * dq) / (q * q);
+            s.fp = s.fpk / q;
+        }
         if (friction_factor_ != 1.0) s.fgam = s.fgam * friction_factor_;
         if (p_.correlation_length == CorrelationLength::Jenkins2007)
             s.fgam = s.fgam / closures::correlation_length_jenkins2007(s.nu, s.g, p_.restitution);
@@ -37,13 +45,24 @@ public:
     const RadialDistribution& g0() const { return *g0_; }
     const ClosureFamily& family() const { return *family_; }
     double numax() const { return g0_->numax(); }
-    double cap() const { return g0_->cap(); }
+    // Upper bound of nu for the logit map: g0's, or below it where the contact pressure alone carries P (T = 0).
+    double cap() const { return contact_.active() ? std::min(g0_->cap(), contact_limit_) : g0_->cap(); }
+    // The same closures with a contact stress at one point's P_y (ContactStress::coefficient = Fr/P_y).
+    Closures with_contact(const ContactStress& c) const {
+        Closures r = *this;
+        r.contact_ = c;
+        r.contact_limit_ = c.active() ? c.limit() : 0.0;
+        return r;
+    }
+    const ContactStress& contact() const { return contact_; }
 
 private:
     ClosureParams p_;
     std::shared_ptr<const RadialDistribution> g0_;
     std::shared_ptr<const ClosureFamily> family_;
     double friction_factor_ = 1.0;
+    ContactStress contact_;  // inactive by default
+    double contact_limit_ = 0;
 };
 
 }  // namespace granlub::continuum

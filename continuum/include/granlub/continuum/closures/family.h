@@ -33,10 +33,12 @@ struct ClosureParams {
 
 // The closure functions at one solid fraction, and the combinations the Couette problem needs after
 // eliminating T with p_yy = P (§3): G = f_k f_p'/f_p - f_phi, M = f_mu f_p^{-1/2}, K = G f_p^{-3/2},
-// C = f_gamma f_p^{-3/2}.
+// C = f_gamma f_p^{-3/2}. With a contact stress (contact_stress.h, §2.9) T = (P - p_c)/(rho_p fpk), so fp is
+// fpk/(1 - p_c/P) (T = P/(rho_p fp) still) and fpk the kinetic one, which the walls' collision rate sees;
+// without one they are equal.
 template <class S>
 struct ClosureState {
-    S nu, g, dg, fp, dfp, fmu, fk, fphi, fgam, G;
+    S nu, g, dg, fp, dfp, fmu, fk, fphi, fgam, G, fpk;
     S M() const { using std::sqrt; return fmu / sqrt(fp); }
     S K() const { using std::sqrt; return G / (fp * sqrt(fp)); }
     S C() const { using std::sqrt; return fgam / (fp * sqrt(fp)); }

@@ -1,0 +1,63 @@
+// A rate-independent contact stress beside the kinetic one (docs/continuum-model.md §2.9), in the additive form
+//   p = p_KT + p_c(nu),   tau = tau_KT + mu_c p_c(nu) sgn_eps(u'),
+// with Johnson & Jackson's (1987) frictional pressure
+//   p_c = Fr (nu - nu_min)^n / (nu_c - nu)^m  for nu > nu_min, 0 below
+// [SRC: frictionalPressure in OpenFOAM-dev's kineticTheoryModels/frictionalStressModel/JohnsonJackson
+// (Fr, eta = n, p = m, alphaMinFriction = nu_min, alphaMax = nu_c; OpenFOAM also floors nu_c - nu at alphaDeltaMin,
+// which granlub does not: its logit cap keeps nu below the root nu_P of p_c = P); the paper not read] and the shear
+// s_c = mu_c p_c (mu_c = sin phi: OpenFOAM's frictional viscosity is built from p_c sin phi). Only the kinetic
+// stress works on the fluctuations: the contact stress's work is dissipated in the contacts (Johnson & Jackson's
+// choice [LIT]; [ASSUMPTION] here). Its constants have no defaults: they are to be fitted on the bulk-rheology
+// table (issue 73, item 1).
+// sgn(u') is regularised, sgn_eps(x) = x/sqrt(x^2 + eps^2) [ASSUMPTION: a numerical choice, so that Newton has a
+// derivative where the bed stops shearing (T -> 0, the contact shear carrying the whole stress)]; eps =
+// sign_width in units of u^' = du^/dy^ (the Couette gap's mean |u^'| is O(1)); eps -> 0 is checked in the tests.
+// In the eliminated-T formulation the problem sees pi_c = p_c/P_y (P_y of the point), so a Closures object
+// carries it per point (closure_set.h, Closures::with_contact).
+#pragma once
+#include <cmath>
+
+#include "granlub/continuum/dual.h"
+
+namespace granlub::continuum {
+
+struct ContactStress {
+    double coefficient = 0;  // Fr / P_y (dimensionless, per point)
+    double onset = 0.5;      // nu_min
+    double jamming = 0.6;    // nu_c
+    double n = 2, m = 5;     // exponents
+    double friction = 0;     // mu_c
+    double sign_width = 1e-2;  // eps of sgn_eps (see above; tests/continuum/test_contact_stress.cpp checks eps -> 0)
+    bool active() const { return coefficient > 0; }
+
+    // sgn_eps(x) = x/sqrt(x^2 + eps^2), templated on the scalar.
+    template <class S>
+    S sign(const S& x) const {
+        using std::sqrt;
+        return x / sqrt(x * x + sign_width * sign_width);
+    }
+
+    // pi_c = p_c / P_y and its nu-derivative, templated on the scalar (exact dual derivatives).
+    template <class S>
+    S ratio(const S& nu) const {
+        using std::pow;
+        if (!(value(nu) > onset)) return S(0.0);
+        return coefficient * pow(nu - onset, n) / pow(jamming - nu, m);
+    }
+    template <class S>
+    S dratio(const S& nu) const {
+        if (!(value(nu) > onset)) return S(0.0);
+        return ratio(nu) * (n / (nu - onset) + m / (jamming - nu));
+    }
+    // The solid fraction at which p_c = P_y (T = 0): the bed's limit under this load (bisection; onset < it < jamming).
+    double limit() const {
+        double lo = onset, hi = jamming;
+        for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (ratio(mid) < 1.0 ? lo : hi) = mid;
+        }
+        return lo;
+    }
+};
+
+}  // namespace granlub::continuum
