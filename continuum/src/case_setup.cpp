@@ -9,6 +9,7 @@
 #include "granlub/case/particle_box.h"
 #include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/closures/effective_restitution.h"
+#include "granlub/continuum/cross_section_setup.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
 #include "granlub/error.h"
@@ -95,6 +96,7 @@ Settings resolve_settings(const Case& c) {
         sec.fail("wall_roughness", "wall_roughness = \"bumps\" needs bumps on the walls ([walls] surface = \"bumps\"); "
                                    "with plane walls allowed: \"declared\"");
     s.ordering_fraction = sec.maybe_real("ordering_fraction").value_or(0.0);
+    resolve_cross_section_settings(c, s);
     return s;
 }
 

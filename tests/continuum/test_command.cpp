@@ -345,3 +345,56 @@ BOOST_AUTO_TEST_CASE(inventory_gap_and_the_ordered_label) {
     BOOST_TEST(contains(so.run.at("status_reason").get<std::string>(), "ordering_fraction"));
     BOOST_TEST(read_summary(tmp2.path / "continuum" / "U2.8" / "summary.json").run.at("status") == "steady");
 }
+
+// geometry = "cross_section": a width of 0, a grid too coarse for the walls and the 1-D-only choices stop with the
+// key and what is allowed; a run writes every wall's stress and slip, the mid-width profile and section.csv in the
+// particle solvers' columns.
+BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
+    const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
+        try {
+            continuum::resolve_settings(parse(extra, base));
+        } catch (const CaseError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    std::string e = settings_error("[continuum]\ngeometry = \"cross_section\"\n");  // kCase has no width
+    BOOST_TEST(contains(e, "geometry"), e);
+    BOOST_TEST(contains(e, "width > 0"), e);
+    std::string trough(kCase);
+    trough.replace(trough.find("length = 30.0e-3"), 16, "length = 30.0e-3\nwidth = 19.0e-3");
+    e = settings_error("[continuum]\ngeometry = \"cross_section\"\ncross_section_cells_z = 50\n", trough);
+    BOOST_TEST(contains(e, "cross_section_cells_z"), e);
+    BOOST_TEST(contains(e, ">= 97"), e);
+    e = settings_error("[continuum]\ngeometry = \"cross_section\"\ncross_section_cells_y = 12\n", trough);
+    BOOST_TEST(contains(e, "cross_section_cells_y"), e);
+    BOOST_TEST(contains(e, ">= 21"), e);
+    e = settings_error("[continuum]\ngeometry = \"cross_section\"\nmethod = \"shooting\"\n", trough);
+    BOOST_TEST(contains(e, "method"), e);
+    e = settings_error("[continuum]\nside_roughness = 0.3\n", trough);
+    BOOST_TEST(contains(e, "side_roughness"), e);
+    BOOST_TEST(settings_error("[continuum]\ngeometry = \"cross_section\"\n", trough).empty());
+
+    TempDir tmp;
+    const Case c = parse("[continuum]\ngeometry = \"cross_section\"\ncross_section_cells_y = 24\n", trough);
+    BOOST_TEST(continuum::run(c, into(tmp, "U2.0")) == 0);
+    const fs::path dir = tmp.path / "continuum" / "U2.0";
+    const Summary s = read_summary(dir / "summary.json");
+    for (const char* name : kStandardOutputs) BOOST_TEST(std::isfinite(s.value(name)));
+    for (const char* w : {"outer", "inner"}) {
+        BOOST_TEST(s.value(std::string("shear_stress_") + w) > 0);
+        BOOST_TEST(s.value(std::string("slip_over_U_") + w) > 0);
+    }
+    // the top holds what the floor and the sides drag
+    const double W = 19e-3, H = 4e-3;
+    const double floor = s.value("shear_stress_bottom") * W, sides = 2 * s.value("shear_stress_side") * H;
+    BOOST_TEST(std::abs(floor + sides - s.value("shear_stress_top") * W) < 1e-6 * floor);
+    BOOST_TEST(std::abs(s.value("side_wall_drag_share") - sides / (s.value("shear_stress_top") * W)) < 1e-9);
+    BOOST_TEST((result_status(dir, c.inputs_hash("continuum")).state == ResultState::Complete));
+    const Profile mid = read_profile(dir / "profile.csv");
+    BOOST_TEST(mid.rows() == 25u);
+    const Profile map = read_table(dir / kSectionFile);  // the reader the report draws the maps from
+    BOOST_TEST(map.rows() == 24u * 100u);
+    for (const char* col : {"y_over_H", "z_over_W", "solid_fraction", "u_over_U"}) BOOST_TEST(map.has(col));
+    BOOST_TEST(map.column("z_over_W").front() == -0.495);
+}

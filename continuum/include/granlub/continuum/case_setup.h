@@ -24,6 +24,10 @@ struct Settings {
     std::shared_ptr<const Closures> closures;
     std::shared_ptr<const WallFamily> family;
     double slip_dissipation = 0;  // f_t
+    // [continuum] geometry = "cross_section" (cross_section_setup.h)
+    bool cross_section = false;
+    int cells_y = 40, cells_z = 100;
+    double side_roughness = -1;  // < 0: not set
 };
 
 // Throws CaseError naming the key for values the section spec cannot check alone.

@@ -1,0 +1,218 @@
+#include "granlub/continuum/cross_section_setup.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "granlub/case/wall_bumps.h"
+#include "granlub/continuum/cross_section_solver.h"
+#include "granlub/error.h"
+#include "granlub/results/file_io.h"
+#include "granlub/results/run_status.h"
+
+namespace granlub::continuum {
+
+// Fewest cells per grain diameter across the gap and the width: the walls' layers of nu and T are one to two
+// diameters thick in the 1-D solutions, and 4 cells per diameter keep the 40 x 100 grid of S&T's trough above it
+// (4 H/d = 20.3, 4 W/d = 96.6) [ASSUMPTION: our resolution rule].
+constexpr double kCellsPerDiameter = 4.0;
+
+void resolve_cross_section_settings(const Case& c, Settings& s) {
+    const Section& sec = c.section("continuum");
+    s.cross_section = sec.string("geometry") == "cross_section";
+    s.cells_y = static_cast<int>(sec.integer("cross_section_cells_y"));
+    s.cells_z = static_cast<int>(sec.integer("cross_section_cells_z"));
+    const auto sr = sec.maybe_real("side_roughness");
+    if (!s.cross_section) {
+        if (sr) sec.fail("side_roughness", "side_roughness is a side wall's R, and only the cross-section has side walls "
+                                           "(allowed: remove it, or geometry = \"cross_section\")");
+        return;
+    }
+    s.side_roughness = sr.value_or(-1.0);
+    if (!(c.cell.width > 0))
+        sec.fail("geometry", fmt::format("geometry = \"cross_section\" needs the trough's side walls, but [cell] width = "
+                                         "{} (periodic); allowed: [cell] width > 0, or geometry = \"gap\"",
+                                         c.cell.width));
+    if (s.method == Method::Shooting)
+        sec.fail("method", "method = \"shooting\" solves the 1-D gap only; with geometry = \"cross_section\" allowed: \"fv\"");
+    for (const OperatingPoint& p : c.points)
+        if (p.control != Control::Load)
+            sec.fail("geometry", fmt::format("geometry = \"cross_section\" solves under a load, but point {} has "
+                                             "[operating] control = fill (allowed: control = \"load\", or geometry = "
+                                             "\"gap\")",
+                                             p.id));
+    const double d = c.grains.diameter;
+    const auto need = [&](const char* key, int cells, double length, const char* across) {
+        const int least = static_cast<int>(std::ceil(kCellsPerDiameter * length / d - 1e-9));
+        if (cells < least)
+            sec.fail(key, fmt::format("{} cells across the {} ({} m) are {:.2f} per grain diameter: too coarse for the "
+                                      "walls' layers (allowed: at least {} per diameter, >= {})",
+                                      cells, across, length, cells * d / length, kCellsPerDiameter, least));
+    };
+    need("cross_section_cells_y", s.cells_y, c.cell.gap, "gap");
+    need("cross_section_cells_z", s.cells_z, c.cell.width, "width");
+}
+
+CrossSectionProblem cross_section_problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
+    CrossSectionProblem x;
+    x.gap = problem_for(c, s, p);  // closures, Pi, floor and top walls, the gap's domain (bump tops) and mode
+    const double d = c.grains.diameter, W = c.cell.width;
+    // Side walls ([walls] sides): as_bottom = the floor's surface on each side wall, so the floor's condition;
+    // plane = smooth frictional planes in the particle solvers, which GKL's roughness-based families cannot tell
+    // from a rough plane: the floor's restitution with the roughness as declared, as the plane floor and top of
+    // cases/sawyer2001_poly take it [ASSUMPTION]. side_roughness sets R5..R8 of both.
+    const bool as_bottom = c.side_walls == SideWalls::AsBottom;
+    WallBC side = x.gap.bottom;
+    if (!as_bottom) {
+        const double r = p.bottom.roughness;
+        side.params.r5 = side.params.r6 = side.params.r7 = side.params.r8 = r;
+    }
+    if (s.side_roughness >= 0)
+        side.params.r5 = side.params.r6 = side.params.r7 = side.params.r8 = s.side_roughness;
+    if (!(side.params.r5 > 0))
+        throw SolverError(fmt::format("R5 = 0 at the side walls ([continuum] side_roughness, or the wall roughness): a "
+                                      "smooth wall exerts no traction in GKL; set [continuum] side_roughness > 0"));
+    x.outer = x.inner = side;
+    // With the wall at the bumps' tops, bumpy side walls narrow the width as the floor's narrow the gap.
+    const double side_offset = as_bottom && s.wall_at_bump_tops ? 2 * bump_protrusion(c, p.bottom) : 0.0;
+    const double Wc = W - side_offset;
+    x.width = Wc / d;
+    // the grains per length the particle solvers insert, solid_fraction x gap x W, over d W_c
+    x.gap.inventory = p.solid_fraction * c.cell.gap * W / (d * Wc);
+    return x;
+}
+
+namespace {
+
+// section.csv: the FV cells between the nodes, each the mean of its four corner nodes, in the particle solvers'
+// columns and order (cross_section.h: y across the gap from the floor, z/W from -1/2 at the outer wall, z fastest).
+Profile section_table(const CrossSectionSolution& s) {
+    const int Ny = s.cells_y, Nz = s.cells_z;
+    std::vector<double> y, z, nu, u;
+    for (int i = 0; i < Ny; ++i)
+        for (int j = 0; j < Nz; ++j) {
+            const auto mean = [&](const std::vector<double>& v) {
+                return 0.25 * (v[s.at(i, j)] + v[s.at(i + 1, j)] + v[s.at(i, j + 1)] + v[s.at(i + 1, j + 1)]);
+            };
+            y.push_back((i + 0.5) / Ny);
+            z.push_back((j + 0.5) / Nz - 0.5);
+            nu.push_back(mean(s.nu));
+            u.push_back(mean(s.u));
+        }
+    Profile t;
+    t.add("y_over_H", std::move(y)).add("z_over_W", std::move(z)).add("solid_fraction", std::move(nu));
+    t.add("u_over_U", std::move(u));
+    return t;
+}
+
+}  // namespace
+
+PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, const Settings& s,
+                                      const std::filesystem::path& dir) {
+    const CrossSectionProblem q = cross_section_problem_for(c, s, p);
+    CrossSectionSettings st;
+    st.cells_y = s.cells_y, st.cells_z = s.cells_z;
+    st.tolerance = s.solver.tolerance;
+    st.max_iterations = s.solver.max_iterations;
+    st.max_continuation_steps = s.solver.max_continuation_steps;
+    const auto t0 = std::chrono::steady_clock::now();
+    const CrossSectionSolution sol = solve_cross_section(q, st);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const CrossSectionObservables o = observe(q, sol);
+    const Solution mid = mid_width_profile(sol);
+
+    const double U = p.speed, rho = c.grains.density, d = c.grains.diameter;
+    const double P = rho * U * U / sol.Pi, T_scale = P / rho;
+    // gap and mean nu between the planes through the bumps' centres (as the 1-D solver reports them)
+    const double offset = c.cell.gap - q.gap.Lambda * d;  // what wall_plane = "bump_tops" takes off the gap
+    const double Hc = sol.Lambda * d, gap = Hc + offset, Wc = q.width * d, W = c.cell.width;
+    const double nu_mean = o.nu_mean * Hc * Wc / (gap * W);
+
+    PointResult r;
+    std::vector<double> T_over_U2(mid.nodes());
+    for (std::size_t i = 0; i < mid.nodes(); ++i) T_over_U2[i] = 1.0 / (sol.Pi * s.closures->state(mid.nu[i]).fp.v);
+    r.profile.add("y_over_H", mid.y).add("u_over_U", mid.u).add("solid_fraction", mid.nu)
+        .add("temperature_over_U2", T_over_U2);
+    write_file_atomic(dir / kSectionFile,
+                      profile_csv(section_table(sol),
+                                  {fmt::format("granlub continuum, geometry = cross_section: case {}, point {}", c.name, p.id),
+                                   "solid fraction and u/U over the cross-section: y across the gap (0 = moving floor), z "
+                                   "across the width (z/W = -1/2: the outer wall); FV cells, each the mean of its "
+                                   "four nodes"}));
+
+    Summary& m = r.summary;
+    m = make_summary(c, p, "continuum");
+    const auto& fl = o.walls[0];
+    const auto& tp = o.walls[1];
+    const auto& ou = o.walls[2];
+    const auto& in = o.walls[3];
+    m.set("normal_stress_bottom", P, "Pa").set("normal_stress_top", P, "Pa");
+    m.set("shear_stress_bottom", P * fl.tau, "Pa").set("shear_stress_top", P * tp.tau, "Pa");
+    m.set("shear_stress_outer", P * ou.tau, "Pa").set("shear_stress_inner", P * in.tau, "Pa");
+    m.set("shear_stress_side", 0.5 * P * (ou.tau + in.tau), "Pa");
+    m.set("slip_bottom", U * fl.slip, "m/s").set("slip_top", U * tp.slip, "m/s");
+    m.set("slip_outer", U * ou.slip, "m/s").set("slip_inner", U * in.slip, "m/s");
+    m.set("slip_over_U_bottom", fl.slip, "").set("slip_over_U_top", tp.slip, "");
+    m.set("slip_over_U_outer", ou.slip, "").set("slip_over_U_inner", in.slip, "");
+    m.set("side_wall_drag_share", o.side_share, "");
+    m.set("mean_solid_fraction", nu_mean, "").set("max_solid_fraction", s.closures->numax(), "");
+    const std::size_t n = mid.nodes(), ic = (n - 1) / 2;
+    m.set("solid_fraction_centre", mid.nu[ic], "").set("solid_fraction_bottom", mid.nu.front(), "")
+        .set("solid_fraction_top", mid.nu.back(), "");
+    m.set("temperature_centre", T_scale * sol.Pi * T_over_U2[ic], "m^2/s^2")
+        .set("temperature_bottom", T_scale * sol.Pi * T_over_U2.front(), "m^2/s^2")
+        .set("temperature_top", T_scale * sol.Pi * T_over_U2.back(), "m^2/s^2");
+    m.set("stress_ratio", fl.tau, "").set("pi_number", sol.Pi, "");
+    const double du_c = std::abs(mid.u[ic + 1] - mid.u[ic - 1]) / (mid.y[ic + 1] - mid.y[ic - 1]);
+    m.set("inertial_number", (U * du_c / Hc) * d / std::sqrt(P / rho), "");  // at mid-width, mid-gap
+    if (s.gap_from_inventory) m.set("gap", gap, "m");
+    m.run["geometry"] = "cross_section";
+    m.run["cells_y"] = s.cells_y;
+    m.run["cells_z"] = s.cells_z;
+    m.run["iterations"] = sol.iterations;
+    m.run["final_residual"] = sol.residual;
+    m.run["continuation_steps"] = sol.continuation_steps;
+    m.run["solve_time_s"] = secs;
+    m.run["method"] = "fv";
+    m.run["g0"] = s.g0_name;
+    m.run["wall_model"] = s.wall_name;
+    m.run["closures"] = s.closures_name;
+    m.run["side_walls"] = {{"sides", c.side_walls == SideWalls::AsBottom ? "as_bottom" : "plane"},
+                           {"r5", q.outer.params.r5}, {"restitution", q.outer.params.restitution},
+                           {"width_m", Wc}};
+    const double PU = P * U * Hc;  // per unit length: the dimensionless budget is over P U H_c
+    nlohmann::json walls = nlohmann::json::object();
+    const char* names[] = {"floor", "top", "outer", "inner"};
+    for (int w = 0; w < kCrossSectionWalls; ++w)
+        walls[names[w]] = {{"work_W_m", PU * o.walls[w].work}, {"sink_W_m", PU * o.walls[w].sink}};
+    m.run["energy_budget"] = {{"walls", walls},
+                              {"bulk_dissipation_W_m", PU * o.bulk_dissipation},
+                              {"relative_defect", o.energy_defect}};
+    m.run["force_balance"] = o.force_balance;
+    m.run["body_forces"] = "not modelled: the pressure is uniform over the cross-section, P_y = the load (gravity and "
+                           "the centripetal force left out; continuum/README.md, \"The trough's cross-section\")";
+    nlohmann::json warnings = nlohmann::json::array();
+    if (o.nu_max_node > s.closures->numax())
+        warnings.push_back(fmt::format("solid fraction {:.4f} exceeds nu_max = {} (g0 = {} has no nu_max limit)",
+                                       o.nu_max_node, s.closures->numax(), s.g0_name));
+    m.run["warnings"] = warnings;
+    if (s.ordering_fraction > 0 && o.nu_max_node > s.ordering_fraction)
+        set_regime(m.run, RegimeStatus::Ordered,
+                   fmt::format("the largest solid fraction {:.4f} exceeds [continuum] ordering_fraction = {}",
+                               o.nu_max_node, s.ordering_fraction));
+    else
+        set_regime(m.run, RegimeStatus::Steady);
+    for (const auto& [name, v] : m.outputs)
+        if (!std::isfinite(v.value))
+            throw SolverError(fmt::format("the cross-section solution has a non-finite {} (residual {:.3g})", name,
+                                          sol.residual));
+    r.line = fmt::format("nu={:.4f} tau floor/top/outer/inner={:.4g}/{:.4g}/{:.4g}/{:.4g} Pa slip/U={:.3f}/{:.3f} "
+                         "side share={:.3f} it={}",
+                         nu_mean, P * fl.tau, P * tp.tau, P * ou.tau, P * in.tau, fl.slip, tp.slip, o.side_share,
+                         sol.iterations);
+    if (s.gap_from_inventory) r.line += fmt::format(" gap={:.3f} mm", 1e3 * gap);
+    return r;
+}
+
+}  // namespace granlub::continuum
