@@ -24,7 +24,11 @@ void resolve_cross_section_settings(const Case& c, Settings& s) {
     s.cells_y = static_cast<int>(sec.integer("cross_section_cells_y"));
     s.cells_z = static_cast<int>(sec.integer("cross_section_cells_z"));
     const auto sr = sec.maybe_real("side_roughness");
+    s.body_forces = sec.string("body_forces") == "on";
     if (!s.cross_section) {
+        if (s.body_forces)
+            sec.fail("body_forces", "body_forces = \"on\" needs the cross-section (the 1-D gap has p_yy uniform, S&T "
+                                    "Eq. 6b); allowed: \"off\", or geometry = \"cross_section\"");
         if (sr) sec.fail("side_roughness", "side_roughness is a side wall's R, and only the cross-section has side walls "
                                            "(allowed: remove it, or geometry = \"cross_section\")");
         return;
@@ -80,6 +84,11 @@ CrossSectionProblem cross_section_problem_for(const Case& c, const Settings& s, 
     x.width = Wc / d;
     // the grains per length the particle solvers insert, solid_fraction x gap x W, over d W_c
     x.gap.inventory = p.solid_fraction * c.cell.gap * W / (d * Wc);
+    if (s.body_forces) {
+        x.body.gravity = c.grains.density * c.gravity * d / p.normal_stress;
+        // the outer side wall's radius: the centripetal force points from it to the axis
+        x.body.radius = c.cell.annulus_radius > 0 ? (c.cell.annulus_radius + Wc / 2) / d : 0.0;
+    }
     return x;
 }
 
@@ -121,6 +130,7 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const CrossSectionObservables o = observe(q, sol);
     const Solution mid = mid_width_profile(sol);
+    const std::vector<double> p_mid = mid_width_pressure(sol);
 
     const double U = p.speed, rho = c.grains.density, d = c.grains.diameter;
     const double P = rho * U * U / sol.Pi, T_scale = P / rho;
@@ -131,7 +141,8 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
 
     PointResult r;
     std::vector<double> T_over_U2(mid.nodes());
-    for (std::size_t i = 0; i < mid.nodes(); ++i) T_over_U2[i] = 1.0 / (sol.Pi * s.closures->state(mid.nu[i]).fp.v);
+    for (std::size_t i = 0; i < mid.nodes(); ++i)
+        T_over_U2[i] = p_mid[i] / (sol.Pi * s.closures->state(mid.nu[i]).fp.v);  // T = p/(rho_p f_p)
     r.profile.add("y_over_H", mid.y).add("u_over_U", mid.u).add("solid_fraction", mid.nu)
         .add("temperature_over_U2", T_over_U2);
     write_file_atomic(dir / kSectionFile,
@@ -147,7 +158,8 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
     const auto& tp = o.walls[1];
     const auto& ou = o.walls[2];
     const auto& in = o.walls[3];
-    m.set("normal_stress_bottom", P, "Pa").set("normal_stress_top", P, "Pa");
+    m.set("normal_stress_bottom", P * fl.normal, "Pa").set("normal_stress_top", P * tp.normal, "Pa");
+    m.set("normal_stress_outer", P * ou.normal, "Pa").set("normal_stress_inner", P * in.normal, "Pa");
     m.set("shear_stress_bottom", P * fl.tau, "Pa").set("shear_stress_top", P * tp.tau, "Pa");
     m.set("shear_stress_outer", P * ou.tau, "Pa").set("shear_stress_inner", P * in.tau, "Pa");
     m.set("shear_stress_side", 0.5 * P * (ou.tau + in.tau), "Pa");
@@ -190,8 +202,11 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
                               {"bulk_dissipation_W_m", PU * o.bulk_dissipation},
                               {"relative_defect", o.energy_defect}};
     m.run["force_balance"] = o.force_balance;
-    m.run["body_forces"] = "not modelled: the pressure is uniform over the cross-section, P_y = the load (gravity and "
-                           "the centripetal force left out; continuum/README.md, \"The trough's cross-section\")";
+    m.run["body_forces"] = s.body_forces ? fmt::format("gravity {} m/s^2 and the centripetal force (outer wall radius {} m) "
+                                                       "through the potential part of their pressure field, the top's "
+                                                       "mean = the load; no secondary flow",
+                                                       c.gravity, q.body.radius * d)
+                                         : "not modelled: the pressure is uniform over the cross-section, P_y = the load";
     nlohmann::json warnings = nlohmann::json::array();
     if (o.nu_max_node > s.closures->numax())
         warnings.push_back(fmt::format("solid fraction {:.4f} exceeds nu_max = {} (g0 = {} has no nu_max limit)",

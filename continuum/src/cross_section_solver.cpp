@@ -34,6 +34,7 @@ enum Member { kC = 0, kS = 1, kN = 2, kW = 3, kE = 4 };
 // Node closures with derivatives in the logit unknown s.
 struct NodeVal {
     double nu, dnu, M, dM, K, dK, C, dC;
+    double Kp = 0, dKp = 0, p = 1;  // with a pressure field: p^^1/2 K_p of the grad-p heat flux, and p^
 };
 // A wall's coefficients b5..b8 at a node, with d/ds.
 struct WallVal {
@@ -42,7 +43,8 @@ struct WallVal {
 
 template <class S>
 struct Local {
-    S u[kMembers], nu[kMembers], M[kMembers], K[kMembers];
+    S u[kMembers], nu[kMembers], M[kMembers], K[kMembers], Kp[kMembers];
+    double p[kMembers];
     S C, Pi, L, hz;
     S b[kCrossSectionWalls][4];  // the coefficients of the walls the node lies on
 };
@@ -62,7 +64,8 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
     const auto at_wall = [&](W w, const S& slip) {
         const WallBC& bc = p.wall(w);
         const int k = static_cast<int>(w);
-        auto gr = wall_gradients(bc.params, l.b[k][0], l.b[k][1], l.b[k][2], l.b[k][3], slip, l.L, l.Pi);
+        // the wall condition at the local pressure: Pi = rho U^2 / p (the b's are in P-scaled form)
+        auto gr = wall_gradients(bc.params, l.b[k][0], l.b[k][1], l.b[k][2], l.b[k][3], slip, l.L, l.Pi / l.p[kC]);
         if (p.source) {
             double cu = 0, cn = 0;
             p.source->wall(w, g.y, g.z, cu, cn);
@@ -79,14 +82,16 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
         Fu_s = l.M[kC] * gr.du, Fn_s = l.K[kC] * gr.dnu, duy = gr.du;
     } else {
         Fu_s = 0.5 * (l.M[kS] + l.M[kC]) * (l.u[kC] - l.u[kS]) / hy;
-        Fn_s = 0.5 * (l.K[kS] + l.K[kC]) * (l.nu[kC] - l.nu[kS]) / hy;
+        Fn_s = 0.5 * (l.K[kS] + l.K[kC]) * (l.nu[kC] - l.nu[kS]) / hy -
+               0.5 * (l.Kp[kS] + l.Kp[kC]) * ((l.p[kC] - l.p[kS]) / hy);
     }
     if (top) {  // n = -y^, u^_wall = 0
         const auto gr = at_wall(W::Top, S(-l.u[kC]));
         Fu_n = -(l.M[kC] * gr.du), Fn_n = -(l.K[kC] * gr.dnu), duy = -gr.du;
     } else {
         Fu_n = 0.5 * (l.M[kC] + l.M[kN]) * (l.u[kN] - l.u[kC]) / hy;
-        Fn_n = 0.5 * (l.K[kC] + l.K[kN]) * (l.nu[kN] - l.nu[kC]) / hy;
+        Fn_n = 0.5 * (l.K[kC] + l.K[kN]) * (l.nu[kN] - l.nu[kC]) / hy -
+               0.5 * (l.Kp[kC] + l.Kp[kN]) * ((l.p[kN] - l.p[kC]) / hy);
     }
     if (!floor && !top) duy = (l.u[kN] - l.u[kS]) / (2 * hy);
     // z^: the side walls move with the floor
@@ -95,14 +100,16 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
         Fu_w = l.M[kC] * gr.du, Fn_w = l.K[kC] * gr.dnu, duz = gr.du;
     } else {
         Fu_w = 0.5 * (l.M[kW] + l.M[kC]) * (l.u[kC] - l.u[kW]) / l.hz;
-        Fn_w = 0.5 * (l.K[kW] + l.K[kC]) * (l.nu[kC] - l.nu[kW]) / l.hz;
+        Fn_w = 0.5 * (l.K[kW] + l.K[kC]) * (l.nu[kC] - l.nu[kW]) / l.hz -
+               0.5 * (l.Kp[kW] + l.Kp[kC]) * ((l.p[kC] - l.p[kW]) / l.hz);
     }
     if (inner) {  // n = -z^
         const auto gr = at_wall(W::Inner, S(1.0 - l.u[kC]));
         Fu_e = -(l.M[kC] * gr.du), Fn_e = -(l.K[kC] * gr.dnu), duz = -gr.du;
     } else {
         Fu_e = 0.5 * (l.M[kC] + l.M[kE]) * (l.u[kE] - l.u[kC]) / l.hz;
-        Fn_e = 0.5 * (l.K[kC] + l.K[kE]) * (l.nu[kE] - l.nu[kC]) / l.hz;
+        Fn_e = 0.5 * (l.K[kC] + l.K[kE]) * (l.nu[kE] - l.nu[kC]) / l.hz -
+               0.5 * (l.Kp[kC] + l.Kp[kE]) * ((l.p[kE] - l.p[kC]) / l.hz);
     }
     if (!outer && !inner) duz = (l.u[kE] - l.u[kW]) / (2.0 * l.hz);
     const double wy = (floor || top ? 0.5 : 1.0) * hy;
@@ -194,6 +201,7 @@ public:
             const double dnu = nu * (1.0 - nu / cap_);
             const auto c = node_coefficients(*p_.gap.closures, nu);
             nodes_[k] = {nu, dnu, c.M, c.dM * dnu, c.K, c.dK * dnu, c.C, c.dC * dnu};
+            if (!p_.pressure.empty()) at_pressure(nodes_[k], p_.pressure[k]);
         }
         if (jac) std::fill(J_.valuePtr(), J_.valuePtr() + J_.nonZeros(), 0.0);
         double norm = 0, mean = 0;
@@ -270,6 +278,15 @@ public:
     double mean_nu() const { return mean_; }
 
 private:
+    // T = p/(rho_p f_p) at the local p^: M -> p^^1/2 M, K and C -> p^^3/2 K, C; K_p = p^^1/2 f_kappa f_p^-3/2.
+    void at_pressure(NodeVal& n, double p) const {
+        const auto st = p_.gap.closures->state(n.nu);
+        const D1 Kp = st.fk * pow(st.fp, -1.5);
+        const double a = std::sqrt(p), b = p * a;
+        n.M *= a, n.dM *= a, n.K *= b, n.dK *= b, n.C *= b, n.dC *= b;
+        n.Kp = a * Kp.v, n.dKp = a * Kp.d[0] * n.dnu, n.p = p;
+    }
+
     WallVal wall_val(const WallBC& w, const NodeVal& n) const {
         const auto b = wall_coefficients(p_.gap, w, n.nu);
         return {{b.b5.v, b.b6.v, b.b7.v, b.b8.v},
@@ -282,7 +299,8 @@ private:
         for (int m = 0; m < kMembers; ++m) {
             const long nb = member(i, j, m);
             if (nb < 0) {
-                l.u[m] = l.nu[m] = l.M[m] = l.K[m] = S(0.0);
+                l.u[m] = l.nu[m] = l.M[m] = l.K[m] = l.Kp[m] = S(0.0);
+                l.p[m] = 1.0;
                 continue;
             }
             const NodeVal& n = nodes_[static_cast<std::size_t>(nb)];
@@ -290,6 +308,8 @@ private:
             l.nu[m] = lift(n.nu, 2 * m + 1, n.dnu);
             l.M[m] = lift(n.M, 2 * m + 1, n.dM);
             l.K[m] = lift(n.K, 2 * m + 1, n.dK);
+            l.Kp[m] = lift(n.Kp, 2 * m + 1, n.dKp);
+            l.p[m] = n.p;
         }
         const NodeVal& c = nodes_[static_cast<std::size_t>(idx(i, j))];
         l.C = lift(c.C, 1, c.dC);
@@ -440,6 +460,56 @@ CrossSectionSolution initial_guess(const CrossSectionProblem& p, const CrossSect
     return s;
 }
 
+// The potential part of the body forces f (cross_section_problem.h) at the solution's u^, nu: in every control
+// volume the flux balance of grad p^ - f, (grad p^ - f).n = 0 on the walls, and the mean of p^ over the top wall
+// = 1 (the load) in place of one node's balance (the balances sum to zero). Without secondary flow the cross-
+// section's y and z momentum balances are grad p^ = f, which has a solution only where curl f = 0; the rest of f
+// would drive a secondary flow, which this model leaves out [ASSUMPTION].
+std::vector<double> pressure_field(const CrossSectionProblem& p, const CrossSectionSolution& s) {
+    const int Ny = s.cells_y, Nz = s.cells_z, ny = s.ny(), nz = s.nz();
+    const double L = s.Lambda, Pi = p.gap.Pi, hy = 1.0 / Ny, hz = p.aspect(L) / Nz;
+    const auto k = [&](int i, int j) { return static_cast<Eigen::Index>(j) * ny + i; };
+    std::vector<double> fy(s.u.size()), fz(s.u.size());
+    for (int j = 0; j < nz; ++j)
+        for (int i = 0; i < ny; ++i) {
+            const std::size_t c = s.at(i, j);
+            fy[c] = -L * p.body.gravity * s.nu[c];
+            const double r = p.body.radius / L - j * hz;  // r/H, the outer wall at z^ = 0
+            fz[c] = p.body.radius > 0 ? -Pi * s.nu[c] * s.u[c] * s.u[c] / r : 0.0;
+        }
+    std::vector<Eigen::Triplet<double>> t;
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(s.u.size()));
+    const int i_ref = Ny, j_ref = nz / 2;  // the balance replaced by the load
+    for (int j = 0; j < nz; ++j)
+        for (int i = 0; i < ny; ++i) {
+            const Eigen::Index c = k(i, j);
+            if (i == i_ref && j == j_ref) continue;
+            const double wy = (i == 0 || i == Ny ? 0.5 : 1.0) * hy;
+            const double wz = (!p.periodic && (j == 0 || j == Nz) ? 0.5 : 1.0) * hz;
+            // face to neighbour nb at distance h, face area a, outward sign sg along the axis, f along the axis
+            const auto face = [&](Eigen::Index nb, double h, double a, double sg, const std::vector<double>& f) {
+                t.emplace_back(c, nb, a / h);
+                t.emplace_back(c, c, -a / h);
+                b[c] += sg * a * 0.5 * (f[static_cast<std::size_t>(c)] + f[static_cast<std::size_t>(nb)]);
+            };
+            if (i < Ny) face(k(i + 1, j), hy, wz, 1.0, fy);
+            if (i > 0) face(k(i - 1, j), hy, wz, -1.0, fy);
+            if (j < nz - 1 || p.periodic) face(k(i, (j + 1) % nz), hz, wy, 1.0, fz);
+            if (j > 0 || p.periodic) face(k(i, (j + nz - 1) % nz), hz, wy, -1.0, fz);
+        }
+    for (int j = 0; j < nz; ++j) {
+        const double w = (!p.periodic && (j == 0 || j == Nz) ? 0.5 : 1.0) / Nz;
+        t.emplace_back(k(i_ref, j_ref), k(Ny, j), w);
+    }
+    b[k(i_ref, j_ref)] = 1.0;
+    Eigen::SparseMatrix<double> A(b.size(), b.size());
+    A.setFromTriplets(t.begin(), t.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu(A);
+    if (lu.info() != Eigen::Success) throw SolverError("cross-section: the pressure field's matrix is singular");
+    const Eigen::VectorXd x = lu.solve(b);
+    return {x.data(), x.data() + x.size()};
+}
+
 std::string describe(const CrossSectionProblem& p) {
     std::ostringstream m;
     m << "Pi = rho U^2/P = " << p.gap.Pi;
@@ -450,8 +520,9 @@ std::string describe(const CrossSectionProblem& p) {
 
 }  // namespace cross_section_fv
 
-CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st) {
-    using cross_section_fv::initial_guess;
+namespace cross_section_fv {
+
+CrossSectionSolution solve_at_uniform_pressure(const CrossSectionProblem& p, const CrossSectionSettings& st) {
     using cross_section_fv::describe;
     int total = 0;
     std::string first_why;
@@ -520,6 +591,34 @@ CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const Cro
     s.iterations = total;
     s.continuation_steps = steps;
     return s;
+}
+
+}  // namespace cross_section_fv
+
+CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st) {
+    CrossSectionSolution s = cross_section_fv::solve_at_uniform_pressure(p, st);
+    if (!p.body.on()) return s;
+    // The body forces' pressure from the last (u^, nu), then Newton at that pressure, until p^ settles: the forces
+    // move p^ by a few per cent, so the passes contract fast.
+    CrossSectionProblem q = p;
+    q.pressure.assign(s.u.size(), 1.0);
+    for (int pass = 0; pass < 50; ++pass) {
+        std::vector<double> pr = cross_section_fv::pressure_field(p, s);
+        double change = 0;
+        for (std::size_t k = 0; k < pr.size(); ++k) change = std::max(change, std::abs(pr[k] - q.pressure[k]));
+        q.pressure.swap(pr);
+        const auto rep = newton_cross_section(q, st, s);
+        s.iterations += rep.iterations;
+        if (!rep.converged)
+            throw SolverError("cross-section with the body forces: Newton at the forces' pressure failed: " + rep.why +
+                              "; try finer cross_section_cells_y/z or [continuum] body_forces = \"off\"");
+        if (change < 1e-10) {
+            s.pressure = q.pressure;
+            return s;
+        }
+    }
+    throw SolverError("cross-section with the body forces: the pressure field did not settle in 50 passes; try "
+                      "[continuum] body_forces = \"off\"");
 }
 
 }  // namespace granlub::continuum

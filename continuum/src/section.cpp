@@ -63,6 +63,9 @@ SectionSpec section() {
               "geometry = cross_section: cells across the gap; at least 4 per grain diameter (4 H/d)");
     s.integer("cross_section_cells_z", 100, Range::closed(2, 1e5),
               "geometry = cross_section: cells across the width; at least 4 per grain diameter (4 W/d)");
+    s.choice("body_forces", "off", {"off", "on"},
+             "geometry = cross_section: off = the pressure uniform (the load); on = gravity ([body_forces] gravity) and "
+             "the centripetal force ([cell] annulus_radius) through the potential part of their pressure field");
     s.real_optional("side_roughness", Range::unit(), "",
                     "geometry = cross_section: R5..R8 of both side walls; default: [walls] sides = plane: the wall "
                     "roughness as declared, as_bottom: the floor's R5..R8");

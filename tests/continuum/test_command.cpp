@@ -373,6 +373,8 @@ BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
     BOOST_TEST(contains(e, "method"), e);
     e = settings_error("[continuum]\nside_roughness = 0.3\n", trough);
     BOOST_TEST(contains(e, "side_roughness"), e);
+    e = settings_error("[continuum]\nbody_forces = \"on\"\n", trough);
+    BOOST_TEST(contains(e, "body_forces"), e);
     BOOST_TEST(settings_error("[continuum]\ngeometry = \"cross_section\"\n", trough).empty());
 
     TempDir tmp;

@@ -179,3 +179,40 @@ BOOST_AUTO_TEST_CASE(budgets_close_per_wall) {
     BOOST_TEST(defects.back() < 1e-3);
     BOOST_TEST(defects[1] / defects[2] > 3.0);  // second order: x4 per halving
 }
+
+// Body forces. Gravity alone on the periodic section has no curl: p^ is the hydrostatic column under the load,
+// p^(y) = 1 + Lambda g^ int_y^1 nu dy (the trapezoid rule is the FV balance's own quadrature). With the centripetal
+// force the outer wall carries more than the inner one, and the budgets still close.
+BOOST_AUTO_TEST_CASE(body_forces_give_the_hydrostatic_column_and_load_the_outer_wall) {
+    const Spec sp = sawyer(2.0);
+    CrossSectionProblem p = trough(sp);
+    p.periodic = true;
+    p.body.gravity = sp.rho * 9.81 * sp.d / sp.P;
+    const CrossSectionSolution s = solve_cross_section(p, grid(40, 4));
+    BOOST_TEST_REQUIRE(s.pressure.size() == s.u.size());
+    const double h = 1.0 / s.cells_y, k = p.gap.Lambda * p.body.gravity;
+    double column = 1.0, worst = 0;
+    for (int i = s.cells_y; i >= 0; --i) {
+        if (i < s.cells_y) column += k * 0.5 * h * (s.nu[s.at(i, 0)] + s.nu[s.at(i + 1, 0)]);
+        for (int j = 0; j < s.nz(); ++j) worst = std::max(worst, std::abs(s.pressure[s.at(i, j)] - column));
+    }
+    BOOST_TEST(worst < 1e-10);
+    BOOST_TEST(column > 1.01);  // rho g H nu / P ~ 1 % more on the floor
+    // and the floor feels it: more pressure, more shear than without gravity
+    CrossSectionProblem p0 = p;
+    p0.body = {};
+    const auto o = observe(p, s), o0 = observe(p0, solve_cross_section(p0, grid(40, 4)));
+    BOOST_TEST(std::abs(o.walls[0].normal - column) < 1e-10);
+    BOOST_TEST(o.walls[0].tau > o0.walls[0].tau);
+
+    CrossSectionProblem q = trough(sp);
+    q.body.gravity = p.body.gravity;
+    q.body.radius = (76.2e-3 + 9.5e-3) / sp.d;
+    const CrossSectionSolution r = solve_cross_section(q, grid(20, 50));
+    const auto oq = observe(q, r);
+    BOOST_TEST(oq.walls[2].normal > oq.walls[3].normal);
+    BOOST_TEST(oq.walls[2].tau > oq.walls[3].tau);
+    BOOST_TEST(std::abs(oq.walls[1].normal - 1.0) < 1e-10);  // the top carries the load
+    BOOST_TEST(std::abs(oq.force_balance) < 1e-8);
+    BOOST_TEST(std::abs(oq.energy_defect) < 5e-3);
+}

@@ -28,6 +28,7 @@ struct Settings {
     bool cross_section = false;
     int cells_y = 40, cells_z = 100;
     double side_roughness = -1;  // < 0: not set
+    bool body_forces = false;
 };
 
 // Throws CaseError naming the key for values the section spec cannot check alone.

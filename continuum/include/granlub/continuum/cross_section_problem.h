@@ -4,7 +4,10 @@
 // (the same closures, node_coefficients(); the same wall condition, wall_condition.h, on each wall in its frame):
 //   div(M grad u^) = 0,   div(K grad nu) = Pi M |grad u^|^2 - Lambda^2 C
 // Floor (y^ = 0) and both side walls move at U, the top (y^ = 1) is still; each wall has its own WallBC.
-// Pressure uniform (P_y = the load); T = P/(rho_p f_p(nu)) as in 1-D. No secondary flow.
+// Pressure uniform (P_y = the load), or with the body forces on the field p^ = p/P_y of their potential part
+// (cross_section_solver.h); T = p/(rho_p f_p(nu)) locally, so with p^ the coefficients become
+//   M -> p^^1/2 M,  K -> p^^3/2 K,  C -> p^^3/2 C,  and the heat flux gains -p^^1/2 K_p grad p^,  K_p = f_kappa f_p^-3/2
+// and a wall condition sees Pi/p^ (derivation: continuum/README.md). No secondary flow.
 #pragma once
 #include <vector>
 
@@ -26,6 +29,14 @@ public:
     virtual void wall(CrossSectionWall w, double y, double z, double& du, double& dnu) const = 0;
 };
 
+// Body forces over the cross-section, dimensionless (zero: off).
+struct CrossSectionBodyForces {
+    double gravity = 0;  // rho_p g sigma / P_y: dp^/dy^ = -Lambda gravity nu (gravity along -y)
+    double radius = 0;   // the outer side wall's radius / sigma; 0 = no centripetal force. dp^/dz^ = -Pi nu u^^2 / r^,
+                         // r^ = r/H = radius/Lambda - z^ (z^ = 0 the outer wall)
+    bool on() const { return gravity != 0 || radius != 0; }
+};
+
 struct CrossSectionProblem {
     // closures, Lambda = H/sigma, Pi = rho_p U^2/P_y, mode (Load or Inventory), inventory = Lambda x mean nu over
     // the cross-section (grains per length / (sigma W)), the floor (bottom) and top walls.
@@ -34,6 +45,8 @@ struct CrossSectionProblem {
     double width = 0;            // W / sigma; A = width / Lambda (so the gap unknown of Inventory changes A)
     bool periodic = false;       // side walls removed: periodic in z^ (the 1-D check)
     const CrossSectionSource* source = nullptr;  // tests only
+    CrossSectionBodyForces body;
+    std::vector<double> pressure;  // p^ per node while solving with body forces; empty = uniform (1)
 
     double aspect(double Lambda) const { return width / Lambda; }
     const WallBC& wall(CrossSectionWall w) const;
@@ -52,6 +65,7 @@ struct CrossSectionSolution {
     int cells_y = 0, cells_z = 0;
     bool periodic = false;
     std::vector<double> u, nu;
+    std::vector<double> pressure;  // p^ = p/P_y per node; empty = uniform (no body forces)
     double Pi = 0, Lambda = 0;
     int iterations = 0, continuation_steps = 0;
     double residual = 0;
@@ -65,6 +79,7 @@ struct CrossSectionSolution {
 // (slip work minus the energy flux the condition returns, K dnu/dn), per unit length over P_y U H.
 struct CrossSectionWallOutput {
     double tau = 0, slip = 0, force = 0, work = 0, sink = 0;
+    double normal = 1;  // mean normal stress / P_y
     bool present = false;
 };
 struct CrossSectionObservables {
@@ -79,5 +94,7 @@ CrossSectionObservables observe(const CrossSectionProblem& p, const CrossSection
 
 // The column at mid-width (interpolated between the two middle columns when cells_z is odd): 1-D Solution.
 Solution mid_width_profile(const CrossSectionSolution& s);
+// p^ on the same column (1 without body forces).
+std::vector<double> mid_width_pressure(const CrossSectionSolution& s);
 
 }  // namespace granlub::continuum
