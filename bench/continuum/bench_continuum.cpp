@@ -128,4 +128,23 @@ void BM_cross_section_point(benchmark::State& state) {
 }
 BENCHMARK(BM_cross_section_point)->Args({40, 100})->Args({80, 200})->Unit(benchmark::kMillisecond);
 
+// The same with the body forces on (gravity, the centripetal force of S&T's annulus): Picard passes on the pressure.
+void BM_cross_section_point_body_forces(benchmark::State& state) {
+    CrossSectionProblem p;
+    p.gap = sawyer(2.0, 5.5e3);
+    p.outer = p.inner = p.gap.bottom;
+    p.width = 19e-3 / 0.787e-3;
+    p.body.gravity = 2550 * 9.81 * 0.787e-3 / 5.5e3;
+    p.body.radius = (76.2e-3 + 9.5e-3) / 0.787e-3;
+    CrossSectionSettings st;
+    int its = 0;
+    for (auto _ : state) {
+        const CrossSectionSolution s = solve_cross_section(p, st);
+        its = s.iterations;
+        benchmark::DoNotOptimize(s.nu.data());
+    }
+    state.counters["newton_iterations"] = its;
+}
+BENCHMARK(BM_cross_section_point_body_forces)->Unit(benchmark::kMillisecond);
+
 BENCHMARK_MAIN();
