@@ -9,7 +9,6 @@
 #include "granlub/continuum/cross_section_solver.h"
 #include "granlub/error.h"
 #include "granlub/results/file_io.h"
-#include "granlub/results/run_status.h"
 
 namespace granlub::continuum {
 
@@ -182,14 +181,6 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
     m.run["geometry"] = "cross_section";
     m.run["cells_y"] = s.cells_y;
     m.run["cells_z"] = s.cells_z;
-    m.run["iterations"] = sol.iterations;
-    m.run["final_residual"] = sol.residual;
-    m.run["continuation_steps"] = sol.continuation_steps;
-    m.run["solve_time_s"] = secs;
-    m.run["method"] = "fv";
-    m.run["g0"] = s.g0_name;
-    m.run["wall_model"] = s.wall_name;
-    m.run["closures"] = s.closures_name;
     m.run["side_walls"] = {{"sides", c.side_walls == SideWalls::AsBottom ? "as_bottom" : "plane"},
                            {"r5", q.outer.params.r5}, {"restitution", q.outer.params.restitution},
                            {"width_m", Wc}};
@@ -207,26 +198,13 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
                                                        "mean = the load; no secondary flow",
                                                        c.gravity, q.body.radius * d)
                                          : "not modelled: the pressure is uniform over the cross-section, P_y = the load";
-    nlohmann::json warnings = nlohmann::json::array();
-    if (o.nu_max_node > s.closures->numax())
-        warnings.push_back(fmt::format("solid fraction {:.4f} exceeds nu_max = {} (g0 = {} has no nu_max limit)",
-                                       o.nu_max_node, s.closures->numax(), s.g0_name));
-    m.run["warnings"] = warnings;
-    if (s.ordering_fraction > 0 && o.nu_max_node > s.ordering_fraction)
-        set_regime(m.run, RegimeStatus::Ordered,
-                   fmt::format("the largest solid fraction {:.4f} exceeds [continuum] ordering_fraction = {}",
-                               o.nu_max_node, s.ordering_fraction));
-    else
-        set_regime(m.run, RegimeStatus::Steady);
-    for (const auto& [name, v] : m.outputs)
-        if (!std::isfinite(v.value))
-            throw SolverError(fmt::format("the cross-section solution has a non-finite {} (residual {:.3g})", name,
-                                          sol.residual));
+    record_run(m, s, {sol.iterations, sol.residual, sol.continuation_steps, secs, o.nu_max_node});
     r.line = fmt::format("nu={:.4f} tau floor/top/outer/inner={:.4g}/{:.4g}/{:.4g}/{:.4g} Pa slip/U={:.3f}/{:.3f} "
                          "side share={:.3f} it={}",
                          nu_mean, P * fl.tau, P * tp.tau, P * ou.tau, P * in.tau, fl.slip, tp.slip, o.side_share,
                          sol.iterations);
     if (s.gap_from_inventory) r.line += fmt::format(" gap={:.3f} mm", 1e3 * gap);
+    if (s.ordering_fraction > 0 && o.nu_max_node > s.ordering_fraction) r.line += " ORDERED";
     return r;
 }
 

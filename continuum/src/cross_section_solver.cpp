@@ -8,6 +8,7 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include "damped_newton.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/walls/wall_condition.h"
 #include "granlub/error.h"
@@ -137,30 +138,26 @@ public:
         if (Ny_ < 2 || Nz_ < (p.periodic ? 3 : 2)) throw SolverError("the cross-section needs at least 2 x 3 cells");
         // Sparsity of the 5-point stencil in 2x2 blocks; each entry's place in the value array kept, so the
         // Newton loop refills the values in place.
+        // every (row, column) of the pattern: node k's two residuals against member m's two unknowns, slot 2a + b
+        const auto each_entry = [&](const auto& f) {
+            for (int j = 0; j < nz_; ++j)
+                for (int i = 0; i < ny_; ++i)
+                    for (int m = 0; m < kMembers; ++m) {
+                        const long nb = member(i, j, m);
+                        if (nb < 0) continue;
+                        const std::size_t slot = (static_cast<std::size_t>(idx(i, j)) * kMembers + m) * 4;
+                        for (int a = 0; a < 2; ++a)
+                            for (int b = 0; b < 2; ++b) f(slot + 2 * a + b, 2 * idx(i, j) + a, 2 * nb + b);
+                    }
+        };
         std::vector<Eigen::Triplet<double>> t;
         t.reserve(n_ * kMembers * 4);
-        for (int j = 0; j < nz_; ++j)
-            for (int i = 0; i < ny_; ++i)
-                for (int m = 0; m < kMembers; ++m) {
-                    const long nb = member(i, j, m);
-                    if (nb < 0) continue;
-                    for (int a = 0; a < 2; ++a)
-                        for (int b = 0; b < 2; ++b) t.emplace_back(2 * idx(i, j) + a, 2 * nb + b, 0.0);
-                }
+        each_entry([&](std::size_t, long r, long c) { t.emplace_back(r, c, 0.0); });
         J_.resize(static_cast<Eigen::Index>(2 * n_), static_cast<Eigen::Index>(2 * n_));
         J_.setFromTriplets(t.begin(), t.end());
         J_.makeCompressed();
         pos_.assign(n_ * kMembers * 4, -1);
-        for (int j = 0; j < nz_; ++j)
-            for (int i = 0; i < ny_; ++i)
-                for (int m = 0; m < kMembers; ++m) {
-                    const long nb = member(i, j, m);
-                    if (nb < 0) continue;
-                    for (int a = 0; a < 2; ++a)
-                        for (int b = 0; b < 2; ++b)
-                            pos_[(static_cast<std::size_t>(idx(i, j)) * kMembers + m) * 4 + 2 * a + b] =
-                                &J_.coeffRef(2 * idx(i, j) + a, 2 * nb + b) - J_.valuePtr();
-                }
+        each_entry([&](std::size_t slot, long r, long c) { pos_[slot] = &J_.coeffRef(r, c) - J_.valuePtr(); });
         lu_.analyzePattern(J_);
     }
 
@@ -246,6 +243,14 @@ public:
             norm = std::max(norm, std::abs(g_));
         }
         return norm;
+    }
+
+    // The rest of detail::damped_newton's interface (damped_newton.h).
+    void step_sizes(const Eigen::VectorXd& dx, double& du, double& ds) const {
+        for (Eigen::Index k = 0; k < dx.size(); k += 2) du = std::max(du, std::abs(dx[k])), ds = std::max(ds, std::abs(dx[k + 1]));
+    }
+    void advance(Eigen::VectorXd& out, const Eigen::VectorXd& x, double a, const Eigen::VectorXd& dx) const {
+        out = x + a * dx;
     }
 
     // Newton step for the last evaluate(..., true): dx and dlam. False when the matrix is singular.
@@ -347,73 +352,15 @@ Eigen::VectorXd unknowns(const CrossSectionSolution& s, double cap) {
 
 }  // namespace cross_section_fv
 
-CrossSectionReport newton_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st,
-                                        CrossSectionSolution& sol) {
+NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st,
+                                  CrossSectionSolution& sol) {
     using namespace cross_section_fv;
-    CrossSectionReport rep;
     Fv2 fv(p, st);
     if (sol.u.size() != fv.nodes() || sol.cells_y != st.cells_y || sol.cells_z != st.cells_z)
         throw Error("newton_cross_section: the initial guess is not on the solver's grid");
     Eigen::VectorXd x = unknowns(sol, fv.cap()), dx(x.size()), xt(x.size());
     double lam = std::log(fv.inventory() ? (sol.Lambda > 0 ? sol.Lambda : p.gap.Lambda) : p.gap.Lambda);
-    double norm = fv.evaluate(x, lam, true);
-    for (int it = 0;; ++it) {
-        rep.iterations = it;
-        rep.residual = norm;
-        if (norm < st.tolerance) {
-            rep.converged = true;
-            break;
-        }
-        if (it >= st.max_iterations) {
-            rep.why = "Newton did not converge in " + std::to_string(st.max_iterations) + " iterations";
-            break;
-        }
-        if (!std::isfinite(norm)) {
-            rep.why = "the residual is not finite";
-            break;
-        }
-        double dlam = 0;
-        if (!fv.step(dx, dlam)) {
-            rep.why = "singular Newton matrix";
-            break;
-        }
-        // Damping and Armijo backtracking on the max norm, as the 1-D solver (|du^| <= 0.5, |ds| <= 3).
-        double step_u = 0, step_s = 0;
-        for (Eigen::Index k = 0; k < x.size(); k += 2) {
-            step_u = std::max(step_u, std::abs(dx[k]));
-            step_s = std::max(step_s, std::abs(dx[k + 1]));
-        }
-        double alpha = std::min({1.0, 0.5 / std::max(step_u, 1e-300), 3.0 / std::max(step_s, 1e-300),
-                                 1.0 / std::max(std::abs(dlam), 1e-300)});
-        bool accepted = false;
-        for (int k = 0; k < 40; ++k) {
-            xt = x + alpha * dx;
-            const double tnorm = fv.evaluate(xt, lam + alpha * dlam, false);
-            if (tnorm <= (1.0 - 1e-4 * alpha) * norm) {
-                accepted = true;
-                break;
-            }
-            alpha *= 0.5;
-        }
-        const double step_max = alpha * std::max({step_u, step_s, std::abs(dlam)});
-        if (!accepted) {
-            if (norm < 1e3 * st.tolerance) {  // round-off floor
-                rep.converged = true;
-                break;
-            }
-            rep.why = "the line search could not reduce the residual";
-            break;
-        }
-        x.swap(xt);
-        lam += alpha * dlam;
-        norm = fv.evaluate(x, lam, true);
-        if (step_max < 1e-13 && norm < 1e3 * st.tolerance) {
-            rep.iterations = it + 1;
-            rep.residual = norm;
-            rep.converged = true;
-            break;
-        }
-    }
+    NewtonReport rep = detail::damped_newton(fv, x, lam, dx, xt, st.tolerance, st.max_iterations);
     for (std::size_t k = 0; k < sol.u.size(); ++k) {
         sol.u[k] = x[static_cast<Eigen::Index>(2 * k)];
         sol.nu[k] = fv.nu_of(x[static_cast<Eigen::Index>(2 * k + 1)]);
@@ -564,32 +511,18 @@ CrossSectionSolution solve_at_uniform_pressure(const CrossSectionProblem& p, con
           << "); try more [continuum] max_iterations or finer cross_section_cells_y/z";
         throw SolverError(m.str());
     }
-    double t = 0, dt = 0.1;
-    int steps = 0;
-    while (t < 1.0) {
-        if (++steps > st.max_continuation_steps || dt < 1e-5) {
-            std::ostringstream m;
-            m << "cross-section: " << first_why << " (residual " << first_res << "); continuation stalled at "
-              << describe(at(t)) << " after " << steps - 1 << " steps (" << rep.why
-              << "); try finer cross_section_cells_y/z or a less extreme operating point";
-            throw SolverError(m.str());
-        }
-        const double tn = std::min(1.0, t + dt);
-        CrossSectionSolution trial = s;
-        const CrossSectionProblem q = at(tn);
-        rep = newton_cross_section(q, st, trial);
-        total += rep.iterations;
-        if (rep.converged) {
-            s = std::move(trial);
-            t = tn;
-            if (rep.iterations <= 4) dt *= 1.5;
-            else if (rep.iterations > 8) dt *= 0.5;
-        } else {
-            dt *= 0.5;
-        }
+    const auto c = detail::continuation(
+        s, [&](double t, CrossSectionSolution& trial) { return newton_cross_section(at(t), st, trial); },
+        st.max_continuation_steps, total);
+    if (!c.reached) {
+        std::ostringstream m;
+        m << "cross-section: " << first_why << " (residual " << first_res << "); continuation stalled at "
+          << describe(at(c.t)) << " after " << c.steps - 1 << " steps (" << c.last.why
+          << "); try finer cross_section_cells_y/z or a less extreme operating point";
+        throw SolverError(m.str());
     }
     s.iterations = total;
-    s.continuation_steps = steps;
+    s.continuation_steps = c.steps;
     return s;
 }
 

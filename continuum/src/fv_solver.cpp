@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "block_tridiagonal.h"
+#include "damped_newton.h"
 #include "granlub/continuum/homogeneous.h"
 #include "granlub/continuum/walls/wall_condition.h"
 #include "granlub/error.h"
@@ -61,6 +62,11 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
         Rn = l.Kc * dn - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm) / h - 0.5 * h * src;
     }
 }
+
+// The unknowns: u^ and the logit s of every node.
+struct Unknowns {
+    std::vector<double> u, s;
+};
 
 class Fv {
 public:
@@ -153,6 +159,16 @@ public:
     }
     double weight(std::size_t i) const { return (i == 0 || i == N_) ? 0.5 * h_ : h_; }
 
+    // The interface of detail::damped_newton (damped_newton.h).
+    double evaluate(const Unknowns& x, double lam, bool jac) { return evaluate(x.u, x.s, lam, jac); }
+    bool step(Unknowns& dx, double& dlam) { return step(dx.u, dx.s, dlam); }
+    void step_sizes(const Unknowns& dx, double& du, double& ds) const {
+        for (std::size_t i = 0; i < n_; ++i) du = std::max(du, std::abs(dx.u[i])), ds = std::max(ds, std::abs(dx.s[i]));
+    }
+    void advance(Unknowns& out, const Unknowns& x, double a, const Unknowns& dx) const {
+        for (std::size_t i = 0; i < n_; ++i) out.u[i] = x.u[i] + a * dx.u[i], out.s[i] = x.s[i] + a * dx.s[i];
+    }
+
     // Newton step for the last evaluate(..., jac = true). False when the matrix is singular.
     bool step(std::vector<double>& du, std::vector<double>& ds, double& dlam) {
         if (!J_.factorise()) return false;
@@ -204,85 +220,21 @@ private:
 }  // namespace
 
 NewtonReport newton_fv(const Problem& p, const SolverSettings& st, Solution& sol) {
-    NewtonReport rep;
     Fv fv(p, st.cells);
     const std::size_t n = fv.nodes();
     if (sol.nodes() != n) throw Error("newton_fv: the initial guess is not on the solver's mesh");
     const double cap = fv.cap();
-    std::vector<double> u = sol.u, s(n), du(n), ds(n), ut(n), stry(n);
+    Unknowns x{sol.u, std::vector<double>(n)}, dx{std::vector<double>(n), std::vector<double>(n)}, xt = dx;
     for (std::size_t i = 0; i < n; ++i) {
         const double nu = std::clamp(sol.nu[i], 1e-9 * cap, (1 - 1e-12) * cap);
-        s[i] = std::log(nu / (cap - nu));
+        x.s[i] = std::log(nu / (cap - nu));
     }
     double lam = fv.inventory() ? std::log(sol.Lambda > 0 ? sol.Lambda : p.Lambda)
                                 : std::log(sol.Pi > 0 ? sol.Pi : p.Pi);
-    double norm = fv.evaluate(u, s, lam, true);
-    for (int it = 0;; ++it) {
-        rep.iterations = it;
-        rep.residual = norm;
-        if (norm < st.tolerance) {
-            rep.converged = true;
-            break;
-        }
-        if (it >= st.max_iterations) {
-            rep.why = "Newton did not converge in " + std::to_string(st.max_iterations) + " iterations";
-            break;
-        }
-        if (!std::isfinite(norm)) {
-            rep.why = "the residual is not finite";
-            break;
-        }
-        double dlam = 0;
-        if (!fv.step(du, ds, dlam)) {
-            rep.why = "singular Newton matrix";
-            break;
-        }
-        // Damping: keep logit and velocity steps moderate, then backtrack (Armijo on the max norm).
-        double step_u = 0, step_s = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            step_u = std::max(step_u, std::abs(du[i]));
-            step_s = std::max(step_s, std::abs(ds[i]));
-        }
-        double alpha = std::min({1.0, 0.5 / std::max(step_u, 1e-300), 3.0 / std::max(step_s, 1e-300),
-                                 1.0 / std::max(std::abs(dlam), 1e-300)});
-        bool accepted = false;
-        double tnorm = norm;
-        for (int k = 0; k < 40; ++k) {
-            for (std::size_t i = 0; i < n; ++i) {
-                ut[i] = u[i] + alpha * du[i];
-                stry[i] = s[i] + alpha * ds[i];
-            }
-            tnorm = fv.evaluate(ut, stry, lam + alpha * dlam, false);
-            if (tnorm <= (1.0 - 1e-4 * alpha) * norm) {
-                accepted = true;
-                break;
-            }
-            alpha *= 0.5;
-        }
-        const double step_max = alpha * std::max({step_u, step_s, std::abs(dlam)});
-        if (!accepted) {
-            // Round-off floor: a full-size step that no longer reduces the residual.
-            if (norm < 1e3 * st.tolerance) {
-                rep.converged = true;
-                break;
-            }
-            rep.why = "the line search could not reduce the residual";
-            break;
-        }
-        u.swap(ut);
-        s.swap(stry);
-        lam += alpha * dlam;
-        norm = fv.evaluate(u, s, lam, true);
-        if (step_max < 1e-13 && norm < 1e3 * st.tolerance) {
-            rep.iterations = it + 1;
-            rep.residual = norm;
-            rep.converged = true;
-            break;
-        }
-    }
+    NewtonReport rep = detail::damped_newton(fv, x, lam, dx, xt, st.tolerance, st.max_iterations);
     for (std::size_t i = 0; i < n; ++i) {
-        sol.u[i] = u[i];
-        sol.nu[i] = fv.nu_of(s[i]);
+        sol.u[i] = x.u[i];
+        sol.nu[i] = fv.nu_of(x.s[i]);
     }
     sol.Pi = fv.Pi_of(lam);
     sol.Lambda = fv.Lambda_of(lam);
@@ -372,31 +324,18 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
           << "); try more [continuum] max_iterations or check the operating point";
         throw SolverError(m.str());
     }
-    double t = 0, dt = 0.1;
-    int steps = 0;
-    while (t < 1.0) {
-        if (++steps > st.max_continuation_steps || dt < 1e-5) {
-            std::ostringstream m;
-            m << first_why << " (residual " << first_res << "); continuation stalled at " << describe(at(t))
-              << " after " << steps - 1 << " steps (last Newton residual " << rep.residual << ": " << rep.why
-              << "); try more [continuum] cells, a larger max_continuation_steps, or a less extreme operating point";
-            throw SolverError(m.str());
-        }
-        const double tn = std::min(1.0, t + dt);
-        Solution trial = s;
-        rep = newton_fv(at(tn), st, trial);
-        total += rep.iterations;
-        if (rep.converged) {
-            s = std::move(trial);
-            t = tn;
-            if (rep.iterations <= 4) dt *= 1.5;
-            else if (rep.iterations > 8) dt *= 0.5;  // hard step: go slower next time
-        } else {
-            dt *= 0.5;
-        }
+    const auto c = detail::continuation(
+        s, [&](double t, Solution& trial) { return newton_fv(at(t), st, trial); }, st.max_continuation_steps, total);
+    if (!c.reached) {
+        const NewtonReport& last = c.steps > 1 ? c.last : rep;
+        std::ostringstream m;
+        m << first_why << " (residual " << first_res << "); continuation stalled at " << describe(at(c.t))
+          << " after " << c.steps - 1 << " steps (last Newton residual " << last.residual << ": " << last.why
+          << "); try more [continuum] cells, a larger max_continuation_steps, or a less extreme operating point";
+        throw SolverError(m.str());
     }
     s.iterations = total;
-    s.continuation_steps = steps;
+    s.continuation_steps = c.steps;
     return s;
 }
 

@@ -76,6 +76,16 @@ struct TempDir {
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
+// The CaseError resolving [continuum] throws for `extra` added to `base`, or "".
+std::string settings_error(const std::string& extra, const std::string& base = kCase) {
+    try {
+        continuum::resolve_settings(parse(extra, base));
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
 // Options that write into `tmp`, every point or only `point`.
 RunOptions into(const TempDir& tmp, const std::string& point = "") {
     RunOptions o;
@@ -249,14 +259,6 @@ BOOST_AUTO_TEST_CASE(impossible_points_fail_cleanly_and_write_nothing) {
 
 // Choices that cannot go together stop before anything runs (exit 2 from the command line), naming the key.
 BOOST_AUTO_TEST_CASE(incompatible_choices_name_the_key) {
-    const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
-        try {
-            continuum::resolve_settings(parse(extra, base));
-        } catch (const CaseError& e) {
-            return e.what();
-        }
-        return "";
-    };
     std::string e = settings_error("[continuum]\nclosures = \"garzo_dufty\"\nviscosity_alpha = 1.6\n");
     BOOST_TEST(contains(e, "viscosity_alpha"), e);
     BOOST_TEST(contains(e, "lun84"), e);
@@ -350,14 +352,6 @@ BOOST_AUTO_TEST_CASE(inventory_gap_and_the_ordered_label) {
 // key and what is allowed; a run writes every wall's stress and slip, the mid-width profile and section.csv in the
 // particle solvers' columns.
 BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
-    const auto settings_error = [](const std::string& extra, const std::string& base = kCase) -> std::string {
-        try {
-            continuum::resolve_settings(parse(extra, base));
-        } catch (const CaseError& e) {
-            return e.what();
-        }
-        return "";
-    };
     std::string e = settings_error("[continuum]\ngeometry = \"cross_section\"\n");  // kCase has no width
     BOOST_TEST(contains(e, "geometry"), e);
     BOOST_TEST(contains(e, "width > 0"), e);

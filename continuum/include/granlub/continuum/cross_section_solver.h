@@ -10,19 +10,13 @@
 #include <string>
 
 #include "granlub/continuum/cross_section_problem.h"
+#include "granlub/continuum/fv_solver.h"
 
 namespace granlub::continuum {
 
-struct CrossSectionReport {
-    bool converged = false;
-    int iterations = 0;
-    double residual = 0;
-    std::string why;
-};
-
 // Newton from `s` (on the settings' grid); `s` holds the last iterate.
-CrossSectionReport newton_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st,
-                                        CrossSectionSolution& s);
+NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st,
+                                  CrossSectionSolution& s);
 
 // Full solve: the 1-D solution of the same gap (solve_fv on the same nodes in y^) extended over z^ as the
 // initial guess, Newton, and continuation in ln Lambda and ln Pi (as the 1-D solver) when Newton fails.
