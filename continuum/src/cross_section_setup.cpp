@@ -1,5 +1,6 @@
 #include "granlub/continuum/cross_section_setup.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -7,6 +8,7 @@
 
 #include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/cross_section_solver.h"
+#include "granlub/particles/cross_section.h"
 #include "granlub/error.h"
 #include "granlub/results/file_io.h"
 
@@ -93,20 +95,47 @@ CrossSectionProblem cross_section_problem_for(const Case& c, const Settings& s, 
 
 namespace {
 
-// section.csv: the FV cells between the nodes, each the mean of its four corner nodes, in the particle solvers'
-// columns and order (cross_section.h: y across the gap from the floor, z/W from -1/2 at the outer wall, z fastest).
-Profile section_table(const CrossSectionSolution& s) {
-    const int Ny = s.cells_y, Nz = s.cells_z;
+// Where the continuum's domain lies in the particle solvers' frame (m): y from the floor's bump centres over the gap
+// between the centre planes, z from the outer wall over the width; the domain starts at off_y, off_z.
+struct Frame {
+    double d, gap, width, off_y, Hc, off_z, Wc;
+};
+
+// section.csv on the particle solvers' cells (cross_section.h: about one grain diameter each, y across the gap from
+// the floor, z/W from -1/2 at the outer wall, z fastest): per cell the solid volume fraction (the room outside the
+// continuum's domain, between bumps, counts as empty) and the grain-weighted u/U (0 in a cell without grains), by
+// a 16 x 16 midpoint rule on the bilinear interpolant of the nodes.
+Profile section_table(const CrossSectionSolution& s, const Frame& f) {
+    const std::size_t ny = CrossSection::cells_for_grains(f.d, f.gap), nz = CrossSection::cells_for_grains(f.d, f.width);
+    constexpr int kSamples = 16;
+    const auto node = [&](double yh, double zh, double& nu, double& u) {  // yh, zh in [0, 1] over the domain
+        const double a = std::clamp(yh, 0.0, 1.0) * s.cells_y, b = std::clamp(zh, 0.0, 1.0) * s.cells_z;
+        const int i = std::min(static_cast<int>(a), s.cells_y - 1), j = std::min(static_cast<int>(b), s.cells_z - 1);
+        const double fa = a - i, fb = b - j;
+        const auto lerp = [&](const std::vector<double>& v) {
+            return (1 - fa) * ((1 - fb) * v[s.at(i, j)] + fb * v[s.at(i, j + 1)]) +
+                   fa * ((1 - fb) * v[s.at(i + 1, j)] + fb * v[s.at(i + 1, j + 1)]);
+        };
+        nu = lerp(s.nu), u = lerp(s.u);
+    };
     std::vector<double> y, z, nu, u;
-    for (int i = 0; i < Ny; ++i)
-        for (int j = 0; j < Nz; ++j) {
-            const auto mean = [&](const std::vector<double>& v) {
-                return 0.25 * (v[s.at(i, j)] + v[s.at(i + 1, j)] + v[s.at(i, j + 1)] + v[s.at(i + 1, j + 1)]);
-            };
-            y.push_back((i + 0.5) / Ny);
-            z.push_back((j + 0.5) / Nz - 0.5);
-            nu.push_back(mean(s.nu));
-            u.push_back(mean(s.u));
+    for (std::size_t k = 0; k < ny; ++k)
+        for (std::size_t m = 0; m < nz; ++m) {
+            double V = 0, P = 0;
+            for (int a = 0; a < kSamples; ++a)
+                for (int b = 0; b < kSamples; ++b) {
+                    const double ym = (static_cast<double>(k) + (a + 0.5) / kSamples) * f.gap / static_cast<double>(ny);
+                    const double zm = (static_cast<double>(m) + (b + 0.5) / kSamples) * f.width / static_cast<double>(nz);
+                    const double yh = (ym - f.off_y) / f.Hc, zh = (zm - f.off_z) / f.Wc;
+                    if (yh < 0 || yh > 1 || zh < 0 || zh > 1) continue;
+                    double n_, u_;
+                    node(yh, zh, n_, u_);
+                    V += n_, P += n_ * u_;
+                }
+            y.push_back((static_cast<double>(k) + 0.5) / static_cast<double>(ny));
+            z.push_back((static_cast<double>(m) + 0.5) / static_cast<double>(nz) - 0.5);
+            nu.push_back(V / (kSamples * kSamples));
+            u.push_back(V > 0 ? P / V : 0.0);
         }
     Profile t;
     t.add("y_over_H", std::move(y)).add("z_over_W", std::move(z)).add("solid_fraction", std::move(nu));
@@ -137,6 +166,14 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
     const double offset = c.cell.gap - q.gap.Lambda * d;  // what wall_plane = "bump_tops" takes off the gap
     const double Hc = sol.Lambda * d, gap = Hc + offset, Wc = q.width * d, W = c.cell.width;
     const double nu_mean = o.nu_mean * Hc * Wc / (gap * W);
+    const double off_y = s.wall_at_bump_tops ? bump_protrusion(c, p.bottom) : 0.0;
+    const Frame frame{d, gap, W, off_y, Hc, 0.5 * (W - Wc), Wc};
+    write_file_atomic(dir / kSectionFile,
+                      profile_csv(section_table(sol, frame),
+                                  {fmt::format("granlub continuum, geometry = cross_section: case {}, point {}", c.name, p.id),
+                                   "solid fraction and u/U over the cross-section: y across the gap (0 = moving floor), z "
+                                   "across the width (z/W = -1/2: the outer wall); the particle solvers' cells, "
+                                   "averaged over the continuum's solution"}));
 
     PointResult r;
     std::vector<double> T_over_U2(mid.nodes());
@@ -144,12 +181,6 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
         T_over_U2[i] = p_mid[i] / (sol.Pi * s.closures->state(mid.nu[i]).fp.v);  // T = p/(rho_p f_p)
     r.profile.add("y_over_H", mid.y).add("u_over_U", mid.u).add("solid_fraction", mid.nu)
         .add("temperature_over_U2", T_over_U2);
-    write_file_atomic(dir / kSectionFile,
-                      profile_csv(section_table(sol),
-                                  {fmt::format("granlub continuum, geometry = cross_section: case {}, point {}", c.name, p.id),
-                                   "solid fraction and u/U over the cross-section: y across the gap (0 = moving floor), z "
-                                   "across the width (z/W = -1/2: the outer wall); FV cells, each the mean of its "
-                                   "four nodes"}));
 
     Summary& m = r.summary;
     m = make_summary(c, p, "continuum");
