@@ -19,7 +19,9 @@ NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSecti
                                   CrossSectionSolution& s);
 
 // Full solve: the 1-D solution of the same gap (solve_fv on the same nodes in y^) extended over z^ as the
-// initial guess, Newton, and continuation in ln Lambda and ln Pi (as the 1-D solver) when Newton fails.
+// initial guess, Newton, and continuation in ln Lambda and ln Pi (as the 1-D solver) when Newton fails. With body
+// forces, then Picard passes: the pressure field of their potential part from the last solution (the top wall's
+// mean = the load), Newton at that pressure, until it moves < 1e-10; the solution keeps it (`pressure`).
 // Throws granlub::SolverError.
 CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st);
 
