@@ -17,6 +17,7 @@
 #include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/case_setup.h"
 #include "granlub/continuum/command.h"
+#include "granlub/continuum/cross_section_setup.h"
 #include "granlub/error.h"
 #include "granlub/results/results.h"
 
@@ -398,4 +399,41 @@ BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
     double grains = 0;
     for (double nu : map.column("solid_fraction")) grains += nu / static_cast<double>(map.rows());
     BOOST_TEST(std::abs(grains - s.value("mean_solid_fraction")) < 1e-3);
+}
+
+// The side walls from [walls] sides: plane = the declared roughness (side_roughness overrides it), as_bottom = the
+// floor's condition, and with the wall at the bumps' tops bumpy side walls narrow the width as the floor's narrow the
+// gap; the inventory is the grains per length over the narrower width.
+BOOST_AUTO_TEST_CASE(cross_section_side_walls_from_the_case) {
+    std::string trough(kCase);
+    trough.replace(trough.find("length = 30.0e-3"), 16, "length = 30.0e-3\nwidth = 19.0e-3");
+    trough.replace(trough.find("roughness = 0.5\n"), 16, "roughness = 0.5\nsurface = \"bumps\"\n");
+    const std::string xs = "[continuum]\ngeometry = \"cross_section\"\ngap = \"inventory\"\nwall_plane = \"bump_tops\"\n";
+    std::string as_bottom = trough;
+    as_bottom.replace(as_bottom.find("surface = \"bumps\"\n"), 18, "surface = \"bumps\"\nsides = \"as_bottom\"\n");
+    const double d = 0.787e-3, W = 19e-3;
+    {
+        const Case c = parse(xs, trough);
+        const continuum::Settings s = continuum::resolve_settings(c);
+        const OperatingPoint& p = c.points.front();
+        const auto q = continuum::cross_section_problem_for(c, s, p);
+        BOOST_TEST(q.outer.params.r5 == 0.5);
+        BOOST_TEST(std::abs(q.width - W / d) < 1e-12);  // plane sides: the full width
+        const auto r = continuum::cross_section_problem_for(c, continuum::resolve_settings(
+                                                                  parse(xs + "side_roughness = 0.2\n", trough)), p);
+        BOOST_TEST(r.inner.params.r8 == 0.2);
+        BOOST_TEST(r.gap.bottom.params.r8 == 0.5);
+    }
+    {
+        const Case c = parse(xs, as_bottom);
+        const continuum::Settings s = continuum::resolve_settings(c);
+        const OperatingPoint& p = c.points.front();
+        const auto q = continuum::cross_section_problem_for(c, s, p);
+        const double prot = bump_protrusion(c, p.bottom);
+        BOOST_TEST(prot > 0);
+        BOOST_TEST(std::abs(q.width - (W - 2 * prot) / d) < 1e-9);
+        BOOST_TEST(std::abs(q.gap.inventory - p.solid_fraction * c.cell.gap * W / (d * (W - 2 * prot))) < 1e-9);
+        BOOST_TEST(q.outer.params.r5 == q.gap.bottom.params.r5);
+        BOOST_TEST(q.outer.params.restitution == q.gap.bottom.params.restitution);
+    }
 }
