@@ -18,6 +18,7 @@
 #include "granlub/continuum/case_setup.h"
 #include "granlub/continuum/command.h"
 #include "granlub/continuum/cross_section_setup.h"
+#include "granlub/continuum/map.h"
 #include "granlub/error.h"
 #include "granlub/results/results.h"
 
@@ -374,6 +375,12 @@ BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
 
     TempDir tmp;
     const Case c = parse("[continuum]\ngeometry = \"cross_section\"\ncross_section_cells_y = 24\n", trough);
+    try {  // the (U, P) map is the 1-D gap's
+        continuum::continuum_map_csv(c, continuum::MapGrid{});
+        BOOST_FAIL("the map ran with geometry = cross_section");
+    } catch (const CaseError& err) {
+        BOOST_TEST(contains(err.what(), "geometry"), err.what());
+    }
     BOOST_TEST(continuum::run(c, into(tmp, "U2.0")) == 0);
     const fs::path dir = tmp.path / "continuum" / "U2.0";
     const Summary s = read_summary(dir / "summary.json");
