@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "granlub/continuum/cross_section_solver.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
 
@@ -106,5 +107,44 @@ void BM_sweep_100(benchmark::State& state) {
 BENCHMARK(BM_sweep_100)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+// One point on the trough's cross-section (issue target: <= 2 s on one core on a 40 x 100 grid): S&T's cell at
+// U = 2 m/s, P = 5.5 kPa, W = 19 mm, the side walls as the floor; from the 1-D guess, range(0) x range(1) cells.
+CrossSectionProblem sawyer_trough() {
+    CrossSectionProblem p;
+    p.gap = sawyer(2.0, 5.5e3);
+    p.outer = p.inner = p.gap.bottom;
+    p.width = 19e-3 / 0.787e-3;
+    return p;
+}
+
+// Solves `p` once per iteration and reports the Newton iterations.
+void solve_trough(benchmark::State& state, const CrossSectionProblem& p, const CrossSectionSettings& st) {
+    int its = 0;
+    for (auto _ : state) {
+        const CrossSectionSolution s = solve_cross_section(p, st);
+        its = s.iterations;
+        benchmark::DoNotOptimize(s.nu.data());
+    }
+    state.counters["newton_iterations"] = its;
+}
+
+void BM_cross_section_point(benchmark::State& state) {
+    const CrossSectionProblem p = sawyer_trough();
+    CrossSectionSettings st;
+    st.cells_y = static_cast<int>(state.range(0));
+    st.cells_z = static_cast<int>(state.range(1));
+    solve_trough(state, p, st);
+}
+BENCHMARK(BM_cross_section_point)->Args({40, 100})->Args({80, 200})->Unit(benchmark::kMillisecond);
+
+// The same with the body forces on (gravity, the centripetal force of S&T's annulus): Picard passes on the pressure.
+void BM_cross_section_point_body_forces(benchmark::State& state) {
+    CrossSectionProblem p = sawyer_trough();
+    p.body.gravity = 2550 * 9.81 * 0.787e-3 / 5.5e3;
+    p.body.radius = (76.2e-3 + 9.5e-3) / 0.787e-3;
+    solve_trough(state, p, CrossSectionSettings{});
+}
+BENCHMARK(BM_cross_section_point_body_forces)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -9,6 +9,7 @@
 #include "granlub/case/particle_box.h"
 #include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/closures/effective_restitution.h"
+#include "granlub/continuum/cross_section_setup.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
 #include "granlub/continuum/simple_shear.h"
@@ -163,6 +164,7 @@ Settings resolve_settings(const Case& c) {
         sec.fail("wall_roughness", "wall_roughness = \"bumps\" needs bumps on the walls ([walls] surface = \"bumps\"); "
                                    "with plane walls allowed: \"declared\"");
     s.ordering_fraction = sec.maybe_real("ordering_fraction").value_or(0.0);
+    resolve_cross_section_settings(c, s);
     return s;
 }
 
@@ -278,6 +280,51 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
     return q;
 }
 
+void record_run(Summary& m, const Settings& s, const RunFacts& f) {
+    m.run["iterations"] = f.iterations;
+    m.run["final_residual"] = f.residual;
+    m.run["continuation_steps"] = f.continuation_steps;
+    m.run["solve_time_s"] = f.seconds;
+    m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
+    m.run["g0"] = s.g0_name;
+    m.run["wall_model"] = s.wall_name;
+    if (s.contact.active())
+        m.run["contact_stress"] = {{"model", "johnson_jackson"}, {"coefficient_Pa", s.contact.coefficient},
+                                   {"onset_fraction", s.contact.onset}, {"jamming_fraction", s.contact.jamming},
+                                   {"exponent_onset", s.contact.n}, {"exponent_jamming", s.contact.m},
+                                   {"friction", s.contact.friction}};
+    else
+        m.run["contact_stress"] = "none";
+    m.run["wall_energy"] = {{"convention", s.wall_energy == WallEnergy::GklR8 ? "gkl_r8" : "slip_work"},
+                            {"source", s.wall_energy_source}};
+    m.run["closures"] = s.closures_name;
+    m.run["dissipation_restitution"] = s.closures->params().e_eff();
+    const ClosureParams& cp = s.closures->params();
+    m.run["correlation_length"] = cp.correlation_length == CorrelationLength::JenkinsBerzi
+                                      ? fmt::format("{}, c = {}", s.correlation_length_name, cp.correlation_constant)
+                                      : s.correlation_length_name;
+    nlohmann::json warnings = nlohmann::json::array();
+    if (f.nu_max_node > s.closures->numax())
+        warnings.push_back(fmt::format("solid fraction {:.4f} exceeds nu_max = {} (g0 = {} has no nu_max limit)",
+                                       f.nu_max_node, s.closures->numax(), s.g0_name));
+    m.run["warnings"] = warnings;
+    // Steady by construction: the continuum solves the steady boundary-value problem (no time
+    // derivatives), and only a converged Newton solve reaches this point; a failed one throws and
+    // writes no result.
+    // A solution the theory itself calls ordered (the crystallization criterion) is labelled, not a number.
+    if (s.ordering_fraction > 0 && f.nu_max_node > s.ordering_fraction)
+        set_regime(m.run, RegimeStatus::Ordered,
+                   fmt::format("the largest solid fraction {:.4f} exceeds [continuum] ordering_fraction = {}: the "
+                               "grains would order (crystallization criterion), where kinetic theory does not hold",
+                               f.nu_max_node, s.ordering_fraction));
+    else
+        set_regime(m.run, RegimeStatus::Steady);
+    for (const auto& [name, v] : m.outputs)
+        if (!std::isfinite(v.value))
+            throw SolverError(fmt::format("the solution has a non-finite {} (residual {:.3g}); try more cells", name,
+                                          f.residual));
+}
+
 PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& s) {
     const Problem q = problem_for(c, s, p);
     const auto t0 = std::chrono::steady_clock::now();
@@ -320,28 +367,6 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     m.set("stress_ratio", o.tau_bottom, "").set("pi_number", sol.Pi, "");
     m.set("inertial_number", inertial, "");
     if (s.gap_from_inventory) m.set("gap", gap, "m");
-    m.run["iterations"] = sol.iterations;
-    m.run["final_residual"] = sol.residual;
-    m.run["continuation_steps"] = sol.continuation_steps;
-    m.run["solve_time_s"] = secs;
-    m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
-    m.run["g0"] = s.g0_name;
-    m.run["wall_model"] = s.wall_name;
-    if (s.contact.active())
-        m.run["contact_stress"] = {{"model", "johnson_jackson"}, {"coefficient_Pa", s.contact.coefficient},
-                                   {"onset_fraction", s.contact.onset}, {"jamming_fraction", s.contact.jamming},
-                                   {"exponent_onset", s.contact.n}, {"exponent_jamming", s.contact.m},
-                                   {"friction", s.contact.friction}};
-    else
-        m.run["contact_stress"] = "none";
-    m.run["wall_energy"] = {{"convention", s.wall_energy == WallEnergy::GklR8 ? "gkl_r8" : "slip_work"},
-                            {"source", s.wall_energy_source}};
-    m.run["closures"] = s.closures_name;
-    m.run["dissipation_restitution"] = s.closures->params().e_eff();
-    const ClosureParams& cp = s.closures->params();
-    m.run["correlation_length"] = cp.correlation_length == CorrelationLength::JenkinsBerzi
-                                      ? fmt::format("{}, c = {}", s.correlation_length_name, cp.correlation_constant)
-                                      : s.correlation_length_name;
     m.run["wall_roughness"] = {{"source", s.roughness_from_bumps ? "bumps" : "declared"},
                                {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
                                {"top", wall_roughness(c, s, p, p.top, "top")}};
@@ -357,26 +382,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
                               {"relative_defect", eb.relative_defect()}};
     m.run["cells"] = s.solver.cells;
     m.run["body_forces"] = "not modelled: GKL has p_yy uniform across the gap (S&T 2001 Eq. 6b)";
-    nlohmann::json warnings = nlohmann::json::array();
-    if (o.nu_max_node > s.closures->numax())
-        warnings.push_back(fmt::format("solid fraction {:.4f} exceeds nu_max = {} (g0 = {} has no nu_max limit)",
-                                       o.nu_max_node, s.closures->numax(), s.g0_name));
-    m.run["warnings"] = warnings;
-    // Steady by construction: the continuum solves the steady boundary-value problem (no time
-    // derivatives), and only a converged Newton solve reaches this point; a failed one throws and
-    // writes no result.
-    // A solution the theory itself calls ordered (the crystallization criterion) is labelled, not a number.
-    if (s.ordering_fraction > 0 && o.nu_max_node > s.ordering_fraction)
-        set_regime(m.run, RegimeStatus::Ordered,
-                   fmt::format("the largest solid fraction {:.4f} exceeds [continuum] ordering_fraction = {}: the "
-                               "grains would order (crystallization criterion), where kinetic theory does not hold",
-                               o.nu_max_node, s.ordering_fraction));
-    else
-        set_regime(m.run, RegimeStatus::Steady);
-    for (const auto& [name, v] : m.outputs)
-        if (!std::isfinite(v.value))
-            throw SolverError(fmt::format("the solution has a non-finite {} (residual {:.3g}); try more cells", name,
-                                          sol.residual));
+    record_run(m, s, {sol.iterations, sol.residual, sol.continuation_steps, secs, o.nu_max_node});
 
     r.line = fmt::format("nu={:.4f} P={:.4g} Pa tau={:.4g} Pa slip={:.3f}/{:.3f} m/s it={}", nu_mean, P, tau_b,
                          U * o.slip_bottom, U * o.slip_top, sol.iterations);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "block_tridiagonal.h"
+#include "damped_newton.h"
 #include "granlub/continuum/homogeneous.h"
 #include "granlub/continuum/walls/wall_condition.h"
 #include "granlub/error.h"
@@ -91,6 +92,11 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
         }
     }
 }
+
+// The unknowns: u^ and the logit s of every node.
+struct Unknowns {
+    std::vector<double> u, s;
+};
 
 class Fv {
 public:
@@ -216,6 +222,16 @@ public:
     }
     double weight(std::size_t i) const { return (i == 0 || i == N_) ? 0.5 * h_ : h_; }
 
+    // The interface of detail::damped_newton (damped_newton.h).
+    double evaluate(const Unknowns& x, double lam, bool jac) { return evaluate(x.u, x.s, lam, jac); }
+    bool step(Unknowns& dx, double& dlam) { return step(dx.u, dx.s, dlam); }
+    void step_sizes(const Unknowns& dx, double& du, double& ds) const {
+        for (std::size_t i = 0; i < n_; ++i) du = std::max(du, std::abs(dx.u[i])), ds = std::max(ds, std::abs(dx.s[i]));
+    }
+    void advance(Unknowns& out, const Unknowns& x, double a, const Unknowns& dx) const {
+        for (std::size_t i = 0; i < n_; ++i) out.u[i] = x.u[i] + a * dx.u[i], out.s[i] = x.s[i] + a * dx.s[i];
+    }
+
     // Newton step for the last evaluate(..., jac = true). False when the matrix is singular.
     bool step(std::vector<double>& du, std::vector<double>& ds, double& dlam) {
         if (!J_.factorise()) return false;
@@ -269,85 +285,21 @@ private:
 }  // namespace
 
 NewtonReport newton_fv(const Problem& p, const SolverSettings& st, Solution& sol) {
-    NewtonReport rep;
     Fv fv(p, st.cells);
     const std::size_t n = fv.nodes();
     if (sol.nodes() != n) throw Error("newton_fv: the initial guess is not on the solver's mesh");
     const double cap = fv.cap();
-    std::vector<double> u = sol.u, s(n), du(n), ds(n), ut(n), stry(n);
+    Unknowns x{sol.u, std::vector<double>(n)}, dx{std::vector<double>(n), std::vector<double>(n)}, xt = dx;
     for (std::size_t i = 0; i < n; ++i) {
         const double nu = std::clamp(sol.nu[i], 1e-9 * cap, (1 - 1e-12) * cap);
-        s[i] = std::log(nu / (cap - nu));
+        x.s[i] = std::log(nu / (cap - nu));
     }
     double lam = fv.inventory() ? std::log(sol.Lambda > 0 ? sol.Lambda : p.Lambda)
                                 : std::log(sol.Pi > 0 ? sol.Pi : p.Pi);
-    double norm = fv.evaluate(u, s, lam, true);
-    for (int it = 0;; ++it) {
-        rep.iterations = it;
-        rep.residual = norm;
-        if (norm < st.tolerance) {
-            rep.converged = true;
-            break;
-        }
-        if (it >= st.max_iterations) {
-            rep.why = "Newton did not converge in " + std::to_string(st.max_iterations) + " iterations";
-            break;
-        }
-        if (!std::isfinite(norm)) {
-            rep.why = "the residual is not finite";
-            break;
-        }
-        double dlam = 0;
-        if (!fv.step(du, ds, dlam)) {
-            rep.why = "singular Newton matrix";
-            break;
-        }
-        // Damping: keep logit and velocity steps moderate, then backtrack (Armijo on the max norm).
-        double step_u = 0, step_s = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            step_u = std::max(step_u, std::abs(du[i]));
-            step_s = std::max(step_s, std::abs(ds[i]));
-        }
-        double alpha = std::min({1.0, 0.5 / std::max(step_u, 1e-300), 3.0 / std::max(step_s, 1e-300),
-                                 1.0 / std::max(std::abs(dlam), 1e-300)});
-        bool accepted = false;
-        double tnorm = norm;
-        for (int k = 0; k < 40; ++k) {
-            for (std::size_t i = 0; i < n; ++i) {
-                ut[i] = u[i] + alpha * du[i];
-                stry[i] = s[i] + alpha * ds[i];
-            }
-            tnorm = fv.evaluate(ut, stry, lam + alpha * dlam, false);
-            if (tnorm <= (1.0 - 1e-4 * alpha) * norm) {
-                accepted = true;
-                break;
-            }
-            alpha *= 0.5;
-        }
-        const double step_max = alpha * std::max({step_u, step_s, std::abs(dlam)});
-        if (!accepted) {
-            // Round-off floor: a full-size step that no longer reduces the residual.
-            if (norm < 1e3 * st.tolerance) {
-                rep.converged = true;
-                break;
-            }
-            rep.why = "the line search could not reduce the residual";
-            break;
-        }
-        u.swap(ut);
-        s.swap(stry);
-        lam += alpha * dlam;
-        norm = fv.evaluate(u, s, lam, true);
-        if (step_max < 1e-13 && norm < 1e3 * st.tolerance) {
-            rep.iterations = it + 1;
-            rep.residual = norm;
-            rep.converged = true;
-            break;
-        }
-    }
+    NewtonReport rep = detail::damped_newton(fv, x, lam, dx, xt, st.tolerance, st.max_iterations);
     for (std::size_t i = 0; i < n; ++i) {
-        sol.u[i] = u[i];
-        sol.nu[i] = fv.nu_of(s[i]);
+        sol.u[i] = x.u[i];
+        sol.nu[i] = fv.nu_of(x.s[i]);
     }
     sol.Pi = fv.Pi_of(lam);
     sol.Lambda = fv.Lambda_of(lam);
@@ -398,44 +350,6 @@ std::string describe(const Problem& p) {
     return m.str();
 }
 
-// How a continuation adapts its step: grow it by 1.5 after a Newton solve of at most `easy` iterations, halve it
-// after one of more than `hard`; `headroom` > 0 moves each start below the next problem's cap by that fraction (the
-// contact stress's cap nu_P moves with t, and a start at the cap has a singular Jacobian in the logit unknown).
-struct StepPolicy {
-    int easy = 4, hard = 8;
-    double headroom = 0;
-    double first = 0.1;  // the first step in t
-};
-
-// Adaptive continuation from the solution `s` of at(t) to at(1) (§6.1): the step grows after easy Newton solves
-// and halves after failed or hard ones. Returns false (with `rep` the last Newton report) when it stalls.
-template <class At>
-bool continue_to_target(const At& at, const SolverSettings& st, double t, Solution& s, int& total, int& steps,
-                        NewtonReport& rep, const StepPolicy& policy = {}) {
-    double dt = policy.first;
-    while (t < 1.0) {
-        if (++steps > st.max_continuation_steps || dt < 1e-5) return false;
-        const double tn = std::min(1.0, t + dt);
-        const Problem q = at(tn);
-        Solution trial = s;
-        if (policy.headroom > 0) {
-            const double top = q.closures->cap() * (1 - policy.headroom);
-            for (double& nu : trial.nu) nu = std::min(nu, top);
-        }
-        rep = newton_fv(q, st, trial);
-        total += rep.iterations;
-        if (rep.converged) {
-            s = std::move(trial);
-            t = tn;
-            if (rep.iterations <= policy.easy) dt *= 1.5;
-            else if (rep.iterations > policy.hard) dt *= 0.5;  // hard step: go slower next time
-        } else {
-            dt *= 0.5;
-        }
-    }
-    return true;
-}
-
 // Without a contact stress: Newton from the uniform-shear guess, else continuation in ln Lambda and ln Pi / mean nu.
 Solution solve_fv_kinetic(const Problem& p, const SolverSettings& st) {
     int total = 0;
@@ -483,16 +397,18 @@ Solution solve_fv_kinetic(const Problem& p, const SolverSettings& st) {
           << "); try more [continuum] max_iterations or check the operating point";
         throw SolverError(m.str());
     }
-    int steps = 0;
-    if (!continue_to_target(at, st, 0.0, s, total, steps, rep)) {
+    const auto c = detail::continuation(
+        s, [&](double t, Solution& trial) { return newton_fv(at(t), st, trial); }, st.max_continuation_steps, total);
+    if (!c.reached) {
+        const NewtonReport& last = c.steps > 1 ? c.last : rep;
         std::ostringstream m;
-        m << first_why << " (residual " << first_res << "); continuation stalled before " << describe(p) << " after "
-          << steps - 1 << " steps (last Newton residual " << rep.residual << ": " << rep.why
+        m << first_why << " (residual " << first_res << "); continuation stalled at " << describe(at(c.t))
+          << " after " << c.steps - 1 << " steps (last Newton residual " << last.residual << ": " << last.why
           << "); try more [continuum] cells, a larger max_continuation_steps, or a less extreme operating point";
         throw SolverError(m.str());
     }
     s.iterations = total;
-    s.continuation_steps = steps;
+    s.continuation_steps = c.steps;
     return s;
 }
 
@@ -514,16 +430,30 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
     };
     // Newton's iterations here are 5-7 at most steps (the residual's floor is near the tolerance): "easy" is 6;
     // the whole way is tried first (it is enough on the cases measured), halved on failure.
-    const StepPolicy policy{6, 12, 1e-6, 1.0};
+    const detail::StepPolicy policy{6, 12, 1.0};
+    // Each start sits below the next problem's cap by this fraction: the cap nu_P moves with t, and a start at the
+    // cap has a singular Jacobian in the logit unknown.
+    constexpr double kHeadroom = 1e-6;
     Solution s;
     int total = 0, steps = 0;
-    NewtonReport rep;
-    const auto stalled = [&](const char* what) {
-        std::ostringstream m;
-        m << "the contact stress's continuation in " << what << " (§2.9) stalled before " << describe(p) << " after "
-          << steps << " steps (last Newton residual " << rep.residual << ": " << rep.why
-          << "); try a larger [continuum] max_continuation_steps or other contact_* constants";
-        return SolverError(m.str());
+    const auto continue_in = [&](const auto& at, const char* what) {
+        const auto c = detail::continuation(
+            s,
+            [&](double t, Solution& trial) {
+                const Problem q = at(t);
+                const double top = q.closures->cap() * (1 - kHeadroom);
+                for (double& nu : trial.nu) nu = std::min(nu, top);
+                return newton_fv(q, st, trial);
+            },
+            st.max_continuation_steps, total, policy);
+        steps += c.steps;
+        if (!c.reached) {
+            std::ostringstream m;
+            m << "the contact stress's continuation in " << what << " (§2.9) stalled before " << describe(p)
+              << " after " << steps << " steps (last Newton residual " << c.last.residual << ": " << c.last.why
+              << "); try a larger [continuum] max_continuation_steps or other contact_* constants";
+            throw SolverError(m.str());
+        }
     };
     try {
         s = solve_fv_kinetic(scaled(1.0, 0.0), st);
@@ -533,12 +463,9 @@ Solution solve_fv(const Problem& p, const SolverSettings& st) {
         s = solve_fv_kinetic(scaled(0.0, 0.0), st);
         total = s.iterations;
         steps = s.continuation_steps;
-        if (!continue_to_target([&](double t) { return scaled(t, 0.0); }, st, 0.0, s, total, steps, rep, policy))
-            throw stalled("its pressure");
+        continue_in([&](double t) { return scaled(t, 0.0); }, "its pressure");
     }
-    if (cs.friction > 0 &&
-        !continue_to_target([&](double t) { return scaled(1.0, t); }, st, 0.0, s, total, steps, rep, policy))
-        throw stalled("its friction");
+    if (cs.friction > 0) continue_in([&](double t) { return scaled(1.0, t); }, "its friction");
     s.iterations = total;
     s.continuation_steps = steps;
     return s;

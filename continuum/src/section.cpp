@@ -74,6 +74,20 @@ SectionSpec section() {
             s.real_optional(n + "_" + side, Range::unit(), "", "roughness factor " + n + " at the " + side +
                                                                " wall; default: " + n + ", else the wall's roughness");
     }
+    // The trough's cross-section (continuum/README.md "The trough's cross-section"; cross_section_setup.cpp).
+    s.choice("geometry", "gap", {"gap", "cross_section"},
+             "gap: the 1-D gap between floor and top (the seed's model); cross_section: fully developed flow over the "
+             "trough's cross-section H x W ([cell] width > 0), floor and side walls moving, the top still");
+    s.integer("cross_section_cells_y", 40, Range::closed(2, 1e4),
+              "geometry = cross_section: cells across the gap; at least 4 per grain diameter (4 H/d)");
+    s.integer("cross_section_cells_z", 100, Range::closed(2, 1e5),
+              "geometry = cross_section: cells across the width; at least 4 per grain diameter (4 W/d)");
+    s.choice("body_forces", "off", {"off", "on"},
+             "geometry = cross_section: off = the pressure uniform (the load); on = gravity ([body_forces] gravity) and "
+             "the centripetal force ([cell] annulus_radius) through the potential part of their pressure field");
+    s.real_optional("side_roughness", Range::unit(), "",
+                    "geometry = cross_section: R5..R8 of both side walls; default: [walls] sides = plane: the wall "
+                    "roughness as declared, as_bottom: the floor's R5..R8");
     s.integer("cells", 200, Range::closed(100, 1e6), "finite-volume cells across the gap (profile has cells + 1 rows)");
     s.real("tolerance", 1e-10, Range::positive(), "", "Newton tolerance on the max-norm flux-balance residual");
     s.integer("max_iterations", 50, Range::closed(1, 1e4), "Newton iterations per solve");

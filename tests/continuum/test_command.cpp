@@ -19,6 +19,8 @@
 #include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/case_setup.h"
 #include "granlub/continuum/command.h"
+#include "granlub/continuum/cross_section_setup.h"
+#include "granlub/continuum/map.h"
 #include "granlub/error.h"
 #include "granlub/results/results.h"
 
@@ -479,4 +481,105 @@ BOOST_AUTO_TEST_CASE(contact_stress_needs_its_constants_and_says_what_is_allowed
     const Case none = parse("");
     const auto n = continuum::solve_point(none, none.points[0], continuum::resolve_settings(none));
     BOOST_TEST(n.summary.run.at("contact_stress") == "none");
+}
+
+// geometry = "cross_section": a width of 0, a grid too coarse for the walls and the 1-D-only choices stop with the
+// key and what is allowed; a run writes every wall's stress and slip, the mid-width profile and section.csv in the
+// particle solvers' columns.
+BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
+    std::string e = settings_error("[continuum]\ngeometry = \"cross_section\"\n");  // kCase has no width
+    BOOST_TEST(contains(e, "geometry"), e);
+    BOOST_TEST(contains(e, "width > 0"), e);
+    std::string trough(kCase);
+    trough.replace(trough.find("length = 30.0e-3"), 16, "length = 30.0e-3\nwidth = 19.0e-3");
+    e = settings_error("[continuum]\ngeometry = \"cross_section\"\ncross_section_cells_z = 50\n", trough);
+    BOOST_TEST(contains(e, "cross_section_cells_z"), e);
+    BOOST_TEST(contains(e, ">= 97"), e);
+    e = settings_error("[continuum]\ngeometry = \"cross_section\"\ncross_section_cells_y = 12\n", trough);
+    BOOST_TEST(contains(e, "cross_section_cells_y"), e);
+    BOOST_TEST(contains(e, ">= 21"), e);
+    e = settings_error("[continuum]\ngeometry = \"cross_section\"\nmethod = \"shooting\"\n", trough);
+    BOOST_TEST(contains(e, "method"), e);
+    e = settings_error("[continuum]\ngeometry = \"cross_section\"\ncontact_stress = \"johnson_jackson\"\n"
+                       "contact_coefficient = 0.05\ncontact_onset_fraction = 0.5\ncontact_exponent_onset = 2\n"
+                       "contact_exponent_jamming = 5\ncontact_friction = 0.2\n",
+                       trough);
+    BOOST_TEST(contains(e, "contact_stress"), e);
+    BOOST_TEST(contains(e, "1-D gap only"), e);
+    e = settings_error("[continuum]\nside_roughness = 0.3\n", trough);
+    BOOST_TEST(contains(e, "side_roughness"), e);
+    e = settings_error("[continuum]\nbody_forces = \"on\"\n", trough);
+    BOOST_TEST(contains(e, "body_forces"), e);
+    BOOST_TEST(settings_error("[continuum]\ngeometry = \"cross_section\"\n", trough).empty());
+
+    TempDir tmp;
+    const Case c = parse("[continuum]\ngeometry = \"cross_section\"\ncross_section_cells_y = 24\n", trough);
+    try {  // the (U, P) map is the 1-D gap's
+        continuum::continuum_map_csv(c, continuum::MapGrid{});
+        BOOST_FAIL("the map ran with geometry = cross_section");
+    } catch (const CaseError& err) {
+        BOOST_TEST(contains(err.what(), "geometry"), err.what());
+    }
+    BOOST_TEST(continuum::run(c, into(tmp, "U2.0")) == 0);
+    const fs::path dir = tmp.path / "continuum" / "U2.0";
+    const Summary s = read_summary(dir / "summary.json");
+    for (const char* name : kStandardOutputs) BOOST_TEST(std::isfinite(s.value(name)));
+    for (const char* w : {"outer", "inner"}) {
+        BOOST_TEST(s.value(std::string("shear_stress_") + w) > 0);
+        BOOST_TEST(s.value(std::string("slip_over_U_") + w) > 0);
+    }
+    // the top holds what the floor and the sides drag
+    const double W = 19e-3, H = 4e-3;
+    const double floor = s.value("shear_stress_bottom") * W, sides = 2 * s.value("shear_stress_side") * H;
+    BOOST_TEST(std::abs(floor + sides - s.value("shear_stress_top") * W) < 1e-6 * floor);
+    BOOST_TEST(std::abs(s.value("side_wall_drag_share") - sides / (s.value("shear_stress_top") * W)) < 1e-9);
+    BOOST_TEST((result_status(dir, c.inputs_hash("continuum")).state == ResultState::Complete));
+    const Profile mid = read_profile(dir / "profile.csv");
+    BOOST_TEST(mid.rows() == 25u);
+    const Profile map = read_table(dir / kSectionFile);  // the reader the report draws the maps from
+    // the particle solvers' cells: about one grain diameter, 5 across the gap, 24 across the width
+    BOOST_TEST(map.rows() == 5u * 24u);
+    for (const char* col : {"y_over_H", "z_over_W", "solid_fraction", "u_over_U"}) BOOST_TEST(map.has(col));
+    BOOST_TEST(std::abs(map.column("z_over_W").front() - (0.5 / 24 - 0.5)) < 1e-9);
+    // and the grains in them are the solution's
+    double grains = 0;
+    for (double nu : map.column("solid_fraction")) grains += nu / static_cast<double>(map.rows());
+    BOOST_TEST(std::abs(grains - s.value("mean_solid_fraction")) < 1e-3);
+}
+
+// The side walls from [walls] sides: plane = the declared roughness (side_roughness overrides it), as_bottom = the
+// floor's condition, and with the wall at the bumps' tops bumpy side walls narrow the width as the floor's narrow the
+// gap; the inventory is the grains per length over the narrower width.
+BOOST_AUTO_TEST_CASE(cross_section_side_walls_from_the_case) {
+    std::string trough(kCase);
+    trough.replace(trough.find("length = 30.0e-3"), 16, "length = 30.0e-3\nwidth = 19.0e-3");
+    trough.replace(trough.find("roughness = 0.5\n"), 16, "roughness = 0.5\nsurface = \"bumps\"\n");
+    const std::string xs = "[continuum]\ngeometry = \"cross_section\"\ngap = \"inventory\"\nwall_plane = \"bump_tops\"\n";
+    std::string as_bottom = trough;
+    as_bottom.replace(as_bottom.find("surface = \"bumps\"\n"), 18, "surface = \"bumps\"\nsides = \"as_bottom\"\n");
+    const double d = 0.787e-3, W = 19e-3;
+    {
+        const Case c = parse(xs, trough);
+        const continuum::Settings s = continuum::resolve_settings(c);
+        const OperatingPoint& p = c.points.front();
+        const auto q = continuum::cross_section_problem_for(c, s, p);
+        BOOST_TEST(q.outer.params.r5 == 0.5);
+        BOOST_TEST(std::abs(q.width - W / d) < 1e-12);  // plane sides: the full width
+        const auto r = continuum::cross_section_problem_for(c, continuum::resolve_settings(
+                                                                  parse(xs + "side_roughness = 0.2\n", trough)), p);
+        BOOST_TEST(r.inner.params.r8 == 0.2);
+        BOOST_TEST(r.gap.bottom.params.r8 == 0.5);
+    }
+    {
+        const Case c = parse(xs, as_bottom);
+        const continuum::Settings s = continuum::resolve_settings(c);
+        const OperatingPoint& p = c.points.front();
+        const auto q = continuum::cross_section_problem_for(c, s, p);
+        const double prot = bump_protrusion(c, p.bottom);
+        BOOST_TEST(prot > 0);
+        BOOST_TEST(std::abs(q.width - (W - 2 * prot) / d) < 1e-9);
+        BOOST_TEST(std::abs(q.gap.inventory - p.solid_fraction * c.cell.gap * W / (d * (W - 2 * prot))) < 1e-9);
+        BOOST_TEST(q.outer.params.r5 == q.gap.bottom.params.r5);
+        BOOST_TEST(q.outer.params.restitution == q.gap.bottom.params.restitution);
+    }
 }

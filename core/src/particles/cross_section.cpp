@@ -21,9 +21,12 @@ CrossSection::CrossSection(std::size_t ny, std::size_t nz, double gap, double wi
                                 ny_, nz_, gap_, width_, length_));
 }
 
+std::size_t CrossSection::cells_for_grains(double d, double extent) {
+    return std::max<std::size_t>(2, static_cast<std::size_t>(std::lround(extent / d)));
+}
+
 CrossSection CrossSection::for_grains(double d, double gap, double width, double length) {
-    auto cells = [&](double extent) { return std::max<std::size_t>(2, static_cast<std::size_t>(std::lround(extent / d))); };
-    return CrossSection(cells(gap), cells(width), gap, width, length);
+    return CrossSection(cells_for_grains(d, gap), cells_for_grains(d, width), gap, width, length);
 }
 
 void CrossSection::add_snapshot(const ParticleSet& p, double time) {

@@ -29,6 +29,11 @@ struct Settings {
     std::string wall_energy_source;
     // [continuum] contact_stress resolved (coefficient = Fr in Pa; inactive = none)
     ContactStress contact;
+    // [continuum] geometry = "cross_section" (cross_section_setup.h)
+    bool cross_section = false;
+    int cells_y = 40, cells_z = 100;
+    double side_roughness = -1;  // < 0: not set
+    bool body_forces = false;
 };
 
 // Throws CaseError naming the key for values the section spec cannot check alone.
@@ -38,6 +43,16 @@ Settings resolve_settings(const Case& c);
 double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side);
 // Throws SolverError when the point cannot have a sheared steady state (e.g. R5 = 0).
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p);
+// What every solved point records in summary.json's run (the solve, the model's names, warnings, and the regime:
+// steady, or ordered past ordering_fraction); throws SolverError on a non-finite output. Call after the outputs.
+struct RunFacts {
+    int iterations = 0;
+    double residual = 0;
+    int continuation_steps = 0;
+    double seconds = 0;
+    double nu_max_node = 0;
+};
+void record_run(Summary& m, const Settings& s, const RunFacts& f);
 // Solves one point and fills profile.csv / summary.json contents.
 PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& s);
 

@@ -28,6 +28,8 @@ public:
 
     // Cells of about one grain diameter d (at least 2 each way).
     static CrossSection for_grains(double d, double gap, double width, double length);
+    // How many such cells span `extent` (the rule of for_grains; the continuum maps its section onto the same cells).
+    static std::size_t cells_for_grains(double d, double extent);
 
     void add_snapshot(const ParticleSet& p, double time);
     std::size_t snapshots() const { return times_.size(); }
