@@ -229,7 +229,9 @@ void move_run(const fs::path& dir, const fs::path& to) {
 // own folder), so with single-rank runs and no --threads budget they run side by side: the point's
 // chain is then its longest run, not the sum of both (`granlub run`'s longest chain is the dense
 // point's pair; cli/run_all.cpp). Each is the process it would be alone: no number changes.
-bool pair_side_by_side(const Settings& s, const RunOptions& o) { return s.refine_time <= 0 && s.np <= 1 && o.threads <= 0; }
+bool pair_side_by_side(const Settings& s, const RunOptions& o) {
+    return s.refine_time <= 0 && s.np <= 1 && o.threads <= 0;
+}
 
 Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
                   const fs::path& dir, const std::string& prov, bool side_by_side) {
