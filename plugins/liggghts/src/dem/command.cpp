@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <exception>
 #include <optional>
+#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -90,7 +92,10 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     if (s.vtk) fs::remove_all(dir / "post");  // the .pvd lists exactly this run's files
 
     OneRun r;
-    r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, "dem " + p.id);
+    // the check's coarse run has a progress line of its own (it may run beside the point's answer)
+    const std::string label = fmt::format("dem {}{}{}", p.id, dir.filename() == kDtCheckDir ? " " : "",
+                                          dir.filename() == kDtCheckDir ? kDtCheckDir : "");
+    r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, label);
 
     // LIGGGHTS' files into the shared series; the rest is the one particle pipeline
     ParticleRecord rec;
@@ -220,21 +225,46 @@ void move_run(const fs::path& dir, const fs::path& to) {
     for (const auto& e : entries) fs::rename(e, to / e.filename());
 }
 
+// Cold, the two runs of the check share nothing (each starts from the initial grains and writes its
+// own folder), so with single-rank runs and no --threads budget they run side by side: the point's
+// chain is then its longest run, not the sum of both (`granlub run`'s longest chain is the dense
+// point's pair; cli/run_all.cpp). Each is the process it would be alone: no number changes.
+bool pair_side_by_side(const Settings& s, const RunOptions& o) {
+    return s.refine_time <= 0 && s.np <= 1 && o.threads <= 0;
+}
+
 Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
-                  const fs::path& dir, const std::string& prov) {
+                  const fs::path& dir, const std::string& prov, bool side_by_side) {
     Refined r;
     const fs::path full = dir / kDtCheckDir;
     fs::create_directories(full);
     r.settings.push_back(s);
-    r.runs.push_back(run_continued(c, p, s, init, full, prov));
-    write_check_profile(full, r.runs.back(),
+    r.settings.push_back(refine_settings(s));
+    r.warm = s.refine_time > 0;
+    if (side_by_side && !r.warm) {
+        std::optional<Continued> finer;
+        std::exception_ptr failed;
+        {
+            const std::jthread beside([&] {
+                try {
+                    finer = run_continued(c, p, r.settings[1], init, dir, prov);
+                } catch (...) {
+                    failed = std::current_exception();
+                }
+            });
+            r.runs.push_back(run_continued(c, p, s, init, full, prov));  // on throwing, waits for the other
+        }
+        if (failed) std::rethrow_exception(failed);
+        r.runs.push_back(std::move(*finer));
+    } else {
+        r.runs.push_back(run_continued(c, p, s, init, full, prov));
+    }
+    write_check_profile(full, r.runs.front(),
                         fmt::format("case {} point {}: the run at the full time step ({:g} s), the coarsest run of "
                                     "the time-step check of the point's result ../profile.csv (run.dt_refinement)",
                                     c.name, p.id, s.time_step),
                         prov);
-    r.warm = s.refine_time > 0;
     InitialParticles start = init;
-    r.settings.push_back(refine_settings(s));
     if (r.warm) {  // from where the full-step run ended: its grains, spins and plate
         const ParticleState st = read_particle_state(full / kFinalState);
         start.particles = st.particles;
@@ -242,7 +272,7 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
         start.reused = true;
         if (s.load) r.settings.back().plate_start = st.gap;
     }
-    r.runs.push_back(run_continued(c, p, r.settings.back(), start, dir, prov));
+    if (r.runs.size() < 2) r.runs.push_back(run_continued(c, p, r.settings.back(), start, dir, prov));
     if (s.refine_halvings < 2) return r;
     nlohmann::json first =
         dt_refinement_record(r.settings[1].time_step, r.runs[0].last.out.outputs, r.runs[1].last.out.outputs);
@@ -325,7 +355,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     std::optional<Refined> refined;
     Continued single;
     if (s.refine_dt)
-        refined = refine_dt(c, p, s, init, dir, prov);
+        refined = refine_dt(c, p, s, init, dir, prov, pair_side_by_side(s, o));
     else
         single = run_continued(c, p, s, init, dir, prov);
     const Continued& reported = refined ? refined->answer() : single;
