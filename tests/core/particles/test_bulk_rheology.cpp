@@ -1,14 +1,26 @@
 // The core reduction of a wide plane-shear cell (bulk_rheology.h) on synthetic profiles whose answer
 // is known: a straight u(y) in the core gives its slope whatever the profile does near the walls; a
-// curved core shows in the halves' slopes and in the shear rate's error.
+// curved core shows in the halves' slopes and in the shear rate's error. And the table
+// (bulk_rheology_table.h) from synthetic results on disk.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
+#include <map>
+#include <sstream>
+#include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "case_text.h"
 #include "granlub/error.h"
 #include "granlub/particles/bulk_rheology.h"
+#include "granlub/particles/bulk_rheology_table.h"
+#include "granlub/results/file_io.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_status.h"
 
 using namespace granlub;
 namespace tt = boost::test_tools;
@@ -118,4 +130,88 @@ BOOST_AUTO_TEST_CASE(a_line_fit_weights_by_the_errors) {
     BOOST_TEST(f.slope == 2.0, tt::tolerance(1e-5));
     BOOST_CHECK_THROW(fit_line({0.0, 1.0}, {0.0, 1.0}, {1.0, 1.0}), Error);
     BOOST_CHECK_THROW(fit_line({1.0, 1.0, 1.0}, {0.0, 1.0, 2.0}, {1.0, 1.0, 1.0}), Error);
+}
+
+// The table from results on disk: a point with its Delta-t check (the check run's profile sheared
+// less, its walls' stresses different) is a row whose *_dt_change are the answer minus the check; a
+// point without results is left out and named; a check that moved nu beyond the rule labels the row.
+BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
+    namespace fs = std::filesystem;
+    const test::TmpDir tmp("bulk_table");
+    const Case c = parse_case(test::with("control = \"fill\"", "control = \"load\""), "t.toml", Schema::common());
+    const OperatingPoint& p = c.points.front();  // U = 1 m/s, 1000 Pa; gap 5 mm, d = 1 mm, rho = 2500
+    const fs::path dir = result_dir(tmp.path, "dem", p.id);
+    fs::create_directories(dir / kDtCheckDir);
+    const auto linear = [](double slope) { return [slope](double y) { return 0.9 - slope * y; }; };
+    write_file_atomic(dir / kDtCheckProfile, profile_csv(synthetic(61, linear(0.7), 0.57, 4e-4)));
+    const auto write = [&](double dnu) {
+        Summary s = make_summary(c, p, "dem");
+        s.set("normal_stress_bottom", 1000.0, "Pa", 10.0).set("normal_stress_top", 1000.0, "Pa", 10.0);
+        s.set("shear_stress_bottom", 400.0, "Pa", 4.0).set("shear_stress_top", 400.0, "Pa", 4.0);
+        s.set("slip_bottom", 0.1, "m/s", 0.0).set("slip_top", 0.1, "m/s", 0.0).set("gap", 5.0e-3, "m", 1e-6);
+        s.set("mean_solid_fraction", 0.58, "").set("max_solid_fraction", 0.65, "");
+        const nlohmann::json check_outputs = {{"normal_stress_bottom", {{"value", 1000.0}, {"stderr", 10.0}}},
+                                              {"normal_stress_top", {{"value", 1000.0}, {"stderr", 10.0}}},
+                                              {"shear_stress_bottom", {{"value", 380.0}, {"stderr", 4.0}}},
+                                              {"shear_stress_top", {{"value", 380.0}, {"stderr", 4.0}}},
+                                              {"gap", {{"value", 5.0e-3}}}};
+        s.run = {{"time_step_s", 1e-6},
+                 {"atoms", 1234},
+                 {"flow_regime", {{"coordination_number", 3.5}, {"coordination_number_core", 4.1}}},
+                 {"dt_refinement",
+                  {{"mean_solid_fraction", {{"change", dnu}}},
+                   {"shear_stress_bottom", {{"relative_change", 0.05}, {"z", 3.0}}},
+                   {"shear_stress_top", {{"relative_change", 0.05}, {"z", 3.0}}},
+                   {"full_step_run",
+                    {{"time_step_s", 2e-6},
+                     {"status", "steady"},
+                     {"outputs", check_outputs},
+                     {"flow_regime", {{"coordination_number", 3.6}, {"coordination_number_core", 4.3}}}}}}}};
+        set_regime(s.run, RegimeStatus::Steady);
+        write_result(dir, synthetic(61, linear(0.8), 0.58, 4e-4), s);
+    };
+    const auto row = [&]() {
+        const BulkTable t = bulk_rheology_table(c, tmp.path);
+        BOOST_TEST(t.rows == 1u);
+        BOOST_TEST(t.notes.size() == 1u);  // the second point has no result
+        BOOST_TEST(t.csv.find("# point U2.0 left out: no result") != std::string::npos, t.csv);
+        BOOST_TEST(t.csv.find(std::string("# format ") + kBulkTableFormat) == 0u);
+        std::istringstream in(t.csv);
+        std::string line, header;
+        std::vector<std::string> lines;
+        while (std::getline(in, line))
+            if (line.rfind('#', 0) != 0) lines.push_back(line);
+        BOOST_REQUIRE(lines.size() == 2u);
+        const auto split = [](const std::string& s) {
+            std::vector<std::string> out;
+            std::stringstream ss(s);
+            for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
+            if (!s.empty() && s.back() == ',') out.emplace_back();
+            return out;
+        };
+        const auto h = split(lines[0]), v = split(lines[1]);
+        BOOST_REQUIRE(h.size() == v.size());
+        std::map<std::string, std::string> m;
+        for (std::size_t i = 0; i < h.size(); ++i) m[h[i]] = v[i];
+        return m;
+    };
+    write(0.001);
+    auto m = row();
+    const double sqrtPrho = std::sqrt(1000.0 / 2500.0), d = 1e-3, H = 5e-3;
+    BOOST_TEST(m.at("point") == p.id);
+    BOOST_TEST(m.at("status") == "steady");
+    BOOST_TEST(m.at("dt_check") == "converged");
+    BOOST_TEST(std::stod(m.at("shear_rate_1_s")) == 0.8 / H, tt::tolerance(1e-5));
+    BOOST_TEST(std::stod(m.at("I_dt_change")) == 0.1 / H * d / sqrtPrho, tt::tolerance(1e-5));
+    BOOST_TEST(std::stod(m.at("mu")) == 0.4, tt::tolerance(1e-5));
+    BOOST_TEST(std::stod(m.at("mu_dt_change")) == 0.02, tt::tolerance(1e-4));
+    BOOST_TEST(std::stod(m.at("nu_dt_change")) == 0.01, tt::tolerance(1e-4));
+    BOOST_TEST(std::stod(m.at("Z")) == 4.1, tt::tolerance(1e-6));
+    BOOST_TEST(std::stod(m.at("Z_dt_change")) == -0.2, tt::tolerance(1e-4));
+    BOOST_TEST(m.at("Z_source") == "core");
+    BOOST_TEST(m.at("grains") == "1234");
+    write(0.006);  // the check moved nu-bar by more than the rule's 0.005: a labelled row, not an answer
+    m = row();
+    BOOST_TEST(m.at("status") == "dt-unconverged");
+    BOOST_TEST(m.at("dt_check") == "unconverged");
 }
