@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/results/run_status.h"
 
 namespace granlub {
 
@@ -127,6 +128,19 @@ CoreRheology core_rheology(const CoreRun& run, double diameter, double density) 
     r.coordination_core = run.z_core.has_value();
     r.coordination = run.z_core ? run.z_core : run.z_bulk;
     return r;
+}
+
+std::vector<std::string> core_dt_unconverged(const CoreRheology& a, const CoreRheology& b) {
+    std::vector<std::string> out;
+    const auto moved = [](const Measured& x, const Measured& y) {
+        const double change = x.value - y.value, err = std::hypot(x.error, y.error);
+        return std::abs(change) > kDtMaxRelativeStressChange * std::abs(y.value) &&
+               !(err > 0 && std::abs(change) <= kDtMaxStressZ * err);
+    };
+    if (moved(a.inertial_number, b.inertial_number)) out.emplace_back("I");
+    if (moved(a.friction, b.friction)) out.emplace_back("mu");
+    if (std::abs(a.solid_fraction.value - b.solid_fraction.value) > kDtMaxSolidFractionChange) out.emplace_back("nu");
+    return out;
 }
 
 }  // namespace granlub

@@ -66,11 +66,17 @@ std::string dt_check(const Summary& s) {
     }
 }
 
+// the core's own Delta-t verdict (core_dt_unconverged): "converged", or "unconverged:" and what moved
+std::string core_dt_check(const CoreRheology& answer, const CoreRheology& check) {
+    const auto moved = core_dt_unconverged(answer, check);
+    return moved.empty() ? "converged" : fmt::format("unconverged:{}", fmt::join(moved, ";"));
+}
+
 std::string num(double v) { return fmt::format("{:.6g}", v); }
 std::string opt_num(const std::optional<double>& v) { return v ? num(*v) : std::string(); }
 
 const char* kColumns[] = {
-    "point", "speed_m_s", "load_Pa", "status", "dt_check", "time_step_s", "check_time_step_s", "gap_m", "grains",
+    "point", "speed_m_s", "load_Pa", "status", "dt_check", "core_dt_check", "time_step_s", "check_time_step_s", "gap_m", "grains",
     "core_from_y_over_H", "core_to_y_over_H", "core_stations", "shear_rate_1_s", "shear_rate_err",
     "shear_rate_halves", "pressure_Pa", "pressure_err", "shear_stress_Pa", "shear_stress_err",
     "wall_shear_imbalance", "I", "I_err", "I_dt_change", "mu", "mu_err", "mu_dt_change", "nu", "nu_err",
@@ -117,6 +123,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root) {
         const double gap = s.outputs.count("gap") ? s.outputs.at("gap").value : c.cell.gap;
         std::vector<std::string> v = {
             p.id, num(p.speed), num(p.normal_stress), to_string(read_regime(s.run).status), dt_check(s),
+            b ? core_dt_check(a, *b) : std::string("not-checked"),
             num(s.run.value("time_step_s", 0.0)), b ? num(check_dt) : std::string(), num(gap),
             std::to_string(s.run.value("atoms", std::size_t{0})), num(a.core_from), num(a.core_to),
             std::to_string(a.stations), num(a.shear_rate.value), num(a.shear_rate.error), num(a.shear_rate_halves),

@@ -143,7 +143,7 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
     const fs::path dir = result_dir(tmp.path, "dem", p.id);
     fs::create_directories(dir / kDtCheckDir);
     const auto linear = [](double slope) { return [slope](double y) { return 0.9 - slope * y; }; };
-    write_file_atomic(dir / kDtCheckProfile, profile_csv(synthetic(61, linear(0.7), 0.57, 4e-4)));
+    write_file_atomic(dir / kDtCheckProfile, profile_csv(synthetic(61, linear(0.7), 0.577, 4e-4)));
     const auto write = [&](double dnu) {
         Summary s = make_summary(c, p, "dem");
         s.set("normal_stress_bottom", 1000.0, "Pa", 10.0).set("normal_stress_top", 1000.0, "Pa", 10.0);
@@ -205,7 +205,8 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
     BOOST_TEST(std::stod(m.at("I_dt_change")) == 0.1 / H * d / sqrtPrho, tt::tolerance(1e-5));
     BOOST_TEST(std::stod(m.at("mu")) == 0.4, tt::tolerance(1e-5));
     BOOST_TEST(std::stod(m.at("mu_dt_change")) == 0.02, tt::tolerance(1e-4));
-    BOOST_TEST(std::stod(m.at("nu_dt_change")) == 0.01, tt::tolerance(1e-4));
+    BOOST_TEST(std::stod(m.at("nu_dt_change")) == 0.003, tt::tolerance(1e-3));
+    BOOST_TEST(m.at("core_dt_check") == "unconverged:I");  // the core sheared 0.8/0.7 as fast: I moved 14 %
     BOOST_TEST(std::stod(m.at("Z")) == 4.1, tt::tolerance(1e-6));
     BOOST_TEST(std::stod(m.at("Z_dt_change")) == -0.2, tt::tolerance(1e-4));
     BOOST_TEST(m.at("Z_source") == "core");
@@ -214,4 +215,18 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
     m = row();
     BOOST_TEST(m.at("status") == "dt-unconverged");
     BOOST_TEST(m.at("dt_check") == "unconverged");
+}
+
+// The core's Delta-t rule: nu by 0.005; mu and I by 7 %, unless within 2 combined standard errors.
+BOOST_AUTO_TEST_CASE(the_core_is_judged_by_the_pipelines_thresholds) {
+    CoreRheology a, b;
+    a.inertial_number = {0.100, 0.001}, b.inertial_number = {0.100, 0.001};
+    a.friction = {0.40, 0.01}, b.friction = {0.40, 0.01};
+    a.solid_fraction = {0.580, 0.002}, b.solid_fraction = {0.580, 0.002};
+    BOOST_TEST(core_dt_unconverged(a, b).empty());
+    b.inertial_number = {0.110, 0.001};  // 9 %, 7 errors: moved
+    b.friction = {0.44, 0.02};           // 9 %, but within 2 combined errors (0.045): not moved
+    b.solid_fraction = {0.586, 0.002};   // 0.006 > 0.005: moved
+    const auto moved = core_dt_unconverged(a, b);
+    BOOST_TEST(moved == (std::vector<std::string>{"I", "nu"}), tt::per_element());
 }

@@ -69,6 +69,14 @@ struct CoreRheology {
     bool coordination_core = false;        // whether Z is the core's
 };
 
+// The time-step rule of the particle pipeline (granlub/results/run_status.h), which judges a point by
+// its mean solid fraction and its walls' shear stresses, applied to the core: nu may move by
+// kDtMaxSolidFractionChange; mu and I each by kDtMaxRelativeStressChange, or by more when within
+// kDtMaxStressZ combined standard errors. The names of the quantities that moved more ("I", "mu",
+// "nu"), empty when the core is converged. I is not in the pipeline's rule: the walls' slips can move
+// with the step while the stresses do not, and I moves with them.
+std::vector<std::string> core_dt_unconverged(const CoreRheology& answer, const CoreRheology& check);
+
 // Throws Error naming what is missing (a profile column, fewer than 3 stations in the core, a
 // non-positive shear rate or pressure).
 CoreRheology core_rheology(const CoreRun& run, double diameter, double density);
