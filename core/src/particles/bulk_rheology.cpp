@@ -114,6 +114,7 @@ CoreRheology core_rheology(const CoreRun& run, double diameter, double density) 
     if (!(r.pressure.value > 0)) throw Error(fmt::format("core rheology: the walls' normal stress is {:.4g} Pa", r.pressure.value));
     r.shear_stress = mean_of(run.shear_bottom, run.shear_top);
     r.wall_shear_imbalance = (run.shear_top.value - run.shear_bottom.value) / r.shear_stress.value;
+    r.wall_normal_imbalance = (run.normal_top.value - run.normal_bottom.value) / r.pressure.value;
     r.friction = ratio(r.shear_stress, r.pressure);
     // I = gamma_dot d / sqrt(P / rho): relative error of gamma_dot and half that of P
     const double I = r.shear_rate.value * diameter / std::sqrt(r.pressure.value / density);

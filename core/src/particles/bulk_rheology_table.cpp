@@ -79,7 +79,7 @@ const char* kColumns[] = {
     "point", "speed_m_s", "load_Pa", "status", "dt_check", "core_dt_check", "time_step_s", "check_time_step_s", "gap_m", "grains",
     "core_from_y_over_H", "core_to_y_over_H", "core_stations", "shear_rate_1_s", "shear_rate_err",
     "shear_rate_halves", "pressure_Pa", "pressure_err", "shear_stress_Pa", "shear_stress_err",
-    "wall_shear_imbalance", "I", "I_err", "I_dt_change", "mu", "mu_err", "mu_dt_change", "nu", "nu_err",
+    "wall_shear_imbalance", "wall_normal_imbalance", "I", "I_err", "I_dt_change", "mu", "mu_err", "mu_dt_change", "nu", "nu_err",
     "nu_dt_change", "T_scaled", "T_scaled_err", "T_scaled_dt_change", "Z", "Z_err", "Z_dt_change", "Z_source"};
 
 }  // namespace
@@ -128,7 +128,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root) {
             std::to_string(s.run.value("atoms", std::size_t{0})), num(a.core_from), num(a.core_to),
             std::to_string(a.stations), num(a.shear_rate.value), num(a.shear_rate.error), num(a.shear_rate_halves),
             num(a.pressure.value), num(a.pressure.error), num(a.shear_stress.value), num(a.shear_stress.error),
-            num(a.wall_shear_imbalance), num(a.inertial_number.value), num(a.inertial_number.error),
+            num(a.wall_shear_imbalance), num(a.wall_normal_imbalance), num(a.inertial_number.value), num(a.inertial_number.error),
             opt_num(change([](const CoreRheology& r) { return r.inertial_number.value; })), num(a.friction.value),
             num(a.friction.error), opt_num(change([](const CoreRheology& r) { return r.friction.value; })),
             num(a.solid_fraction.value), num(a.solid_fraction.error),

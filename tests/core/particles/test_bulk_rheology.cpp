@@ -42,13 +42,13 @@ Profile synthetic(std::size_t n, const std::function<double(double)>& u, double 
     return p;
 }
 
-CoreRun run_of(const Profile& p, double tau_bottom = 900.0, double tau_top = 900.0) {
+CoreRun run_of(const Profile& p, double tau_bottom = 900.0, double tau_top = 900.0, double P_top = kP) {
     CoreRun r;
     r.profile = &p;
     r.speed = kU;
     r.gap = kH;
     r.normal_bottom = {kP, 10.0};
-    r.normal_top = {kP, 10.0};
+    r.normal_top = {P_top, 10.0};
     r.shear_bottom = {tau_bottom, 5.0};
     r.shear_top = {tau_top, 5.0};
     r.z_bulk = Measured{3.9, 0.01};
@@ -107,6 +107,15 @@ BOOST_AUTO_TEST_CASE(walls_that_disagree_are_reported_not_hidden) {
     const CoreRheology r = core_rheology(run_of(p, 800.0, 1000.0), kD, kRho);
     BOOST_TEST(r.friction.value == 0.4, tt::tolerance(1e-12));  // the mean of the walls
     BOOST_TEST(r.wall_shear_imbalance == 200.0 / 900.0, tt::tolerance(1e-12));  // over their mean
+    BOOST_TEST(r.wall_normal_imbalance == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(walls_pressed_unequally_are_reported_and_averaged) {
+    const Profile p = synthetic(61, [](double y) { return 1.0 - y; }, 0.55, 4e-4);
+    const CoreRheology r = core_rheology(run_of(p, 900.0, 900.0, 2150.0), kD, kRho);
+    BOOST_TEST(r.pressure.value == 2200.0, tt::tolerance(1e-12));
+    BOOST_TEST(r.wall_normal_imbalance == -100.0 / 2200.0, tt::tolerance(1e-12));
+    BOOST_TEST(r.friction.value == 900.0 / 2200.0, tt::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_CASE(the_core_z_is_preferred_and_bad_input_fails) {

@@ -61,6 +61,7 @@ struct CoreRheology {
     Measured pressure;                // Pa, mean of the two walls' normal stresses
     Measured shear_stress;            // Pa, mean of the two walls' shear stresses
     double wall_shear_imbalance = 0;  // (tau_top - tau_bottom) / tau: 0 by momentum balance
+    double wall_normal_imbalance = 0; // (P_top - P_bottom) / P: 0 without gravity
     Measured inertial_number;         // gamma_dot d / sqrt(P / rho_p)
     Measured friction;                // mu = tau / P
     Measured solid_fraction;          // nu
