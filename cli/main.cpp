@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
@@ -15,9 +16,12 @@
 #include "key_tables.h"
 #include "granlub/case/case.h"
 #include "granlub/error.h"
+#include "granlub/particles/bulk_rheology_table.h"
+#include "granlub/results/file_io.h"
 #include "granlub/case/plausibility.h"
 #include "granlub/results/results.h"
 #include "granlub/run/run_lock.h"
+#include "granlub/run/sweep.h"
 #include "granlub/text.h"
 #include "modules.h"
 #include "run_all.h"
@@ -32,6 +36,7 @@ struct Args {
     std::vector<std::string> solvers;
     bool map = false;                        // granlub continuum --map
     std::vector<int> map_grid{100, 100};     // --map-grid SPEEDS,LOADS
+    std::string out;                         // granlub bulk-rheology --out
 };
 
 // `granlub continuum CASE --map`: the (U, P) map instead of the case's points (continuum/command.h).
@@ -161,7 +166,21 @@ struct CaseCommands {
     std::vector<std::pair<CLI::App*, const granlub::cli::SolverModule*>> solvers;
     CLI::App* compare = nullptr;
     CLI::App* run = nullptr;
+    CLI::App* bulk = nullptr;
 };
+
+// `granlub bulk-rheology CASE`: the core's rheology of every DEM point (bulk_rheology_table.h),
+// written atomically beside case.toml (or to --out), read while no run writes the DEM's results.
+int bulk_rheology(const granlub::Case& c, const Args& a) {
+    const auto root = granlub::results_root(c, a.opt);
+    const granlub::ResultsLock lock({{root, "dem", granlub::LockMode::Shared}}, a.opt.wait);
+    const granlub::BulkTable t = granlub::bulk_rheology_table(c, root);
+    const std::filesystem::path out = a.out.empty() ? c.dir / granlub::kBulkTableFile : std::filesystem::path(a.out);
+    granlub::write_file_atomic(out, t.csv);
+    for (const auto& n : t.notes) fmt::print(stderr, "note: {}\n", n);
+    fmt::print("{}: {} row(s)\n", out.string(), t.rows);
+    return 0;
+}
 
 // Runs the parsed case subcommand; the exit code, errors printed.
 int run_case_command(const CaseCommands& cmd, const Args& a) {
@@ -187,6 +206,7 @@ int run_case_command(const CaseCommands& cmd, const Args& a) {
                 return m->run(c, a.opt);
             }
         if (cmd.compare && cmd.compare->parsed()) return granlub::cli::compare(c, a.opt);
+        if (cmd.bulk->parsed()) return bulk_rheology(c, a);
         if (cmd.run->parsed()) return granlub::cli::run_all(c, a.opt, a.solvers);
     } catch (const granlub::CaseError& e) {
         fmt::print(stderr, "error: {}\n", e.what());
@@ -234,6 +254,13 @@ int main(int argc, char** argv) {
         add_point(cmd.compare, a);  // the report of one point (README: compare cases/jasti2006 --point U2.0_R0.25)
         add_wait(cmd.compare, a);
     }
+
+    cmd.bulk = app.add_subcommand("bulk-rheology", "the bulk rheology of a wide plane-shear case from its DEM "
+                                                    "results, read in the core: CASE/bulk_rheology.csv "
+                                                    "(cases/bulk_shear/README.md)");
+    add_case(cmd.bulk, a);
+    add_wait(cmd.bulk, a);
+    cmd.bulk->add_option("--out", a.out, "the table's file (default: CASE/bulk_rheology.csv)")->type_name("FILE");
 
     cmd.run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");
     add_case(cmd.run, a);

@@ -266,6 +266,35 @@ BOOST_AUTO_TEST_CASE(a_point_below_the_quarter_threshold_runs_at_a_quarter_of_th
                                 RunOptions{});
 }
 
+// [dem] refine_strain: the warm half-step check's length in shear strains U t / H, capped by
+// strain_time_max, never shorter than refine_time; refused without refine_dt, and when too short for
+// the check's wall samples it names itself.
+BOOST_AUTO_TEST_CASE(a_warm_check_can_run_a_number_of_strains) {
+    const auto with = [](const std::string& dem) { return edit(kCase, "\\[dem\\]", "[dem]\n" + dem); };
+    const Case c = parse_case(with("refine_dt = true\nrefine_strain = 20.0"), "tiny_load.toml", schema());
+    const OperatingPoint& p = c.points.front();
+    const dem::Settings s = dem::resolve_settings(c, p, RunOptions{});
+    const double t = 20.0 * c.cell.gap / p.speed;  // 20 strains at U / H
+    BOOST_TEST(s.refine_time == t, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(s.to_json().at("refine_strain").get<double>() == 20.0);
+    BOOST_TEST(dem::refine_settings(s).time == t, boost::test_tools::tolerance(1e-12));
+    // refine_time is the floor, strain_time_max the cap
+    const Case floor = parse_case(with(fmt::format("refine_dt = true\nrefine_strain = 20.0\nrefine_time = {}", 2 * t)),
+                                  "tiny_load.toml", schema());
+    BOOST_TEST(dem::resolve_settings(floor, p, RunOptions{}).refine_time == 2 * t, boost::test_tools::tolerance(1e-12));
+    const Case cap = parse_case(with(fmt::format("refine_dt = true\nrefine_strain = 20.0\nstrain_time_max = {}", 0.5 * t)),
+                                "tiny_load.toml", schema());
+    BOOST_TEST(dem::resolve_settings(cap, p, RunOptions{}).refine_time == 0.5 * t, boost::test_tools::tolerance(1e-12));
+    // off: refine_time alone, and absent from the settings (as every earlier result)
+    const Case off = parse_case(with("refine_dt = true\nrefine_time = 0.05"), "tiny_load.toml", schema());
+    const dem::Settings so = dem::resolve_settings(off, p, RunOptions{});
+    BOOST_TEST(so.refine_time == 0.05);
+    BOOST_TEST(!so.to_json().contains("refine_strain"));
+    expect_refused(with("refine_strain = 20.0"), {"refine_strain", "refine_dt is false"});
+    expect_refused(with("refine_dt = true\nrefine_strain = -1.0"), {"refine_strain", "allowed"});
+    expect_refused(with("refine_dt = true\nrefine_strain = 1e-6"), {"refine_strain", "run the half-step check longer"});
+}
+
 // Hertz contacts: the plate's gain is capped at one grain-plate overlap at the load per unit
 // error (a jump must not hammer the loaded contacts, settings.h); impulse contacts keep theirs.
 BOOST_AUTO_TEST_CASE(hertz_plate_moves_at_most_one_contact_overlap_per_unit_error) {

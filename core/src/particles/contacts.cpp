@@ -112,6 +112,15 @@ double coordination_number(const ContactList& pairs, std::size_t grains) {
     return grains > 0 ? 2.0 * static_cast<double>(pairs.size()) / static_cast<double>(grains) : 0.0;
 }
 
+std::optional<double> band_coordination(const ParticleSet& p, const ContactList& pairs, Band band) {
+    const auto in = [&](std::uint32_t i) { return p.y[i] >= band.lo && p.y[i] <= band.hi; };
+    std::size_t grains = 0, ends = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) grains += in(static_cast<std::uint32_t>(i));
+    if (grains == 0) return std::nullopt;
+    for (const auto& [a, b] : pairs) ends += static_cast<std::size_t>(in(a)) + static_cast<std::size_t>(in(b));
+    return static_cast<double>(ends) / static_cast<double>(grains);
+}
+
 std::optional<double> contact_persistence(const ContactList& before, const ContactList& after) {
     if (before.empty()) return std::nullopt;
     std::size_t kept = 0;
@@ -128,6 +137,8 @@ void ContactSeries::add(const ParticleSet& p, double time) {
     const auto t0 = std::chrono::steady_clock::now();
     const ContactList pairs = touching_pairs(p, box_);
     z_.push_back(coordination_number(pairs, p.size()));
+    if (core_)
+        if (const auto zc = band_coordination(p, pairs, *core_)) z_core_.push_back(*zc);
     const OverlapStats o = overlaps(p, box_, pairs);
     max_overlap_ = std::max(max_overlap_, o.max);
     overlap_sum_ += o.mean * static_cast<double>(o.overlapping);

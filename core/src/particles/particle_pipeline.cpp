@@ -1,5 +1,6 @@
 // The one particle pipeline of `granlub dem` and `granlub yade` (particle_pipeline.h).
 #include "granlub/particles/particle_pipeline.h"
+#include "granlub/particles/bulk_rheology.h"
 
 #include <chrono>
 #include <cmath>
@@ -100,6 +101,14 @@ nlohmann::json flow_regime_record(const ParticlePipeline& in, const ParticleReco
     }
     nlohmann::json j = flow_regime_json(d);
     j["mean_normal_stress_Pa"] = P;
+    if (contacts && contacts->core_coordination().size() >= 2) {  // the core's Z (bulk_rheology.h)
+        const auto& zc = contacts->core_coordination();
+        const BlockEstimate z = block_average(zc, in.blocks);
+        j["coordination_number_core"] = z.mean;
+        j["coordination_number_core_stderr"] = z.blocks >= 2 ? nlohmann::json(z.stderr_) : nlohmann::json();
+        j["core_band_over_gap"] = {kCoreFrom, kCoreTo};
+        j["core_coordination_snapshots"] = zc.size();
+    }
     if (contacts) {
         j["coordination_snapshots"] = contacts->coordination().size();
         j["contact_gap_tolerance"] = kContactGapTolerance;
@@ -170,7 +179,7 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
     std::optional<ContactSeries> contacts;
     std::optional<OrderSeries> order;
     if (in.contact_box) {
-        contacts.emplace(*in.contact_box, window.t_start);
+        contacts.emplace(*in.contact_box, window.t_start, Band{kCoreFrom * gap, kCoreTo * gap});
         // layers counted a mean diameter clear of the walls (of a rough wall's bumps); the ring's
         // axis is its y too
         const double d = in.c.grains.diameter;

@@ -196,3 +196,27 @@ BOOST_AUTO_TEST_CASE(mid_gap_shear_rate_is_the_central_slope) {
     BOOST_TEST(std::abs(mid_gap_shear_rate(std::vector<double>{1e-3, 3e-3}, std::vector<double>{2.0, 1.0}, 4e-3) -
                         500.0) < 1e-9);
 }
+
+// The core's coordination number (cases/bulk_shear): a simple cubic packing of 4 touching layers,
+// periodic in x and z, has 6 contacts per grain in its two inner layers and 5 in the outer ones.
+BOOST_AUTO_TEST_CASE(a_band_counts_the_contacts_of_its_grains_only) {
+    const double d = 1e-3;
+    const int n = 4;
+    const ParticleSet p = cubic(n, d, 0.5 * d);
+    const ParticleBox box{n * d, n * d, n * d, true};
+    const ContactList pairs = touching_pairs(p, box);
+    BOOST_TEST(coordination_number(pairs, p.size()) == 5.5, boost::test_tools::tolerance(1e-12));
+    const auto inner = band_coordination(p, pairs, Band{1.0 * d, 3.0 * d});  // layers at 1.5 d and 2.5 d
+    BOOST_REQUIRE(inner.has_value());
+    BOOST_TEST(*inner == 6.0, boost::test_tools::tolerance(1e-12));
+    const auto floor = band_coordination(p, pairs, Band{0.0, 1.0 * d});  // the first layer: no grain below it
+    BOOST_TEST(*floor == 5.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(!band_coordination(p, pairs, Band{5.0 * d, 6.0 * d}).has_value());  // no grain in it
+    // the series keeps the band's Z per snapshot beside every grain's
+    ContactSeries s(box, 0.0, Band{1.0 * d, 3.0 * d});
+    s.add(p, 0.0);
+    s.add(p, 1.0);
+    BOOST_TEST(s.core_coordination().size() == 2u);
+    BOOST_TEST(s.core_coordination()[1] == 6.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(s.coordination()[1] == 5.5, boost::test_tools::tolerance(1e-12));
+}

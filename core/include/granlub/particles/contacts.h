@@ -41,14 +41,26 @@ double coordination_number(const ContactList& pairs, std::size_t grains);
 // indices, a short time later); nothing when `before` has no contact.
 std::optional<double> contact_persistence(const ContactList& before, const ContactList& after);
 
+// The contacts per grain of the grains whose centres lie in the band lo <= y <= hi (each contact
+// counted once for each of its grains in the band); nothing when no grain lies in it. The core of a
+// wide gap, away from the walls' layers (the bulk rheology, cases/bulk_shear).
+struct Band {
+    double lo = 0, hi = 0;
+};
+std::optional<double> band_coordination(const ParticleSet& p, const ContactList& pairs, Band band);
+
 // The coordination number of each snapshot from t_start on (earlier ones are not averaged, so
 // they are skipped), and over the same snapshots the deepest overlap and the mean overlap of the
-// overlapping pairs, collected as the snapshots are read.
+// overlapping pairs, collected as the snapshots are read. With a core band, also the band's
+// coordination number (band_coordination) of each snapshot.
 class ContactSeries {
 public:
-    ContactSeries(const ParticleBox& box, double t_start) : box_(box), t_start_(t_start) {}
+    ContactSeries(const ParticleBox& box, double t_start, std::optional<Band> core = std::nullopt)
+        : box_(box), t_start_(t_start), core_(core) {}
     void add(const ParticleSet& p, double time);
     const std::vector<double>& coordination() const { return z_; }
+    const std::vector<double>& core_coordination() const { return z_core_; }  // snapshots with grains in the band
+    const std::optional<Band>& core() const { return core_; }
     double seconds() const { return seconds_; }  // time spent finding contacts
     double max_overlap() const { return max_overlap_; }
     double mean_overlap() const { return overlapping_ ? overlap_sum_ / static_cast<double>(overlapping_) : 0.0; }
@@ -56,7 +68,8 @@ public:
 private:
     ParticleBox box_;
     double t_start_;
-    std::vector<double> z_;
+    std::optional<Band> core_;
+    std::vector<double> z_, z_core_;
     double seconds_ = 0;
     double max_overlap_ = 0, overlap_sum_ = 0;
     std::size_t overlapping_ = 0;

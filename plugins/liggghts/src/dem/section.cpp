@@ -82,6 +82,11 @@ BoundKeys<Settings> declare() {
            "ones; 0 = off");
     s.real("strain_time_max", 2.0, Range::positive(), "s",
            "the cap on a strain-derived run length (a point at a small U would otherwise run for ever)");
+    s.real("refine_strain", 0.0, Range::closed(0, 1e6), "",
+           "refine_dt with a warm check: the half-step run's length in shear strain U t / H, so that every point's "
+           "check covers as many strains; the check runs max(refine_time, min(refine_strain H / U, "
+           "strain_time_max)); 0 = off (refine_time alone)");
+    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");
     s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
            "impulse model: diameters of the smallest grain travelled per step at the larger of U, sqrt(2 g H) and, under load "

@@ -161,6 +161,24 @@ void apply_dense_step(const Case& c, const OperatingPoint& p, const Section& s, 
                            p.id, *I, st.dense_threshold(), dense_step_name(halvings), st.steps, kMaxSteps));
 }
 
+// [dem] refine_strain: the warm half-step run's length as a shear strain, as `strain` is the run's, so
+// that a sweep over U checks each point over as many strains (a fixed refine_time is a few strains at
+// a slow point and many at a fast one).
+void resolve_refine_strain(const Case& c, const OperatingPoint& p, const Section& s, Settings& st) {
+    const double strain = s.real("refine_strain");
+    if (strain <= 0) return;
+    if (!st.refine_dt)
+        s.fail("refine_strain", fmt::format("{:g} sets the length of the time-step check's half-step run, and "
+                                            "refine_dt is false (allowed: 0 without refine_dt, >= 0 with it)",
+                                            strain));
+    if (!(p.speed > 0))
+        s.fail("refine_strain", fmt::format("{:g} strains need a moving wall, and point {} has U = {:g} m/s "
+                                            "(allowed: 0, or > 0 when every point's speed is > 0)",
+                                            strain, p.id, p.speed));
+    st.refine_strain = strain;
+    st.refine_time = std::max(st.refine_time, std::min(strain * c.cell.gap / p.speed, s.real("strain_time_max")));
+}
+
 }  // namespace
 
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
@@ -183,10 +201,11 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
     st.time_step = law_time_step(c, p, s, *st.law);
     resolve_run_length(c, p, o, s, st);
     st.skin_m = s.real("neighbor_skin") * c.grains.diameter;
+    resolve_refine_strain(c, p, s, st);
     if (st.refine_dt) try {  // a refine_time too short fails now, not after the full-step run
             (void)refine_settings(st);
         } catch (const CaseError& e) {
-            s.fail("refine_time", e.what());
+            s.fail(st.refine_strain > 0 ? "refine_strain" : "refine_time", e.what());
         }
     if (st.refine_halvings > 1 && !st.refine_dt)
         s.fail("refine_halvings", fmt::format("{} halvings need the time-step check: set refine_dt = true, or "
@@ -285,6 +304,7 @@ nlohmann::json Settings::to_json() const {
                             {"geometry", ring ? "annulus" : "slice"},
                             {"persistence_every", persistence_every},
                             {"persistence_intervals", persistence_intervals}});
+    if (refine_strain > 0) j.update(nlohmann::json{{"refine_strain", refine_strain}});  // absent: off, as earlier
     if (refine_halvings != 1)  // absent: 1, as every earlier result
         j.update(nlohmann::json{{"refine_halvings", refine_halvings}});
     if (dense_inertial_number > 0)  // absent: off, as every earlier result

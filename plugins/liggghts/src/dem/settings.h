@@ -46,6 +46,7 @@ struct Settings : ServoSettings {
     bool vtk = false;
     bool refine_dt = false;       // the point's answer at time_step / 2, checked against time_step (run.dt_refinement)
     double refine_time = 0;       // s, the half-step run warm-started from the full-step run's end; 0: cold, `time`
+    double refine_strain = 0;     // [dem] refine_strain: refine_time resolved from it (settings.cpp); 0 = off
     std::int64_t refine_halvings = 1;  // refine_dt: 2 = a failed check at dt/2 is repeated at dt/4 (cold)
     // [dem] dense_inertial_number: a point whose nominal inertial number is below it runs at half the
     // step the case derives (apply_dense_step); 0 = off. [dem] quarter_step_inertial_number (below

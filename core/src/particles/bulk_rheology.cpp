@@ -1,0 +1,147 @@
+// The core's rheology of a wide plane-shear cell (bulk_rheology.h).
+#include "granlub/particles/bulk_rheology.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "granlub/error.h"
+#include "granlub/results/run_status.h"
+
+namespace granlub {
+
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& y_error) {
+    const std::size_t n = x.size();
+    if (n < 3 || y.size() != n || y_error.size() != n)
+        throw Error(fmt::format("line fit: need at least 3 points with a value and an error each (got {}, {}, {})", n,
+                                y.size(), y_error.size()));
+    bool weighted = true;  // weights 1/sigma^2, or equal weights when an error is zero
+    for (double e : y_error) weighted = weighted && e > 0;
+    double S = 0, Sx = 0, Sy = 0, Sxx = 0, Sxy = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double w = weighted ? 1.0 / (y_error[i] * y_error[i]) : 1.0;
+        S += w, Sx += w * x[i], Sy += w * y[i], Sxx += w * x[i] * x[i], Sxy += w * x[i] * y[i];
+    }
+    const double D = S * Sxx - Sx * Sx;
+    if (!(D > 0)) throw Error("line fit: the points' x do not spread");
+    LineFit f;
+    f.points = n;
+    f.slope = (S * Sxy - Sx * Sy) / D;
+    f.intercept = (Sxx * Sy - Sx * Sxy) / D;
+    double chi2 = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double w = weighted ? 1.0 / (y_error[i] * y_error[i]) : 1.0;
+        const double r = y[i] - f.intercept - f.slope * x[i];
+        chi2 += w * r * r;
+    }
+    const double reduced = chi2 / static_cast<double>(n - 2);
+    // propagated: sqrt(S / D) (weighted); from the scatter: that times sqrt(reduced chi^2)
+    f.slope_error = std::sqrt(S / D) * (weighted ? std::max(1.0, std::sqrt(reduced)) : std::sqrt(reduced));
+    return f;
+}
+
+namespace {
+
+Measured mean_of(const Measured& a, const Measured& b) {
+    return {0.5 * (a.value + b.value), 0.5 * std::hypot(a.error, b.error)};
+}
+
+// value = a / b, errors relative and in quadrature
+Measured ratio(const Measured& a, const Measured& b) {
+    const double v = a.value / b.value;
+    return {v, std::abs(v) * std::hypot(a.error / a.value, b.error / b.value)};
+}
+
+struct CoreStations {
+    std::vector<double> y, u, ue, nu, nue, T, Te;
+};
+
+CoreStations core_stations(const Profile& p, double from, double to) {
+    CoreStations c;
+    const auto& y = p.column("y_over_H");
+    const auto& u = p.column("u_over_U");
+    const auto& ue = p.column("u_over_U_stderr");
+    const auto& nu = p.column("solid_fraction");
+    const auto& nue = p.column("solid_fraction_stderr");
+    const auto& T = p.column("temperature_over_U2");
+    const auto& Te = p.column("temperature_over_U2_stderr");
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        if (y[i] < from || y[i] > to) continue;
+        c.y.push_back(y[i]), c.u.push_back(u[i]), c.ue.push_back(ue[i]);
+        c.nu.push_back(nu[i]), c.nue.push_back(nue[i]), c.T.push_back(T[i]), c.Te.push_back(Te[i]);
+    }
+    return c;
+}
+
+// mean of the values, and of their errors (the fully correlated bound: bulk_rheology.h)
+Measured station_mean(const std::vector<double>& v, const std::vector<double>& e) {
+    Measured m;
+    for (std::size_t i = 0; i < v.size(); ++i) m.value += v[i], m.error += e[i];
+    m.value /= static_cast<double>(v.size());
+    m.error /= static_cast<double>(v.size());
+    return m;
+}
+
+// the slope of u/U against y/H over the stations [lo, hi)
+double half_slope(const CoreStations& c, std::size_t lo, std::size_t hi) {
+    const auto part = [&](const std::vector<double>& v) { return std::vector<double>(v.begin() + lo, v.begin() + hi); };
+    return fit_line(part(c.y), part(c.u), part(c.ue)).slope;
+}
+
+}  // namespace
+
+CoreRheology core_rheology(const CoreRun& run, double diameter, double density) {
+    if (!run.profile) throw Error("core rheology: no profile");
+    CoreRheology r;
+    const CoreStations c = core_stations(*run.profile, r.core_from, r.core_to);
+    r.stations = c.y.size();
+    if (r.stations < 6)
+        throw Error(fmt::format("core rheology: {} profile stations lie in the core (y/H in [{:.3f}, {:.3f}]); at least "
+                                "6 are needed for the fit and its two halves: raise [dem] stations",
+                                r.stations, r.core_from, r.core_to));
+    // u/U = a + b y/H: gamma_dot = b U / H. Its sign: the floor moves at +U, the top is held, so u
+    // falls across the gap and the shear rate is -b U / H.
+    const LineFit f = fit_line(c.y, c.u, c.ue);
+    const double scale = -run.speed / run.gap;
+    r.shear_rate = {f.slope * scale, std::abs(f.slope_error * scale)};
+    if (!(r.shear_rate.value > 0))
+        throw Error(fmt::format("core rheology: the core's shear rate is {:.4g} 1/s: the core does not flow",
+                                r.shear_rate.value));
+    const std::size_t half = r.stations / 2;
+    r.shear_rate_halves = (half_slope(c, half, r.stations) - half_slope(c, 0, half)) / f.slope;
+
+    r.pressure = mean_of(run.normal_bottom, run.normal_top);
+    if (!(r.pressure.value > 0)) throw Error(fmt::format("core rheology: the walls' normal stress is {:.4g} Pa", r.pressure.value));
+    r.shear_stress = mean_of(run.shear_bottom, run.shear_top);
+    r.wall_shear_imbalance = (run.shear_top.value - run.shear_bottom.value) / r.shear_stress.value;
+    r.wall_normal_imbalance = (run.normal_top.value - run.normal_bottom.value) / r.pressure.value;
+    r.friction = ratio(r.shear_stress, r.pressure);
+    // I = gamma_dot d / sqrt(P / rho): relative error of gamma_dot and half that of P
+    const double I = r.shear_rate.value * diameter / std::sqrt(r.pressure.value / density);
+    r.inertial_number = {I, I * std::hypot(r.shear_rate.error / r.shear_rate.value,
+                                           0.5 * r.pressure.error / r.pressure.value)};
+    r.solid_fraction = station_mean(c.nu, c.nue);
+    // T/(d gamma_dot)^2 = (T/U^2) U^2 / (d gamma_dot)^2: relative error of T and twice that of gamma_dot
+    const Measured T = station_mean(c.T, c.Te);
+    const double k = run.speed / (diameter * r.shear_rate.value);
+    const double Ts = T.value * k * k;
+    r.temperature_scaled = {Ts, Ts * std::hypot(T.error / T.value, 2.0 * r.shear_rate.error / r.shear_rate.value)};
+    r.coordination_core = run.z_core.has_value();
+    r.coordination = run.z_core ? run.z_core : run.z_bulk;
+    return r;
+}
+
+std::vector<std::string> core_dt_unconverged(const CoreRheology& a, const CoreRheology& b) {
+    std::vector<std::string> out;
+    const auto moved = [](const Measured& x, const Measured& y) {
+        const double change = x.value - y.value, err = std::hypot(x.error, y.error);
+        return std::abs(change) > kDtMaxRelativeStressChange * std::abs(y.value) &&
+               !(err > 0 && std::abs(change) <= kDtMaxStressZ * err);
+    };
+    if (moved(a.inertial_number, b.inertial_number)) out.emplace_back("I");
+    if (moved(a.friction, b.friction)) out.emplace_back("mu");
+    if (std::abs(a.solid_fraction.value - b.solid_fraction.value) > kDtMaxSolidFractionChange) out.emplace_back("nu");
+    return out;
+}
+
+}  // namespace granlub

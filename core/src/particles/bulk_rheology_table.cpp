@@ -1,0 +1,156 @@
+// The bulk-rheology table (bulk_rheology_table.h).
+#include "granlub/particles/bulk_rheology_table.h"
+
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "granlub/error.h"
+#include "granlub/particles/bulk_rheology.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_status.h"
+
+namespace granlub {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+Measured output(const std::map<std::string, Scalar>& outs, const std::string& name, const std::string& source) {
+    const auto it = outs.find(name);
+    if (it == outs.end()) throw Error(fmt::format("{}: no output '{}'", source, name));
+    return {it->second.value, it->second.stderr_.value_or(0.0)};
+}
+
+// the outputs of a check run's record in run.dt_refinement: name -> {value, stderr}
+std::map<std::string, Scalar> record_outputs(const nlohmann::json& run) {
+    std::map<std::string, Scalar> outs;
+    for (const auto& [name, v] : run.at("outputs").items()) {
+        Scalar s{v.at("value").get<double>(), std::nullopt, ""};
+        if (v.contains("stderr") && v.at("stderr").is_number()) s.stderr_ = v.at("stderr").get<double>();
+        outs[name] = s;
+    }
+    return outs;
+}
+
+std::optional<Measured> flow_number(const nlohmann::json& fr, const std::string& name) {
+    if (!fr.contains(name) || !fr.at(name).is_number()) return std::nullopt;
+    const std::string e = name + "_stderr";
+    return Measured{fr.at(name).get<double>(), fr.contains(e) && fr.at(e).is_number() ? fr.at(e).get<double>() : 0.0};
+}
+
+CoreRun core_run(const Profile& profile, double U, const std::map<std::string, Scalar>& outs,
+                 const nlohmann::json& flow_regime, double case_gap, const std::string& source) {
+    CoreRun r;
+    r.profile = &profile;
+    r.speed = U;
+    r.gap = outs.count("gap") ? outs.at("gap").value : case_gap;  // under load the mean plate gap
+    r.normal_bottom = output(outs, "normal_stress_bottom", source);
+    r.normal_top = output(outs, "normal_stress_top", source);
+    r.shear_bottom = output(outs, "shear_stress_bottom", source);
+    r.shear_top = output(outs, "shear_stress_top", source);
+    r.z_core = flow_number(flow_regime, "coordination_number_core");
+    r.z_bulk = flow_number(flow_regime, "coordination_number");
+    return r;
+}
+
+// Delta-t verdict of a point, from its status and its record
+std::string dt_check(const Summary& s) {
+    if (!s.run.contains("dt_refinement")) return "not-checked";
+    switch (read_regime(s.run).status) {
+    case RegimeStatus::Steady: return "converged";
+    case RegimeStatus::DtUnconverged: return "unconverged";
+    default: return "no-verdict";
+    }
+}
+
+// the core's own Delta-t verdict (core_dt_unconverged): "converged", or "unconverged:" and what moved
+std::string core_dt_check(const CoreRheology& answer, const CoreRheology& check) {
+    const auto moved = core_dt_unconverged(answer, check);
+    return moved.empty() ? "converged" : fmt::format("unconverged:{}", fmt::join(moved, ";"));
+}
+
+std::string num(double v) { return fmt::format("{:.6g}", v); }
+std::string opt_num(const std::optional<double>& v) { return v ? num(*v) : std::string(); }
+
+const char* kColumns[] = {
+    "point", "speed_m_s", "load_Pa", "status", "dt_check", "core_dt_check", "time_step_s", "check_time_step_s", "gap_m", "grains",
+    "core_from_y_over_H", "core_to_y_over_H", "core_stations", "shear_rate_1_s", "shear_rate_err",
+    "shear_rate_halves", "pressure_Pa", "pressure_err", "shear_stress_Pa", "shear_stress_err",
+    "wall_shear_imbalance", "wall_normal_imbalance", "I", "I_err", "I_dt_change", "mu", "mu_err", "mu_dt_change", "nu", "nu_err",
+    "nu_dt_change", "T_scaled", "T_scaled_err", "T_scaled_dt_change", "Z", "Z_err", "Z_dt_change", "Z_source"};
+
+}  // namespace
+
+BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root) {
+    BulkTable t;
+    const ResultKey key = result_key(c, "dem");
+    std::string rows;
+    const double d = c.grains.diameter, rho = c.grains.density;
+    for (const auto& p : c.points) {
+        const fs::path dir = result_dir(results_root, "dem", p.id);
+        const LoadedResult res = load_result(dir, key);
+        if (res.status.state != ResultState::Complete) {
+            t.notes.push_back(fmt::format("point {} left out: {}{}", p.id,
+                                          res.status.state == ResultState::Missing ? "no result"
+                                          : res.status.state == ResultState::Stale ? "stale result"
+                                                                                   : "corrupt result",
+                                          res.status.reason.empty() ? "" : " (" + res.status.reason + ")"));
+            continue;
+        }
+        const Summary& s = *res.summary;
+        const std::string src = (dir / "summary.json").string();
+        const nlohmann::json no_record = nlohmann::json::object();
+        const auto& fr = s.run.contains("flow_regime") ? s.run.at("flow_regime") : no_record;
+        const CoreRheology a = core_rheology(core_run(*res.profile, p.speed, s.outputs, fr, c.cell.gap, src), d, rho);
+        // the run the answer was checked against, reduced the same way
+        std::optional<CoreRheology> b;
+        double check_dt = 0;
+        if (s.run.contains("dt_refinement")) {
+            const DtCheckRun chk = dt_check_run(s.run.at("dt_refinement"));
+            if (!chk.run) throw Error(fmt::format("{}: run.dt_refinement names no check run", src));
+            const Profile cp = read_profile(dir / (chk.second_halving ? kDtHalfProfile : kDtCheckProfile));
+            const auto& cfr = chk.run->contains("flow_regime") ? chk.run->at("flow_regime") : no_record;
+            b = core_rheology(core_run(cp, p.speed, record_outputs(*chk.run), cfr, c.cell.gap, src), d, rho);
+            check_dt = chk.run->at("time_step_s").get<double>();
+        }
+        const auto change = [&](auto field) -> std::optional<double> {
+            if (!b) return std::nullopt;
+            return field(a) - field(*b);
+        };
+        const double gap = s.outputs.count("gap") ? s.outputs.at("gap").value : c.cell.gap;
+        std::vector<std::string> v = {
+            p.id, num(p.speed), num(p.normal_stress), to_string(read_regime(s.run).status), dt_check(s),
+            b ? core_dt_check(a, *b) : std::string("not-checked"),
+            num(s.run.value("time_step_s", 0.0)), b ? num(check_dt) : std::string(), num(gap),
+            std::to_string(s.run.value("atoms", std::size_t{0})), num(a.core_from), num(a.core_to),
+            std::to_string(a.stations), num(a.shear_rate.value), num(a.shear_rate.error), num(a.shear_rate_halves),
+            num(a.pressure.value), num(a.pressure.error), num(a.shear_stress.value), num(a.shear_stress.error),
+            num(a.wall_shear_imbalance), num(a.wall_normal_imbalance), num(a.inertial_number.value), num(a.inertial_number.error),
+            opt_num(change([](const CoreRheology& r) { return r.inertial_number.value; })), num(a.friction.value),
+            num(a.friction.error), opt_num(change([](const CoreRheology& r) { return r.friction.value; })),
+            num(a.solid_fraction.value), num(a.solid_fraction.error),
+            opt_num(change([](const CoreRheology& r) { return r.solid_fraction.value; })),
+            num(a.temperature_scaled.value), num(a.temperature_scaled.error),
+            opt_num(change([](const CoreRheology& r) { return r.temperature_scaled.value; })),
+            a.coordination ? num(a.coordination->value) : std::string(),
+            a.coordination ? num(a.coordination->error) : std::string(),
+            b && a.coordination && b->coordination && a.coordination_core == b->coordination_core
+                ? num(a.coordination->value - b->coordination->value)
+                : std::string(),
+            a.coordination ? (a.coordination_core ? "core" : "bulk") : "none"};
+        rows += fmt::format("{}\n", fmt::join(v, ","));
+        ++t.rows;
+    }
+    std::string head = fmt::format("# format {}\n# case {} ({}), case file hash {}\n# written {} by granlub {}\n",
+                                   kBulkTableFormat, c.name, c.file.string(), c.file_hash, utc_now(), version());
+    head += fmt::format("# from {}; columns, units and method: cases/bulk_shear/README.md\n",
+                        (results_root / "dem").string());
+    for (const auto& n : t.notes) head += "# " + n + "\n";
+    t.csv = head + fmt::format("{}\n", fmt::join(kColumns, ",")) + rows;
+    return t;
+}
+
+}  // namespace granlub

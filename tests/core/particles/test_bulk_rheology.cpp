@@ -1,0 +1,241 @@
+// The core reduction of a wide plane-shear cell (bulk_rheology.h) on synthetic profiles whose answer
+// is known: a straight u(y) in the core gives its slope whatever the profile does near the walls; a
+// curved core shows in the halves' slopes and in the shear rate's error. And the table
+// (bulk_rheology_table.h) from synthetic results on disk.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "case_text.h"
+#include "granlub/error.h"
+#include "granlub/particles/bulk_rheology.h"
+#include "granlub/particles/bulk_rheology_table.h"
+#include "granlub/results/file_io.h"
+#include "granlub/results/results.h"
+#include "granlub/results/run_status.h"
+
+using namespace granlub;
+namespace tt = boost::test_tools;
+
+namespace {
+
+constexpr double kD = 0.787e-3, kRho = 2550.0, kU = 3.0, kH = 0.024, kP = 2250.0;
+
+// n stations across the gap; u/U, nu, T/U^2 from the functions, constant standard errors
+Profile synthetic(std::size_t n, const std::function<double(double)>& u, double nu, double T_over_U2) {
+    std::vector<double> y(n), uu(n), ue(n, 1e-3), v(n, nu), ve(n, 2e-3), T(n, T_over_U2), Te(n, 1e-6);
+    for (std::size_t k = 0; k < n; ++k) {
+        y[k] = (static_cast<double>(k) + 0.5) / static_cast<double>(n);
+        uu[k] = u(y[k]);
+    }
+    Profile p;
+    p.add("y_over_H", y).add("u_over_U", uu).add("u_over_U_stderr", ue).add("solid_fraction", v);
+    p.add("solid_fraction_stderr", ve).add("temperature_over_U2", T).add("temperature_over_U2_stderr", Te);
+    return p;
+}
+
+CoreRun run_of(const Profile& p, double tau_bottom = 900.0, double tau_top = 900.0, double P_top = kP) {
+    CoreRun r;
+    r.profile = &p;
+    r.speed = kU;
+    r.gap = kH;
+    r.normal_bottom = {kP, 10.0};
+    r.normal_top = {P_top, 10.0};
+    r.shear_bottom = {tau_bottom, 5.0};
+    r.shear_top = {tau_top, 5.0};
+    r.z_bulk = Measured{3.9, 0.01};
+    return r;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_straight_core_gives_its_slope_whatever_the_walls_do) {
+    // u/U = 0.9 - 0.8 y/H in the core, and boundary layers (a steep fall) within 0.3 H of each wall
+    const auto u = [](double y) {
+        const double line = 0.9 - 0.8 * y;
+        if (y < 0.3) return line + 0.5 * (0.3 - y);
+        if (y > 0.7) return line - 0.5 * (y - 0.7);
+        return line;
+    };
+    const Profile p = synthetic(61, u, 0.58, 4e-4);
+    const CoreRheology r = core_rheology(run_of(p), kD, kRho);
+    const double gamma = 0.8 * kU / kH;  // 100 1/s
+    BOOST_TEST(r.stations == 21u);       // centres in [1/3, 2/3] of 61 slabs
+    BOOST_TEST(r.shear_rate.value == gamma, tt::tolerance(1e-9));
+    BOOST_TEST(std::abs(r.shear_rate_halves) < 1e-9);
+    BOOST_TEST(r.inertial_number.value == gamma * kD / std::sqrt(kP / kRho), tt::tolerance(1e-9));
+    BOOST_TEST(r.friction.value == 0.4, tt::tolerance(1e-12));
+    BOOST_TEST(r.friction.error > 0.0);
+    BOOST_TEST(r.solid_fraction.value == 0.58, tt::tolerance(1e-12));
+    BOOST_TEST(r.solid_fraction.error == 2e-3, tt::tolerance(1e-9));  // the correlated bound: no 1/sqrt(n)
+    const double Ts = 4e-4 * kU * kU / std::pow(kD * gamma, 2);
+    BOOST_TEST(r.temperature_scaled.value == Ts, tt::tolerance(1e-9));
+    BOOST_TEST(!r.coordination_core);
+    BOOST_TEST(r.coordination->value == 3.9);
+    // the slope's error is the propagated one for points on the line: 1e-3 / sqrt(sum (y - ybar)^2)
+    double ybar = 0, sxx = 0;
+    std::vector<double> yc;
+    for (std::size_t k = 0; k < 61; ++k)
+        if (const double y = (static_cast<double>(k) + 0.5) / 61.0; y >= 1.0 / 3 && y <= 2.0 / 3) yc.push_back(y), ybar += y;
+    ybar /= static_cast<double>(yc.size());
+    for (double y : yc) sxx += (y - ybar) * (y - ybar);
+    BOOST_TEST(r.shear_rate.error == 1e-3 / std::sqrt(sxx) * kU / kH, tt::tolerance(1e-6));
+}
+
+BOOST_AUTO_TEST_CASE(a_curved_core_shows_in_the_halves_and_the_error) {
+    // u/U = 1 - y^2: the slope steepens upward (-2 y), so the upper half shears faster
+    const Profile p = synthetic(61, [](double y) { return 1.0 - y * y; }, 0.55, 4e-4);
+    const CoreRheology r = core_rheology(run_of(p), kD, kRho);
+    BOOST_TEST(r.shear_rate.value == 1.0 * kU / kH, tt::tolerance(1e-6));  // the mean slope over [1/3, 2/3]
+    BOOST_TEST(r.shear_rate_halves > 0.25);                                   // -2(0.583) vs -2(0.417): 1/3 of -1
+    BOOST_TEST(r.shear_rate_halves < 0.40);
+    // the residuals (~1e-3 of u/U) dominate the block errors (1e-3 each): the error grows with them
+    const CoreRheology straight = core_rheology(run_of(synthetic(61, [](double y) { return 1.0 - y; }, 0.55, 4e-4)), kD, kRho);
+    BOOST_TEST(r.shear_rate.error >= straight.shear_rate.error);
+}
+
+BOOST_AUTO_TEST_CASE(walls_that_disagree_are_reported_not_hidden) {
+    const Profile p = synthetic(61, [](double y) { return 1.0 - y; }, 0.55, 4e-4);
+    const CoreRheology r = core_rheology(run_of(p, 800.0, 1000.0), kD, kRho);
+    BOOST_TEST(r.friction.value == 0.4, tt::tolerance(1e-12));  // the mean of the walls
+    BOOST_TEST(r.wall_shear_imbalance == 200.0 / 900.0, tt::tolerance(1e-12));  // over their mean
+    BOOST_TEST(r.wall_normal_imbalance == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(walls_pressed_unequally_are_reported_and_averaged) {
+    const Profile p = synthetic(61, [](double y) { return 1.0 - y; }, 0.55, 4e-4);
+    const CoreRheology r = core_rheology(run_of(p, 900.0, 900.0, 2150.0), kD, kRho);
+    BOOST_TEST(r.pressure.value == 2200.0, tt::tolerance(1e-12));
+    BOOST_TEST(r.wall_normal_imbalance == -100.0 / 2200.0, tt::tolerance(1e-12));
+    BOOST_TEST(r.friction.value == 900.0 / 2200.0, tt::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(the_core_z_is_preferred_and_bad_input_fails) {
+    const Profile p = synthetic(61, [](double y) { return 1.0 - y; }, 0.55, 4e-4);
+    CoreRun run = run_of(p);
+    run.z_core = Measured{4.2, 0.02};
+    const CoreRheology r = core_rheology(run, kD, kRho);
+    BOOST_TEST(r.coordination_core);
+    BOOST_TEST(r.coordination->value == 4.2);
+    // too few stations in the core to fit two halves
+    const Profile coarse = synthetic(12, [](double y) { return 1.0 - y; }, 0.55, 4e-4);
+    BOOST_CHECK_THROW(core_rheology(run_of(coarse), kD, kRho), Error);
+    // a core that does not flow (u constant)
+    const Profile plug = synthetic(61, [](double) { return 0.5; }, 0.55, 4e-4);
+    BOOST_CHECK_THROW(core_rheology(run_of(plug), kD, kRho), Error);
+}
+
+BOOST_AUTO_TEST_CASE(a_line_fit_weights_by_the_errors) {
+    // two precise points on y = 2x and one imprecise far off: the fit follows the precise ones
+    const LineFit f = fit_line({0.0, 1.0, 2.0}, {0.0, 2.0, 10.0}, {1e-3, 1e-3, 1e3});
+    BOOST_TEST(f.slope == 2.0, tt::tolerance(1e-5));
+    BOOST_CHECK_THROW(fit_line({0.0, 1.0}, {0.0, 1.0}, {1.0, 1.0}), Error);
+    BOOST_CHECK_THROW(fit_line({1.0, 1.0, 1.0}, {0.0, 1.0, 2.0}, {1.0, 1.0, 1.0}), Error);
+}
+
+// The table from results on disk: a point with its Delta-t check (the check run's profile sheared
+// less, its walls' stresses different) is a row whose *_dt_change are the answer minus the check; a
+// point without results is left out and named; a check that moved nu beyond the rule labels the row.
+BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
+    namespace fs = std::filesystem;
+    const test::TmpDir tmp("bulk_table");
+    const Case c = parse_case(test::with("control = \"fill\"", "control = \"load\""), "t.toml", Schema::common());
+    const OperatingPoint& p = c.points.front();  // U = 1 m/s, 1000 Pa; gap 5 mm, d = 1 mm, rho = 2500
+    const fs::path dir = result_dir(tmp.path, "dem", p.id);
+    fs::create_directories(dir / kDtCheckDir);
+    const auto linear = [](double slope) { return [slope](double y) { return 0.9 - slope * y; }; };
+    write_file_atomic(dir / kDtCheckProfile, profile_csv(synthetic(61, linear(0.7), 0.577, 4e-4)));
+    const auto write = [&](double dnu) {
+        Summary s = make_summary(c, p, "dem");
+        s.set("normal_stress_bottom", 1000.0, "Pa", 10.0).set("normal_stress_top", 1000.0, "Pa", 10.0);
+        s.set("shear_stress_bottom", 400.0, "Pa", 4.0).set("shear_stress_top", 400.0, "Pa", 4.0);
+        s.set("slip_bottom", 0.1, "m/s", 0.0).set("slip_top", 0.1, "m/s", 0.0).set("gap", 5.0e-3, "m", 1e-6);
+        s.set("mean_solid_fraction", 0.58, "").set("max_solid_fraction", 0.65, "");
+        const nlohmann::json check_outputs = {{"normal_stress_bottom", {{"value", 1000.0}, {"stderr", 10.0}}},
+                                              {"normal_stress_top", {{"value", 1000.0}, {"stderr", 10.0}}},
+                                              {"shear_stress_bottom", {{"value", 380.0}, {"stderr", 4.0}}},
+                                              {"shear_stress_top", {{"value", 380.0}, {"stderr", 4.0}}},
+                                              {"gap", {{"value", 5.0e-3}}}};
+        s.run = {{"time_step_s", 1e-6},
+                 {"atoms", 1234},
+                 {"flow_regime", {{"coordination_number", 3.5}, {"coordination_number_core", 4.1}}},
+                 {"dt_refinement",
+                  {{"mean_solid_fraction", {{"change", dnu}}},
+                   {"shear_stress_bottom", {{"relative_change", 0.05}, {"z", 3.0}}},
+                   {"shear_stress_top", {{"relative_change", 0.05}, {"z", 3.0}}},
+                   {"full_step_run",
+                    {{"time_step_s", 2e-6},
+                     {"status", "steady"},
+                     {"outputs", check_outputs},
+                     {"flow_regime", {{"coordination_number", 3.6}, {"coordination_number_core", 4.3}}}}}}}};
+        set_regime(s.run, RegimeStatus::Steady);
+        write_result(dir, synthetic(61, linear(0.8), 0.58, 4e-4), s);
+    };
+    const auto row = [&]() {
+        const BulkTable t = bulk_rheology_table(c, tmp.path);
+        BOOST_TEST(t.rows == 1u);
+        BOOST_TEST(t.notes.size() == 1u);  // the second point has no result
+        BOOST_TEST(t.csv.find("# point U2.0 left out: no result") != std::string::npos, t.csv);
+        BOOST_TEST(t.csv.find(std::string("# format ") + kBulkTableFormat) == 0u);
+        std::istringstream in(t.csv);
+        std::string line, header;
+        std::vector<std::string> lines;
+        while (std::getline(in, line))
+            if (line.rfind('#', 0) != 0) lines.push_back(line);
+        BOOST_REQUIRE(lines.size() == 2u);
+        const auto split = [](const std::string& s) {
+            std::vector<std::string> out;
+            std::stringstream ss(s);
+            for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
+            if (!s.empty() && s.back() == ',') out.emplace_back();
+            return out;
+        };
+        const auto h = split(lines[0]), v = split(lines[1]);
+        BOOST_REQUIRE(h.size() == v.size());
+        std::map<std::string, std::string> m;
+        for (std::size_t i = 0; i < h.size(); ++i) m[h[i]] = v[i];
+        return m;
+    };
+    write(0.001);
+    auto m = row();
+    const double sqrtPrho = std::sqrt(1000.0 / 2500.0), d = 1e-3, H = 5e-3;
+    BOOST_TEST(m.at("point") == p.id);
+    BOOST_TEST(m.at("status") == "steady");
+    BOOST_TEST(m.at("dt_check") == "converged");
+    BOOST_TEST(std::stod(m.at("shear_rate_1_s")) == 0.8 / H, tt::tolerance(1e-5));
+    BOOST_TEST(std::stod(m.at("I_dt_change")) == 0.1 / H * d / sqrtPrho, tt::tolerance(1e-5));
+    BOOST_TEST(std::stod(m.at("mu")) == 0.4, tt::tolerance(1e-5));
+    BOOST_TEST(std::stod(m.at("mu_dt_change")) == 0.02, tt::tolerance(1e-4));
+    BOOST_TEST(std::stod(m.at("nu_dt_change")) == 0.003, tt::tolerance(1e-3));
+    BOOST_TEST(m.at("core_dt_check") == "unconverged:I");  // the core sheared 0.8/0.7 as fast: I moved 14 %
+    BOOST_TEST(std::stod(m.at("Z")) == 4.1, tt::tolerance(1e-6));
+    BOOST_TEST(std::stod(m.at("Z_dt_change")) == -0.2, tt::tolerance(1e-4));
+    BOOST_TEST(m.at("Z_source") == "core");
+    BOOST_TEST(m.at("grains") == "1234");
+    write(0.006);  // the check moved nu-bar by more than the rule's 0.005: a labelled row, not an answer
+    m = row();
+    BOOST_TEST(m.at("status") == "dt-unconverged");
+    BOOST_TEST(m.at("dt_check") == "unconverged");
+}
+
+// The core's Delta-t rule: nu by 0.005; mu and I by 7 %, unless within 2 combined standard errors.
+BOOST_AUTO_TEST_CASE(the_core_is_judged_by_the_pipelines_thresholds) {
+    CoreRheology a, b;
+    a.inertial_number = {0.100, 0.001}, b.inertial_number = {0.100, 0.001};
+    a.friction = {0.40, 0.01}, b.friction = {0.40, 0.01};
+    a.solid_fraction = {0.580, 0.002}, b.solid_fraction = {0.580, 0.002};
+    BOOST_TEST(core_dt_unconverged(a, b).empty());
+    b.inertial_number = {0.110, 0.001};  // 9 %, 7 errors: moved
+    b.friction = {0.44, 0.02};           // 9 %, but within 2 combined errors (0.045): not moved
+    b.solid_fraction = {0.586, 0.002};   // 0.006 > 0.005: moved
+    const auto moved = core_dt_unconverged(a, b);
+    BOOST_TEST(moved == (std::vector<std::string>{"I", "nu"}), tt::per_element());
+}
