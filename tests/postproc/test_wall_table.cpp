@@ -134,6 +134,8 @@ BOOST_AUTO_TEST_CASE(every_solver_s_walls_and_the_continuum_s_map_on_the_particl
     BOOST_TEST(cont_nu.find("steady solution") != std::string::npos);
     BOOST_TEST(cont_nu.find("steady window") == std::string::npos);
     BOOST_TEST(dem_nu.find("steady window") != std::string::npos);
+    // its profile is its mid-width column, and the legend says so
+    BOOST_TEST(html.find("continuum (mid-width)") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

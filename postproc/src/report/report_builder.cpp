@@ -258,8 +258,8 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     for (const auto& heading : figure_headings()) {
         figure_part(rep, col, figs, heading);
         if (heading == kStressHeading) {
-            wall_part(rep, c, col);
             exponents(rep, col, metrics);
+            wall_part(rep, c, col);
             if (regime) add_regime_part(rep, *regime, figs.regime);
         }
     }
