@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <set>
 
 #include <fmt/format.h>
@@ -116,7 +117,8 @@ std::string render_cross_section_svg(const CrossSectionMap& m, const std::vector
     out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#000\"/>\n", bx0, y0,
                        bx1 - bx0, y1 - y0);
     for (const Tick& t : bar) {
-        if (t.label.empty() || t.value < lo || t.value > hi) continue;
+        // a tick at an end of the bar up to rounding (0.6 of a bar ending at 0.6) is labelled
+        if (t.label.empty() || t.value < lo - 1e-9 * (hi - lo) || t.value > hi + 1e-9 * (hi - lo)) continue;
         const double y = y1 - (t.value - lo) / (hi - lo) * (y1 - y0);
         out += fmt::format("<line x1=\"{0}\" y1=\"{1:.1f}\" x2=\"{2}\" y2=\"{1:.1f}\" stroke=\"#000\"/>"
                            "<text x=\"{3}\" y=\"{4:.1f}\">{5}</text>\n",
@@ -159,6 +161,8 @@ std::vector<FigureRef> cross_section_figures(const Collection& col, std::size_t 
     std::vector<const std::vector<double>*> nus, us;
     for (const auto& [r, m] : maps) nus.push_back(&m.nu), us.push_back(&m.u);
     const ColourScale nu_scale = colour_scale(nus), u_scale = colour_scale(us);
+    // every solver's ν map, then every solver's u/U map: the solvers' maps of a quantity side by side
+    std::vector<FigureRef> u_refs;
     for (const auto& [r, m] : maps) {
         const bool unsteady = !r->steady();
         const std::string state = unsteady ? fmt::format(" ({})", r->state_name()) : "";
@@ -190,9 +194,10 @@ std::vector<FigureRef> cross_section_figures(const Collection& col, std::size_t 
             write_file_atomic(plots / (name + ".svg"), f.svg);
             std::filesystem::copy_file(r->dir / kSectionFile, plots / (base + ".csv"),
                                        std::filesystem::copy_options::overwrite_existing);
-            refs.push_back(std::move(f));
+            (q.key == std::string("nu") ? refs : u_refs).push_back(std::move(f));
         }
     }
+    refs.insert(refs.end(), std::make_move_iterator(u_refs.begin()), std::make_move_iterator(u_refs.end()));
     return refs;
 }
 
