@@ -2,7 +2,6 @@
 // one colour scale, each saying what it is, and the wall-stress table listing every wall of every
 // solver that has it ("—" and why for those without).
 #include <algorithm>
-#include <fstream>
 
 #include <boost/test/unit_test.hpp>
 #include <fmt/format.h>
@@ -51,21 +50,12 @@ const std::vector<postproc::Cell>* row_of(const postproc::Table& t, const std::s
     return nullptr;
 }
 
-test::SyntheticCase trough(const std::string& name) {
-    auto s = test::make_case(name);
-    std::string text = test::slurp(s.dir / "case.toml");
-    text.replace(text.find("width = 0.0"), 11, "width = 0.01");  // a trough 10 mm wide: side walls
-    std::ofstream(s.dir / "case.toml") << text;
-    s.c = load_case(s.dir, Schema::common());
-    return s;
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(wall_table)
 
 BOOST_AUTO_TEST_CASE(every_solver_s_walls_and_the_continuum_s_map_on_the_particle_scale) {
-    auto s = trough("wall_table");
+    auto s = test::edited_case("wall_table", "width = 0.0", "width = 0.01");  // a trough 10 mm wide: side walls
     for (const char* solver : {"continuum", "automaton", "dem"}) test::write_solver(s, solver);
     for (const OperatingPoint& p : s.c.points) {
         // the continuum on the cross-section: its own share; the dem: side walls with standard errors
