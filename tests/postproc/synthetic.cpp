@@ -26,6 +26,15 @@ SyntheticCase make_case(const std::string& name, const std::string& extra_toml) 
     return s;
 }
 
+SyntheticCase edited_case(const std::string& name, const std::string& from, const std::string& to) {
+    auto s = make_case(name);
+    std::string text = slurp(s.dir / "case.toml");
+    text.replace(text.find(from), from.size(), to);
+    std::ofstream(s.dir / "case.toml") << text;
+    s.c = load_case(s.dir, Schema::common());
+    return s;
+}
+
 void write_solver(const SyntheticCase& s, const std::string& solver) {
     for (const OperatingPoint& p : s.c.points) {
         const double U = p.speed;

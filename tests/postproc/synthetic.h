@@ -20,6 +20,8 @@ struct SyntheticCase {
     RunOptions o;  // results_root = dir/results
 };
 SyntheticCase make_case(const std::string& name, const std::string& extra_toml = "");
+// make_case with `from` replaced by `to` in its case.toml (e.g. "width = 0.0" by "width = 0.01").
+SyntheticCase edited_case(const std::string& name, const std::string& from, const std::string& to);
 
 // continuum: 41 stations on [0, 1], deterministic; u/U = 0.9 - 0.8 y, nu/nu_max = 0.8 + 0.1 y,
 //   T/U^2 = 0.01; sigma_b = 1000 U^2, sigma_t = 900 U^2, tau = 400 U^2, slip = 0.1 U, nu_bar 0.55.

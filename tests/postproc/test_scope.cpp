@@ -28,16 +28,6 @@ std::string md_row(const std::string& md, const std::string& heading, const std:
 constexpr const char* kScope = "### What each solver's numbers mean";
 constexpr const char* kKey = "### Key numbers";
 
-// The synthetic case with `from` replaced by `to` in its case.toml.
-test::SyntheticCase edited_case(const std::string& name, const std::string& from, const std::string& to) {
-    auto s = test::make_case(name);
-    std::string text = test::slurp(s.dir / "case.toml");
-    text.replace(text.find(from), from.size(), to);
-    std::ofstream(s.dir / "case.toml") << text;
-    s.c = load_case(s.dir, Schema::common());
-    return s;
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(scope)
@@ -210,7 +200,7 @@ BOOST_AUTO_TEST_CASE(the_dt_note_names_the_dense_step_only_with_a_dense_point) {
 }
 
 BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) {
-    auto s = edited_case("scope_load", "control = \"fill\"", "control = \"load\"");  // target 1000 Pa
+    auto s = test::edited_case("scope_load", "control = \"fill\"", "control = \"load\"");  // target 1000 Pa
     test::write_solver(s, "continuum");
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
@@ -237,7 +227,7 @@ BOOST_AUTO_TEST_CASE(load_control_shows_gap_and_load_and_fits_no_normal_stress) 
 
 // Two speeds can never give a fit: one sentence says so, no per-solver list, no exponent table.
 BOOST_AUTO_TEST_CASE(too_few_speeds_say_so_once) {
-    auto s = edited_case("scope_two_speeds", "speed = [1.0, 2.0, 4.0]", "speed = [1.0, 2.0]");
+    auto s = test::edited_case("scope_two_speeds", "speed = [1.0, 2.0, 4.0]", "speed = [1.0, 2.0]");
     for (const char* solver : {"continuum", "dem"}) test::write_solver(s, solver);
     BOOST_TEST(postproc::compare(s.c, s.o) == 0);
     const std::string md = test::slurp(s.o.results_root / "report" / "report.md");

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <set>
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 #include "formats/svg_title.h"
 #include "granlub/error.h"
 #include "granlub/particles/cross_section.h"
+#include "results/scope.h"
 
 namespace granlub::postproc {
 
@@ -46,12 +48,21 @@ std::optional<CrossSectionMap> read_cross_section(const Run& r) {
     return m;
 }
 
-std::string render_cross_section_svg(const CrossSectionMap& m, const std::vector<double>& values,
-                                     const std::string& title, const std::string& bar_label, const std::string& stamp) {
-    constexpr double W = 540, H = 380, x0 = 70, x1 = 430, y0 = 40, y1 = 320, bx0 = 455, bx1 = 475;
+ColourScale colour_scale(const std::vector<const std::vector<double>*>& maps) {
     double lo = 0, hi = 0;
-    for (double v : values) hi = std::max(hi, v), lo = std::min(lo, v);
+    for (const auto* values : maps)
+        for (double v : *values) hi = std::max(hi, v), lo = std::min(lo, v);
     if (!(hi > lo)) hi = lo + 1;
+    return {lo, hi};
+}
+
+std::string render_cross_section_svg(const CrossSectionMap& m, const std::vector<double>& values,
+                                     const std::string& title, const std::string& bar_label, const std::string& stamp,
+                                     const ColourScale* scale, const std::string& what) {
+    constexpr double W = 540, x0 = 70, x1 = 430, y0 = 40, y1 = 320, bx0 = 455, bx1 = 475;
+    const double H = what.empty() ? 380 : 400;
+    const ColourScale own = colour_scale({&values});
+    const double lo = (scale ? *scale : own).lo, hi = (scale ? *scale : own).hi;
     const std::vector<Tick> bar = linear_ticks(lo, hi);
     const double cw = (x1 - x0) / static_cast<double>(m.nz), ch = (y1 - y0) / static_cast<double>(m.ny);
     // A title wrapped onto more lines moves the map below it down by as much.
@@ -89,6 +100,9 @@ std::string render_cross_section_svg(const CrossSectionMap& m, const std::vector
     out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"14\">z/W across the width "
                        "(−½: outer wall)</text>\n",
                        0.5 * (x0 + x1), y1 + 40);
+    if (!what.empty())
+        out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"12\" fill=\"#444\">{}</text>\n",
+                           0.5 * (x0 + x1), y1 + 62, xml_escape(what));
     out += fmt::format("<text transform=\"translate(22,{}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">"
                        "y/H across the gap (0: moving floor)</text>\n",
                        0.5 * (y0 + y1));
@@ -103,7 +117,8 @@ std::string render_cross_section_svg(const CrossSectionMap& m, const std::vector
     out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#000\"/>\n", bx0, y0,
                        bx1 - bx0, y1 - y0);
     for (const Tick& t : bar) {
-        if (t.label.empty() || t.value < lo || t.value > hi) continue;
+        // a tick at an end of the bar up to rounding (0.6 of a bar ending at 0.6) is labelled
+        if (t.label.empty() || t.value < lo - 1e-9 * (hi - lo) || t.value > hi + 1e-9 * (hi - lo)) continue;
         const double y = y1 - (t.value - lo) / (hi - lo) * (y1 - y0);
         out += fmt::format("<line x1=\"{0}\" y1=\"{1:.1f}\" x2=\"{2}\" y2=\"{1:.1f}\" stroke=\"#000\"/>"
                            "<text x=\"{3}\" y=\"{4:.1f}\">{5}</text>\n",
@@ -130,12 +145,25 @@ std::string cross_section_stamp(const Run& r) {
     return "STATUS UNKNOWN — not checked";
 }
 
+std::string cross_section_what(const Run& r) {
+    if (run_text(r, "geometry") == "cross_section")
+        return "the continuum's steady solution (fully developed flow), no time average";
+    return "a time average along the flow and over the run's steady window";
+}
+
 std::vector<FigureRef> cross_section_figures(const Collection& col, std::size_t i, const std::filesystem::path& plots) {
     std::vector<FigureRef> refs;
     const OperatingPoint& p = *col.points[i];
-    for (const Run* r : col.usable(p.id)) {
-        const auto m = read_cross_section(*r);
-        if (!m) continue;
+    std::vector<std::pair<const Run*, CrossSectionMap>> maps;
+    for (const Run* r : col.usable(p.id))
+        if (auto m = read_cross_section(*r)) maps.emplace_back(r, std::move(*m));
+    // One colour scale per quantity over the point's maps: the same colour is the same value in each.
+    std::vector<const std::vector<double>*> nus, us;
+    for (const auto& [r, m] : maps) nus.push_back(&m.nu), us.push_back(&m.u);
+    const ColourScale nu_scale = colour_scale(nus), u_scale = colour_scale(us);
+    // every solver's ν map, then every solver's u/U map: the solvers' maps of a quantity side by side
+    std::vector<FigureRef> u_refs;
+    for (const auto& [r, m] : maps) {
         const bool unsteady = !r->steady();
         const std::string state = unsteady ? fmt::format(" ({})", r->state_name()) : "";
         const std::string base = fmt::format("cross_section_{}_{}", r->solver, point_slug(p));
@@ -144,23 +172,32 @@ std::vector<FigureRef> cross_section_figures(const Collection& col, std::size_t 
             const std::vector<double>& v;
             const char* label;
             const char* bar;
+            const ColourScale& scale;
         };
-        for (const Q& q : {Q{"nu", m->nu, "solid fraction ν", "ν"}, Q{"u", m->u, "streamwise velocity u/U", "u/U"}}) {
+        const bool solved = run_text(*r, "geometry") == "cross_section";
+        for (const Q& q : {Q{"nu", m.nu, "solid fraction ν", "ν", nu_scale},
+                           Q{"u", m.u, "streamwise velocity u/U", "u/U", u_scale}}) {
             const std::string name = base + "_" + q.key;
             const std::string title = fmt::format("{} {}: {}{}", r->solver, p.id, q.label, state);
             // What the quantity is and whether the run is steady: the title and the stamp. What every
             // map shares is one sentence, said once above the maps (report/shared_captions.h).
             FigureRef f{name, title,
-                        "The trough's cross-section, the flow out of the page: averaged along the flow and over the "
-                        "steady window, in cells of about one grain diameter.",
-                        render_cross_section_svg(*m, q.v, title, q.bar, cross_section_stamp(*r)),
+                        std::string("The trough's cross-section, the flow out of the page, in the particle runs' cells "
+                                    "of about one grain diameter; the maps of a quantity at a point share one colour "
+                                    "scale. ") +
+                            (solved ? "The continuum's map: its steady solution for flow fully developed along the "
+                                      "trough (a boundary-value problem, no time average), averaged over each cell."
+                                    : "A particle run's map: averaged along the flow and over the steady window."),
+                        render_cross_section_svg(m, q.v, title, q.bar, cross_section_stamp(*r), &q.scale,
+                                                 cross_section_what(*r)),
                         {{"SVG", "plots/" + name + ".svg"}, {"data (CSV)", "plots/" + base + ".csv"}}};
             write_file_atomic(plots / (name + ".svg"), f.svg);
             std::filesystem::copy_file(r->dir / kSectionFile, plots / (base + ".csv"),
                                        std::filesystem::copy_options::overwrite_existing);
-            refs.push_back(std::move(f));
+            (q.key == std::string("nu") ? refs : u_refs).push_back(std::move(f));
         }
     }
+    refs.insert(refs.end(), std::make_move_iterator(u_refs.begin()), std::make_move_iterator(u_refs.end()));
     return refs;
 }
 

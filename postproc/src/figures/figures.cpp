@@ -113,6 +113,9 @@ std::vector<Figure> profile_figures(const Collection& col, std::size_t point_ind
         f.name = fmt::format("{}_{}", stem, suffix[k]);
         f.title = fmt::format("{}, {} (U = {} m/s)", what[k], p.id, num(p.speed));
         f.caption = fmt::format("{} across the gap at point {}.", q.label, p.id);
+        if (std::any_of(runs.begin(), runs.end(), [](const Run* r) { return run_text(*r, "geometry") == "cross_section"; }))
+            f.caption += " The continuum on the cross-section: its mid-width column; a particle run's profile is its "
+                         "average over the width.";
         f.x.label = "y/H (0: moving wall, 1: stationary wall)";
         f.x.lo = 0;
         f.x.hi = 1;
@@ -121,7 +124,9 @@ std::vector<Figure> profile_figures(const Collection& col, std::size_t point_ind
         for (const Run* r : runs) {
             Series s;
             s.unsteady = !r->steady();
-            s.label = s.unsteady ? fmt::format("{}: {}", r->solver, r->state_name()) : r->solver;
+            // The continuum on the trough's cross-section writes its mid-width column as profile.csv.
+            const std::string name = run_text(*r, "geometry") == "cross_section" ? r->solver + " (mid-width)" : r->solver;
+            s.label = s.unsteady ? fmt::format("{}: {}", name, r->state_name()) : name;
             s.x = r->y();
             s.y = r->column(q.key);
             s.err = r->column_stderr(q.key);

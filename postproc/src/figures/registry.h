@@ -15,7 +15,7 @@ namespace granlub::postproc {
 
 // The headings the report places at fixed spots (report/report_builder.cpp).
 inline constexpr const char* kProfilesHeading = "Profiles across the gap";
-inline constexpr const char* kCrossSectionHeading = "Cross-sections of the particle runs";
+inline constexpr const char* kCrossSectionHeading = "Cross-sections of the trough";
 inline constexpr const char* kStressHeading = "Wall stresses against speed";
 inline constexpr const char* kSlipHeading = "Slip at the walls";  // against roughness or speed: the titles say which
 inline constexpr const char* kSolidFractionHeading = "Mean solid fraction";

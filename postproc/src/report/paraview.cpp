@@ -102,7 +102,7 @@ std::vector<std::filesystem::path> write_paraview(const Collection& col, double 
             mb->SetBlock(block, profile_polydata(*r, gap));
             mb->GetMetaData(block++)->Set(vtkCompositeDataSet::NAME(), r->solver.c_str());
         }
-        for (const Run* r : runs)  // the particle runs' cross-sections (y x z), where recorded
+        for (const Run* r : runs)  // the cross-sections (y x z) of the particle runs and the continuum, where written
             if (const auto m = read_cross_section(*r); m && width > 0) {
                 mb->SetBlock(block, cross_section_image(*m, gap, width));
                 mb->GetMetaData(block++)->Set(vtkCompositeDataSet::NAME(), (r->solver + " cross-section").c_str());

@@ -17,6 +17,7 @@
 #include "tables/exponents.h"
 #include "tables/provenance.h"
 #include "tables/run_tables.h"
+#include "tables/wall_table.h"
 
 namespace granlub::postproc {
 namespace {
@@ -170,6 +171,18 @@ void figure_part(Report& rep, const Collection& col, const ReportFigures& figs, 
     }
 }
 
+// Every wall's shear stress where some solver had side walls (tables/wall_table.h).
+void wall_part(Report& rep, const Case& c, const Collection& col) {
+    Table t = wall_stress_table(c, col);
+    if (t.rows.empty()) return;
+    rep.heading("Every wall's shear stress", 3);
+    rep.table(std::move(t));
+    rep.note("The floor and both side walls move at U, the top is still. The side walls' drag over the top's: the "
+             "continuum's own (its walls' forces); a particle run's 2 τ_side H / (τ_top W), over the box's side and "
+             "top areas ([cell] gap, width); in a steady bed the forces balance and both equal 1 − τ_floor/τ_top. Inner and outer side walls differ by the centripetal force where a solver has it (the body "
+             "forces in “What each solver's numbers mean”). “—”: the solver has no such wall, and why.");
+}
+
 void exponents(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
     Table ex = exponent_table(col, metrics);
     if (ex.rows.empty())
@@ -246,6 +259,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
         figure_part(rep, col, figs, heading);
         if (heading == kStressHeading) {
             exponents(rep, col, metrics);
+            wall_part(rep, c, col);
             if (regime) add_regime_part(rep, *regime, figs.regime);
         }
     }
