@@ -66,13 +66,16 @@ BoundKeys<Settings> declare() {
              "rate-independent contact stress beside the kinetic one: johnson_jackson (Johnson & Jackson 1987: "
              "p_c = Fr (nu - nu_min)^n/(nu_c - nu)^m, shear mu_c p_c, nu_c = g0's nu_max), needs every contact_* "
              "constant; none = kinetic stresses only");
-    k.real_optional("contact_coefficient", part(&Settings::contact, &ContactStress::coefficient), Range::positive(), "Pa", "Fr of contact_stress = johnson_jackson");
-    k.real_optional("contact_onset_fraction", part(&Settings::contact, &ContactStress::onset), Range::closed(0.3, 0.75), "",
+    const auto contact = [](double ContactStress::*member) { return part(&Settings::contact, member); };
+    k.real_optional("contact_coefficient", contact(&ContactStress::coefficient), Range::positive(), "Pa",
+                    "Fr of contact_stress = johnson_jackson");
+    k.real_optional("contact_onset_fraction", contact(&ContactStress::onset), Range::closed(0.3, 0.75), "",
                     "nu_min of contact_stress = johnson_jackson: no contact pressure below it");
-    k.real_optional("contact_exponent_onset", part(&Settings::contact, &ContactStress::n), Range::closed(0.0, 10.0), "", "n of contact_stress = johnson_jackson");
-    k.real_optional("contact_exponent_jamming", part(&Settings::contact, &ContactStress::m), Range::closed(0.1, 10.0), "",
+    k.real_optional("contact_exponent_onset", contact(&ContactStress::n), Range::closed(0.0, 10.0), "",
+                    "n of contact_stress = johnson_jackson");
+    k.real_optional("contact_exponent_jamming", contact(&ContactStress::m), Range::closed(0.1, 10.0), "",
                     "m of contact_stress = johnson_jackson (the divergence at nu_c)");
-    k.real_optional("contact_friction", part(&Settings::contact, &ContactStress::friction), Range::closed(0.0, 2.0), "",
+    k.real_optional("contact_friction", contact(&ContactStress::friction), Range::closed(0.0, 2.0), "",
                     "mu_c of contact_stress = johnson_jackson: its shear over its pressure (sin phi)");
     s.real("viscosity_alpha", 1.0, Range::closed(0.0, 4.0), "",
            "LSJC viscosity factor (2 + alpha)/3; 1 = original theory, 1.6 = MFiX");
@@ -99,10 +102,15 @@ BoundKeys<Settings> declare() {
     k.real_optional("side_roughness", &Settings::side_roughness, Range::unit(), "",
                     "geometry = cross_section: R5..R8 of both side walls; default: [walls] sides = plane: the wall "
                     "roughness as declared, as_bottom: the floor's R5..R8");
-    k.integer("cells", part(&Settings::solver, &SolverSettings::cells), 200, Range::closed(100, 1e6), "finite-volume cells across the gap (profile has cells + 1 rows)");
-    k.real("tolerance", part(&Settings::solver, &SolverSettings::tolerance), 1e-10, Range::positive(), "", "Newton tolerance on the max-norm flux-balance residual");
-    k.integer("max_iterations", part(&Settings::solver, &SolverSettings::max_iterations), 50, Range::closed(1, 1e4), "Newton iterations per solve");
-    k.integer("max_continuation_steps", part(&Settings::solver, &SolverSettings::max_continuation_steps), 200, Range::closed(1, 1e5), "continuation steps when the direct solve fails");
+    const auto solver = [](auto SolverSettings::*member) { return part(&Settings::solver, member); };
+    k.integer("cells", solver(&SolverSettings::cells), 200, Range::closed(100, 1e6),
+              "finite-volume cells across the gap (profile has cells + 1 rows)");
+    k.real("tolerance", solver(&SolverSettings::tolerance), 1e-10, Range::positive(), "",
+           "Newton tolerance on the max-norm flux-balance residual");
+    k.integer("max_iterations", solver(&SolverSettings::max_iterations), 50, Range::closed(1, 1e4),
+              "Newton iterations per solve");
+    k.integer("max_continuation_steps", solver(&SolverSettings::max_continuation_steps), 200, Range::closed(1, 1e5),
+              "continuation steps when the direct solve fails");
     return k;
 }
 
