@@ -33,6 +33,7 @@ struct Toy {
     std::string label;  // read by hand: not bound
     Run run;
     double cap = -2;  // optional: kept when the key is absent
+    double span = 0;
     Shape shape = Shape::Round;
     int frames = 0;   // --vtk only
 };
@@ -48,6 +49,8 @@ BoundKeys<Toy> toy_keys() {
     k.integer("cells", part(&Toy::run, &Run::cells), 20, Range::at_least(1), "a part's member")
         .full("cells_full", 80, "cells with --full");
     k.real_optional("cap", &Toy::cap, Range::positive(), "", "no default");
+    k.real("span", &Toy::span, 1.5, Range::positive(), "s", "a real with a --full partner")
+        .full("span_full", 4.0, "span with --full");
     k.choice("shape", &Toy::shape, kShapes, Shape::Square, "a registry choice");
     k.integer("frames", &Toy::frames, 5, Range::at_least(1), "read with --vtk only").only_with_vtk().output_only();
     return k;
@@ -100,6 +103,11 @@ BOOST_AUTO_TEST_CASE(bound_keys_fill_parts_options_choices_and_run_variants) {
     BOOST_TEST(g.frames == 0);
     const Toy f = read("cells = 30\ncells_full = 90\nframes = 7\n", {true, true});
     BOOST_TEST(f.run.cells == 90);  // the --full partner
+    BOOST_TEST(f.span == 4.0);
+    BOOST_TEST(d.span == 1.5);
+    const KeySpec& span_full = *keys().spec.find("span_full");
+    BOOST_TEST((span_full.type == KeyType::Real));
+    BOOST_TEST(span_full.unit == "s");
     BOOST_TEST(f.frames == 7);
     BOOST_TEST(keys().key_name("cells", {true, false}) == "cells_full");
     BOOST_TEST(keys().key_name("cells", {false, false}) == "cells");

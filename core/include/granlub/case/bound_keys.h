@@ -98,9 +98,16 @@ public:
         spec.old_names(std::move(names));
         return *this;
     }
-    // The key read instead of the one bound last with --full: declared next, with the same range.
-    BoundKeys& full(const std::string& key, std::int64_t def, const std::string& doc) {
-        spec.integer(key, def, spec.keys.back().range, doc);
+    // The key read instead of the one bound last with --full: declared next, of its type, with its
+    // range and unit.
+    BoundKeys& full(const std::string& key, double def, const std::string& doc) {
+        const KeySpec of = spec.keys.back();
+        if (of.type == KeyType::Integer)
+            spec.integer(key, static_cast<std::int64_t>(def), of.range, doc);
+        else if (of.type == KeyType::Real)
+            spec.real(key, def, of.range, of.unit, doc);
+        else
+            throw Error("internal: [" + spec.name + "] " + of.name + " has a --full partner but is no number");
         last().full_key = key;
         return *this;
     }
