@@ -66,7 +66,7 @@ Mapping resolve_settings(const Case& c, const OperatingPoint& p, const RunOption
     r.p_drag = r.R_bottom;
 
     // The [automaton] keys, then the command line's overrides.
-    read_keys(prm, s, {o.full, o.vtk});
+    automaton_keys().read(prm, s, {o.full, o.vtk});
     if (o.threads > 0) prm.run.threads = o.threads;
     if (o.seed) prm.run.seed = *o.seed;
     try {

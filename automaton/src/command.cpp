@@ -26,7 +26,7 @@ namespace {
 // and the lattice and walls the case mapped.
 nlohmann::json settings_json(const Params& p) {
     nlohmann::json out;
-    for (const auto& b : automaton_keys().bindings) {
+    for (const auto& b : automaton_keys().bindings()) {
         if (b.output_only) continue;
         std::visit([&](const auto& v) { out[b.key] = v; }, b.get(p));
     }

@@ -30,8 +30,8 @@ void unit_interval(const std::string& name, double v) {
 
 // Each bound field within its key's range (the schema's, keys.h).
 void check_ranges(const Params& p) {
-    const AutomatonKeys& keys = automaton_keys();
-    for (const auto& b : keys.bindings) {
+    const BoundKeys<Params>& keys = automaton_keys();
+    for (const auto& b : keys.bindings()) {
         const Value v = b.get(p);
         double x;
         if (const auto* i = std::get_if<std::int64_t>(&v)) x = static_cast<double>(*i);
@@ -45,7 +45,7 @@ void check_ranges(const Params& p) {
 
 // The value of the field `key` sets, as the case file writes it.
 std::string field_text(const Params& p, const std::string& key) {
-    for (const auto& b : automaton_keys().bindings)
+    for (const auto& b : automaton_keys().bindings())
         if (b.key == key) return value_text(b.get(p));
     throw Error("internal: no [automaton] key " + key);
 }

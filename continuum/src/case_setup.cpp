@@ -69,12 +69,7 @@ void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, doub
             sec.fail("contact_stress", fmt::format("contact_stress = \"{}\" needs its constant {} ({}); it has no "
                                                    "default (to be fitted on a bulk-rheology table): set {}",
                                                    model, k, what, k));
-    ContactStress& cs = s.contact;
-    cs.coefficient = sec.real("contact_coefficient");
-    cs.onset = sec.real("contact_onset_fraction");
-    cs.n = sec.real("contact_exponent_onset");
-    cs.m = sec.real("contact_exponent_jamming");
-    cs.friction = sec.real("contact_friction");
+    ContactStress& cs = s.contact;  // its constants read with the plain keys (section.cpp)
     cs.jamming = numax;
     if (!(cs.onset < numax))
         sec.fail("contact_onset_fraction",
@@ -91,14 +86,12 @@ void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, doub
 Settings resolve_settings(const Case& c) {
     const Section& sec = c.section("continuum");
     Settings s;
+    continuum_keys().read(s, sec);  // the plain keys (section.cpp)
     s.method = sec.string("method") == "shooting" ? Method::Shooting : Method::FiniteVolume;
     s.g0_name = sec.string("g0");
     s.wall_name = sec.string("wall_model");
-    s.solver.cells = static_cast<int>(sec.integer("cells"));
-    s.solver.tolerance = sec.real("tolerance");
-    s.solver.max_iterations = static_cast<int>(sec.integer("max_iterations"));
-    s.solver.max_continuation_steps = static_cast<int>(sec.integer("max_continuation_steps"));
     s.closures_name = sec.string("closures");
+    // The closures' own parameters: the Closures object built below holds them, not Settings.
     ClosureParams lp;
     lp.restitution = c.grains.restitution;
     lp.alpha = sec.real("viscosity_alpha");
@@ -146,7 +139,6 @@ Settings resolve_settings(const Case& c) {
                                                 "closures = \"{}\" has none (allowed: 1, or closures = \"lun84\")",
                                                 lp.alpha, s.closures_name));
     s.closures = std::make_shared<Closures>(lp, g0, family);
-    s.slip_dissipation = sec.real("slip_dissipation");
     resolve_wall_energy(sec, s);
     resolve_contact_stress(c, sec, s, numax);
     s.gap_from_inventory = sec.string("gap") == "inventory";
@@ -163,7 +155,6 @@ Settings resolve_settings(const Case& c) {
     if (s.roughness_from_bumps && c.bottom.surface != WallSurface::Bumps && c.top.surface != WallSurface::Bumps)
         sec.fail("wall_roughness", "wall_roughness = \"bumps\" needs bumps on the walls ([walls] surface = \"bumps\"); "
                                    "with plane walls allowed: \"declared\"");
-    s.ordering_fraction = sec.maybe_real("ordering_fraction").value_or(0.0);
     resolve_cross_section_settings(c, s);
     return s;
 }

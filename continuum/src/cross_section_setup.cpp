@@ -22,19 +22,17 @@ constexpr double kCellsPerDiameter = 4.0;
 void resolve_cross_section_settings(const Case& c, Settings& s) {
     const Section& sec = c.section("continuum");
     s.cross_section = sec.string("geometry") == "cross_section";
-    s.cells_y = static_cast<int>(sec.integer("cross_section_cells_y"));
-    s.cells_z = static_cast<int>(sec.integer("cross_section_cells_z"));
-    const auto sr = sec.maybe_real("side_roughness");
+    // cells_y, cells_z and side_roughness are plain keys, read with the others (section.cpp); these are the checks.
     s.body_forces = sec.string("body_forces") == "on";
     if (!s.cross_section) {
         if (s.body_forces)
             sec.fail("body_forces", "body_forces = \"on\" needs the cross-section (the 1-D gap has p_yy uniform, S&T "
                                     "Eq. 6b); allowed: \"off\", or geometry = \"cross_section\"");
-        if (sr) sec.fail("side_roughness", "side_roughness is a side wall's R, and only the cross-section has side walls "
-                                           "(allowed: remove it, or geometry = \"cross_section\")");
+        if (sec.has("side_roughness"))
+            sec.fail("side_roughness", "side_roughness is a side wall's R, and only the cross-section has side walls "
+                                       "(allowed: remove it, or geometry = \"cross_section\")");
         return;
     }
-    s.side_roughness = sr.value_or(-1.0);
     if (!(c.cell.width > 0))
         sec.fail("geometry", fmt::format("geometry = \"cross_section\" needs the trough's side walls, but [cell] width = "
                                          "{} (periodic); allowed: [cell] width > 0, or geometry = \"gap\"",

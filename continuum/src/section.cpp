@@ -1,4 +1,8 @@
-// The [continuum] case section: one line per key (type, default, range, unit, doc).
+// The [continuum] case section: one line per key (type, default, range, unit, doc) and, for a plain
+// key, the Settings field it fills (granlub/case/bound_keys.h; resolve_settings() reads them in one
+// loop).
+#include "granlub/case/bound_keys.h"
+#include "granlub/continuum/case_setup.h"
 #include "granlub/continuum/closures/family.h"
 #include "granlub/continuum/command.h"
 #include "granlub/continuum/g0/radial_distribution.h"
@@ -6,8 +10,15 @@
 
 namespace granlub::continuum {
 
-SectionSpec section() {
-    SectionSpec s("continuum", "GKL continuum solver (Sawyer & Tichy 2001; closures of Lun et al. 1984)");
+namespace {
+
+BoundKeys<Settings> declare() {
+    BoundKeys<Settings> k(
+        SectionSpec("continuum", "GKL continuum solver (Sawyer & Tichy 2001; closures of Lun et al. 1984)"));
+    // Keys declared on s are read by hand (case_setup.cpp, cross_section_setup.cpp): their values resolve to
+    // registry objects or enums, take a default from another section, go into the closures' parameters or a
+    // wall's per-point roughness, or are checked against other keys.
+    SectionSpec& s = k.spec;
     s.choice("method", "fv", {"fv", "shooting"},
              "fv: finite volumes + Newton (default); shooting: GSL shooting cross-check (small gaps only)");
     s.choice("closures", "lun84", closure_names(),
@@ -35,7 +46,7 @@ SectionSpec section() {
     s.choice("wall_roughness", "declared", {"declared", "bumps"},
              "R5..R8 of a bumpy wall ([walls] surface = bumps): the declared roughness, or sin(theta) = l/(d_w + d) of the "
              "bumps the particle solvers build from it (their diameter and spacing, whole bumps in the periodic length)");
-    s.real_optional("ordering_fraction", Range::closed(0.3, 0.75), "",
+    k.real_optional("ordering_fraction", &Settings::ordering_fraction, Range::closed(0.3, 0.75), "",
                     "crystallization criterion: a solution whose largest nu exceeds it is labelled ordered, not "
                     "drawn as a number; default: no criterion");
     // Values are named as their files (src/g0/lun_savage.cpp); the short names they had are still read.
@@ -55,18 +66,21 @@ SectionSpec section() {
              "rate-independent contact stress beside the kinetic one: johnson_jackson (Johnson & Jackson 1987: "
              "p_c = Fr (nu - nu_min)^n/(nu_c - nu)^m, shear mu_c p_c, nu_c = g0's nu_max), needs every contact_* "
              "constant; none = kinetic stresses only");
-    s.real_optional("contact_coefficient", Range::positive(), "Pa", "Fr of contact_stress = johnson_jackson");
-    s.real_optional("contact_onset_fraction", Range::closed(0.3, 0.75), "",
+    const auto contact = [](double ContactStress::*member) { return part(&Settings::contact, member); };
+    k.real_optional("contact_coefficient", contact(&ContactStress::coefficient), Range::positive(), "Pa",
+                    "Fr of contact_stress = johnson_jackson");
+    k.real_optional("contact_onset_fraction", contact(&ContactStress::onset), Range::closed(0.3, 0.75), "",
                     "nu_min of contact_stress = johnson_jackson: no contact pressure below it");
-    s.real_optional("contact_exponent_onset", Range::closed(0.0, 10.0), "", "n of contact_stress = johnson_jackson");
-    s.real_optional("contact_exponent_jamming", Range::closed(0.1, 10.0), "",
+    k.real_optional("contact_exponent_onset", contact(&ContactStress::n), Range::closed(0.0, 10.0), "",
+                    "n of contact_stress = johnson_jackson");
+    k.real_optional("contact_exponent_jamming", contact(&ContactStress::m), Range::closed(0.1, 10.0), "",
                     "m of contact_stress = johnson_jackson (the divergence at nu_c)");
-    s.real_optional("contact_friction", Range::closed(0.0, 2.0), "",
+    k.real_optional("contact_friction", contact(&ContactStress::friction), Range::closed(0.0, 2.0), "",
                     "mu_c of contact_stress = johnson_jackson: its shear over its pressure (sin phi)");
     s.real("viscosity_alpha", 1.0, Range::closed(0.0, 4.0), "",
            "LSJC viscosity factor (2 + alpha)/3; 1 = original theory, 1.6 = MFiX");
     s.boolean("dufour", true, "include the grad-nu heat-flux term of LSJC (sign uncertain, effect < 1e-4)");
-    s.real("slip_dissipation", 0.0, Range::unit(), "", "fraction f_t of slip work dissipated at the wall (R7 term)");
+    k.real("slip_dissipation", &Settings::slip_dissipation, 0.0, Range::unit(), "", "fraction f_t of slip work dissipated at the wall (R7 term)");
     for (const char* r : {"r5", "r6", "r7", "r8"}) {
         const std::string n(r);
         s.real_optional(n, Range::unit(), "", "roughness factor " + n + " at both walls; default: the wall's roughness");
@@ -78,21 +92,35 @@ SectionSpec section() {
     s.choice("geometry", "gap", {"gap", "cross_section"},
              "gap: the 1-D gap between floor and top (the seed's model); cross_section: fully developed flow over the "
              "trough's cross-section H x W ([cell] width > 0), floor and side walls moving, the top still");
-    s.integer("cross_section_cells_y", 40, Range::closed(2, 1e4),
+    k.integer("cross_section_cells_y", &Settings::cells_y, 40, Range::closed(2, 1e4),
               "geometry = cross_section: cells across the gap; at least 4 per grain diameter (4 H/d)");
-    s.integer("cross_section_cells_z", 100, Range::closed(2, 1e5),
+    k.integer("cross_section_cells_z", &Settings::cells_z, 100, Range::closed(2, 1e5),
               "geometry = cross_section: cells across the width; at least 4 per grain diameter (4 W/d)");
     s.choice("body_forces", "off", {"off", "on"},
              "geometry = cross_section: off = the pressure uniform (the load); on = gravity ([body_forces] gravity) and "
              "the centripetal force ([cell] annulus_radius) through the potential part of their pressure field");
-    s.real_optional("side_roughness", Range::unit(), "",
+    k.real_optional("side_roughness", &Settings::side_roughness, Range::unit(), "",
                     "geometry = cross_section: R5..R8 of both side walls; default: [walls] sides = plane: the wall "
                     "roughness as declared, as_bottom: the floor's R5..R8");
-    s.integer("cells", 200, Range::closed(100, 1e6), "finite-volume cells across the gap (profile has cells + 1 rows)");
-    s.real("tolerance", 1e-10, Range::positive(), "", "Newton tolerance on the max-norm flux-balance residual");
-    s.integer("max_iterations", 50, Range::closed(1, 1e4), "Newton iterations per solve");
-    s.integer("max_continuation_steps", 200, Range::closed(1, 1e5), "continuation steps when the direct solve fails");
-    return s;
+    const auto solver = [](auto SolverSettings::*member) { return part(&Settings::solver, member); };
+    k.integer("cells", solver(&SolverSettings::cells), 200, Range::closed(100, 1e6),
+              "finite-volume cells across the gap (profile has cells + 1 rows)");
+    k.real("tolerance", solver(&SolverSettings::tolerance), 1e-10, Range::positive(), "",
+           "Newton tolerance on the max-norm flux-balance residual");
+    k.integer("max_iterations", solver(&SolverSettings::max_iterations), 50, Range::closed(1, 1e4),
+              "Newton iterations per solve");
+    k.integer("max_continuation_steps", solver(&SolverSettings::max_continuation_steps), 200, Range::closed(1, 1e5),
+              "continuation steps when the direct solve fails");
+    return k;
 }
+
+}  // namespace
+
+const BoundKeys<Settings>& continuum_keys() {
+    static const BoundKeys<Settings> keys = declare();
+    return keys;
+}
+
+SectionSpec section() { return continuum_keys().spec; }
 
 }  // namespace granlub::continuum

@@ -26,9 +26,9 @@ BoundKeys<Settings> declare() {
     s.real("time_step", 0.0, Range::non_negative(), "s",
            "time step; 0 = contact_time/20 (viscel) or 0.15 Rayleigh times (hertz, as granlub dem; at most 0.3)")
         .old_names({"dt"});
-    s.real("time", 1.5e-3, Range::positive(), "s",
-           "simulated time of a quick run (3000 steps, ~45 s of YADE per sawyer2001 point with viscel)");
-    s.real("time_full", 0.2, Range::positive(), "s", "simulated time with --full");
+    k.real("time", &Settings::time, 1.5e-3, Range::positive(), "s",
+           "simulated time of a quick run (3000 steps, ~45 s of YADE per sawyer2001 point with viscel)")
+        .full("time_full", 0.2, "simulated time with --full");
     add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)
     k.integer("body_force_every", &Settings::body_force_every, 50, Range::closed(1, 1e8),
               "steps between refreshes of the centripetal force m v_x^2 / (annulus_radius - z)");

@@ -78,7 +78,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
                                    p.id));
     const Section& s = c.section("yade");
     Settings r;
-    yade_keys().read(r, s);  // the plain keys (src/section.cpp)
+    yade_keys().read(r, s, {o.full, o.vtk});  // the plain keys (src/section.cpp); time_full with --full
     r.law = &contact_law(s.string("model"));
     r.warm_start = s.string("start") == "warm";
     
@@ -89,9 +89,8 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
 
     r.time_step = law_time_step(c, s, *r.law, r.contact_time);
 
-    const std::string time_key = o.full ? "time_full" : "time";
-    const double time = s.real(time_key);
-    r.time = time;
+    const std::string time_key = yade_keys().key_name("time", {o.full, o.vtk});
+    const double time = r.time;
     r.until_steady = until_steady_cap(s, o.full, time);
     const double steps = time / r.time_step;
     if (!(steps <= kMaxSteps))

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "granlub/case/bound_keys.h"
 #include "granlub/case/case.h"
 #include "granlub/continuum/problem.h"
 #include "granlub/run/sweep.h"
@@ -36,6 +37,8 @@ struct Settings {
     bool body_forces = false;
 };
 
+// The [continuum] keys and the Settings fields the plain ones fill (src/section.cpp).
+const BoundKeys<Settings>& continuum_keys();
 // Throws CaseError naming the key for values the section spec cannot check alone.
 Settings resolve_settings(const Case& c);
 // The roughness R of one wall of a point for R5..R8: the declared one, or with wall_roughness = "bumps" on a

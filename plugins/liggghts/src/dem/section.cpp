@@ -73,8 +73,8 @@ BoundKeys<Settings> declare() {
            "points half the step is still several per cent from its limit: plugin README, the step rule); needs a "
            "cold check (refine_time = 0) or none; 0 = off");
     s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
-    s.real("time", 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)");
-    s.real("time_full", 1.0, Range::positive(), "s", "simulated time with --full");
+    k.real("time", &Settings::time, 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)")
+        .full("time_full", 1.0, "simulated time with --full");
     add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)
     s.real("strain", 0.0, Range::closed(0, 1e6), "",
            "run length in shear strain U t / H (H the case's gap) instead of a time: each point runs max(time, "

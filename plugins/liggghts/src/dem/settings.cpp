@@ -81,15 +81,15 @@ double law_time_step(const Case& c, const OperatingPoint& p, const Section& s, c
 
 // time, steps, sample_every, the servo, snapshots: the run's length and its sampling.
 void resolve_run_length(const Case& c, const OperatingPoint& p, const RunOptions& o, const Section& s, Settings& st) {
-    st.time = o.full ? s.real("time_full") : s.real("time");
+    const std::string time_key = dem_keys().key_name("time", {o.full, o.vtk});
+    const double time = st.time;  // time, or time_full with --full (bound, section.cpp)
     if (const double strain = s.real("strain"); strain > 0 && p.speed > 0)  // [dem] strain: a run length in U t / H
         st.time = std::max(st.time, std::min(strain * c.cell.gap / p.speed, s.real("strain_time_max")));
-    st.until_steady = until_steady_cap(s, o.full, s.real(o.full ? "time_full" : "time"));
+    st.until_steady = until_steady_cap(s, o.full, time);
     const double steps = std::ceil(st.time / st.time_step - 1e-9);
     if (!(steps <= kMaxSteps))
-        s.fail(o.full ? "time_full" : "time", fmt::format("{:g} s is {:.3g} steps of {:g} s; at most {:g} steps are "
-                                                          "allowed",
-                                                          st.time, steps, st.time_step, kMaxSteps));
+        s.fail(time_key, fmt::format("{:g} s is {:.3g} steps of {:g} s; at most {:g} steps are allowed", st.time,
+                                     steps, st.time_step, kMaxSteps));
     st.steps = static_cast<std::int64_t>(steps);
     static_cast<ServoSettings&>(st) = resolve_servo(c, p, s, st.sample_every, st.time_step, st.steps);
     st.plate_gain = st.servo_gain;
@@ -98,7 +98,7 @@ void resolve_run_length(const Case& c, const OperatingPoint& p, const RunOptions
         st.plate_gain = capped_plate_gain(st.servo_gain, st.plate_overlap, c.grains.diameter);
     }
     if (st.steps < 20 * st.sample_every)
-        s.fail(o.full ? "time_full" : "time",
+        s.fail(time_key,
                fmt::format("{:g} s is {} steps of {:g} s: fewer than 20 wall-stress samples of {} steps "
                            "(sample_every); run longer",
                            st.time, st.steps, st.time_step, st.sample_every));
@@ -184,7 +184,7 @@ void resolve_refine_strain(const Case& c, const OperatingPoint& p, const Section
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
     const Section& s = c.section("dem");
     Settings st;
-    dem_keys().read(st, s);  // the plain keys (section.cpp)
+    dem_keys().read(st, s, {o.full, o.vtk});  // the plain keys (section.cpp); time_full with --full
     read_contact(s, st);
     const ParticleStart start = particle_start(c, p, o.seed);
     st.ring = c.cell.ring();
