@@ -38,13 +38,12 @@ std::vector<std::vector<const SolverModule*>> stages_of(const std::vector<const 
 
 // The engines' sweeps of one stage (`names`: their solvers), each in a thread of its own, under one
 // pipeline (its locks taken once; a point that reads another solver's starts once that one is
-// done). The schedule follows the chains of runs: a DEM point's two cold runs side by side (the
-// point's chain is its longer run: dem/command.cpp), each YADE point once its DEM point is done,
-// a nice step below (each engine after the first yields the cores to the ones before it), so that
-// the DEM runs, on which every chain waits, keep the cores and YADE takes what they leave. The kernel
-// shares the cores among the runs: a run's length is not known beforehand (YADE's continuation to
-// time_max is decided at its end), so no fixed order is chosen. The dry model of this schedule and
-// of the one before it: docs/measurements/main_job_schedule.py. Returns false when a sweep failed.
+// done). Each YADE point starts once its DEM point is done, a nice step below (each engine after the
+// first yields the cores to the ones before it), so that the DEM runs, on which every chain waits, keep
+// the cores and YADE takes what they leave. The kernel shares the cores among the runs: a run's length
+// is not known beforehand (YADE's continuation to time_max is decided at its end), so no fixed order is
+// chosen. Running a DEM point's two cold runs side by side as well was measured slower (2026-12-06:
+// docs/measurements/build-and-run.md). Returns false when a sweep failed.
 bool run_side_by_side(const std::vector<const SolverModule*>& group, const std::vector<std::string>& names,
                       const Case& c, const RunOptions& o, const std::function<bool(const SolverModule*)>& run_one) {
     const SweepPipeline pipeline(c, o, names);

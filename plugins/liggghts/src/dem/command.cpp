@@ -3,9 +3,7 @@
 
 #include <cmath>
 #include <filesystem>
-#include <exception>
 #include <optional>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -225,40 +223,17 @@ void move_run(const fs::path& dir, const fs::path& to) {
     for (const auto& e : entries) fs::rename(e, to / e.filename());
 }
 
-// Cold, the two runs of the check share nothing (each starts from the initial grains and writes its
-// own folder), so with single-rank runs and no --threads budget they run side by side: the point's
-// chain is then its longest run, not the sum of both (`granlub run`'s longest chain is the dense
-// point's pair; cli/run_all.cpp). Each is the process it would be alone: no number changes.
-bool pair_side_by_side(const Settings& s, const RunOptions& o) {
-    return s.refine_time <= 0 && s.np <= 1 && o.threads <= 0;
-}
-
 Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, const InitialParticles& init,
-                  const fs::path& dir, const std::string& prov, bool side_by_side) {
+                  const fs::path& dir, const std::string& prov) {
     Refined r;
     const fs::path full = dir / kDtCheckDir;
     fs::create_directories(full);
     r.settings.push_back(s);
     r.settings.push_back(refine_settings(s));
     r.warm = s.refine_time > 0;
-    if (side_by_side && !r.warm) {
-        std::optional<Continued> finer;
-        std::exception_ptr failed;
-        {
-            const std::jthread beside([&] {
-                try {
-                    finer = run_continued(c, p, r.settings[1], init, dir, prov);
-                } catch (...) {
-                    failed = std::current_exception();
-                }
-            });
-            r.runs.push_back(run_continued(c, p, s, init, full, prov));  // on throwing, waits for the other
-        }
-        if (failed) std::rethrow_exception(failed);
-        r.runs.push_back(std::move(*finer));
-    } else {
-        r.runs.push_back(run_continued(c, p, s, init, full, prov));
-    }
+    // One after the other: run side by side, the point's two cold runs cost more CPU than they save in
+    // wall time on 2 cores (docs/measurements/build-and-run.md, 2026-12-06).
+    r.runs.push_back(run_continued(c, p, s, init, full, prov));
     write_check_profile(full, r.runs.front(),
                         fmt::format("case {} point {}: the run at the full time step ({:g} s), the coarsest run of "
                                     "the time-step check of the point's result ../profile.csv (run.dt_refinement)",
@@ -355,7 +330,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     std::optional<Refined> refined;
     Continued single;
     if (s.refine_dt)
-        refined = refine_dt(c, p, s, init, dir, prov, pair_side_by_side(s, o));
+        refined = refine_dt(c, p, s, init, dir, prov);
     else
         single = run_continued(c, p, s, init, dir, prov);
     const Continued& reported = refined ? refined->answer() : single;
