@@ -145,13 +145,15 @@ EnergyBudget energy_budget(const Problem& p0, const Solution& s) {
         const double nu = top ? s.nu.back() : s.nu.front();
         const double slip = top ? -s.u.back() : 1.0 - s.u.front();
         const WallCoefficients c = wall_coefficients(p, w, nu);
-        const double K = node_coefficients(*p.closures, nu).K;
+        const NodeCoefficients k = node_coefficients(*p.closures, nu);
         // the kinetic traction at this wall: uniform without a contact stress, not with one (only the sum is)
-        const double tau_w = cs.active() ? node_coefficients(*p.closures, nu).M * std::abs(wall_du(p, top, top ? s.u.back() : s.u.front(), nu))
-                                         : tau_hat;
-        b.wall_dissipation += scale * wall_energy_sink(w.params, c, K, slip, L, Pi, tau_w);
-        b.wall_collisional += scale * wall_collisional_sink(w.params, c, K, slip, L, Pi);
-        b.wall_unreturned_slip_work += scale * wall_unreturned_slip_work(w.params, slip, Pi, tau_w);
+        const double tau_w =
+            cs.active() ? k.M * std::abs(wall_du(p, top, top ? s.u.back() : s.u.front(), nu)) : tau_hat;
+        const double collisional = wall_collisional_sink(w.params, c, k.K, slip, L, Pi);
+        const double unreturned = wall_unreturned_slip_work(w.params, slip, Pi, tau_w);
+        b.wall_dissipation += scale * (collisional + unreturned);
+        b.wall_collisional += scale * collisional;
+        b.wall_unreturned_slip_work += scale * unreturned;
     }
     return b;
 }

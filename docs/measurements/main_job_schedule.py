@@ -92,8 +92,8 @@ def main():
     T = runs(u, y, cont)
     cpu = sum(c for c, _ in T.values())
     print(f"{cpu:.0f} s of CPU: at best {cpu / 2:.0f} s on 2 cores")
-    for name, side in (('before: a point\'s runs one after the other', False),
-                       ('now: a point\'s cold runs side by side', True)):
+    for name, side in (('shipped: a point\'s runs one after the other', False),
+                       ('tried: a point\'s cold runs side by side (measured slower, 2026-12-06)', True)):
         t, idle, done = share(T, side)
         last = sorted(done, key=done.get)[-2:]
         print(f"{name}: {t:.0f} s, {idle:.0f} core-s idle; ends with {last[0]} at {done[last[0]]:.0f} s, "

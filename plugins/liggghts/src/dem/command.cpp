@@ -90,9 +90,9 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     if (s.vtk) fs::remove_all(dir / "post");  // the .pvd lists exactly this run's files
 
     OneRun r;
-    // the check's coarse run has a progress line of its own (it may run beside the point's answer)
-    const std::string label = fmt::format("dem {}{}{}", p.id, dir.filename() == kDtCheckDir ? " " : "",
-                                          dir.filename() == kDtCheckDir ? kDtCheckDir : "");
+    // the check's coarse run names itself in the progress line
+    const bool check = dir.filename() == kDtCheckDir;
+    const std::string label = check ? fmt::format("dem {} {}", p.id, kDtCheckDir) : "dem " + p.id;
     r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, label);
 
     // LIGGGHTS' files into the shared series; the rest is the one particle pipeline

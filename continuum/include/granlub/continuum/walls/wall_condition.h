@@ -56,9 +56,4 @@ inline double wall_collisional_sink(const WallParams& w, const WallCoefficients&
 inline double wall_unreturned_slip_work(const WallParams& w, double slip, double Pi, double tau_hat) {
     return (1.0 - slip_work_weight(w)) * Pi * tau_hat * std::abs(slip);
 }
-inline double wall_energy_sink(const WallParams& w, const WallCoefficients& b, double K, double slip, double Lambda,
-                               double Pi, double tau_hat) {
-    return wall_collisional_sink(w, b, K, slip, Lambda, Pi) + wall_unreturned_slip_work(w, slip, Pi, tau_hat);
-}
-
 }  // namespace granlub::continuum
