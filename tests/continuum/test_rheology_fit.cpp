@@ -199,6 +199,24 @@ BOOST_AUTO_TEST_CASE(an_exact_table_gives_back_its_constants) {
     BOOST_TEST(r.dof == 24u - 3u);
 }
 
+// The other constants a fit may free, from exact tables: g0's nu_max (also the contact stress's nu_c), the contact
+// stress's onset fraction (its range ends at nu_c) and its exponents.
+BOOST_AUTO_TEST_CASE(every_fittable_constant_comes_back_from_an_exact_table) {
+    const std::vector<std::pair<std::string, std::string>> moves = {
+        {"max_solid_fraction = 0.587", "max_solid_fraction = 0.6"},
+        {"contact_onset_fraction = 0.5", "contact_onset_fraction = 0.52"},
+        {"contact_exponent_onset = 2.0", "contact_exponent_onset = 2.5"},
+        {"contact_exponent_jamming = 5.0", "contact_exponent_jamming = 4.0"}};
+    for (const auto& [from, to] : moves) {
+        const std::string key = from.substr(0, from.find(' '));
+        BOOST_TEST_CONTEXT(to) {
+            const FitResult r = fit(kTruth, synthetic(with(kTruth, {{from, to}}), 0), {key, "contact_friction"});
+            BOOST_TEST(r.constants[0].value == std::stod(to.substr(to.find('=') + 1)), boost::test_tools::tolerance(1e-5));
+            BOOST_TEST(r.chi2 < 1e-8);
+        }
+    }
+}
+
 // With noise of the stated errors (seed 1) each constant comes back within three of its own standard errors, the
 // errors are informative (below a third of the value), and chi2 is what noise of those errors gives.
 BOOST_AUTO_TEST_CASE(a_noisy_table_gives_back_its_constants_within_the_fits_errors) {
