@@ -11,8 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 
 #include <boost/test/unit_test.hpp>
@@ -24,6 +22,7 @@
 #include "granlub/continuum/simple_shear.h"
 #include "granlub/error.h"
 #include "granlub/results/file_io.h"
+#include "temp_dir.h"
 
 using namespace granlub;
 using namespace granlub::continuum;
@@ -84,6 +83,16 @@ std::string with(std::string text, const std::vector<std::pair<std::string, std:
 }
 
 Case parse(const std::string& text) { return parse_case(text, "fit.toml", schema()); }
+
+// the case without its contact stress: the extended kinetic theory alone
+std::string kinetic_only(const std::string& text) {
+    return with(text, {{"contact_stress = \"johnson_jackson\"", ""},
+                       {"contact_coefficient = 0.05", ""},
+                       {"contact_onset_fraction = 0.5", ""},
+                       {"contact_exponent_onset = 2.0", ""},
+                       {"contact_exponent_jamming = 5.0", ""},
+                       {"contact_friction = 0.36", ""}});
+}
 
 // The fit's start: c = 0.8, where the correlation length exceeds 1 at every row (at the rough cases' c = 0.44 it is
 // 1 below nu ~ 0.56 and the contact stress keeps nu below that: c would act on no row).
@@ -167,15 +176,7 @@ double truth(const std::string& key) {
     return c.section("continuum").real(key);
 }
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("granlub_fit_test_" + std::to_string(::getpid()));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using testing::TempDir;
 
 // The CaseError's message of running `f`, "" when it throws none.
 template <class F>
@@ -256,12 +257,7 @@ BOOST_AUTO_TEST_CASE(a_constant_no_row_depends_on_is_reported_undetermined) {
 BOOST_AUTO_TEST_CASE(a_constant_mu_is_rejected_by_the_kinetic_theory_and_absorbed_by_the_contact_friction) {
     std::vector<Row> rows = synthetic(kTruth, 1);
     for (Row& r : rows) r.mu = 0.40;
-    const std::string kinetic = with(kStart, {{"contact_stress = \"johnson_jackson\"", ""},
-                                              {"contact_coefficient = 0.05", ""},
-                                              {"contact_onset_fraction = 0.5", ""},
-                                              {"contact_exponent_onset = 2.0", ""},
-                                              {"contact_exponent_jamming = 5.0", ""},
-                                              {"contact_friction = 0.36", ""}});
+    const std::string kinetic = kinetic_only(kStart);
     const FitResult k = fit(kinetic, rows, {"correlation_constant"});
     BOOST_TEST_MESSAGE("kinetic theory alone:\n" << fit_report(k));
     BOOST_TEST(k.p_value < 1e-6);
@@ -277,7 +273,7 @@ BOOST_AUTO_TEST_CASE(a_constant_mu_is_rejected_by_the_kinetic_theory_and_absorbe
 
 // The command: the same table gives the same fragment, byte for byte, with its provenance.
 BOOST_AUTO_TEST_CASE(the_same_table_gives_the_same_bytes) {
-    TempDir tmp;
+    TempDir tmp("fit");
     write_file_atomic(tmp.path / "t.csv", table_text(synthetic(kTruth, 1)));
     const Case c = parse(kStart);
     FitCommand o{tmp.path / "t.csv", tmp.path / "a.toml", kFree, false};
@@ -328,12 +324,7 @@ BOOST_AUTO_TEST_CASE(a_row_the_closures_cannot_reach_is_named_with_the_range) {
 }
 
 BOOST_AUTO_TEST_CASE(a_free_key_outside_the_cases_branches_is_refused_naming_the_allowed) {
-    const std::string kinetic = with(kCase, {{"contact_stress = \"johnson_jackson\"", ""},
-                                             {"contact_coefficient = 0.05", ""},
-                                             {"contact_onset_fraction = 0.5", ""},
-                                             {"contact_exponent_onset = 2.0", ""},
-                                             {"contact_exponent_jamming = 5.0", ""},
-                                             {"contact_friction = 0.36", ""}});
+    const std::string kinetic = kinetic_only(kCase);
     BOOST_TEST(case_error([&] { fit(kinetic, synthetic(kTruth, 0), {"contact_friction"}); }) ==
                "continuum-fit --free contact_friction: a constant of contact_stress = \"johnson_jackson\", which this "
                "case does not choose (allowed in this case: correlation_constant, max_solid_fraction; or choose the "
@@ -365,7 +356,7 @@ BOOST_AUTO_TEST_CASE(a_zero_error_cannot_weight_the_fit) {
 
 // The command on tables it cannot use: another format, a missing column (bad input: CaseError, exit 2).
 BOOST_AUTO_TEST_CASE(the_command_refuses_other_tables_naming_them) {
-    TempDir tmp;
+    TempDir tmp("fit");
     const Case c = parse(kCase);
     write_file_atomic(tmp.path / "v2.csv", table_text(synthetic(kTruth, 0), "granlub-bulk-rheology 2"));
     BOOST_TEST(case_error([&] { run_fit(c, {tmp.path / "v2.csv", tmp.path / "o.toml", kFree, false}); })
