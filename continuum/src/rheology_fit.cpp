@@ -322,7 +322,11 @@ FitResult fit_bulk_rheology(const Settings& s, const std::vector<BulkRow>& answe
         status = gsl_multifit_nlinear_driver(kMaxIterations, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w.get());
     if (prob.failure) std::rethrow_exception(prob.failure);
     res.iterations = gsl_multifit_nlinear_niter(w.get());
-    if (status == GSL_ENOPROG)
+    // GSL's driver reports no decrease from the very start as GSL_EMAXITER with info = GSL_ENOPROG
+    if (status == GSL_EMAXITER && info == GSL_ENOPROG && res.iterations <= 1)
+        res.stop = "no step from the start lowered chi2: the start is a minimum to numerical precision, or no row "
+                   "depends on the free constants there";
+    else if (status == GSL_ENOPROG)
         res.stop = "no further decrease of chi2 within the trust region (GSL_ENOPROG): at a minimum to numerical "
                    "precision, or stuck";
     else if (status != GSL_SUCCESS)
