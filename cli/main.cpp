@@ -36,7 +36,8 @@ struct Args {
     std::vector<std::string> solvers;
     bool map = false;                        // granlub continuum --map
     std::vector<int> map_grid{100, 100};     // --map-grid SPEEDS,LOADS
-    std::string out;                         // granlub bulk-rheology --out
+    std::string out;                         // granlub bulk-rheology --out, continuum-fit --out
+    granlub::cli::ContinuumFitArgs fit;      // granlub continuum-fit
 };
 
 // `granlub continuum CASE --map`: the (U, P) map instead of the case's points (continuum/command.h).
@@ -167,6 +168,7 @@ struct CaseCommands {
     CLI::App* compare = nullptr;
     CLI::App* run = nullptr;
     CLI::App* bulk = nullptr;
+    CLI::App* fit = nullptr;
 };
 
 // `granlub bulk-rheology CASE`: the core's rheology of every DEM point (bulk_rheology_table.h),
@@ -207,6 +209,11 @@ int run_case_command(const CaseCommands& cmd, const Args& a) {
             }
         if (cmd.compare && cmd.compare->parsed()) return granlub::cli::compare(c, a.opt);
         if (cmd.bulk->parsed()) return bulk_rheology(c, a);
+        if (cmd.fit && cmd.fit->parsed()) {
+            granlub::cli::ContinuumFitArgs f = a.fit;
+            f.out = a.out;
+            return granlub::cli::continuum_fit(c, f);
+        }
         if (cmd.run->parsed()) return granlub::cli::run_all(c, a.opt, a.solvers);
     } catch (const granlub::CaseError& e) {
         fmt::print(stderr, "error: {}\n", e.what());
@@ -244,7 +251,7 @@ int main(int argc, char** argv) {
         auto* sub = app.add_subcommand(m.name, m.description);
         add_case(sub, a);
         add_run_options(sub, a, m.name != "continuum", m.name == "dem");
-        if (m.name == "continuum" && granlub::cli::have_continuum_map()) add_map_options(sub, a);
+        if (m.name == "continuum" && granlub::cli::have_continuum()) add_map_options(sub, a);
         cmd.solvers.emplace_back(sub, &m);
     }
 
@@ -261,6 +268,30 @@ int main(int argc, char** argv) {
     add_case(cmd.bulk, a);
     add_wait(cmd.bulk, a);
     cmd.bulk->add_option("--out", a.out, "the table's file (default: CASE/bulk_rheology.csv)")->type_name("FILE");
+
+    if (granlub::cli::have_continuum()) {
+        cmd.fit = app.add_subcommand("continuum-fit", "fit the free constants of a case's continuum closures on a "
+                                                      "bulk-rheology table (continuum/README.md, \"Fitting the closures' "
+                                                      "constants\")");
+        cmd.fit->add_option("CASE", a.case_path, "the case whose [continuum] closures are fitted (directory or .toml)")
+            ->required()
+            ->type_name("DIR|FILE");
+        cmd.fit->add_option("--table", a.fit.table, "the bulk-rheology table (`granlub bulk-rheology`'s "
+                                                    "bulk_rheology.csv) whose answer rows the fit is made on")
+            ->required()
+            ->type_name("FILE");
+        cmd.fit->add_option("--free", a.fit.free,
+                            "the [continuum] constants to fit, comma-separated, started from the case's values "
+                            "(default: every constant of the branches the case chooses: correlation_constant with "
+                            "correlation_length = \"jenkins_berzi\", the contact_* constants with contact_stress = "
+                            "\"johnson_jackson\"; max_solid_fraction may be added)")
+            ->type_name("KEYS")
+            ->delimiter(',');
+        cmd.fit->add_flag("--temperature", a.fit.temperature,
+                          "fit T/(d gdot)^2 as well as mu and nu (default: off, T printed beside the fit)");
+        cmd.fit->add_option("--out", a.out, "the TOML fragment with the fitted constants (default: CASE/continuum_fit.toml)")
+            ->type_name("FILE");
+    }
 
     cmd.run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");
     add_case(cmd.run, a);

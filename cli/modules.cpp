@@ -38,7 +38,16 @@ int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads) {
 #endif
 }
 
-bool have_continuum_map() {
+int continuum_fit(const Case& c, const ContinuumFitArgs& a) {
+#ifdef GRANLUB_HAVE_CONTINUUM
+    return continuum::run_fit(c, {a.table, a.out, a.free, a.temperature});
+#else
+    (void)c, (void)a;
+    throw Error("granlub was built without the continuum module: no continuum-fit");
+#endif
+}
+
+bool have_continuum() {
 #ifdef GRANLUB_HAVE_CONTINUUM
     return true;
 #else

@@ -27,7 +27,14 @@ int compare(const Case& c, const RunOptions& o);
 bool have_compare();
 // `granlub continuum CASE --map` if the continuum is compiled in (continuum/command.h run_map); otherwise throws.
 int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads);
-bool have_continuum_map();
+// `granlub continuum-fit CASE --table FILE` likewise (continuum/command.h run_fit).
+struct ContinuumFitArgs {
+    std::string table, out;
+    std::vector<std::string> free;
+    bool temperature = false;
+};
+int continuum_fit(const Case& c, const ContinuumFitArgs& a);
+bool have_continuum();  // whether the continuum is compiled in (its --map and continuum-fit)
 // The closing table of `granlub run`: one row per solver and point (postproc's summary table when
 // postproc is built in, else the mean solid fraction and wall stresses read from the summaries).
 void closing_table(const Case& c, const RunOptions& o);

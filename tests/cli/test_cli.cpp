@@ -2,6 +2,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -271,6 +272,38 @@ BOOST_AUTO_TEST_CASE(check_warns_of_points_a_solver_cannot_run) {
     BOOST_TEST(o.text.find("warning: continuum will fail on point U1.4: [grains] restitution = 1: perfectly "
                            "elastic grains") != std::string::npos,
                o.text);
+    fs::remove_all(dir);
+}
+
+// `granlub continuum-fit CASE --table FILE`: the fit through the command on a two-answer table (the rough case's c
+// only), the fragment written to --out; one answer is refused as bad input (exit 2), saying how many are needed.
+BOOST_AUTO_TEST_CASE(continuum_fit_route) {
+    if (!built("continuum-fit")) return;
+    const fs::path dir = fs::temp_directory_path() / "granlub_test_cli_fit";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string head = "# format granlub-bulk-rheology 1\n"
+                             "point,load_Pa,status,core_dt_check,pressure_Pa,pressure_err,I,I_err,mu,mu_err,nu,nu_err,"
+                             "T_scaled,T_scaled_err\n";
+    const std::string a = "U9.0_P5550,5550,steady,converged,5557.88,66.1,0.08467,0.0006,0.4316,0.0076,0.5788,0.0025,"
+                          "0.547,0.013\n";
+    const std::string b = "U9.0_P2250,2250,steady,converged,2257.38,42.1,0.1400,0.0014,0.4558,0.0114,0.5709,0.0026,"
+                          "0.427,0.010\n";
+    std::ofstream(dir / "two.csv") << head << a << b;
+    std::ofstream(dir / "one.csv") << head << a;
+    const std::string base = exe + " continuum-fit " + src + "/cases/sawyer2001_regimes_rough --out " +
+                             (dir / "fit.toml").string() + " --table ";
+    const auto o = run(base + (dir / "two.csv").string());
+    BOOST_TEST(o.rc == 0, o.text);
+    BOOST_TEST(o.text.find("chi2 = ") != std::string::npos, o.text);
+    std::ifstream f(dir / "fit.toml");
+    const std::string toml((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    BOOST_TEST(toml.find("\n[continuum]\ncorrelation_constant = ") != std::string::npos, toml);
+    fs::remove(dir / "fit.toml");
+    const auto one = run(base + (dir / "one.csv").string());
+    BOOST_TEST(one.rc == 2, one.text);
+    BOOST_TEST(one.text.find("needs at least 2") != std::string::npos, one.text);
+    BOOST_TEST(!fs::exists(dir / "fit.toml"));
     fs::remove_all(dir);
 }
 

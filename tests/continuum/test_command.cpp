@@ -8,8 +8,6 @@
 #include <string>
 #include <tuple>
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 
 #include <boost/test/unit_test.hpp>
@@ -23,6 +21,7 @@
 #include "granlub/continuum/map.h"
 #include "granlub/error.h"
 #include "granlub/results/results.h"
+#include "temp_dir.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;
@@ -68,15 +67,7 @@ std::string case_error(const std::string& extra) {
     return "";
 }
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("granlub_continuum_test_" + std::to_string(::getpid()));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using continuum::testing::TempDir;
 
 // The error resolve_settings raises for the case with `extra` appended, or "".
 std::string settings_error(const std::string& extra, const std::string& base = kCase) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -28,10 +29,22 @@ bool Table::has(std::string_view name) const {
     return false;
 }
 
+bool Table::has_text(std::string_view name) const {
+    for (const auto& n : text_names)
+        if (n == name) return true;
+    return false;
+}
+
 const std::vector<double>& Table::column(std::string_view name) const {
     for (std::size_t i = 0; i < names.size(); ++i)
         if (names[i] == name) return columns[i];
     throw Error(fmt::format("table has no column '{}' (columns: {})", name, fmt::join(names, ", ")));
+}
+
+const std::vector<std::string>& Table::text(std::string_view name) const {
+    for (std::size_t i = 0; i < text_names.size(); ++i)
+        if (text_names[i] == name) return text_columns[i];
+    throw Error(fmt::format("table has no text column '{}' (text columns: {})", name, fmt::join(text_names, ", ")));
 }
 
 namespace {
@@ -51,17 +64,33 @@ void split(const std::string& line, TableFormat::Separator sep, std::vector<std:
     }
 }
 
-void set_names(Table& t, std::vector<std::string> names) {
-    t.names = std::move(names);
+// The columns in file order: each one's slot in t.columns (numeric) or t.text_columns (text).
+struct Slot {
+    bool text = false;
+    std::size_t index = 0;
+};
+
+std::vector<Slot> set_names(Table& t, const std::vector<std::string>& all, const TableFormat& f) {
+    std::vector<Slot> slots;
+    for (const auto& n : all) {
+        const bool text = std::find(f.text.begin(), f.text.end(), n) != f.text.end();
+        auto& names = text ? t.text_names : t.names;
+        slots.push_back({text, names.size()});
+        names.push_back(n);
+    }
     t.columns.assign(t.names.size(), {});
+    t.text_columns.assign(t.text_names.size(), {});
+    return slots;
 }
 
 }  // namespace
 
 Table parse_table(std::string_view text, const std::string& source, const TableFormat& f) {
     Table t;
-    if (!f.header && !f.names.empty()) set_names(t, f.names);
-    bool named = !t.names.empty();
+    std::vector<std::string> all;  // every column's name, in file order
+    std::vector<Slot> slots;
+    if (!f.header && !f.names.empty()) all = f.names, slots = set_names(t, all, f);
+    bool named = !all.empty();
     std::size_t first_row_line = 0;
     std::string line;
     std::vector<std::string> cells;
@@ -78,36 +107,44 @@ Table parse_table(std::string_view text, const std::string& source, const TableF
         if (!named && f.header) {
             if (!f.expected_header.empty() && line != f.expected_header)
                 throw Error(fmt::format("{}:{}: header '{}', expected '{}'", source, lineno, line, f.expected_header));
-            set_names(t, cells);
+            all = cells;
+            slots = set_names(t, all, f);
             named = true;
             continue;
         }
         if (!named) {  // no header, no names: the first row sets the count
-            std::vector<std::string> numbers;
-            for (std::size_t c = 1; c <= cells.size(); ++c) numbers.push_back(std::to_string(c));
-            set_names(t, std::move(numbers));
+            for (std::size_t c = 1; c <= cells.size(); ++c) all.push_back(std::to_string(c));
+            slots = set_names(t, all, f);
             named = true;
             first_row_line = lineno;
         }
-        if (cells.size() != t.names.size()) {
+        if (cells.size() != all.size()) {
             if (f.header)
                 throw Error(fmt::format("{}:{}: {} values, the header has {} columns", source, lineno, cells.size(),
-                                        t.names.size()));
+                                        all.size()));
             if (!f.names.empty())
-                throw Error(fmt::format("{}:{}: {} values, expected {}: {}", source, lineno, cells.size(),
-                                        t.names.size(), fmt::join(t.names, " ")));
+                throw Error(fmt::format("{}:{}: {} values, expected {}: {}", source, lineno, cells.size(), all.size(),
+                                        fmt::join(all, " ")));
             throw Error(fmt::format("{}:{}: {} values, expected {} as on line {}", source, lineno, cells.size(),
-                                    t.names.size(), first_row_line));
+                                    all.size(), first_row_line));
         }
         for (std::size_t c = 0; c < cells.size(); ++c) {
+            if (slots[c].text) {
+                t.text_columns[slots[c].index].push_back(cells[c]);
+                continue;
+            }
+            if (cells[c].empty() && f.empty_cells) {
+                t.columns[slots[c].index].push_back(std::numeric_limits<double>::quiet_NaN());
+                continue;
+            }
             char* end = nullptr;
             const double v = std::strtod(cells[c].c_str(), &end);
             if (cells[c].empty() || end == cells[c].c_str() || *end != '\0')
-                throw Error(fmt::format("{}:{}: '{}' is not a number (column '{}')", source, lineno, cells[c], t.names[c]));
+                throw Error(fmt::format("{}:{}: '{}' is not a number (column '{}')", source, lineno, cells[c], all[c]));
             if (f.finite && !std::isfinite(v))
                 throw Error(fmt::format("{}:{}: non-finite value '{}' in column '{}'{}{}", source, lineno, cells[c],
-                                        t.names[c], f.nonfinite_hint.empty() ? "" : ": ", f.nonfinite_hint));
-            t.columns[c].push_back(v);
+                                        all[c], f.nonfinite_hint.empty() ? "" : ": ", f.nonfinite_hint));
+            t.columns[slots[c].index].push_back(v);
         }
         t.line.push_back(lineno);
     }

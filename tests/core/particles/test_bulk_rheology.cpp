@@ -202,6 +202,13 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
         BOOST_REQUIRE(h.size() == v.size());
         std::map<std::string, std::string> m;
         for (std::size_t i = 0; i < h.size(); ++i) m[h[i]] = v[i];
+        // the one reader (read_bulk_table) takes what the writer wrote
+        const BulkRows back = parse_bulk_table(t.csv, "written");
+        BOOST_REQUIRE(back.rows.size() == 1u);
+        BOOST_TEST(back.rows[0].point == m.at("point"));
+        BOOST_TEST(back.rows[0].core_dt_check == m.at("core_dt_check"));
+        BOOST_TEST(back.rows[0].friction.value == std::stod(m.at("mu")));
+        BOOST_TEST(back.rows[0].solid_fraction.error == std::stod(m.at("nu_err")));
         return m;
     };
     write(0.001);

@@ -67,3 +67,23 @@ BOOST_AUTO_TEST_CASE(solver_outputs_fail_as_the_solvers_run) {
                           });
     BOOST_CHECK_THROW(read_table("/nonexistent/w.txt"), Error);
 }
+
+BOOST_AUTO_TEST_CASE(named_text_columns_stay_text_and_empty_cells_may_mean_not_available) {
+    TableFormat f;
+    f.text = {"id", "absent"};
+    const Table t = parse_table("id,a,b\nU1,1,2\nU2,3,4\n", "t.csv", f);
+    BOOST_TEST(t.names == (std::vector<std::string>{"a", "b"}));
+    BOOST_TEST(t.text("id") == (std::vector<std::string>{"U1", "U2"}));
+    BOOST_TEST(t.has_text("id"));
+    BOOST_TEST(!t.has_text("absent"));
+    BOOST_TEST(!t.has("id"));
+    BOOST_TEST(t.rows() == 2u);
+    BOOST_TEST(error_of("id,a\nU1,\n", f) == "t.txt:2: '' is not a number (column 'a')");
+    BOOST_TEST(error_of("id,a\nU1,x\n", f) == "t.txt:2: 'x' is not a number (column 'a')");
+    f.empty_cells = true;
+    f.finite = true;
+    const Table e = parse_table("id,a\nU1,\n", "t.csv", f);
+    BOOST_TEST(std::isnan(e.column("a")[0]));
+    BOOST_TEST(e.text("id")[0] == "U1");
+    BOOST_CHECK_THROW(e.text("a"), Error);
+}

@@ -2,13 +2,16 @@
 // (bulk_rheology.h) of the point's answer and its change against the run it was Delta-t-checked
 // against, with the point's status. What `granlub bulk-rheology` writes; its format (columns, units,
 // comment lines) is documented in cases/bulk_shear/README.md, and kBulkTableFormat names it.
+// Its one reader is read_bulk_table (below): what a fit takes from it, and which rows are answers.
 #pragma once
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "granlub/case/case.h"
+#include "granlub/particles/bulk_rheology.h"
 
 namespace granlub {
 
@@ -26,5 +29,35 @@ struct BulkTable {
 // (steady, transient, dt-unconverged: the row says which). Throws Error when a complete result lacks
 // what the reduction needs (a profile column, too few core stations).
 BulkTable bulk_rheology_table(const Case& c, const std::filesystem::path& results_root);
+
+// One row of a table as a reader needs it. Cells left empty by the writer (not available) read as NaN.
+struct BulkRow {
+    std::string point, status, core_dt_check;
+    std::size_t line = 0;         // the row's line in its file, for messages
+    double load = 0;              // load_Pa: the imposed normal stress, Pa
+    Measured pressure;            // pressure_Pa, pressure_err: the core's P, Pa
+    Measured inertial;            // I, I_err
+    Measured friction;            // mu, mu_err
+    Measured solid_fraction;      // nu, nu_err
+    Measured temperature_scaled;  // T_scaled, T_scaled_err: T/(d gamma_dot)^2
+};
+
+// The reading rule (cases/bulk_shear/README.md, "The table"): a row is an answer when its status is `steady`
+// and its core_dt_check `converged`; every other row is a labelled measurement, never a point of a fit.
+bool is_answer(const BulkRow& r);
+
+struct BulkRows {
+    std::string source;                   // the file, as messages name it
+    std::vector<std::string> provenance;  // the comment lines after the format line, without '# '
+    std::vector<BulkRow> rows;            // every row, in the file's order
+    std::vector<BulkRow> answers() const;  // the rows is_answer() takes
+};
+
+// Throws Error naming the source (and the line) for a table of another format (its first line is not
+// "# format <kBulkTableFormat>"), a column the reader needs missing (named with its unit), a cell that is not a
+// number, and an answer row whose values cannot be (I, P not positive; nu outside (0, 1); a value or an error
+// non-finite or an error negative).
+BulkRows parse_bulk_table(std::string_view text, const std::string& source);
+BulkRows read_bulk_table(const std::filesystem::path& file);
 
 }  // namespace granlub

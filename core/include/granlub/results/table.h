@@ -2,7 +2,8 @@
 //  - the CSV files granlub and its YADE driver write (profile.csv, section.csv, particles.csv,
 //    wallforce.csv, plate.csv): a header row naming the columns, comma-separated numbers;
 //  - LIGGGHTS' `fix ave/time` and `fix print` outputs: whitespace-separated numbers, no header.
-// Blank lines and lines starting with '#' are comments in both.
+// Blank lines and lines starting with '#' are comments in both. A format may name columns kept as text
+// (a status, an id: TableFormat::text) and let empty cells stand for "not available" (NaN).
 #pragma once
 
 #include <cstddef>
@@ -14,15 +15,22 @@
 namespace granlub {
 
 // Named columns of equal length; `line` is each row's line in its source (for error messages).
+// `names`/`columns` are the numeric columns, `text_names`/`text_columns` those TableFormat::text names.
 struct Table {
     std::vector<std::string> names;
     std::vector<std::vector<double>> columns;
+    std::vector<std::string> text_names;
+    std::vector<std::vector<std::string>> text_columns;
     std::vector<std::size_t> line;
 
     Table& add(std::string name, std::vector<double> values);  // throws on length mismatch
-    bool has(std::string_view name) const;
-    const std::vector<double>& column(std::string_view name) const;  // throws naming the columns
-    std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+    bool has(std::string_view name) const;                     // a numeric column
+    bool has_text(std::string_view name) const;
+    const std::vector<double>& column(std::string_view name) const;     // throws naming the columns
+    const std::vector<std::string>& text(std::string_view name) const;  // throws naming the text columns
+    std::size_t rows() const {
+        return !columns.empty() ? columns.front().size() : text_columns.empty() ? 0 : text_columns.front().size();
+    }
 };
 
 struct TableFormat {
@@ -35,6 +43,8 @@ struct TableFormat {
     std::string expected_header;  // with a header: it must read exactly this ("" = any)
     bool finite = false;          // reject nan and inf (strtod reads them; a blown-up run prints them)
     std::string nonfinite_hint;   // appended to the non-finite error, e.g. what to do about it
+    std::vector<std::string> text;  // columns read as text, not numbers (Table::text); absent ones are not an error
+    bool empty_cells = false;       // an empty numeric cell reads as NaN ("not available") instead of an error
 };
 
 // Throws Error naming source:line for a bad header, a row of another length, a cell that is not a
