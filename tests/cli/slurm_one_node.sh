@@ -12,7 +12,7 @@
 # slurmctld -D and slurmd -D with one slurm.conf (SLURM_CONF for the clients); the node is `idle`
 # in `sinfo` a few seconds after. Tasks of an array run two at a time on 2 cores.
 set -uo pipefail
-granlub=${1:?usage: slurm_one_node.sh GRANLUB}
+granlub=$(realpath "${1:?usage: slurm_one_node.sh GRANLUB}")
 
 skip() { echo "SKIP: $*"; exit 77; }
 [ "$(id -u)" -eq 0 ] || skip "not root: slurmd must run as root to start jobs (run the suite as root to test the cluster route)"
@@ -25,9 +25,26 @@ done
 tmp=$(mktemp -d /tmp/granlub_slurm.XXXXXX)
 pids=()
 cleanup() {
-  [ -n "${SLURM_CONF:-}" ] && scancel --quiet --user=root >/dev/null 2>&1
+  trap - EXIT INT TERM HUP
+  if [ -n "${SLURM_CONF:-}" ]; then
+    scancel --quiet --user="$(id -un)" >/dev/null 2>&1
+    # the steps end and say so to slurmctld first (a step outliving slurmctld would retry for ever)
+    for _ in $(seq 20); do q=$(squeue -h -o %i 2>/dev/null) && [ -z "$q" ] && break; sleep 0.5; done
+  fi
   for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done
-  for p in "${pids[@]}"; do wait "$p" 2>/dev/null; done
+  for p in "${pids[@]}"; do
+    for _ in $(seq 20); do kill -0 "$p" 2>/dev/null || break; sleep 0.5; done
+    kill -9 "$p" 2>/dev/null
+    wait "$p" 2>/dev/null
+  done
+  # what the daemons forked away (slurmstepd, a task's granlub): every process left working in this
+  # test's own folder (the jobs start there)
+  cd /
+  for d in /proc/[0-9]*; do
+    case "$(readlink "$d/cwd" 2>/dev/null)" in
+      "$tmp" | "$tmp"/*) [ "${d#/proc/}" != $$ ] && kill -9 "${d#/proc/}" 2>/dev/null ;;
+    esac
+  done
   rm -rf "$tmp"
 }
 trap cleanup EXIT
@@ -123,6 +140,7 @@ time = 0.004
 EOF
 
 results="$tmp/case/results"
+cd "$tmp"  # the jobs start in the folder they were submitted from
 "$granlub" slurm "$tmp/case" --solvers dem,yade --time 10 --submit >"$tmp/submit.out" 2>&1 ||
   fail "granlub slurm --submit exited $?"
 cat "$tmp/submit.out"
@@ -145,11 +163,13 @@ for solver in dem yade; do
   for point in U1.0 U2.0; do
     s="$results/$solver/$point/summary.json"
     [ -f "$s" ] || fail "no $s"
-    log=$(ls "$results/slurm/logs/$solver"-*.out 2>/dev/null | head -n 1)
-    [ -n "$log" ] || fail "no log of the $solver array in $results/slurm/logs"
   done
-  grep -q 'warm, from granlub dem' "$results/yade/U1.0/summary.json" 2>/dev/null ||
-    [ "$solver" = dem ] || fail "yade U1.0 did not start from dem's final state"
+  n=$(ls "$results/slurm/logs/$solver"-*.out 2>/dev/null | wc -l)
+  [ "$n" -eq 2 ] || fail "$n logs of the $solver array in $results/slurm/logs, not one a task"
+done
+for point in U1.0 U2.0; do
+  grep -q 'warm, from granlub dem' "$results/yade/$point/summary.json" ||
+    fail "yade $point did not start from dem's final state"
 done
 [ -f "$results/report/index.html" ] || fail "no report: $results/report/index.html"
 ls "$results/slurm/logs/compare-"*.out >/dev/null 2>&1 || fail "no log of the compare job"
