@@ -140,9 +140,10 @@ void add_slurm_options(CLI::App* sub, Args& a, const std::vector<std::string>& s
     const auto slurm_check = [](std::string (*error)(const std::string&), std::string shown) {
         return CLI::Validator([error](std::string& v) { return error(v); }, std::move(shown));
     };
-    sub->add_option("--partition", s.partition, "Slurm partition of every job (default: the cluster's default)")
+    sub->add_option("--partition", s.partition,
+                    "Slurm partition of every job, or several comma-separated (default: the cluster's default)")
         ->type_name("NAME")
-        ->check(slurm_check(granlub::cli::slurm_partition_error, "NAME[,NAME...]"));
+        ->check(slurm_check(granlub::cli::slurm_partition_error, ""));
     sub->add_option("--time", s.time,
                     "time limit of each particle task in Slurm's format, e.g. 90 (minutes) or 1-12:00:00 (default: the "
                     "partition's)")
@@ -319,7 +320,7 @@ int main(int argc, char** argv) {
 
     cmd.slurm = app.add_subcommand("slurm", "write the case's particle runs as Slurm job arrays (one task per point and "
                                             "seed) and a dependent compare job into RESULTS/slurm/; --submit submits "
-                                            "them (README, \"On a cluster\")");
+                                            "them (cli/README.md, \"On a cluster\")");
     add_case(cmd.slurm, a);
     add_slurm_options(cmd.slurm, a, names);
 
