@@ -239,13 +239,7 @@ int run_case_command(const CaseCommands& cmd, const Args& a) {
         }
         for (const auto& [sub, m] : cmd.solvers)
             if (sub->parsed()) {
-                try {
-                    m->check(c, a.opt);  // bad input fails here, exit 2, before any point runs
-                } catch (const granlub::CaseError&) {
-                    throw;
-                } catch (const granlub::Error&) {
-                    // a point this solver cannot run: the sweep reports it and runs the others
-                }
+                granlub::cli::check_input(*m, c, a.opt);  // bad input fails here, exit 2, before any point runs
                 if (a.map) return granlub::cli::continuum_map(c, a.opt, a.map_grid[0], a.map_grid[1]);
                 return m->run(c, a.opt);
             }

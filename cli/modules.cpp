@@ -29,6 +29,15 @@ const std::vector<SolverModule>& solver_modules() {
     return modules;
 }
 
+void check_input(const SolverModule& m, const Case& c, const RunOptions& o) {
+    try {
+        m.check(c, o);
+    } catch (const CaseError&) {
+        throw;
+    } catch (const Error&) {
+    }
+}
+
 bool takes_seed(const SolverModule& m) { return m.name != "continuum"; }
 bool takes_ranks(const SolverModule& m) { return m.name == "dem"; }
 

@@ -193,14 +193,7 @@ int slurm_jobs(const Case& c, const RunOptions& o, const SlurmOptions& s) {
     // bad input stops here, before a job is queued (CaseError, exit 2); a point a solver cannot run
     // is left to its task, which says why in its log and the report
     for (const auto& list : {p.engines, p.others})
-        for (const auto* m : list) {
-            try {
-                m->check(c, o);
-            } catch (const CaseError&) {
-                throw;
-            } catch (const Error&) {
-            }
-        }
+        for (const auto* m : list) check_input(*m, c, o);
     const fs::path results = fs::absolute(results_root(c, o)).lexically_normal();
     const fs::path dir = results / kSlurmDir;
     const fs::path granlub = fs::read_symlink("/proc/self/exe");
