@@ -25,6 +25,7 @@
 #include "granlub/text.h"
 #include "modules.h"
 #include "run_all.h"
+#include "slurm.h"
 
 namespace {
 
@@ -38,6 +39,7 @@ struct Args {
     std::vector<int> map_grid{100, 100};     // --map-grid SPEEDS,LOADS
     std::string out;                         // granlub bulk-rheology --out, continuum-fit --out
     granlub::cli::ContinuumFitArgs fit;      // granlub continuum-fit
+    granlub::cli::SlurmOptions slurm;        // granlub slurm
 };
 
 // `granlub continuum CASE --map`: the (U, P) map instead of the case's points (continuum/command.h).
@@ -113,6 +115,46 @@ void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
             ->check(integer_in(1, 4096, "a rank count"));
 }
 
+// `granlub slurm CASE`: which runs go into the job scripts, and what Slurm is asked for (slurm.h).
+void add_slurm_options(CLI::App* sub, Args& a, const std::vector<std::string>& solvers) {
+    auto& s = a.slurm;
+    sub->add_option("--solvers", s.solvers,
+                    fmt::format("solvers, comma-separated: the particle engines get a job array each, the others run "
+                                "in the last job before compare (default: all: {})",
+                                fmt::join(solvers, ",")))
+        ->type_name("LIST")
+        ->delimiter(',')
+        ->check(CLI::IsMember(solvers));
+    sub->add_option("--point", s.points,
+                    "only these operating points, comma-separated, e.g. U1.4,U2.0 (default: every point; `granlub "
+                    "check CASE` lists the ids)")
+        ->type_name("IDS")
+        ->delimiter(',');
+    sub->add_option("--seed", a.seed, "random seed of every run, a whole number (default: the case's seed keys)")
+        ->type_name("N")
+        ->check(integer_in(0, std::numeric_limits<std::int64_t>::max(), "a seed", "0 to 2^63 - 1"));
+    sub->add_option("--np", a.opt.np, "MPI ranks of each dem task (Slurm tasks of its job), a count (default: 1)")
+        ->type_name("N")
+        ->check(integer_in(1, 4096, "a rank count"));
+    sub->add_flag("--full", a.opt.full, "full-fidelity run lengths, as `granlub dem --full` (default: off)");
+    sub->add_flag("--force", a.opt.force, "recompute complete points, as `granlub dem --force` (default: off)");
+    const auto slurm_check = [](std::string (*error)(const std::string&), std::string shown) {
+        return CLI::Validator([error](std::string& v) { return error(v); }, std::move(shown));
+    };
+    sub->add_option("--partition", s.partition,
+                    "Slurm partition of every job, or several comma-separated (default: the cluster's default)")
+        ->type_name("NAME")
+        ->check(slurm_check(granlub::cli::slurm_partition_error, ""));
+    sub->add_option("--time", s.time,
+                    "time limit of each particle task in Slurm's format, e.g. 90 (minutes) or 1-12:00:00 (default: the "
+                    "partition's)")
+        ->type_name("LIMIT")
+        ->check(slurm_check(granlub::cli::slurm_time_error, "[D-]HH:MM:SS or minutes"));
+    sub->add_flag("--submit", s.submit,
+                  "submit the scripts with sbatch once written (default: off, only write them into "
+                  "RESULTS/slurm/ with submit.sh to run by hand)");
+}
+
 // `granlub keys [SECTION] [--check FILE...] [--update FILE...]`.
 struct KeysCommand {
     CLI::App* sub = nullptr;
@@ -169,13 +211,15 @@ struct CaseCommands {
     CLI::App* run = nullptr;
     CLI::App* bulk = nullptr;
     CLI::App* fit = nullptr;
+    CLI::App* slurm = nullptr;
 };
 
 // `granlub bulk-rheology CASE`: the core's rheology of every DEM point (bulk_rheology_table.h),
 // written atomically beside case.toml (or to --out), read while no run writes the DEM's results.
 int bulk_rheology(const granlub::Case& c, const Args& a) {
     const auto root = granlub::results_root(c, a.opt);
-    const granlub::ResultsLock lock({{root, "dem", granlub::LockMode::Shared}}, a.opt.wait);
+    const granlub::ResultsLock lock(granlub::point_locks(root, "dem", c.select(""), granlub::LockMode::Shared),
+                                    a.opt.wait);  // every point's: the table reads them all
     const granlub::BulkTable t = granlub::bulk_rheology_table(c, root);
     const std::filesystem::path out = a.out.empty() ? c.dir / granlub::kBulkTableFile : std::filesystem::path(a.out);
     granlub::write_file_atomic(out, t.csv);
@@ -197,13 +241,7 @@ int run_case_command(const CaseCommands& cmd, const Args& a) {
         }
         for (const auto& [sub, m] : cmd.solvers)
             if (sub->parsed()) {
-                try {
-                    m->check(c, a.opt);  // bad input fails here, exit 2, before any point runs
-                } catch (const granlub::CaseError&) {
-                    throw;
-                } catch (const granlub::Error&) {
-                    // a point this solver cannot run: the sweep reports it and runs the others
-                }
+                granlub::cli::check_input(*m, c, a.opt);  // bad input fails here, exit 2, before any point runs
                 if (a.map) return granlub::cli::continuum_map(c, a.opt, a.map_grid[0], a.map_grid[1]);
                 return m->run(c, a.opt);
             }
@@ -215,6 +253,7 @@ int run_case_command(const CaseCommands& cmd, const Args& a) {
             return granlub::cli::continuum_fit(c, f);
         }
         if (cmd.run->parsed()) return granlub::cli::run_all(c, a.opt, a.solvers);
+        if (cmd.slurm->parsed()) return granlub::cli::slurm_jobs(c, a.opt, a.slurm);
     } catch (const granlub::CaseError& e) {
         fmt::print(stderr, "error: {}\n", e.what());
         return 2;
@@ -250,7 +289,7 @@ int main(int argc, char** argv) {
     for (const auto& m : granlub::cli::solver_modules()) {
         auto* sub = app.add_subcommand(m.name, m.description);
         add_case(sub, a);
-        add_run_options(sub, a, m.name != "continuum", m.name == "dem");
+        add_run_options(sub, a, granlub::cli::takes_seed(m), granlub::cli::takes_ranks(m));
         if (m.name == "continuum" && granlub::cli::have_continuum()) add_map_options(sub, a);
         cmd.solvers.emplace_back(sub, &m);
     }
@@ -304,6 +343,12 @@ int main(int argc, char** argv) {
         ->delimiter(',')
         ->check(CLI::IsMember(names));
 
+    cmd.slurm = app.add_subcommand("slurm", "write the case's particle runs as Slurm job arrays (one task per point and "
+                                            "seed) and a dependent compare job into RESULTS/slurm/; --submit submits "
+                                            "them (cli/README.md, \"On a cluster\")");
+    add_case(cmd.slurm, a);
+    add_slurm_options(cmd.slurm, a, names);
+
     // CLI11 reports an unknown first word only as "A subcommand is required": name it and the commands.
     std::vector<std::string> commands;
     for (const auto* sub : app.get_subcommands({})) commands.push_back(sub->get_name());
@@ -318,6 +363,7 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     a.opt.results_root = a.results;
+    a.slurm.command = granlub::one_line(fmt::format("{}", fmt::join(argv, argv + argc, " ")));
     if (a.seed >= 0) a.opt.seed = static_cast<std::uint64_t>(a.seed);
 
     if (keys.sub->parsed()) return keys.run();

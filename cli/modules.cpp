@@ -29,6 +29,18 @@ const std::vector<SolverModule>& solver_modules() {
     return modules;
 }
 
+void check_input(const SolverModule& m, const Case& c, const RunOptions& o) {
+    try {
+        m.check(c, o);
+    } catch (const CaseError&) {
+        throw;
+    } catch (const Error&) {
+    }
+}
+
+bool takes_seed(const SolverModule& m) { return m.name != "continuum"; }
+bool takes_ranks(const SolverModule& m) { return m.name == "dem"; }
+
 int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads) {
 #ifdef GRANLUB_HAVE_CONTINUUM
     return continuum::run_map(c, o, speeds, loads);

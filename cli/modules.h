@@ -18,6 +18,12 @@ struct SolverModule {
 };
 
 const std::vector<SolverModule>& solver_modules();
+// m.check(c, o) before any run: bad input throws (CaseError, exit 2); a point m cannot run does not
+// (its run names it and goes on with the other points).
+void check_input(const SolverModule& m, const Case& c, const RunOptions& o);
+// Whether `granlub <m>` takes --seed (its runs are random) and --np (MPI ranks: dem's LIGGGHTS).
+bool takes_seed(const SolverModule& m);
+bool takes_ranks(const SolverModule& m);
 // `granlub check` after the case parses: every compiled solver's check() on every point (quick
 // and --full run lengths). One line per solver; returns 2 when any finds bad input (the error
 // names it); points a solver cannot run (e.g. a smooth wall in the continuum) are warnings.

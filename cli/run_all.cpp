@@ -77,14 +77,7 @@ int run_all(const Case& c, const RunOptions& o, const std::vector<std::string>& 
 
     // Bad input stops everything before a run starts (exit 2). A point a solver cannot run is
     // left to its sweep, which names it and runs the other points.
-    for (const auto* m : mods) {
-        try {
-            m->check(c, o);
-        } catch (const CaseError&) {
-            throw;
-        } catch (const Error&) {
-        }
-    }
+    for (const auto* m : mods) check_input(*m, c, o);
     int rc = 0;
     // one solver's sweep; false when it failed (said on stderr)
     const auto run_one = [&](const SolverModule* m) {

@@ -86,7 +86,7 @@ int run_map(const Case& c, const RunOptions& o, int speeds, int loads) {
     g.speeds = speeds;
     g.loads = loads;
     const std::filesystem::path root = results_root(c, o);
-    const ResultsLock held({{root, "continuum", LockMode::Exclusive}}, o.wait);
+    const ResultsLock held({{root, "continuum/map.csv", LockMode::Exclusive}}, o.wait);
     MapStats st;
     const std::clock_t c0 = std::clock();
     const auto path = write_continuum_map(c, g, root, &st);

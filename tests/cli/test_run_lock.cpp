@@ -1,9 +1,11 @@
 // Issue 34: two runs on one case. Two `granlub automaton --force` with different seeds used to
 // both exit 0 and leave points with one run's summary.json beside the other's profile.csv. Here
-// the first run is held inside its lock by the test hook of granlub/run/run_lock.h (it reads a fifo
-// to its end right after taking the lock), so what the second run does while the first holds the
+// the first run is held inside its locks by the test hook of granlub/run/run_lock.h (it reads a
+// fifo to its end right after taking them), so what the second run does while the first holds the
 // results is observed, not guessed at with sleeps: it waits (default) or fails with exit 2
 // (--no-wait); a holder killed with kill -9 blocks nobody; another solver is not blocked.
+// Issue 76: the locks are per point, so a run on another point of the same solver, and a compare
+// of another point, go on beside the held run; the same point waits.
 #define BOOST_TEST_MODULE granlub run lock
 #include <fcntl.h>
 #include <signal.h>
@@ -117,9 +119,9 @@ bool release(const fs::path& fifo) {
     });
 }
 
-// The automaton results' lock names `pid` as its holder (the run took the lock).
+// The lock of the automaton's point U1.0 names `pid` as its holder (the run took its locks).
 bool holds_automaton(const fs::path& root, pid_t pid) {
-    return granlub::lock_holder(granlub::lock_file(root, "automaton")).starts_with(fmt::format("pid {} ", pid));
+    return granlub::lock_holder(granlub::lock_file(root, "automaton/U1.0")).starts_with(fmt::format("pid {} ", pid));
 }
 
 std::vector<std::string> automaton(const fs::path& root, int seed, std::vector<std::string> more = {}) {
@@ -156,14 +158,14 @@ void every_point_from_one_run(const fs::path& root, std::uint64_t seed) {
 #endif
 }
 
-// A first `granlub automaton --seed 1 --force` in a fresh results folder, held inside its lock.
+// A first `granlub automaton --seed 1 --force [more]` in a fresh results folder, held inside its locks.
 struct FirstRunHeld {
     fs::path root;
     fs::path fifo;
     Granlub first;
 
-    explicit FirstRunHeld(const std::string& name)
-        : root(scratch(name)), fifo(pause_fifo(root)), first(automaton(root, 1), root / "first.out", fifo) {
+    explicit FirstRunHeld(const std::string& name, const std::vector<std::string>& more = {})
+        : root(scratch(name)), fifo(pause_fifo(root)), first(automaton(root, 1, more), root / "first.out", fifo) {
         BOOST_TEST_REQUIRE(within(60, [&] { return holds_automaton(root, first.pid); }), first.text());
     }
 };
@@ -244,3 +246,62 @@ BOOST_AUTO_TEST_CASE(runs_on_different_solvers_of_one_case_do_not_block_each_oth
     every_point_from_one_run(root, 1);
     fs::remove_all(root);
 }
+
+BOOST_AUTO_TEST_CASE(another_point_of_the_same_solver_runs_beside_a_held_run) {
+    FirstRunHeld held("other_point", {"--point", "U1.0"});
+    auto& [root, fifo, first] = held;
+    const auto other = granlub::test::run(command(automaton(root, 2, {"--point", "U2.0", "--no-wait"})));
+    BOOST_TEST(other.rc == 0, other.text);
+    BOOST_TEST(other.text.find("in use") == std::string::npos, other.text);
+    BOOST_TEST(first.running());  // still holding U1.0
+    BOOST_TEST(!fs::exists(granlub::result_dir(root, "automaton", "U1.0") / "summary.json"));
+    BOOST_TEST(granlub::read_summary(granlub::result_dir(root, "automaton", "U2.0") / "summary.json")
+                   .provenance.seed.value_or(0) == 2u);
+    BOOST_TEST_REQUIRE(release(fifo));
+    BOOST_TEST(first.finish() == 0, first.text());
+    BOOST_TEST(granlub::read_summary(granlub::result_dir(root, "automaton", "U1.0") / "summary.json")
+                   .provenance.seed.value_or(0) == 1u);
+    fs::remove_all(root);
+}
+
+BOOST_AUTO_TEST_CASE(the_same_point_twice_waits_naming_the_holder) {
+    FirstRunHeld held("same_point", {"--point", "U1.0"});
+    auto& [root, fifo, first] = held;
+    Granlub second(automaton(root, 2, {"--point", "U1.0"}), root / "second.out");
+    BOOST_TEST_REQUIRE(within(60, [&] { return second.text().find("granlub: waiting for the automaton results in " +
+                                                                  (root / "automaton" / "U1.0").string()) !=
+                                               std::string::npos; }),
+                       second.text());
+    BOOST_TEST(second.text().find(fmt::format("in use by pid {} on ", first.pid)) != std::string::npos, second.text());
+    BOOST_TEST(second.text().find("--point U1.0") != std::string::npos, second.text());  // the holder's command
+    BOOST_TEST(second.running());
+    BOOST_TEST_REQUIRE(release(fifo));
+    BOOST_TEST(first.finish() == 0, first.text());
+    BOOST_TEST(second.finish() == 0, second.text());
+    BOOST_TEST(granlub::read_summary(granlub::result_dir(root, "automaton", "U1.0") / "summary.json")
+                   .provenance.seed.value_or(0) == 2u);  // the second ran after the first
+    fs::remove_all(root);
+}
+
+#ifdef GRANLUB_HAVE_COMPARE
+BOOST_AUTO_TEST_CASE(compare_waits_only_for_a_point_it_reads) {
+    FirstRunHeld held("compare_point", {"--point", "U1.0"});
+    auto& [root, fifo, first] = held;
+    const auto continuum = granlub::test::run(command({"continuum", kCase, "--results", root.string(), "--no-wait"}));
+    BOOST_TEST_REQUIRE(continuum.rc == 0, continuum.text);
+    const auto other = granlub::test::run(command({"compare", kCase, "--results", root.string(), "--point", "U2.0",
+                                                   "--no-wait"}));
+    BOOST_TEST(other.rc == 0, other.text);
+    BOOST_TEST(fs::exists(root / "report" / "index.html"));
+    const auto same = granlub::test::run(command({"compare", kCase, "--results", root.string(), "--point", "U1.0",
+                                                  "--no-wait"}));
+    BOOST_TEST(same.rc == 2, same.text);
+    BOOST_TEST(same.text.find("the automaton results in " + (root / "automaton" / "U1.0").string()) !=
+                   std::string::npos,
+               same.text);
+    BOOST_TEST(first.running());
+    BOOST_TEST_REQUIRE(release(fifo));
+    BOOST_TEST(first.finish() == 0, first.text());
+    fs::remove_all(root);
+}
+#endif

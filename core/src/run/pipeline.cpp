@@ -44,7 +44,9 @@ Board& board() {
 
 std::vector<LockRequest> pipeline_locks(const Case& c, const RunOptions& o, const std::vector<std::string>& solvers) {
     std::vector<LockRequest> locks;
-    for (const auto& s : solvers) locks.push_back({results_root(c, o), s, LockMode::Exclusive});
+    for (const auto& s : solvers)
+        for (auto& l : point_locks(results_root(c, o), s, c.select(o.point), LockMode::Exclusive))
+            locks.push_back(std::move(l));
     return locks;
 }
 

@@ -1,8 +1,9 @@
-// Locks on a case's results: flock(2) on <results>/.locks/<name>.lock (run_lock.h).
+// Locks on a case's results: flock(2) on <results>/.locks/<name>.lock, one per point (run_lock.h).
 #include "granlub/run/run_lock.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -61,10 +62,12 @@ std::string read_holder(int fd) {
     return trimmed(std::move(buf));
 }
 
-// What a lock guards, for the waiting line and the error.
+// What a lock guards, for the waiting line and the error: "the dem results in <results>/dem/U1.4".
 std::string guarded(const LockRequest& r) {
-    return r.name == "report" ? fmt::format("the report in {}", (r.results_root / "report").string())
-                              : fmt::format("the {} results in {}", r.name, (r.results_root / r.name).string());
+    const std::filesystem::path what = r.results_root / r.name;
+    const std::string solver = std::filesystem::path(r.name).begin()->string();
+    return r.name == "report" ? fmt::format("the report in {}", what.string())
+                              : fmt::format("the {} results in {}", solver, what.string());
 }
 
 // flock is not supported here (some network and FUSE file systems): not a reason to refuse the run.
@@ -95,6 +98,27 @@ void test_pause() {
 
 std::filesystem::path lock_file(const std::filesystem::path& results_root, const std::string& name) {
     return results_root / ".locks" / (name + ".lock");
+}
+
+LockRequest point_lock(const std::filesystem::path& results_root, const std::string& solver, const std::string& point,
+                       LockMode mode) {
+    return {results_root, solver + "/" + point, mode};
+}
+
+LockRequest seed_lock(const std::filesystem::path& results_root, const std::string& solver, const std::string& point,
+                      std::uint64_t seed, LockMode mode) {
+    return {results_root, fmt::format("{}/{}/seed-{}", solver, point, seed), mode};
+}
+
+std::vector<LockRequest> point_locks(const std::filesystem::path& results_root, const std::string& solver,
+                                     const std::vector<const OperatingPoint*>& points, LockMode mode,
+                                     const std::vector<std::uint64_t>& seeds) {
+    std::vector<LockRequest> locks;
+    for (const OperatingPoint* p : points) {
+        if (seeds.empty()) locks.push_back(point_lock(results_root, solver, p->id, mode));
+        for (const std::uint64_t s : seeds) locks.push_back(seed_lock(results_root, solver, p->id, s, mode));
+    }
+    return locks;
 }
 
 std::string lock_holder(const std::filesystem::path& file) {
@@ -168,6 +192,17 @@ bool lock_or_wait(int fd, int op, const LockRequest& r, bool wait) {
     return true;
 }
 
+// One descriptor a lock, held together: a sweep of many points (a case may have 10 000) needs more
+// than the usual soft limit of 1024, so the soft limit is raised towards the hard one when needed.
+void make_room_for(std::size_t descriptors) {
+    rlimit lim{};
+    if (::getrlimit(RLIMIT_NOFILE, &lim) != 0) return;
+    const rlim_t want = static_cast<rlim_t>(descriptors) + 256;  // the engines' pipes, logs and files
+    if (lim.rlim_cur == RLIM_INFINITY || lim.rlim_cur >= want) return;
+    lim.rlim_cur = lim.rlim_max == RLIM_INFINITY ? want : std::min(want, lim.rlim_max);
+    ::setrlimit(RLIMIT_NOFILE, &lim);  // where it fails, opening a lock file says why
+}
+
 }  // namespace
 
 void ResultsLock::take(std::vector<LockRequest> locks, bool wait) {
@@ -181,6 +216,7 @@ void ResultsLock::take(std::vector<LockRequest> locks, bool wait) {
         } else {
             ++i;
         }
+    make_room_for(locks.size());
     bool writes = false;
     for (const LockRequest& r : locks) {
         bool can_record = false;

@@ -87,12 +87,14 @@ int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, con
     } ended{solver};
     const auto points = c.select(o.point);
     const auto root = results_root(c, o);
-    // Before anything is read: which points are complete is only known once no other run writes.
+    // Before anything is read: which points are complete is only known once no other run writes
+    // them. The selected points' locks only: runs on other points of the case go on beside this one.
     // A pipeline holds the locks of its solvers already.
     std::vector<LockRequest> locks;
-    if (!pipeline::holds(root, solver)) locks.push_back({root, solver, LockMode::Exclusive});
+    if (!pipeline::holds(root, solver)) locks = point_locks(root, solver, points, LockMode::Exclusive);
     for (const auto& r : reads)
-        if (!pipeline::holds(root, r)) locks.push_back({root, r, LockMode::Shared});
+        if (!pipeline::holds(root, r))
+            for (auto& l : point_locks(root, r, points, LockMode::Shared)) locks.push_back(std::move(l));
     const ResultsLock held(std::move(locks), o.wait);
     const ResultKey key = result_key(c, solver);
     std::atomic<int> failed{0};

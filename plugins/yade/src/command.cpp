@@ -205,8 +205,8 @@ void check(const Case& c, const RunOptions& o) {
 int run(const Case& c, const RunOptions& o) {
     // each point is one single-threaded YADE process (-j1): as many side by side as cores allow
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
-    // a warm start reads dem's final states: dem's results stay locked (shared) while yade runs, so
-    // that no dem run replaces them half-way through the sweep (granlub/run/run_lock.h)
+    // a warm start reads dem's final states: dem's same points stay locked (shared) while yade runs,
+    // so that no dem run replaces them half-way through the sweep (granlub/run/run_lock.h)
     const bool warm = c.section("yade").string("start") == "warm";
     return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {

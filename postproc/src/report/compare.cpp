@@ -107,17 +107,23 @@ std::string text_table(const Table& t) {
     return out;
 }
 
-// What compare locks (granlub/run/run_lock.h): every solver's results it reads, shared, so that no
-// run rewrites them half-way through the reading (the known solvers' whether or not their folder
-// exists yet: a sweep that holds its lock may not have made it); the report, exclusive, so that
-// two compares do not swap their reports in at once; and the slice case's dem results it sets
-// beside a ring's.
+// What compare locks (granlub/run/run_lock.h): each point it reads, shared, so that no run
+// rewrites it half-way through the reading, and nothing else, so that runs on other points go on
+// (every known solver's points whether or not their folder exists yet: a sweep that holds its
+// locks may not have made it); the continuum's map; the report, exclusive, so that two compares
+// do not swap their reports in at once; and the slice case's dem points it sets beside a ring's.
 std::vector<LockRequest> compare_locks(const Case& c, const RunOptions& o) {
     const auto root = results_root(c, o);
-    std::vector<LockRequest> locks{{root, "report", LockMode::Exclusive}};
-    for (const char* s : kKnownSolvers) locks.push_back({root, s, LockMode::Shared});
-    for (const auto& s : result_solvers(root)) locks.push_back({root, s, LockMode::Shared});  // duplicates: one lock
-    if (const auto slice = slice_results_root(c)) locks.push_back({*slice, kRingSolver, LockMode::Shared});
+    std::vector<LockRequest> locks{{root, "report", LockMode::Exclusive},
+                                   {root, "continuum/map.csv", LockMode::Shared}};
+    const auto add = [&](const std::filesystem::path& r, const std::string& solver,
+                         const std::vector<const OperatingPoint*>& points) {
+        for (auto& l : point_locks(r, solver, points, LockMode::Shared)) locks.push_back(std::move(l));
+    };
+    const auto points = c.select(o.point);
+    for (const char* s : kKnownSolvers) add(root, s, points);
+    for (const auto& s : result_solvers(root)) add(root, s, points);  // duplicates: one lock
+    if (const auto slice = slice_case(c)) add(results_root(*slice, RunOptions{}), kRingSolver, slice->select(""));
     return locks;
 }
 

@@ -229,11 +229,11 @@ RingSlicePart ring_slice_part(const Case& ring, const Collection& col) {
     return part;
 }
 
-std::optional<std::filesystem::path> slice_results_root(const Case& ring) {
+std::optional<Case> slice_case(const Case& ring) {
     const std::string slice_case = ring.section("report").string("slice_case");
     if (slice_case.empty()) return std::nullopt;
     try {
-        return results_root(load_case(ring.dir / slice_case, *ring.schema), RunOptions{});  // as collect() below
+        return load_case(ring.dir / slice_case, *ring.schema);  // as ring_slice_part() above
     } catch (const Error&) {
         return std::nullopt;  // ring_slice_part says why in the report
     }

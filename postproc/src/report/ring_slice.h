@@ -28,8 +28,8 @@ struct RingSlicePart {
 // rest of the report stands.
 RingSlicePart ring_slice_part(const Case& ring, const Collection& col);
 
-// The slice case's results folder that ring_slice_part reads, when [report] slice_case names a
-// case that loads: compare holds its dem results locked (shared) while it reads them.
-std::optional<std::filesystem::path> slice_results_root(const Case& ring);
+// The slice case whose results (its default folder) ring_slice_part reads, when [report] slice_case
+// names a case that loads: compare holds its dem points locked (shared) while it reads them.
+std::optional<Case> slice_case(const Case& ring);
 
 }  // namespace granlub::postproc

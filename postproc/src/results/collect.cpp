@@ -186,7 +186,7 @@ std::vector<std::string> result_solvers(const std::filesystem::path& root, std::
     if (std::filesystem::is_directory(root, ec)) {
         for (const auto& e : std::filesystem::directory_iterator(root, ec)) {
             const std::string name = e.path().filename().string();
-            if (!e.is_directory() || name == "report" || name == "initial" || name.starts_with(".") ||
+            if (!e.is_directory() || name == "report" || name == "initial" || name == kSlurmDir || name.starts_with(".") ||
                 name.find(".partial") != std::string::npos ||
                 std::find(std::begin(kKnownSolvers), std::end(kKnownSolvers), name) != std::end(kKnownSolvers))
                 continue;

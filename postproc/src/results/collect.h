@@ -82,7 +82,7 @@ struct Collection {
 Collection collect(const Case& c, const RunOptions& o);
 
 // The solvers with a results folder under `root`, in report order (the known ones, then any other
-// folder but report/, initial/ and hidden ones); the known solvers without one go to `missing`.
+// folder but report/, initial/, slurm/ (kSlurmDir) and hidden ones); the known solvers without one go to `missing`.
 std::vector<std::string> result_solvers(const std::filesystem::path& root, std::vector<std::string>* missing = nullptr);
 
 // One run's status without loading it into a collection (for summary_table).

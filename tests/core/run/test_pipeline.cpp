@@ -93,8 +93,8 @@ BOOST_AUTO_TEST_CASE(a_reader_point_starts_once_the_point_it_reads_is_done) {
     {
         const SweepPipeline pipeline(c, o, {"a", "b"});
         // its locks keep other runs out; a second pipeline in the process is refused
-        BOOST_CHECK_THROW(ResultsLock({{root, "a", LockMode::Shared}}, false), ResultsInUse);
-        BOOST_CHECK_THROW(ResultsLock({{root, "b", LockMode::Exclusive}}, false), ResultsInUse);
+        BOOST_CHECK_THROW(ResultsLock({{root, "a/U1.0", LockMode::Shared}}, false), ResultsInUse);
+        BOOST_CHECK_THROW(ResultsLock({{root, "b/U2.0", LockMode::Exclusive}}, false), ResultsInUse);
         BOOST_CHECK_THROW(SweepPipeline(c, o, {"c"}), Error);
         std::jthread ta([&] { rc_a = sweep(c, "a", o, solve_a, 2); });
         std::jthread tb([&] { rc_b = sweep(c, "b", o, solve_b, 2, {"a"}); });
@@ -108,7 +108,9 @@ BOOST_AUTO_TEST_CASE(a_reader_point_starts_once_the_point_it_reads_is_done) {
     BOOST_TEST(ev.at("b found a incomplete at U1.0") == -1);
     BOOST_TEST(ev.at("b found a incomplete at U2.0") == -1);
     // the pipeline's locks are gone with it
-    BOOST_CHECK_NO_THROW(ResultsLock({{root, "a", LockMode::Exclusive}, {root, "b", LockMode::Exclusive}}, false));
+    BOOST_CHECK_NO_THROW(ResultsLock({{root, "a/U1.0", LockMode::Exclusive}, {root, "a/U2.0", LockMode::Exclusive},
+                                      {root, "b/U1.0", LockMode::Exclusive}, {root, "b/U2.0", LockMode::Exclusive}},
+                                     false));
     fs::remove_all(root);
 }
 

@@ -16,7 +16,7 @@ int run(const Case& c, const RunOptions& o);    // solves the selected points th
 // running: CaseError for bad input, SolverError for a case this solver cannot run.
 void check(const Case& c, const RunOptions& o);
 // `granlub continuum CASE --map [--map-grid SPEEDS,LOADS]`: the case's (U, P) map (map.h) written to
-// <results>/continuum/map.csv under the continuum's results lock, and one line with its cost. Returns 0,
+// <results>/continuum/map.csv under its lock (run_lock.h: continuum/map.csv), and one line with its cost. Returns 0,
 // or 1 when no point of the grid could be solved (the file is written either way).
 int run_map(const Case& c, const RunOptions& o, int speeds, int loads);
 

@@ -41,6 +41,10 @@ inline constexpr const char* kDtCheckProfile = "dt_full/profile.csv";
 inline constexpr const char* kDtHalfDir = "dt_half";
 inline constexpr const char* kDtHalfProfile = "dt_half/profile.csv";
 
+// The folder of a results folder where `granlub slurm` writes its job scripts and their logs: not
+// a solver's results.
+inline constexpr const char* kSlurmDir = "slurm";
+
 struct Case;
 struct OperatingPoint;
 

@@ -4,7 +4,7 @@
 // whole DEM sweep).
 //
 // The pipeline takes, before any of its sweeps starts, every lock those sweeps would take
-// (run_lock.h; each of its solvers' results exclusively), and its sweeps do not take those again:
+// (run_lock.h; the selected points of each of its solvers exclusively), and its sweeps do not take those again:
 // a second descriptor in the same process would be set against the first by flock(2). A sweep of a
 // pipeline solver (run_sweep) waits, before each point, until each solver it reads that is in the
 // pipeline has finished that point (computed, skipped as complete, or failed) or ended its sweep,
@@ -35,7 +35,7 @@ private:
 };
 
 namespace pipeline {
-// Whether this process's pipeline holds `solver`'s results lock under `results_root`.
+// Whether this process's pipeline holds `solver`'s locks (its selected points) under `results_root`.
 bool holds(const std::filesystem::path& results_root, const std::string& solver);
 // Whether wait_for(solver, point) would block now.
 bool pending(const std::string& solver, const std::string& point);

@@ -1,4 +1,4 @@
-// Running a solver over the operating points of a case: the lock on its results (run_lock.h),
+// Running a solver over the operating points of a case: the locks on its points (run_lock.h),
 // selection (--point), resume (skip points whose results are complete and current unless
 // --force), timing, atomic result writing and one printed line per point. Every solver's
 // `granlub <solver>` command goes through this.
@@ -50,9 +50,9 @@ void for_each_run(const Case& c, const RunOptions& o,
 // Returns the process exit code: 0 if every selected point is complete afterwards, 1 otherwise.
 // Failures of one point are reported and the sweep goes on with the next. Up to `points_at_once`
 // points run side by side (solvers whose points are separate processes: see points_at_once()).
-// The sweep holds its solver's results locked (exclusive) from start to end, and the results of
-// the solvers in `reads` shared (yade's warm start reads dem's): o.wait says whether it waits
-// for another run holding them or throws ResultsInUse. Under a SweepPipeline of the solver
+// The sweep holds the selected points of its solver locked (exclusive) from start to end, and the
+// same points of the solvers in `reads` shared (yade's warm start reads dem's): o.wait says whether
+// it waits for another run holding one of them or throws ResultsInUse (run_lock.h). Under a SweepPipeline of the solver
 // (pipeline.h) the pipeline holds those locks, and each point waits for the points it reads.
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve,
               int points_at_once = 1, const std::vector<std::string>& reads = {});

@@ -15,9 +15,10 @@ namespace granlub::postproc {
 // Writes the report (replacing any previous one as a whole) and prints where it went.
 // Returns 0 when every result found was usable, 1 when some were stale or corrupt (the report is
 // still written without them and names them). Throws Error when no usable result exists at all.
-// Honours o.point (only that point) and o.results_root. Holds every solver's results locked shared
-// and the report exclusive while it works (granlub/run/run_lock.h): another run holding them makes it
-// wait, or with o.wait false throw ResultsInUse.
+// Honours o.point (only that point) and o.results_root. Holds each point it reads locked shared (of
+// every solver) and the report exclusive while it works (granlub/run/run_lock.h): another run writing
+// one of those points makes it wait, or with o.wait false throw ResultsInUse; runs on other points
+// do not.
 int compare(const Case& c, const RunOptions& o);
 
 // The closing table for `granlub run`: one row per solver and point with the result state and
