@@ -20,30 +20,13 @@ namespace granlub::cli {
 const std::vector<SolverModule>& solver_modules() {
     static const std::vector<SolverModule> modules = [] {
         std::vector<SolverModule> m;
-#define GRANLUB_SOLVER(name, doc, engine) m.push_back({#name, doc, name::run, name::check, engine});
+#define GRANLUB_SOLVER(module) m.push_back({module::kSolver, module::kSolver.name, module::run, module::check});
 #include "solvers.h"
 #undef GRANLUB_SOLVER
         registry_checked(m, "solver");
         return m;
     }();
     return modules;
-}
-
-int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads) {
-#ifdef GRANLUB_HAVE_CONTINUUM
-    return continuum::run_map(c, o, speeds, loads);
-#else
-    (void)c, (void)o, (void)speeds, (void)loads;
-    throw Error("granlub was built without the continuum module: no map");
-#endif
-}
-
-bool have_continuum_map() {
-#ifdef GRANLUB_HAVE_CONTINUUM
-    return true;
-#else
-    return false;
-#endif
 }
 
 int check_solvers(const Case& c, const RunOptions& o) {

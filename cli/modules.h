@@ -5,16 +5,16 @@
 #include <vector>
 
 #include "granlub/case/case.h"
+#include "granlub/run/solver_info.h"
 #include "granlub/run/sweep.h"
 
 namespace granlub::cli {
 
 struct SolverModule {
-    std::string name;         // subcommand and results folder name
-    std::string description;
+    SolverInfo info;   // what the solver is (its kSolver row)
+    std::string name;  // info.name: subcommand and results folder name
     std::function<int(const Case&, const RunOptions&)> run;
     std::function<void(const Case&, const RunOptions&)> check;  // what run would reject, without running
-    bool engine = false;  // its points are engine processes (solvers.h)
 };
 
 const std::vector<SolverModule>& solver_modules();
@@ -25,9 +25,6 @@ int check_solvers(const Case& c, const RunOptions& o);
 // `granlub compare` if postproc is compiled in; otherwise throws.
 int compare(const Case& c, const RunOptions& o);
 bool have_compare();
-// `granlub continuum CASE --map` if the continuum is compiled in (continuum/command.h run_map); otherwise throws.
-int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads);
-bool have_continuum_map();
 // The closing table of `granlub run`: one row per solver and point (postproc's summary table when
 // postproc is built in, else the mean solid fraction and wall stresses read from the summaries).
 void closing_table(const Case& c, const RunOptions& o);

@@ -40,6 +40,7 @@ void write_solver(const SyntheticCase& s, const std::string& solver) {
         const double U = p.speed;
         std::vector<double> y, u, nu, T, se;
         Summary sum = make_summary(s.c, p, solver, solver == "continuum" ? std::nullopt : std::optional<std::uint64_t>(7));
+        sum.kind = solver == "continuum" ? "continuum" : solver == "automaton" ? "lattice" : "particles";
         if (solver == "continuum") {
             for (int k = 0; k <= 40; ++k) y.push_back(k / 40.0);
             for (double v : y) u.push_back(0.9 - 0.8 * v), nu.push_back(0.65 * (0.8 + 0.1 * v)), T.push_back(0.01);

@@ -48,6 +48,7 @@ void write_results(const test::SyntheticCase& s) {
             const bool dem = solver == std::string("dem"), lattice = solver == std::string("automaton");
             const double P = p.normal_stress, U = p.speed;
             Summary sum = make_summary(s.c, p, solver, dem ? std::optional<std::uint64_t>(7) : std::nullopt);
+            sum.kind = dem ? "particles" : lattice ? "lattice" : "continuum";
             const double tau = dem ? 0.4 * P : 50 * U * U;
             sum.set("normal_stress_bottom", P * 1.02, "Pa").set("normal_stress_top", P, "Pa");
             sum.set("shear_stress_bottom", tau, "Pa").set("shear_stress_top", tau, "Pa");

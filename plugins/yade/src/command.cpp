@@ -136,7 +136,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     if (!s.warm_start) start.gap = s.servo.plate_start;
     const DriverPaths paths = locate_driver();
 
-    Summary base = make_summary(c, p0, "yade", s.insertion.seed);
+    Summary base = make_summary(c, p0, kSolver, s.insertion.seed);
     base.provenance.settings = settings_json(s);
     base.provenance.settings["initial_file"] = init.file.string();
     base.provenance.settings["initial_file_reused"] = init.reused;
@@ -207,8 +207,8 @@ int run(const Case& c, const RunOptions& o) {
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
     // a warm start reads dem's final states: dem's results stay locked (shared) while yade runs, so
     // that no dem run replaces them half-way through the sweep (granlub/run/run_lock.h)
-    const bool warm = c.section("yade").string("start") == "warm";
-    return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
+    const bool warm = c.section(kSolver.name).string("start") == "warm";
+    return run_sweep(c, kSolver.name, o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {
             return solve_point(c, p, o, dir);
         } catch (const SolverError&) {

@@ -12,7 +12,7 @@ namespace granlub::yade {
 namespace {
 
 BoundKeys<Settings> declare() {
-    BoundKeys<Settings> k(SectionSpec("yade", "YADE cross-check of the particle simulation (plugins/yade)"));
+    BoundKeys<Settings> k(SectionSpec(kSolver.name, "YADE cross-check of the particle simulation (plugins/yade)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
     s.choice("model", "viscel", contact_law_names(ParticleEngine::Yade),
              "contact law (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Yade));

@@ -156,7 +156,7 @@ std::vector<Figure> stress_figures(const Collection& col) {
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
                 // The automaton's "stresses" are lattice analogues: said in the legend, beside the markers.
-                const std::string label = with_group(lattice_stresses(solver) ? solver + " (lattice analogue)" : solver,
+                const std::string label = with_group(lattice_stresses(col, solver) ? solver + " (lattice analogue)" : solver,
                                                      groups[g].label);
                 auto series = points_by_state(col, solver, groups[g].points, label,
                                               [&](const Run& r, const OperatingPoint& p, Series& s) {

@@ -169,6 +169,25 @@ bool Collection::any_usable(const std::string& solver) const {
     return std::any_of(points.begin(), points.end(), [&](const OperatingPoint* p) { return run(solver, p->id).usable(); });
 }
 
+std::optional<SolverKind> Run::kind() const {
+    if (!summary) return std::nullopt;
+    if (!summary->kind.empty()) {
+        for (const SolverKind k : {SolverKind::Continuum, SolverKind::Lattice, SolverKind::Particles})
+            if (summary->kind == to_string(k)) return k;
+        return std::nullopt;
+    }
+    const auto& run = summary->run;
+    if (run.is_object() && run.contains("simulated_time_s")) return SolverKind::Particles;
+    if (run.is_object() && run.contains("lattice")) return SolverKind::Lattice;
+    return SolverKind::Continuum;
+}
+
+std::optional<SolverKind> Collection::kind(const std::string& solver) const {
+    for (const OperatingPoint* p : points)
+        if (const auto k = run(solver, p->id).kind()) return k;
+    return std::nullopt;
+}
+
 std::size_t Collection::count(ResultState state) const {
     return static_cast<std::size_t>(
         std::count_if(runs.begin(), runs.end(), [&](const auto& kv) { return kv.second.status.state == state; }));

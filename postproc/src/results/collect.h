@@ -60,6 +60,10 @@ struct Run {
     std::optional<double> wall_roughness(bool bottom) const;
     // run.walls.<side>.surface of a particle solver ("plane", "bumps"); "" for the others.
     std::string wall_surface(bool bottom) const;
+    // What the results are (granlub/run/solver_info.h): the summary's "kind"; in a summary written
+    // before it was recorded, read from its run block (a particle engine's simulated time, a
+    // lattice's lattice, else a continuum's); nothing without a summary or with a kind not known.
+    std::optional<SolverKind> kind() const;
 
 private:
     std::optional<double> scaled_error(const std::string& name,
@@ -76,6 +80,7 @@ struct Collection {
     const Run& run(const std::string& solver, const std::string& point) const;
     std::vector<const Run*> usable(const std::string& point) const;  // solvers order
     bool any_usable(const std::string& solver) const;
+    std::optional<SolverKind> kind(const std::string& solver) const;  // the first of its runs that says
     std::size_t count(ResultState state) const;
 };
 

@@ -13,7 +13,7 @@ namespace granlub::dem {
 namespace {
 
 BoundKeys<Settings> declare() {
-    BoundKeys<Settings> k(SectionSpec("dem", "particle simulation in LIGGGHTS (granlub-liggghts)"));
+    BoundKeys<Settings> k(SectionSpec(kSolver.name, "particle simulation in LIGGGHTS (granlub-liggghts)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
     s.choice("model", "impulse", contact_law_names(ParticleEngine::Liggghts),
              "contact model (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Liggghts));
