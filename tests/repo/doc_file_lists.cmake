@@ -1,7 +1,8 @@
 # cmake -DSOURCE_DIR=<repository> -P doc_file_lists.cmake
 cmake_minimum_required(VERSION 3.16)
 # Two claims of docs/architecture.md that name files, checked against the code so they cannot drift:
-#   <!-- law-files -->       the files that compare or register a contact law by its name
+#   <!-- law-files -->       the files that compare or register a contact law by its name, how
+#                            many a plugin law is (at most 3) and the YADE driver's laws
 #   <!-- figure-sources -->  the files of postproc that build the report's figures, and the number
 #                            of rows of the figure registry
 # Each list is the backticked paths at the head of each bullet (before its colon) between its markers; the code's list is a git grep over the
@@ -82,10 +83,42 @@ if(NOT names OR NOT ids)
 endif()
 string(REPLACE ";" "|" N "${names}")
 string(REPLACE ";" "|" I "${ids}")
-set(law_pattern "(==|!=) *\"(${N})\"|\"(${N})\" *(==|!=)|(==|!=) *(${I})([^A-Z_]|$)|(^|[^A-Z_])(${I}) *(==|!=)|in \\(\"(${N})\"|add(Normal|Tangential)Model\\(|^(NORMAL|TANGENTIAL)_MODEL\\(|^GRAN_MODEL\\(|^ *ContactLaw\\{\\.name = ")
+set(law_pattern "(==|!=) *\"(${N})\"|\"(${N})\" *(==|!=)|(==|!=) *(${I})([^A-Z_]|$)|(^|[^A-Z_])(${I}) *(==|!=)|in \\(\"(${N})\"|add(Normal|Tangential)Model\\(\"|^(NORMAL|TANGENTIAL)_MODEL\\(|^GRAN_MODEL\\(|^ *ContactLaw\\{\\.name = |^LAWS = ")
 tracked_matching(law_code "${law_pattern}" ":!tests" ":!bench" ":!*.md" ":!*.txt" ":!*.cmake")
 documented(law-files law_doc)
 compare(law-files "names a contact law (${N}; ${I})" "${law_doc}" "${law_code}")
+
+# ---- how many files a plugin law is: the files above but the YADE driver's, at most 3 (a
+# contact law's row and its two LIGGGHTS model headers), and the number the doc says
+set(plugin_law_files "${law_code}")
+list(FILTER plugin_law_files EXCLUDE REGEX "^plugins/yade/")
+list(LENGTH plugin_law_files plugin_law_count)
+if(plugin_law_count GREATER 3)
+  string(APPEND failures "  a plugin contact law is named in ${plugin_law_count} files (at most 3: its row and its two model headers): ${plugin_law_files}\n")
+endif()
+if(doc MATCHES "a new plugin law \\(LIGGGHTS\\) is ([0-9]+) files")
+  if(NOT CMAKE_MATCH_1 EQUAL plugin_law_count)
+    string(APPEND failures "  docs/architecture.md: 'a new plugin law (LIGGGHTS) is ${CMAKE_MATCH_1} files'; the code names one in ${plugin_law_count}\n")
+  endif()
+else()
+  string(APPEND failures "  docs/architecture.md: no 'a new plugin law (LIGGGHTS) is N files'\n")
+endif()
+
+# ---- the YADE driver's laws (granlub_yade.py LAWS) are the table's YADE laws (.yade)
+string(REGEX MATCHALL "\\.yade = \"[a-z_0-9]+\"" yade_rows "${table}")
+set(yade_table "")
+foreach(w IN LISTS yade_rows)
+  string(REGEX REPLACE ".*\"(.*)\"" "\\1" w "${w}")
+  list(APPEND yade_table "${w}")
+endforeach()
+file(STRINGS "${SOURCE_DIR}/plugins/yade/granlub_yade.py" laws_line REGEX "^LAWS = ")
+string(REGEX MATCHALL "\"[a-z_0-9]+\":" yade_driver "${laws_line}")
+string(REGEX REPLACE "[\":]" "" yade_driver "${yade_driver}")
+list(SORT yade_table)
+list(SORT yade_driver)
+if(NOT yade_table STREQUAL yade_driver)
+  string(APPEND failures "  plugins/yade/granlub_yade.py: LAWS has '${yade_driver}'; the contact-law table's YADE laws are '${yade_table}'\n")
+endif()
 
 # ---- the files that build figures outside figures/: a Figure declared, or a figures/ builder called
 set(figure_pattern "(^|[^A-Za-z_])Figure [a-z_]+[;{(]|[a-z_]+_figures?\\((c|col|in)[,)]")

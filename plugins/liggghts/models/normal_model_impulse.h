@@ -77,7 +77,12 @@
     impulse_contacts.h, and fix_impulse_solve.* for iterate on, the default).
 ------------------------------------------------------------------------- */
 
-#ifdef NORMAL_MODEL
+#if defined(GRANLUB_COMBINATIONS)
+// The combinations the plugin registers, in the form of LIGGGHTS' style_contact_model_user.whitelist
+// (the plugin's registration and an in-tree build read these lines: README.md of the plugin).
+GRAN_MODEL(IMPULSE, TANGENTIAL_IMPULSE, COHESION_OFF, ROLLING_OFF, SURFACE_DEFAULT)
+GRAN_MODEL(IMPULSE, TANGENTIAL_OFF, COHESION_OFF, ROLLING_OFF, SURFACE_DEFAULT)
+#elif defined(NORMAL_MODEL)
 NORMAL_MODEL(IMPULSE,impulse,50)
 #else
 #ifndef NORMAL_MODEL_IMPULSE_H_
