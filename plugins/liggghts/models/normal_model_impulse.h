@@ -269,15 +269,7 @@ namespace ContactModels
         i_forces.delta_F[1] += Fa * sidata.en[1];
         i_forces.delta_F[2] += Fa * sidata.en[2];
       } else {
-        const double fx = Fn * sidata.en[0];
-        const double fy = Fn * sidata.en[1];
-        const double fz = Fn * sidata.en[2];
-        i_forces.delta_F[0] += fx;
-        i_forces.delta_F[1] += fy;
-        i_forces.delta_F[2] += fz;
-        j_forces.delta_F[0] -= fx;
-        j_forces.delta_F[1] -= fy;
-        j_forces.delta_F[2] -= fz;
+        add_pair_force(i_forces, j_forces, Fn * sidata.en[0], Fn * sidata.en[1], Fn * sidata.en[2]);
       }
     }
 

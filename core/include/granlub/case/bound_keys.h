@@ -98,6 +98,11 @@ public:
         spec.old_names(std::move(names));
         return *this;
     }
+    // The key declared last's default is neutral (SectionSpec::neutral_default).
+    BoundKeys& neutral_default() {
+        spec.neutral_default();
+        return *this;
+    }
     // The key read instead of the one bound last with --full: declared next, of its type, with its
     // range and unit.
     BoundKeys& full(const std::string& key, double def, const std::string& doc) {
