@@ -101,10 +101,7 @@ BoundKeys<Params> declare() {
 
 }  // namespace
 
-const BoundKeys<Params>& automaton_keys() {
-    static const BoundKeys<Params> keys = declare();
-    return keys;
-}
+const BoundKeys<Params>& automaton_keys() { return keys_once<Params, declare>(); }
 
 SectionSpec section() { return automaton_keys().spec; }
 

@@ -116,10 +116,7 @@ BoundKeys<Settings> declare() {
 
 }  // namespace
 
-const BoundKeys<Settings>& continuum_keys() {
-    static const BoundKeys<Settings> keys = declare();
-    return keys;
-}
+const BoundKeys<Settings>& continuum_keys() { return keys_once<Settings, declare>(); }
 
 SectionSpec section() { return continuum_keys().spec; }
 

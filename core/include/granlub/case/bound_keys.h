@@ -194,4 +194,12 @@ private:
     std::vector<Binding> bindings_;
 };
 
+// The keys a section's declare() builds, built once: the body of each solver's keys function
+// (dem_keys(), ...), whose section() is its spec.
+template <class Settings, BoundKeys<Settings> (*declare)()>
+const BoundKeys<Settings>& keys_once() {
+    static const BoundKeys<Settings> keys = declare();
+    return keys;
+}
+
 }  // namespace granlub

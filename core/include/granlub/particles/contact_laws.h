@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "granlub/case/schema.h"
+
 namespace granlub {
 
 // How a law's time step follows from the case (the engine's settings apply the rule).
@@ -51,6 +53,9 @@ std::vector<std::string> contact_law_names(ParticleEngine e);
 
 // "name = title; ..." of the engine's laws (the model key's doc).
 std::string contact_law_doc(ParticleEngine e);
+
+// The engine's section's `model` key: one of its laws (default `def`), each with its title.
+void add_contact_law_key(SectionSpec& s, ParticleEngine e, std::string def);
 
 // The row of `name` (a value the schema has checked); throws Error for a name not in the table.
 const ContactLaw& contact_law(const std::string& name);

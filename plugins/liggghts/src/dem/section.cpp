@@ -4,6 +4,7 @@
 // builds it).
 #include "granlub/dem/command.h"
 #include "granlub/particles/contact_laws.h"
+#include "granlub/particles/engine_keys.h"
 #include "granlub/particles/particle_section.h"
 #include "granlub/particles/servo.h"
 #include "settings.h"
@@ -15,8 +16,7 @@ namespace {
 BoundKeys<Settings> declare() {
     BoundKeys<Settings> k(SectionSpec(kSolver.name, "particle simulation in LIGGGHTS (granlub-liggghts)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
-    s.choice("model", "impulse", contact_law_names(ParticleEngine::Liggghts),
-             "contact model (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Liggghts));
+    add_contact_law_key(s, ParticleEngine::Liggghts, "impulse");
     k.real("beta0", &Settings::beta0, 0.0, Range::closed(-1, 1), "",
            "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
     k.boolean("separate_overlaps", &Settings::separate, true,
@@ -98,20 +98,14 @@ BoundKeys<Settings> declare() {
     s.real("ring_facet", 0.7, Range::closed(0.05, 5), "",
            "[cell] geometry = annulus: longest facet edge along the ring's circles, in grain diameters (the "
            "meshes' facets per circle follow from the outer wall's circumference; ring_walls = 'mesh' only)");
-    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
-    add_servo_keys(s);     // fill_for_load, servo_plate, plate_mass, servo_every, ... (granlub/particles/servo.h)
-    k.bind("sample_every", &Settings::sample_every).bind("snapshots", &Settings::snapshots);
-    k.bind("stations", &Settings::stations).bind("blocks", &Settings::blocks);
-    s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with yade
+    add_engine_keys(k);  // sampling and servo keys, [particles] (granlub/particles/engine_keys.h)
+    k.bind("snapshots", &Settings::snapshots);
     return k;
 }
 
 }  // namespace
 
-const BoundKeys<Settings>& dem_keys() {
-    static const BoundKeys<Settings> keys = declare();
-    return keys;
-}
+const BoundKeys<Settings>& dem_keys() { return keys_once<Settings, declare>(); }
 
 SectionSpec section() { return dem_keys().spec; }
 
