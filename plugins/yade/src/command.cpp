@@ -57,7 +57,7 @@ nlohmann::json settings_json(const Settings& s) {
 // box, plate limits) and copied into the point folder, so the folder reruns by hand.
 InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingPoint& p, const Settings& s,
                             const fs::path& dir, nlohmann::json& record) {
-    const fs::path from = final_state_path(results_root(c, o), "dem", p.id);
+    const fs::path from = final_state_path(results_root(c, o), kWarmFrom, p.id);
     if (!fs::exists(from))
         throw SolverError(fmt::format("point {}: [yade] start = \"warm\" starts from granlub dem's final state {}, "
                                       "which does not exist: run `granlub dem` on this case first, or set "
@@ -218,7 +218,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    }, at_once, warm ? std::vector<std::string>{"dem"} : std::vector<std::string>{});
+    }, at_once, warm ? std::vector<std::string>{kWarmFrom} : std::vector<std::string>{});
 }
 
 }  // namespace granlub::yade
