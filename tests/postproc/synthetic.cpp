@@ -11,6 +11,12 @@
 
 namespace granlub::test {
 
+Schema synthetic_schema() {
+    Schema s = Schema::common();
+    for (const char* solver : {"continuum", "automaton", "dem", "yade"}) s.add(SectionSpec(solver, ""));
+    return s;
+}
+
 SyntheticCase make_case(const std::string& name, const std::string& extra_toml) {
     SyntheticCase s;
     s.dir = std::filesystem::path(GRANLUB_BINARY_DIR) / "tests" / "postproc-tmp" / name;
@@ -21,7 +27,7 @@ SyntheticCase make_case(const std::string& name, const std::string& extra_toml) 
     text = with("speed = [1.0, 2.0]", "speed = [1.0, 2.0, 4.0]", text);
     text = with("solid_fraction = 0.5", "solid_fraction = 0.52", text);
     std::ofstream(s.dir / "case.toml") << text << extra_toml;
-    s.c = load_case(s.dir, Schema::common());
+    s.c = load_case(s.dir, synthetic_schema());
     s.o.results_root = s.dir / "results";
     return s;
 }
@@ -31,7 +37,7 @@ SyntheticCase edited_case(const std::string& name, const std::string& from, cons
     std::string text = slurp(s.dir / "case.toml");
     text.replace(text.find(from), from.size(), to);
     std::ofstream(s.dir / "case.toml") << text;
-    s.c = load_case(s.dir, Schema::common());
+    s.c = load_case(s.dir, synthetic_schema());
     return s;
 }
 

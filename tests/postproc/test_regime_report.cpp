@@ -34,7 +34,7 @@ test::SyntheticCase grid_case(const std::string& name, const std::string& operat
     std::ofstream(s.dir / "case.toml") << test::with(
         "[operating]\nspeed = [1.0, 2.0]\ncontrol = \"fill\"\nsolid_fraction = 0.5\nnormal_stress = 1000.0\n",
         "[operating]\ncontrol = \"load\"\nsolid_fraction = 0.55\n" + operating);
-    s.c = load_case(s.dir, Schema::common());
+    s.c = load_case(s.dir, test::synthetic_schema());
     s.o.results_root = s.dir / "results";
     return s;
 }

@@ -78,12 +78,12 @@ void add_load_target(const Collection& col, Figure& f) {
 }  // namespace
 
 int solver_style(const Collection& col, const std::string& solver) {
-    const auto known = std::find(std::begin(kKnownSolvers), std::end(kKnownSolvers), solver);
-    if (known != std::end(kKnownSolvers)) return static_cast<int>(known - std::begin(kKnownSolvers));
-    int k = 4;
+    const auto known = std::find(col.known.begin(), col.known.end(), solver);
+    if (known != col.known.end()) return static_cast<int>(known - col.known.begin());
+    int k = static_cast<int>(col.known.size());
     for (const auto& s : col.solvers) {
         if (s == solver) return k;
-        if (std::find(std::begin(kKnownSolvers), std::end(kKnownSolvers), s) == std::end(kKnownSolvers)) ++k;
+        if (std::find(col.known.begin(), col.known.end(), s) == col.known.end()) ++k;
     }
     return k;
 }

@@ -115,8 +115,9 @@ std::string text_table(const Table& t) {
 std::vector<LockRequest> compare_locks(const Case& c, const RunOptions& o) {
     const auto root = results_root(c, o);
     std::vector<LockRequest> locks{{root, "report", LockMode::Exclusive}};
-    for (const char* s : kKnownSolvers) locks.push_back({root, s, LockMode::Shared});
-    for (const auto& s : result_solvers(root)) locks.push_back({root, s, LockMode::Shared});  // duplicates: one lock
+    const std::vector<std::string> known = known_solvers(c);
+    for (const auto& s : known) locks.push_back({root, s, LockMode::Shared});
+    for (const auto& s : result_solvers(known, root)) locks.push_back({root, s, LockMode::Shared});  // duplicates: one lock
     if (const auto slice = slice_results_root(c)) locks.push_back({*slice, kRingSolver, LockMode::Shared});
     return locks;
 }
