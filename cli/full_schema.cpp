@@ -8,7 +8,7 @@ namespace granlub::cli {
 // builds this schema from the solvers' section files alone (tests/core/fuzz).
 Schema full_schema() {
     Schema s = Schema::common();
-#define GRANLUB_SOLVER(name, doc, engine) s.add(name::section());
+#define GRANLUB_SOLVER(module) s.add(module::section());
 #include "solvers.h"
 #undef GRANLUB_SOLVER
     return s;

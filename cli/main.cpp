@@ -42,7 +42,7 @@ struct Args {
     granlub::cli::SlurmOptions slurm;        // granlub slurm
 };
 
-// `granlub continuum CASE --map`: the (U, P) map instead of the case's points (continuum/command.h).
+// `granlub <solver> CASE --map` of a solver with a map (its kSolver.map; the continuum's: continuum/command.h).
 void add_map_options(CLI::App* sub, Args& a) {
     auto* map = sub->add_flag("--map", a.map,
                               "instead of the case's points, solve its (U, P) map: U 0.4-2.8 m/s x P 1-8 kPa with the "
@@ -242,7 +242,7 @@ int run_case_command(const CaseCommands& cmd, const Args& a) {
         for (const auto& [sub, m] : cmd.solvers)
             if (sub->parsed()) {
                 granlub::cli::check_input(*m, c, a.opt);  // bad input fails here, exit 2, before any point runs
-                if (a.map) return granlub::cli::continuum_map(c, a.opt, a.map_grid[0], a.map_grid[1]);
+                if (a.map) return m->info.map(c, a.opt, a.map_grid[0], a.map_grid[1]);
                 return m->run(c, a.opt);
             }
         if (cmd.compare && cmd.compare->parsed()) return granlub::cli::compare(c, a.opt);
@@ -287,10 +287,10 @@ int main(int argc, char** argv) {
     keys.add(app);
 
     for (const auto& m : granlub::cli::solver_modules()) {
-        auto* sub = app.add_subcommand(m.name, m.description);
+        auto* sub = app.add_subcommand(m.name, m.info.description);
         add_case(sub, a);
-        add_run_options(sub, a, granlub::cli::takes_seed(m), granlub::cli::takes_ranks(m));
-        if (m.name == "continuum" && granlub::cli::have_continuum()) add_map_options(sub, a);
+        add_run_options(sub, a, m.info.seeded, m.info.ranks);
+        if (m.info.map) add_map_options(sub, a);
         cmd.solvers.emplace_back(sub, &m);
     }
 

@@ -20,7 +20,7 @@ namespace granlub::cli {
 const std::vector<SolverModule>& solver_modules() {
     static const std::vector<SolverModule> modules = [] {
         std::vector<SolverModule> m;
-#define GRANLUB_SOLVER(name, doc, engine) m.push_back({#name, doc, name::run, name::check, engine});
+#define GRANLUB_SOLVER(module) m.push_back({module::kSolver, module::kSolver.name, module::run, module::check});
 #include "solvers.h"
 #undef GRANLUB_SOLVER
         registry_checked(m, "solver");
@@ -38,17 +38,6 @@ void check_input(const SolverModule& m, const Case& c, const RunOptions& o) {
     }
 }
 
-bool takes_seed(const SolverModule& m) { return m.name != "continuum"; }
-bool takes_ranks(const SolverModule& m) { return m.name == "dem"; }
-
-int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads) {
-#ifdef GRANLUB_HAVE_CONTINUUM
-    return continuum::run_map(c, o, speeds, loads);
-#else
-    (void)c, (void)o, (void)speeds, (void)loads;
-    throw Error("granlub was built without the continuum module: no map");
-#endif
-}
 
 int continuum_fit(const Case& c, const ContinuumFitArgs& a) {
 #ifdef GRANLUB_HAVE_CONTINUUM

@@ -5,25 +5,22 @@
 #include <vector>
 
 #include "granlub/case/case.h"
+#include "granlub/run/solver_info.h"
 #include "granlub/run/sweep.h"
 
 namespace granlub::cli {
 
 struct SolverModule {
-    std::string name;         // subcommand and results folder name
-    std::string description;
+    SolverInfo info;   // what the solver is (its kSolver row)
+    std::string name;  // info.name: subcommand and results folder name
     std::function<int(const Case&, const RunOptions&)> run;
     std::function<void(const Case&, const RunOptions&)> check;  // what run would reject, without running
-    bool engine = false;  // its points are engine processes (solvers.h)
 };
 
 const std::vector<SolverModule>& solver_modules();
 // m.check(c, o) before any run: bad input throws (CaseError, exit 2); a point m cannot run does not
 // (its run names it and goes on with the other points).
 void check_input(const SolverModule& m, const Case& c, const RunOptions& o);
-// Whether `granlub <m>` takes --seed (its runs are random) and --np (MPI ranks: dem's LIGGGHTS).
-bool takes_seed(const SolverModule& m);
-bool takes_ranks(const SolverModule& m);
 // `granlub check` after the case parses: every compiled solver's check() on every point (quick
 // and --full run lengths). One line per solver; returns 2 when any finds bad input (the error
 // names it); points a solver cannot run (e.g. a smooth wall in the continuum) are warnings.
@@ -31,16 +28,15 @@ int check_solvers(const Case& c, const RunOptions& o);
 // `granlub compare` if postproc is compiled in; otherwise throws.
 int compare(const Case& c, const RunOptions& o);
 bool have_compare();
-// `granlub continuum CASE --map` if the continuum is compiled in (continuum/command.h run_map); otherwise throws.
-int continuum_map(const Case& c, const RunOptions& o, int speeds, int loads);
-// `granlub continuum-fit CASE --table FILE` likewise (continuum/command.h run_fit).
+// `granlub continuum-fit CASE --table FILE` if the continuum is compiled in (continuum/command.h run_fit);
+// otherwise throws.
 struct ContinuumFitArgs {
     std::string table, out;
     std::vector<std::string> free;
     bool temperature = false;
 };
 int continuum_fit(const Case& c, const ContinuumFitArgs& a);
-bool have_continuum();  // whether the continuum is compiled in (its --map and continuum-fit)
+bool have_continuum();  // whether the continuum is compiled in (its continuum-fit)
 // The closing table of `granlub run`: one row per solver and point (postproc's summary table when
 // postproc is built in, else the mean solid fraction and wall stresses read from the summaries).
 void closing_table(const Case& c, const RunOptions& o);

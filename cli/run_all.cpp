@@ -28,7 +28,7 @@ bool side_by_side_allowed(const RunOptions& o) { return o.np <= 1 && o.threads <
 std::vector<std::vector<const SolverModule*>> stages_of(const std::vector<const SolverModule*>& mods, bool together) {
     std::vector<std::vector<const SolverModule*>> stages;
     for (const auto* m : mods) {
-        if (together && m->engine && !stages.empty() && stages.back().back()->engine)
+        if (together && m->info.engine && !stages.empty() && stages.back().back()->info.engine)
             stages.back().push_back(m);
         else
             stages.push_back({m});

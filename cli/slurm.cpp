@@ -70,7 +70,7 @@ Plan plan_of(const Case& c, const RunOptions& o, const SlurmOptions& s) {
     Plan p;
     for (const auto& m : solver_modules())
         if (s.solvers.empty() || std::find(s.solvers.begin(), s.solvers.end(), m.name) != s.solvers.end())
-            (m.engine ? p.engines : p.others).push_back(&m);
+            (m.info.engine ? p.engines : p.others).push_back(&m);
     if (p.engines.empty() && p.others.empty()) throw CaseError("--solvers: no solver selected (and none compiled in)");
     for (const auto& id : s.points)
         for (const OperatingPoint* q : c.select(id))  // an unknown id: CaseError naming the case's ids
@@ -110,8 +110,8 @@ std::string common_args(const SolverModule& m, const RunOptions& o, const Plan& 
     std::string out;
     if (o.full) out += " --full";
     if (o.force) out += " --force";
-    if (o.seed && takes_seed(m) && (p.seeds.size() <= 1 || !m.engine)) out += fmt::format(" --seed {}", *o.seed);
-    if (o.np > 1 && takes_ranks(m)) out += fmt::format(" --np {}", o.np);
+    if (o.seed && m.info.seeded && (p.seeds.size() <= 1 || !m.info.engine)) out += fmt::format(" --seed {}", *o.seed);
+    if (o.np > 1 && m.info.ranks) out += fmt::format(" --np {}", o.np);
     return out;
 }
 
@@ -120,7 +120,7 @@ std::string array_script(const SolverModule& m, const Case& c, const RunOptions&
     std::vector<std::string> ids, seeds;
     for (const auto* q : p.points) ids.push_back(sh(q->id));
     for (const auto v : p.seeds) seeds.push_back(std::to_string(v));
-    const int ranks = takes_ranks(m) ? std::max(1, o.np) : 1;
+    const int ranks = m.info.ranks ? std::max(1, o.np) : 1;
     std::string out = header(c, s, fmt::format("The {} runs of the case {} as a Slurm job array: {} point(s) x {} seed(s) = "
                                                "{} task(s), task i runs point i / seeds with seed i % seeds.",
                                                m.name, c.name, p.points.size(), p.seeds_per_point(), p.tasks()));
@@ -199,7 +199,7 @@ int slurm_jobs(const Case& c, const RunOptions& o, const SlurmOptions& s) {
     const fs::path granlub = fs::read_symlink("/proc/self/exe");
     fs::create_directories(dir / "logs");
     for (const auto& m : solver_modules())  // the folder holds this plan only
-        if (m.engine && !p.runs(m.name)) fs::remove(dir / (m.name + ".sbatch"));
+        if (m.info.engine && !p.runs(m.name)) fs::remove(dir / (m.name + ".sbatch"));
     for (const auto* m : p.engines)
         write_file_atomic(dir / (m->name + ".sbatch"), array_script(*m, c, o, s, p, granlub, results));
     const bool last = last_job(p);

@@ -4,13 +4,14 @@
 
 #include <fmt/format.h>
 
+#include "granlub/automaton/command.h"
 #include "granlub/automaton/keys.h"
 #include "granlub/error.h"
 
 namespace granlub::automaton {
 
 Mapping resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
-    const Section& s = c.section("automaton");
+    const Section& s = c.section(kSolver.name);
     const std::string src = c.file.string();
     const double d = c.grains.diameter;
     Mapping m;

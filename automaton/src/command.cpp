@@ -217,7 +217,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& pt, const RunOption
     PointResult out;
     out.profile = make_profile(r, nu_max);
     Summary& s = out.summary;
-    s = make_summary(c, pt, "automaton", prm.run.seed);
+    s = make_summary(c, pt, kSolver, prm.run.seed);
     s.provenance.settings = settings_json(prm);
     put_wall_values(s, r, U, c.grains.density * nu_max * U * U);
     const double occupancy = static_cast<double>(r.particles) / (static_cast<double>(r.rows) * r.columns);
@@ -240,7 +240,7 @@ void check(const Case& c, const RunOptions& o) {
 }
 
 int run(const Case& c, const RunOptions& o) {
-    return run_sweep(c, "automaton", o,
+    return run_sweep(c, kSolver.name, o,
                      [&](const OperatingPoint& p, const std::filesystem::path& dir) { return solve_point(c, p, o, dir); });
 }
 

@@ -9,6 +9,7 @@
 #include "granlub/case/particle_box.h"
 #include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/closures/effective_restitution.h"
+#include "granlub/continuum/command.h"
 #include "granlub/continuum/cross_section_setup.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
@@ -84,7 +85,7 @@ void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, doub
 }  // namespace
 
 Settings resolve_settings(const Case& c) {
-    const Section& sec = c.section("continuum");
+    const Section& sec = c.section(kSolver.name);
     Settings s;
     continuum_keys().read(s, sec);  // the plain keys (section.cpp)
     s.method = sec.string("method") == "shooting" ? Method::Shooting : Method::FiniteVolume;
@@ -213,7 +214,7 @@ double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p,
 }
 
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
-    const Section& sec = c.section("continuum");
+    const Section& sec = c.section(kSolver.name);
     Problem q;
     q.closures = s.closures;
     if (s.contact.active()) {  // pi_c = p_c/P_y at this point's load (§2.9)
@@ -346,7 +347,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
         .add("temperature_over_U2", T_over_U2);
 
     Summary& m = r.summary;
-    m = make_summary(c, p, "continuum");
+    m = make_summary(c, p, kSolver);
     m.set("normal_stress_bottom", P, "Pa").set("normal_stress_top", P, "Pa");
     m.set("shear_stress_bottom", tau_b, "Pa").set("shear_stress_top", tau_t, "Pa");
     m.set("slip_bottom", U * o.slip_bottom, "m/s").set("slip_top", U * o.slip_top, "m/s");

@@ -15,7 +15,7 @@ void check(const Case& c, const RunOptions& o) {
 
 int run(const Case& c, const RunOptions& o) {
     const Settings s = resolve_settings(c);
-    return run_sweep(c, "continuum", o, [&](const OperatingPoint& p, const std::filesystem::path& dir) {
+    return run_sweep(c, kSolver.name, o, [&](const OperatingPoint& p, const std::filesystem::path& dir) {
         return s.cross_section ? solve_cross_section_point(c, p, s, dir) : solve_point(c, p, s);
     });
 }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "granlub/case/wall_bumps.h"
+#include "granlub/continuum/command.h"
 #include "granlub/continuum/cross_section_solver.h"
 #include "granlub/particles/cross_section.h"
 #include "granlub/error.h"
@@ -20,7 +21,7 @@ namespace granlub::continuum {
 constexpr double kCellsPerDiameter = 4.0;
 
 void resolve_cross_section_settings(const Case& c, Settings& s) {
-    const Section& sec = c.section("continuum");
+    const Section& sec = c.section(kSolver.name);
     s.cross_section = sec.string("geometry") == "cross_section";
     // cells_y, cells_z and side_roughness are plain keys, read with the others (section.cpp); these are the checks.
     s.body_forces = sec.string("body_forces") == "on";
@@ -184,7 +185,7 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
         .add("temperature_over_U2", T_over_U2);
 
     Summary& m = r.summary;
-    m = make_summary(c, p, "continuum");
+    m = make_summary(c, p, kSolver);
     const auto& fl = o.walls[0];
     const auto& tp = o.walls[1];
     const auto& ou = o.walls[2];

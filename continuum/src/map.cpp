@@ -24,7 +24,7 @@ std::string continuum_map_csv(const Case& c, const MapGrid& g, MapStats* stats) 
         throw Error("continuum map: the grid needs >= 1 speed and load, positive and ordered bounds");
     const Settings s = resolve_settings(c);
     if (s.cross_section)  // the map is the 1-D gap's; a cross-section point costs ~0.25 s, a 100 x 100 map 40 min
-        c.section("continuum").fail("geometry", "the (U, P) map solves the 1-D gap; geometry = \"cross_section\" has "
+        c.section(kSolver.name).fail("geometry", "the (U, P) map solves the 1-D gap; geometry = \"cross_section\" has "
                                                 "no map (allowed: \"gap\" for --map)");
     const auto t0 = std::chrono::steady_clock::now();
     MapStats st;
@@ -75,7 +75,7 @@ std::string continuum_map_csv(const Case& c, const MapGrid& g, MapStats* stats) 
 std::filesystem::path write_continuum_map(const Case& c, const MapGrid& g, const std::filesystem::path& results_root,
                                           MapStats* stats) {
     const std::string csv = continuum_map_csv(c, g, stats);
-    const auto path = results_root / "continuum" / "map.csv";
+    const auto path = results_root / kSolver.name / "map.csv";
     std::filesystem::create_directories(path.parent_path());
     write_file_atomic(path, csv);
     return path;

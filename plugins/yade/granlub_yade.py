@@ -72,8 +72,8 @@ def load_params(path):
         raise ParamError("%s: format is %r, this driver reads %r" % (path, p.get("format"), FORMAT))
     if p.get("task") not in ("couette", "collision"):
         raise ParamError("%s: task = %r (allowed: couette, collision)" % (path, p.get("task")))
-    if p.get("model") not in ("viscel", "hertz"):
-        raise ParamError("%s: model = %r (allowed: viscel, hertz)" % (path, p.get("model")))
+    if p.get("model") not in LAWS:
+        raise ParamError("%s: model = %r (allowed: %s)" % (path, p.get("model"), ", ".join(LAWS)))
     g = p.get("grains", {})
     for k in ("diameter", "density", "youngs_modulus"):
         need(g, k, "grains", positive=True)
@@ -89,12 +89,7 @@ def load_params(path):
         need(m, "friction", "materials." + name, non_negative=True)
     c = p.get("contact", {})
     need(c, "dt", "contact", positive=True)
-    if p["model"] == "viscel":
-        need(c, "contact_time", "contact", positive=True)
-        et = need(c, "tangential_restitution", "contact")
-        if not 0 < et <= 1:
-            raise ParamError("contact.tangential_restitution = %r: allowed (0, 1]" % et)
-        need(c, "wall_mass", "contact", positive=True)
+    LAWS[p["model"]].check(c)
     if p["task"] == "couette":
         cell = p.get("cell", {})
         for k in ("gap", "length", "width"):
@@ -227,25 +222,95 @@ def calibrate_viscel(p):
     return en
 
 
+class ViscEl:
+    """YADE's ViscElMat linear spring-dashpot (Pournin et al. 2001) with small e_t: the closest to
+    the impulse operator."""
+
+    @staticmethod
+    def check(c):
+        need(c, "contact_time", "contact", positive=True)
+        et = need(c, "tangential_restitution", "contact")
+        if not 0 < et <= 1:
+            raise ParamError("contact.tangential_restitution = %r: allowed (0, 1]" % et)
+        need(c, "wall_mass", "contact", positive=True)
+
+    @staticmethod
+    def calibrate(p):
+        return calibrate_viscel(p) if p["contact"].get("calibrate", True) else None
+
+    @staticmethod
+    def material(p, name):
+        c = p["contact"]
+        return ViscElMat(tc=c["contact_time"], en=0.9, et=c["tangential_restitution"], frictionAngle=0.0,
+                         density=p["grains"]["density"], label=name)
+
+    @staticmethod
+    def functors(p, pairs, fric, en_override):
+        # Law2_ScGeom_ViscElPhys_Basic: kn = m*(pi^2 + ln^2 en)/tc^2, cn = -2 m* ln(en)/tc
+        # (Pournin et al. 2001); the tangential dashpot with et -> 0 stops sliding at zero slip,
+        # as in Walton's operator with beta0 = 0 (docs/yade-notes.md §3).
+        mats = p["materials"]
+        en = en_override if en_override is not None else {n: mats[n]["restitution"] for n in mats}
+        ip2 = Ip2_ViscElMat_ViscElMat_ViscElPhys(en=MatchMaker(matches=pairs(lambda n: en[n]), algo="avg"),
+                                                 frictAngle=MatchMaker(matches=pairs(fric), algo="avg"))
+        return ip2, Law2_ScGeom_ViscElPhys_Basic()
+
+    @staticmethod
+    def wall_mass(p):
+        # ViscElMat needs a wall mass: with mass 0 the reduced mass becomes m/2 and e is wrong
+        # (docs/yade-notes.md §3: 0.9285 instead of 0.9).
+        return p["contact"]["wall_mass"]
+
+
+class Hertz:
+    """Hertz-Mindlin with Tsuji damping, the LIGGGHTS hertz/history form."""
+
+    @staticmethod
+    def check(c):
+        pass
+
+    @staticmethod
+    def calibrate(p):
+        return None
+
+    @staticmethod
+    def material(p, name):
+        g = p["grains"]
+        E, nu = g["youngs_modulus"], g["poisson_ratio"]
+        Ew, vw = hertz_wall_material(E, nu)
+        return FrictMat(young=E if name == "grain" else Ew, poisson=nu if name == "grain" else vw,
+                        frictionAngle=0.0, density=g["density"], label=name)
+
+    @staticmethod
+    def functors(p, pairs, fric, en_override):
+        # Hertz-Mindlin with Tsuji et al. (1992) damping, the LIGGGHTS hertz/history form:
+        # alpha = -sqrt(5/6) 2 ln e / sqrt(ln^2 e + pi^2) sqrt(2 E* sqrt(R*)), cn = alpha sqrt(m*) delta^1/4.
+        mats = p["materials"]
+        e = lambda n: mats[n]["restitution"]
+        ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(matches=pairs(e), algo="avg"),
+                                                es=MatchMaker(matches=pairs(e), algo="avg"),
+                                                frictAngle=MatchMaker(matches=pairs(fric), algo="avg"))
+        return ip2, Law2_ScGeom_MindlinPhys_Mindlin()
+
+    @staticmethod
+    def wall_mass(p):
+        return None
+
+
+# The laws, by their YADE spelling in granlub's contact-law table (core/src/particles/contact_laws.cpp,
+# .yade), which `granlub yade` writes as params.json's "model"; the repo_doc_file_lists test checks
+# that these are the table's YADE laws.
+LAWS = {"viscel": ViscEl, "hertz": Hertz}
+
+
 def build_materials(p, en_override=None):
     """Materials grain/bottom/top/side and the engines' InteractionLoop functors."""
-    g = p["grains"]
-    mats = p["materials"]
-    E, nu, rho = g["youngs_modulus"], g["poisson_ratio"], g["density"]
+    law = LAWS[p["model"]]
     ids = {}
-    if p["model"] == "viscel":
-        c = p["contact"]
-        for name in ("grain",) + WALLS:
-            ids[name] = O.materials.append(ViscElMat(tc=c["contact_time"], en=0.9,
-                                                     et=c["tangential_restitution"],
-                                                     frictionAngle=0.0, density=rho, label=name))
-    else:
-        Ew, vw = hertz_wall_material(E, nu)
-        for name in ("grain",) + WALLS:
-            ids[name] = O.materials.append(FrictMat(young=E if name == "grain" else Ew,
-                                                    poisson=nu if name == "grain" else vw,
-                                                    frictionAngle=0.0, density=rho, label=name))
+    for name in ("grain",) + WALLS:
+        ids[name] = O.materials.append(law.material(p, name))
     gid = ids["grain"]
+    mats = p["materials"]
 
     def pairs(value_of):
         m = [(gid, gid, value_of("grain"))]
@@ -256,32 +321,21 @@ def build_materials(p, en_override=None):
     def fric(name):
         return math.atan(mats[name]["friction"])
 
-    if p["model"] == "viscel":
-        # Law2_ScGeom_ViscElPhys_Basic: kn = m*(pi^2 + ln^2 en)/tc^2, cn = -2 m* ln(en)/tc
-        # (Pournin et al. 2001); the tangential dashpot with et -> 0 stops sliding at zero slip,
-        # as in Walton's operator with beta0 = 0 (docs/yade-notes.md §3).
-        en = en_override if en_override is not None else {n: mats[n]["restitution"] for n in mats}
-        ip2 = Ip2_ViscElMat_ViscElMat_ViscElPhys(en=MatchMaker(matches=pairs(lambda n: en[n]), algo="avg"),
-                                                 frictAngle=MatchMaker(matches=pairs(fric), algo="avg"))
-        law = Law2_ScGeom_ViscElPhys_Basic()
-    else:
-        # Hertz-Mindlin with Tsuji et al. (1992) damping, the LIGGGHTS hertz/history form:
-        # alpha = -sqrt(5/6) 2 ln e / sqrt(ln^2 e + pi^2) sqrt(2 E* sqrt(R*)), cn = alpha sqrt(m*) delta^1/4.
-        e = lambda n: mats[n]["restitution"]
-        ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(matches=pairs(e), algo="avg"),
-                                                es=MatchMaker(matches=pairs(e), algo="avg"),
-                                                frictAngle=MatchMaker(matches=pairs(fric), algo="avg"))
-        law = Law2_ScGeom_MindlinPhys_Mindlin()
-    return ids, ip2, law
+    ip2, law2 = law.functors(p, pairs, fric, en_override)
+    return ids, ip2, law2
 
 
 def wall_box(center, half, mat, p):
     b = utils.box(center=center, extents=half, fixed=True, material=mat, color=(0.5, 0.5, 0.5))
-    if p["model"] == "viscel":
-        # ViscElMat needs a wall mass: with mass 0 the reduced mass becomes m/2 and e is wrong
-        # (docs/yade-notes.md §3: 0.9285 instead of 0.9).
-        b.state.mass = p["contact"]["wall_mass"]
+    give_wall_mass(b, p)
     return O.bodies.append(b)
+
+
+def give_wall_mass(b, p):
+    """A fixed wall body's mass, where its law needs one (ViscEl.wall_mass)."""
+    mass = LAWS[p["model"]].wall_mass(p)
+    if mass is not None:
+        b.state.mass = mass
 
 
 # ---------------------------------------------------------------------------------------------
@@ -294,7 +348,7 @@ def collide(p, en, wall_name, vn=1.0):
     O.reset()
     d = p["grains"]["diameter"]
     r = 0.5 * d
-    ids, ip2, law = build_materials(p, en if p["model"] == "viscel" else None)
+    ids, ip2, law = build_materials(p, en)
     gap = 0.05 * d
     if wall_name is None:
         a = O.bodies.append(utils.sphere((0, 0, 0), r, material=ids["grain"], color=(0, 0, 1)))
@@ -327,7 +381,7 @@ def collide(p, en, wall_name, vn=1.0):
 def run_collision(p):
     out = p["output_dir"]
     result = {"format": FORMAT, "task": "collision", "model": p["model"], "yade_version": yade.config.version}
-    en = calibrate_viscel(p) if p["model"] == "viscel" and p["contact"].get("calibrate", True) else None
+    en = LAWS[p["model"]].calibrate(p)
     if en is not None:
         result["en"] = en
     vn = float(p.get("impact_speed", 1.0))
@@ -403,7 +457,7 @@ class Couette:
         self.U, self.g, self.Ra = p["wall_speed"], p["gravity"], p["annulus_radius"]
         self.d = p["grains"]["diameter"]
         self.run = p["run"]
-        self.en = calibrate_viscel(p) if p["model"] == "viscel" and p["contact"].get("calibrate", True) else None
+        self.en = LAWS[p["model"]].calibrate(p)
         self.grains = read_initial(p["initial_file"])
         self.servo = p.get("servo")
         self.top_max = self.servo["gap_max"] if self.servo else self.H  # highest top-wall position
@@ -495,8 +549,7 @@ class Couette:
                     b = utils.sphere(centre(x, a), 0.5 * layer["diameter"], material=self.ids[material[side]],
                                      fixed=True, color=(0.5, 0.5, 0.5))
                     b.groupMask = masks[side]
-                    if self.p["model"] == "viscel":
-                        b.state.mass = self.p["contact"]["wall_mass"]  # as the wall boxes (reduced mass m)
+                    give_wall_mass(b, self.p)  # as the wall boxes (reduced mass m)
                     b.state.vel = Vector3(vx, 0, 0)
                     bumps[side].append(O.bodies.append(b))
 

@@ -11,6 +11,12 @@
 
 namespace granlub::test {
 
+Schema synthetic_schema() {
+    Schema s = Schema::common();
+    for (const char* solver : {"continuum", "automaton", "dem", "yade"}) s.add(SectionSpec(solver, ""));
+    return s;
+}
+
 SyntheticCase make_case(const std::string& name, const std::string& extra_toml) {
     SyntheticCase s;
     s.dir = std::filesystem::path(GRANLUB_BINARY_DIR) / "tests" / "postproc-tmp" / name;
@@ -21,7 +27,7 @@ SyntheticCase make_case(const std::string& name, const std::string& extra_toml) 
     text = with("speed = [1.0, 2.0]", "speed = [1.0, 2.0, 4.0]", text);
     text = with("solid_fraction = 0.5", "solid_fraction = 0.52", text);
     std::ofstream(s.dir / "case.toml") << text << extra_toml;
-    s.c = load_case(s.dir, Schema::common());
+    s.c = load_case(s.dir, synthetic_schema());
     s.o.results_root = s.dir / "results";
     return s;
 }
@@ -31,7 +37,7 @@ SyntheticCase edited_case(const std::string& name, const std::string& from, cons
     std::string text = slurp(s.dir / "case.toml");
     text.replace(text.find(from), from.size(), to);
     std::ofstream(s.dir / "case.toml") << text;
-    s.c = load_case(s.dir, Schema::common());
+    s.c = load_case(s.dir, synthetic_schema());
     return s;
 }
 
@@ -40,6 +46,7 @@ void write_solver(const SyntheticCase& s, const std::string& solver) {
         const double U = p.speed;
         std::vector<double> y, u, nu, T, se;
         Summary sum = make_summary(s.c, p, solver, solver == "continuum" ? std::nullopt : std::optional<std::uint64_t>(7));
+        sum.kind = solver == "continuum" ? "continuum" : solver == "automaton" ? "lattice" : "particles";
         if (solver == "continuum") {
             for (int k = 0; k <= 40; ++k) y.push_back(k / 40.0);
             for (double v : y) u.push_back(0.9 - 0.8 * v), nu.push_back(0.65 * (0.8 + 0.1 * v)), T.push_back(0.01);

@@ -20,6 +20,9 @@ struct SyntheticCase {
     RunOptions o;  // results_root = dir/results
 };
 SyntheticCase make_case(const std::string& name, const std::string& extra_toml = "");
+// The common sections and one empty section per solver, in `granlub run` order (continuum,
+// automaton, dem, yade): the solvers the report knows (postproc known_solvers).
+Schema synthetic_schema();
 // make_case with `from` replaced by `to` in its case.toml (e.g. "width = 0.0" by "width = 0.01").
 SyntheticCase edited_case(const std::string& name, const std::string& from, const std::string& to);
 

@@ -34,7 +34,7 @@ test::SyntheticCase grid_case(const std::string& name, const std::string& operat
     std::ofstream(s.dir / "case.toml") << test::with(
         "[operating]\nspeed = [1.0, 2.0]\ncontrol = \"fill\"\nsolid_fraction = 0.5\nnormal_stress = 1000.0\n",
         "[operating]\ncontrol = \"load\"\nsolid_fraction = 0.55\n" + operating);
-    s.c = load_case(s.dir, Schema::common());
+    s.c = load_case(s.dir, test::synthetic_schema());
     s.o.results_root = s.dir / "results";
     return s;
 }
@@ -48,6 +48,7 @@ void write_results(const test::SyntheticCase& s) {
             const bool dem = solver == std::string("dem"), lattice = solver == std::string("automaton");
             const double P = p.normal_stress, U = p.speed;
             Summary sum = make_summary(s.c, p, solver, dem ? std::optional<std::uint64_t>(7) : std::nullopt);
+            sum.kind = dem ? "particles" : lattice ? "lattice" : "continuum";
             const double tau = dem ? 0.4 * P : 50 * U * U;
             sum.set("normal_stress_bottom", P * 1.02, "Pa").set("normal_stress_top", P, "Pa");
             sum.set("shear_stress_bottom", tau, "Pa").set("shear_stress_top", tau, "Pa");

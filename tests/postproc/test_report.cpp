@@ -142,7 +142,7 @@ BOOST_AUTO_TEST_CASE(stale_results_are_named_and_left_out) {
     auto changed = test::make_case("report_stale_all");
     test::write_solver(changed, "continuum");
     std::ofstream(changed.dir / "case.toml", std::ios::app) << "\n[body_forces]\ngravity = 1.5\n";
-    const Case c2 = load_case(changed.dir, Schema::common());
+    const Case c2 = load_case(changed.dir, test::synthetic_schema());
     BOOST_CHECK_EXCEPTION(postproc::compare(c2, changed.o), Error, [](const Error& e) {
         return std::string(e.what()).find("no usable results") != std::string::npos;
     });
@@ -219,7 +219,7 @@ BOOST_AUTO_TEST_CASE(cross_section_maps_where_a_particle_run_has_one) {
         std::string text = test::slurp(s.dir / "case.toml");
         text.replace(text.find("width = 0.0"), 11, "width = 0.01");
         std::ofstream(s.dir / "case.toml") << text;
-        s.c = load_case(s.dir, Schema::common());
+        s.c = load_case(s.dir, test::synthetic_schema());
     }
     for (const char* solver : {"continuum", "dem"}) test::write_solver(s, solver);
     // 3 x 4 cells, grains packed toward the floor and the outer wall (z/W = -1/2)

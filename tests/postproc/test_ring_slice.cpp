@@ -26,7 +26,7 @@ test::SyntheticCase trough_case(const std::string& name, bool ring, const std::s
                            std::string("width = 10.0e-3\nannulus_radius = 0.05\n") + (ring ? "geometry = \"annulus\"\n" : "")) +
         report;
     std::ofstream(s.dir / "case.toml") << text;
-    s.c = load_case(s.dir, Schema::common());
+    s.c = load_case(s.dir, test::synthetic_schema());
     return s;
 }
 

@@ -1,7 +1,8 @@
 # cmake -DSOURCE_DIR=<repository> -P doc_file_lists.cmake
 cmake_minimum_required(VERSION 3.16)
 # Two claims of docs/architecture.md that name files, checked against the code so they cannot drift:
-#   <!-- law-files -->       the files that compare or register a contact law by its name
+#   <!-- law-files -->       the files that compare or register a contact law by its name, how
+#                            many a plugin law is (at most 3) and the YADE driver's laws
 #   <!-- figure-sources -->  the files of postproc that build the report's figures, and the number
 #                            of rows of the figure registry
 # Each list is the backticked paths at the head of each bullet (before its colon) between its markers; the code's list is a git grep over the
@@ -37,6 +38,22 @@ function(documented mark out)
   set(${out} "${files}" PARENT_SCOPE)
 endfunction()
 
+# The quoted values of the matches of `regex` in `text` (`.name = "x"` -> x).
+function(quoted_values out regex text)
+  string(REGEX MATCHALL "${regex}" hits "${text}")
+  list(TRANSFORM hits REPLACE ".*\"(.*)\".*" "\\1")
+  set(${out} "${hits}" PARENT_SCOPE)
+endfunction()
+
+# A number docs/architecture.md states (`claim`: a regex whose group is the number) against the code's.
+function(doc_number claim actual what)
+  if(NOT doc MATCHES "${claim}")
+    set(failures "${failures}  docs/architecture.md: no '${claim}'\n" PARENT_SCOPE)
+  elseif(NOT CMAKE_MATCH_1 EQUAL actual)
+    set(failures "${failures}  docs/architecture.md: '${CMAKE_MATCH_0}'; ${what}: ${actual}\n" PARENT_SCOPE)
+  endif()
+endfunction()
+
 function(compare mark what documented_files code_files)
   set(msg "")
   foreach(f IN LISTS code_files)
@@ -57,13 +74,8 @@ endfunction()
 # ---- the files that name a contact law: the names, engine spellings and LIGGGHTS model ids of
 # the rows of core/src/particles/contact_laws.cpp, compared (== / !=), registered, listed or made
 file(READ "${SOURCE_DIR}/core/src/particles/contact_laws.cpp" table)
-string(REGEX MATCHALL "\\.(name|yade) = \"[a-z_0-9]+\"" words "${table}")
+quoted_values(names "\\.(name|yade) = \"[a-z_0-9]+\"" "${table}")
 string(REGEX MATCHALL "\\.liggghts = \"[a-z_0-9 ]+\"" spellings "${table}")
-set(names "")
-foreach(w IN LISTS words)
-  string(REGEX REPLACE ".*\"(.*)\"" "\\1" w "${w}")
-  list(APPEND names "${w}")
-endforeach()
 set(ids "")
 foreach(s IN LISTS spellings)
   if(s MATCHES "model ([a-z_0-9]+)")
@@ -82,10 +94,30 @@ if(NOT names OR NOT ids)
 endif()
 string(REPLACE ";" "|" N "${names}")
 string(REPLACE ";" "|" I "${ids}")
-set(law_pattern "(==|!=) *\"(${N})\"|\"(${N})\" *(==|!=)|(==|!=) *(${I})([^A-Z_]|$)|(^|[^A-Z_])(${I}) *(==|!=)|in \\(\"(${N})\"|add(Normal|Tangential)Model\\(|^(NORMAL|TANGENTIAL)_MODEL\\(|^GRAN_MODEL\\(|^ *ContactLaw\\{\\.name = ")
+set(law_pattern "(==|!=) *\"(${N})\"|\"(${N})\" *(==|!=)|(==|!=) *(${I})([^A-Z_]|$)|(^|[^A-Z_])(${I}) *(==|!=)|in \\(\"(${N})\"|add(Normal|Tangential)Model\\(\"|^(NORMAL|TANGENTIAL)_MODEL\\(|^GRAN_MODEL\\(|^ *ContactLaw\\{\\.name = |^LAWS = ")
 tracked_matching(law_code "${law_pattern}" ":!tests" ":!bench" ":!*.md" ":!*.txt" ":!*.cmake")
 documented(law-files law_doc)
 compare(law-files "names a contact law (${N}; ${I})" "${law_doc}" "${law_code}")
+
+# ---- how many files a plugin law is: the files above but the YADE driver's, at most 3 (a
+# contact law's row and its two LIGGGHTS model headers), and the number the doc says
+set(plugin_law_files "${law_code}")
+list(FILTER plugin_law_files EXCLUDE REGEX "^plugins/yade/")
+list(LENGTH plugin_law_files plugin_law_count)
+if(plugin_law_count GREATER 3)
+  string(APPEND failures "  a plugin contact law is named in ${plugin_law_count} files (at most 3: its row and its two model headers): ${plugin_law_files}\n")
+endif()
+doc_number("a new plugin law \\(LIGGGHTS\\) is ([0-9]+) files" ${plugin_law_count} "the files the code names one in")
+
+# ---- the YADE driver's laws (granlub_yade.py LAWS) are the table's YADE laws (.yade)
+quoted_values(yade_table "\\.yade = \"[a-z_0-9]+\"" "${table}")
+file(STRINGS "${SOURCE_DIR}/plugins/yade/granlub_yade.py" laws_line REGEX "^LAWS = ")
+quoted_values(yade_driver "\"[a-z_0-9]+\":" "${laws_line}")
+list(SORT yade_table)
+list(SORT yade_driver)
+if(NOT yade_table STREQUAL yade_driver)
+  string(APPEND failures "  plugins/yade/granlub_yade.py: LAWS has '${yade_driver}'; the contact-law table's YADE laws are '${yade_table}'\n")
+endif()
 
 # ---- the files that build figures outside figures/: a Figure declared, or a figures/ builder called
 set(figure_pattern "(^|[^A-Za-z_])Figure [a-z_]+[;{(]|[a-z_]+_figures?\\((c|col|in)[,)]")
@@ -95,13 +127,7 @@ compare(figure-sources "builds or draws figures" "${figure_doc}" "${figure_code}
 file(READ "${SOURCE_DIR}/postproc/src/figures/registry.cpp" registry)
 string(REGEX MATCHALL "\n *{k[A-Za-z]+Heading," rows "${registry}")
 list(LENGTH rows nrows)
-if(doc MATCHES "the registry has ([0-9]+) rows")
-  if(NOT CMAKE_MATCH_1 EQUAL nrows)
-    string(APPEND failures "  docs/architecture.md: 'the registry has ${CMAKE_MATCH_1} rows'; postproc/src/figures/registry.cpp has ${nrows}\n")
-  endif()
-else()
-  string(APPEND failures "  docs/architecture.md: no 'the registry has N rows' in the figure-sources list\n")
-endif()
+doc_number("the registry has ([0-9]+) rows" ${nrows} "postproc/src/figures/registry.cpp's rows")
 
 if(failures)
   message(FATAL_ERROR "docs/architecture.md's file lists disagree with the code (update the list, or the code):\n${failures}")

@@ -44,8 +44,7 @@ std::vector<SectionSpec> common_sections() {
     w.choice("sides", "plane", {"plane", "as_bottom"},
              "particle solvers' side walls (a slice with width > 0; they move with the bottom wall): plane = smooth "
              "frictional planes; as_bottom = the bottom wall's surface, its bumps laid out on each side wall "
-             "[ASSUMPTION: plane by default; Sawyer & Tichy 2001 do not say which surfaces their rough runs covered]");
-    w.keys.back().neutral_default = true;  // plane sides: what every earlier result was computed with
+             "[ASSUMPTION: plane by default; Sawyer & Tichy 2001 do not say which surfaces their rough runs covered]").neutral_default();
     w.subtables = {"bottom", "top"};
     s.push_back(w);
     for (const char* side : {"bottom", "top"}) {

@@ -131,6 +131,12 @@ SectionSpec& SectionSpec::old_spellings(std::vector<std::pair<std::string, std::
     return *this;
 }
 
+SectionSpec& SectionSpec::neutral_default() {
+    if (keys.empty()) throw Error(fmt::format("internal: [{}] neutral_default() follows a key", name));
+    keys.back().neutral_default = true;
+    return *this;
+}
+
 SectionSpec& SectionSpec::old_names(std::vector<std::string> names) {
     if (keys.empty()) throw Error(fmt::format("internal: [{}] old_names() follows a key", name));
     for (const auto& old : names)

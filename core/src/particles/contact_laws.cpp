@@ -63,6 +63,11 @@ std::string contact_law_doc(ParticleEngine e) {
     return doc;
 }
 
+void add_contact_law_key(SectionSpec& s, ParticleEngine e, std::string def) {
+    s.choice("model", std::move(def), contact_law_names(e),
+             "contact law (granlub/particles/contact_laws.h): " + contact_law_doc(e));
+}
+
 const ContactLaw* find_contact_law(const std::string& name) {
     for (const ContactLaw& l : kLaws)
         if (name == l.name) return &l;

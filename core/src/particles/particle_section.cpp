@@ -17,10 +17,8 @@ void add_until_steady_keys(SectionSpec& s) {
     s.real("time_max", 0.0, Range::non_negative(), "s",
            "until steady, with a cap: a run not steady at its length is continued from where it ended, at the same "
            "step, by a piece as long as the run so far, until a piece is steady (the answer) or the next would pass "
-           "this much simulated time in all; 0 = one run, a transient labelled as one");
-    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
-    s.real("time_max_full", 0.0, Range::non_negative(), "s", "time_max with --full (the run doubles from the --full length)");
-    s.keys.back().neutral_default = true;
+           "this much simulated time in all; 0 = one run, a transient labelled as one").neutral_default();
+    s.real("time_max_full", 0.0, Range::non_negative(), "s", "time_max with --full (the run doubles from the --full length)").neutral_default();
 }
 
 ParticleStart particle_start(const Case& c, const OperatingPoint& p, std::optional<std::uint64_t> seed) {

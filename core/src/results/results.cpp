@@ -87,6 +87,12 @@ Summary make_summary(const Case& c, const OperatingPoint& p, const std::string& 
     return s;
 }
 
+Summary make_summary(const Case& c, const OperatingPoint& p, const SolverInfo& info, std::optional<std::uint64_t> seed) {
+    Summary s = make_summary(c, p, std::string(info.name), seed);
+    s.kind = to_string(info.kind);
+    return s;
+}
+
 std::filesystem::path result_dir(const std::filesystem::path& root, const std::string& solver,
                                  const std::string& point) {
     return root / solver / point;
@@ -137,8 +143,10 @@ nlohmann::json summary_json(const Summary& s) {
                            {"utc_time", s.provenance.utc_time.empty() ? utc_now() : s.provenance.utc_time}};
     prov["seed"] = s.provenance.seed ? nlohmann::json(*s.provenance.seed) : nlohmann::json(nullptr);
     prov["run_id"] = s.provenance.run_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.provenance.run_id);
-    return {{"format", "granlub-summary-1"}, {"solver", s.solver}, {"case", s.case_name}, {"point", s.point},
-            {"inputs", s.inputs},            {"outputs", out},     {"run", s.run},        {"provenance", prov}};
+    nlohmann::json j = {{"format", "granlub-summary-1"}, {"solver", s.solver}, {"case", s.case_name}, {"point", s.point},
+                        {"inputs", s.inputs},            {"outputs", out},     {"run", s.run},        {"provenance", prov}};
+    if (!s.kind.empty()) j["kind"] = s.kind;
+    return j;
 }
 
 Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
@@ -147,6 +155,7 @@ Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
             throw Error(fmt::format("{}: not a granlub summary (format is not granlub-summary-1)", source));
         Summary s;
         s.solver = j.at("solver").get<std::string>();
+        s.kind = j.value("kind", "");
         s.case_name = j.at("case").get<std::string>();
         s.point = j.at("point").get<std::string>();
         s.inputs = j.at("inputs");

@@ -32,6 +32,19 @@ namespace ContactModels {
 // normal impulse of the last step the contact was pressed without restitution (its load).
 enum ImpulseHistory { kHistPn = 0, kHistPt = 1, kHistStep = 4, kHistLoad = 5, kImpulseHistoryValues = 6 };
 
+// A grain pair's force (fx, fy, fz) on grain i and its opposite on grain j, as both models add
+// theirs in the single pass (ForceData's delta_F).
+template <class ForceData>
+inline void add_pair_force(ForceData & i_forces, ForceData & j_forces, double fx, double fy, double fz)
+{
+  i_forces.delta_F[0] += fx;
+  i_forces.delta_F[1] += fy;
+  i_forces.delta_F[2] += fz;
+  j_forces.delta_F[0] -= fx;
+  j_forces.delta_F[1] -= fy;
+  j_forces.delta_F[2] -= fz;
+}
+
 // The id of the fix impulse/solve that pair_style gran makes when a deck iterates (the default)
 // without one; the fix's messages name the way back to the single pass when they refuse a deck.
 static const char* const kMadeSolverId = "granlub_impulse_solve";

@@ -77,7 +77,12 @@
     impulse_contacts.h, and fix_impulse_solve.* for iterate on, the default).
 ------------------------------------------------------------------------- */
 
-#ifdef NORMAL_MODEL
+#if defined(GRANLUB_COMBINATIONS)
+// The combinations the plugin registers, in the form of LIGGGHTS' style_contact_model_user.whitelist
+// (the plugin's registration and an in-tree build read these lines: README.md of the plugin).
+GRAN_MODEL(IMPULSE, TANGENTIAL_IMPULSE, COHESION_OFF, ROLLING_OFF, SURFACE_DEFAULT)
+GRAN_MODEL(IMPULSE, TANGENTIAL_OFF, COHESION_OFF, ROLLING_OFF, SURFACE_DEFAULT)
+#elif defined(NORMAL_MODEL)
 NORMAL_MODEL(IMPULSE,impulse,50)
 #else
 #ifndef NORMAL_MODEL_IMPULSE_H_
@@ -264,15 +269,7 @@ namespace ContactModels
         i_forces.delta_F[1] += Fa * sidata.en[1];
         i_forces.delta_F[2] += Fa * sidata.en[2];
       } else {
-        const double fx = Fn * sidata.en[0];
-        const double fy = Fn * sidata.en[1];
-        const double fz = Fn * sidata.en[2];
-        i_forces.delta_F[0] += fx;
-        i_forces.delta_F[1] += fy;
-        i_forces.delta_F[2] += fz;
-        j_forces.delta_F[0] -= fx;
-        j_forces.delta_F[1] -= fy;
-        j_forces.delta_F[2] -= fz;
+        add_pair_force(i_forces, j_forces, Fn * sidata.en[0], Fn * sidata.en[1], Fn * sidata.en[2]);
       }
     }
 

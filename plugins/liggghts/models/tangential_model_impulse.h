@@ -173,12 +173,7 @@ namespace ContactModels
         i_forces.delta_torque[1] += -ri * tor2 * a;
         i_forces.delta_torque[2] += -ri * tor3 * a;
       } else {
-        i_forces.delta_F[0] += Ft1;
-        i_forces.delta_F[1] += Ft2;
-        i_forces.delta_F[2] += Ft3;
-        j_forces.delta_F[0] -= Ft1;
-        j_forces.delta_F[1] -= Ft2;
-        j_forces.delta_F[2] -= Ft3;
+        add_pair_force(i_forces, j_forces, Ft1, Ft2, Ft3);
         i_forces.delta_torque[0] += -ri * tor1;
         i_forces.delta_torque[1] += -ri * tor2;
         i_forces.delta_torque[2] += -ri * tor3;

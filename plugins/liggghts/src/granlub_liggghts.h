@@ -1,5 +1,5 @@
 // granlub's LIGGGHTS plugin: registers the impulse contact models (model impulse, tangential
-// impulse) and every combination in style_contact_model_user.whitelist. Call once before the
+// impulse) and every combination their headers list (GRAN_MODEL lines). Call once before the
 // first LAMMPS instance is made; the shared library also registers itself when loaded.
 #pragma once
 

@@ -1,9 +1,10 @@
 // Registers granlub's contact models with Debian's unmodified libliggghts.so.3 (LIGGGHTS 3.8.0):
-// the model names go into ContactModels::Factory, and one pair-style and one wall creator per
-// combination listed in models/style_contact_model_user.whitelist go into the pair and wall
-// factories under ("gran", GranStyle<...>::HASHCODE); the other combinations with our models get
-// creators that stop with a clear error (unsupported.cpp). Recipe and pitfalls: README.md of this
-// plugin ("Building and using the plugin").
+// the names of the plugin's models (models/normal_model_*.h, models/tangential_model_*.h, through
+// the headers CMakeLists.txt generates) go into ContactModels::Factory, and one pair-style and one
+// wall creator per combination a normal model's header lists (its GRAN_MODEL lines) go into the
+// pair and wall factories under ("gran", GranStyle<...>::HASHCODE); the other combinations with our
+// models get creators that stop with a clear error (unsupported.cpp). Recipe and pitfalls:
+// README.md of this plugin ("Building and using the plugin").
 #include <mpi.h>
 
 // LIGGGHTS 3.8.0 ships fix_insert_stream_predefined.h as a stub that needs this first.
@@ -61,14 +62,20 @@ extern "C" int granlub_liggghts_register(void) {
     if (registered) return 0;
     registered = true;
     Factory& models = Factory::instance();
-    models.addNormalModel("impulse", IMPULSE);
-    models.addTangentialModel("impulse", TANGENTIAL_IMPULSE);
+#define NORMAL_MODEL(CLASS, NAME, ID) models.addNormalModel(#NAME, CLASS);
+#include "granlub_normal_models.h"
+#undef NORMAL_MODEL
+#define TANGENTIAL_MODEL(CLASS, NAME, ID) models.addTangentialModel(#NAME, CLASS);
+#include "granlub_tangential_models.h"
+#undef TANGENTIAL_MODEL
     int n = 0;
+#define GRANLUB_COMBINATIONS
 #define GRAN_MODEL(M, T, C, R, S) \
     add_combination<M, T, C, R, S>(); \
     ++n;
-#include "style_contact_model_user.whitelist"
+#include "granlub_normal_models.h"
 #undef GRAN_MODEL
+#undef GRANLUB_COMBINATIONS
     granlub_liggghts_register_unsupported();  // clear errors for the rest (unsupported.cpp)
     return n;
 }

@@ -1,6 +1,6 @@
-// Clear errors for the combinations with `model impulse` or `tangential impulse` that the plugin does
-// not register (e.g. `model impulse tangential history`, `... rolling_friction cdt`, `... cohesion
-// sjkr`, `model hertz tangential impulse`).
+// Clear errors for the combinations with one of the plugin's models (`model impulse`, `tangential
+// impulse`) that the plugin does not register (e.g. `model impulse tangential history`, `...
+// rolling_friction cdt`, `... cohesion sjkr`, `model hertz tangential impulse`).
 //
 // Why here, in the factories: pair gran and fix wall/gran both look the selected combination up in
 // PairStyles::Factory / Walls::Factory; an unregistered one falls back to the generic contact model
@@ -61,6 +61,24 @@ const Named kSurface[] = {
 #include "style_surface_model.h"
 #undef SURFACE_MODEL
 };
+// the plugin's own (models/, through the headers CMakeLists.txt generates)
+const Named kOurNormal[] = {
+#define NORMAL_MODEL(CLASS, NAME, ID) {ID, #NAME},
+#include "granlub_normal_models.h"
+#undef NORMAL_MODEL
+};
+const Named kOurTangential[] = {
+#define TANGENTIAL_MODEL(CLASS, NAME, ID) {ID, #NAME},
+#include "granlub_tangential_models.h"
+#undef TANGENTIAL_MODEL
+};
+
+template <size_t N>
+bool listed(const Named (&table)[N], int id) {
+    for (size_t k = 0; k < N; ++k)
+        if (table[k].id == id) return true;
+    return false;
+}
 
 template <size_t N>
 std::string name_of(const Named (&table)[N], int id) {
@@ -81,12 +99,14 @@ std::string keywords(int64_t hash) {
     return s;
 }
 
-// the hashes of the registered combinations (style_contact_model_user.whitelist, the one list)
+// the hashes of the registered combinations (the GRAN_MODEL lines of the normal models' headers)
 std::set<int64_t> supported() {
     std::set<int64_t> s;
+#define GRANLUB_COMBINATIONS
 #define GRAN_MODEL(M, T, C, R, S) s.insert(Utils::generate_gran_hashcode(M, T, C, R, S));
-#include "style_contact_model_user.whitelist"
+#include "granlub_normal_models.h"
 #undef GRAN_MODEL
+#undef GRANLUB_COMBINATIONS
     return s;
 }
 
@@ -98,7 +118,8 @@ std::string allowed_keywords() {
 
 [[noreturn]] void reject(LAMMPS* lmp, int64_t hash) {
     const std::string allowed = allowed_keywords();
-    const std::string what = field(hash, 0) == IMPULSE ? "model impulse" : "tangential impulse";
+    const std::string what = listed(kOurNormal, field(hash, 0)) ? "model " + name_of(kNormal, field(hash, 0))
+                                                                : "tangential " + name_of(kTangential, field(hash, 6));
     const std::string msg = what + " combines only as " + allowed + " (granlub plugin: no other tangential, " +
                             "cohesion, rolling_friction or surface model); got '" + keywords(hash) + "'";
     lmp->error->all(FLERR, msg.c_str());
@@ -121,7 +142,7 @@ int granlub_liggghts_register_unsupported() {
     int n = 0;
     for (const Named& nm : kNormal)
         for (const Named& t : kTangential) {
-            if (nm.id != IMPULSE && t.id != TANGENTIAL_IMPULSE) continue;
+            if (!listed(kOurNormal, nm.id) && !listed(kOurTangential, t.id)) continue;
             for (const Named& c : kCohesion)
                 for (const Named& r : kRolling)
                     for (const Named& s : kSurface) {

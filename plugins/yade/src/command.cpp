@@ -57,7 +57,7 @@ nlohmann::json settings_json(const Settings& s) {
 // box, plate limits) and copied into the point folder, so the folder reruns by hand.
 InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingPoint& p, const Settings& s,
                             const fs::path& dir, nlohmann::json& record) {
-    const fs::path from = final_state_path(results_root(c, o), "dem", p.id);
+    const fs::path from = final_state_path(results_root(c, o), kWarmFrom, p.id);
     if (!fs::exists(from))
         throw SolverError(fmt::format("point {}: [yade] start = \"warm\" starts from granlub dem's final state {}, "
                                       "which does not exist: run `granlub dem` on this case first, or set "
@@ -136,7 +136,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     if (!s.warm_start) start.gap = s.servo.plate_start;
     const DriverPaths paths = locate_driver();
 
-    Summary base = make_summary(c, p0, "yade", s.insertion.seed);
+    Summary base = make_summary(c, p0, kSolver, s.insertion.seed);
     base.provenance.settings = settings_json(s);
     base.provenance.settings["initial_file"] = init.file.string();
     base.provenance.settings["initial_file_reused"] = init.reused;
@@ -207,8 +207,8 @@ int run(const Case& c, const RunOptions& o) {
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
     // a warm start reads dem's final states: dem's same points stay locked (shared) while yade runs,
     // so that no dem run replaces them half-way through the sweep (granlub/run/run_lock.h)
-    const bool warm = c.section("yade").string("start") == "warm";
-    return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
+    const bool warm = c.section(kSolver.name).string("start") == "warm";
+    return run_sweep(c, kSolver.name, o, [&](const OperatingPoint& p, const fs::path& dir) {
         try {
             return solve_point(c, p, o, dir);
         } catch (const SolverError&) {
@@ -218,7 +218,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    }, at_once, warm ? std::vector<std::string>{"dem"} : std::vector<std::string>{});
+    }, at_once, warm ? std::vector<std::string>{kWarmFrom} : std::vector<std::string>{});
 }
 
 }  // namespace granlub::yade

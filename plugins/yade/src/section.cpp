@@ -4,6 +4,7 @@
 #include "granlub/yade/settings.h"
 
 #include "granlub/particles/contact_laws.h"
+#include "granlub/particles/engine_keys.h"
 #include "granlub/particles/particle_section.h"
 #include "granlub/particles/servo.h"
 
@@ -12,10 +13,9 @@ namespace granlub::yade {
 namespace {
 
 BoundKeys<Settings> declare() {
-    BoundKeys<Settings> k(SectionSpec("yade", "YADE cross-check of the particle simulation (plugins/yade)"));
+    BoundKeys<Settings> k(SectionSpec(kSolver.name, "YADE cross-check of the particle simulation (plugins/yade)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
-    s.choice("model", "viscel", contact_law_names(ParticleEngine::Yade),
-             "contact law (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Yade));
+    add_contact_law_key(s, ParticleEngine::Yade, "viscel");
     k.real("contact_time", &Settings::contact_time, 1e-5, Range::positive(), "s", "viscel: binary contact duration t_c");
     k.real("tangential_restitution", &Settings::tangential_restitution, 0.01, Range::open_closed(0, 1), "",
            "viscel: tangential restitution e_t (small: sliding stops when slip vanishes)");
@@ -44,19 +44,13 @@ BoundKeys<Settings> declare() {
              "initial grains: cold = the shared initial file ([particles]); warm = granlub dem's final "
              "state of the same point (results/dem/<point>/final_state.csv: positions, velocities, spins, "
              "plate), so the run starts in the DEM's steady state");
-    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
-    add_servo_keys(s);     // fill_for_load, servo_plate, plate_mass, servo_every, ... (granlub/particles/servo.h)
-    k.bind("sample_every", &Settings::sample_every).bind("stations", &Settings::stations).bind("blocks", &Settings::blocks);
-    s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with dem
+    add_engine_keys(k);  // sampling and servo keys, [particles] (granlub/particles/engine_keys.h)
     return k;
 }
 
 }  // namespace
 
-const BoundKeys<Settings>& yade_keys() {
-    static const BoundKeys<Settings> keys = declare();
-    return keys;
-}
+const BoundKeys<Settings>& yade_keys() { return keys_once<Settings, declare>(); }
 
 SectionSpec section() { return yade_keys().spec; }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/yade/command.h"
 #include "granlub/particles/contact_laws.h"
 #include "granlub/particles/particle_section.h"
 
@@ -76,7 +77,7 @@ Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptio
         throw NoAnswer(fmt::format("point {}: granlub yade runs the slice only; [cell] geometry = \"annulus\" (the "
                                    "whole ring) is granlub dem's",
                                    p.id));
-    const Section& s = c.section("yade");
+    const Section& s = c.section(kSolver.name);
     Settings r;
     yade_keys().read(r, s, {o.full, o.vtk});  // the plain keys (src/section.cpp); time_full with --full
     r.law = &contact_law(s.string("model"));

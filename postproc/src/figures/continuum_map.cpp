@@ -105,7 +105,7 @@ Series contour(const Grid& g, double level, F value) {
 template <class XY>
 void add_particle_points(Figure& f, const Collection& col, const std::string& what, XY xy) {
     for (const auto& s : col.solvers) {
-        if (s == "continuum") continue;
+        if (col.kind(s) == SolverKind::Continuum) continue;
         Series pts;
         pts.label = s + what;
         pts.mark = Mark::Points;

@@ -78,12 +78,12 @@ void add_load_target(const Collection& col, Figure& f) {
 }  // namespace
 
 int solver_style(const Collection& col, const std::string& solver) {
-    const auto known = std::find(std::begin(kKnownSolvers), std::end(kKnownSolvers), solver);
-    if (known != std::end(kKnownSolvers)) return static_cast<int>(known - std::begin(kKnownSolvers));
-    int k = 4;
+    const auto known = std::find(col.known.begin(), col.known.end(), solver);
+    if (known != col.known.end()) return static_cast<int>(known - col.known.begin());
+    int k = static_cast<int>(col.known.size());
     for (const auto& s : col.solvers) {
         if (s == solver) return k;
-        if (std::find(std::begin(kKnownSolvers), std::end(kKnownSolvers), s) == std::end(kKnownSolvers)) ++k;
+        if (std::find(col.known.begin(), col.known.end(), s) == col.known.end()) ++k;
     }
     return k;
 }
@@ -156,7 +156,7 @@ std::vector<Figure> stress_figures(const Collection& col) {
         for (std::size_t g = 0; g < groups.size(); ++g) {
             for (const auto& solver : col.solvers) {
                 // The automaton's "stresses" are lattice analogues: said in the legend, beside the markers.
-                const std::string label = with_group(lattice_stresses(solver) ? solver + " (lattice analogue)" : solver,
+                const std::string label = with_group(lattice_stresses(col, solver) ? solver + " (lattice analogue)" : solver,
                                                      groups[g].label);
                 auto series = points_by_state(col, solver, groups[g].points, label,
                                               [&](const Run& r, const OperatingPoint& p, Series& s) {

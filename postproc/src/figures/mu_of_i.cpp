@@ -24,7 +24,7 @@ RunInertia run_inertia(const Case& c, const Run& r) {
         out.mid_gap = v.inertial_mid_gap;
         return out;
     }
-    if (lattice_stresses(r.solver)) return out;  // no pressure in Pa
+    if (lattice_stresses(r)) return out;  // no pressure in Pa
     const auto sb = r.scalar("normal_stress_bottom"), st = r.scalar("normal_stress_top");
     if (!sb || !st) return out;
     const double H = r.scalar("gap").value_or(c.cell.gap);

@@ -147,11 +147,11 @@ std::vector<Figure> regime_map_figures(const Case& c, const Collection& col, con
 std::vector<Figure> liftoff_figures(const Case& c, const Collection& col, const SpeedLoadGrid& grid) {
     std::vector<std::string> lattice;
     for (const auto& s : col.solvers)
-        if (lattice_stresses(s) && col.any_usable(s)) lattice.push_back(s);
+        if (lattice_stresses(col, s) && col.any_usable(s)) lattice.push_back(s);
     std::vector<Figure> figs;
     for (const bool gap : {true, false})
         for (const auto& s : col.solvers) {
-            if (lattice_stresses(s)) continue;
+            if (lattice_stresses(col, s)) continue;
             Figure f;
             f.name = fmt::format("regime_liftoff_{}_{}", gap ? "gap" : "nu", name_slug(s));
             f.title = fmt::format("Lift-off: {} against speed, per load: {}", gap ? "the gap" : "mean solid fraction", s);

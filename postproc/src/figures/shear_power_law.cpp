@@ -43,7 +43,7 @@ std::vector<Figure> shear_power_law_figures(const Collection& col, const SpeedLo
     std::vector<Figure> figs;
     for (const char* q : kShear)
         for (const auto& s : col.solvers) {
-            if (lattice_stresses(s)) continue;  // no load, no exponent of its own (scope.h)
+            if (lattice_stresses(col, s)) continue;  // no load, no exponent of its own (scope.h)
             const bool bottom = q == std::string("shear_stress_bottom");
             Figure f;
             f.name = fmt::format("regime_tau_of_u_{}_{}", bottom ? "bottom" : "top", name_slug(s));
@@ -107,7 +107,7 @@ Table shear_exponent_table(const Collection& col, const SpeedLoadGrid& grid) {
     for (const auto& group : grid.per_load)
         for (const auto& s : col.solvers)
             for (const char* q : kShear) {
-                if (lattice_stresses(s)) continue;
+                if (lattice_stresses(col, s)) continue;
                 const StressFit fit = stress_fit(col, group, s, q);
                 if (fit.steady_points + fit.other_points == 0) continue;
                 const std::string wall = q == std::string("shear_stress_bottom") ? "moving" : "stationary";

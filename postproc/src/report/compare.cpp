@@ -121,8 +121,9 @@ std::vector<LockRequest> compare_locks(const Case& c, const RunOptions& o) {
         for (auto& l : point_locks(r, solver, points, LockMode::Shared)) locks.push_back(std::move(l));
     };
     const auto points = c.select(o.point);
-    for (const char* s : kKnownSolvers) add(root, s, points);
-    for (const auto& s : result_solvers(root)) add(root, s, points);  // duplicates: one lock
+    const std::vector<std::string> known = known_solvers(c);
+    for (const auto& s : known) add(root, s, points);
+    for (const auto& s : result_solvers(known, root)) add(root, s, points);  // duplicates: one lock
     if (const auto slice = slice_case(c)) add(results_root(*slice, RunOptions{}), kRingSolver, slice->select(""));
     return locks;
 }

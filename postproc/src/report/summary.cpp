@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "granlub/particles/contact_laws.h"
 #include "granlub/statistics/point_verdict.h"
 
 #include "formats/format.h"
@@ -41,6 +42,12 @@ struct Answer {
 
 bool particle(const Run& r) { return r.summary->run.is_object() && r.summary->run.contains("simulated_time_s"); }
 
+// The run's contact law is the impulse operator (its row in granlub/particles/contact_laws.h).
+bool impulse_operator(const Run& r) {
+    const ContactLaw* law = find_contact_law(run_text(r, "model"));
+    return law && law->impulse_options;
+}
+
 bool agree(const Answer& a, const Answer& b) {
     const double se = std::hypot(a.se, b.se), d = std::abs(a.v - b.v);
     return se > 0 ? d <= 2 * se : d <= 1e-12 * std::max(std::abs(a.v), std::abs(b.v));
@@ -66,7 +73,7 @@ std::string known_cause(const Asked& q, const Answer& a, const Answer& b) {
     const double d = std::abs(b.v - a.v), rel = a.v != 0 ? d / std::abs(a.v) : 0;
     if ((a.dt > 0 || b.dt > 0) && d <= 2 * std::sqrt(a.se * a.se + b.se * b.se + a.dt * a.dt + b.dt * b.dt))
         return "within the time-step error ([Δt] in the key numbers)";
-    const bool impulse_a = run_text(*a.run, "model") == "impulse", impulse_b = run_text(*b.run, "model") == "impulse";
+    const bool impulse_a = impulse_operator(*a.run), impulse_b = impulse_operator(*b.run);
     if (q.stress && particle(*a.run) && particle(*b.run) && impulse_a != impulse_b)
         return rel <= 0.15 ? "the size of the impulse operator's time-step error (about 10 % at the default step; "
                              "What each solver's numbers mean)"
@@ -159,7 +166,7 @@ std::string not_answers(const Collection& col) {
                            why_not(state));
     }
     for (const auto& s : col.solvers) {
-        if (!lattice_stresses(s) || !col.any_usable(s)) continue;
+        if (!lattice_stresses(col, s) || !col.any_usable(s)) continue;
         const bool load = std::any_of(col.points.begin(), col.points.end(),
                                       [](const OperatingPoint* p) { return p->control == Control::Load; });
         out += fmt::format("{}{}'s wall stresses (lattice analogues){}", out.empty() ? "" : "; ", s,
@@ -208,8 +215,8 @@ CaseSummary case_summary(const Collection& col) {
             std::vector<Answer> a;
             for (const Run* r : col.usable(p->id)) {
                 const auto v = r->scalar(q.key);
-                const bool fixed_fill = lattice_stresses(r->solver) && p->control == Control::Load;
-                if (!v || !r->steady() || (q.stress && lattice_stresses(r->solver)) ||
+                const bool fixed_fill = lattice_stresses(*r) && p->control == Control::Load;
+                if (!v || !r->steady() || (q.stress && lattice_stresses(*r)) ||
                     (fixed_fill && std::string(q.key) == "nu_bar_over_numax"))
                     continue;
                 a.push_back({r, *v, r->scalar_stderr(q.key).value_or(0), r->scalar_dt_error(q.key).value_or(0)});

@@ -169,15 +169,44 @@ bool Collection::any_usable(const std::string& solver) const {
     return std::any_of(points.begin(), points.end(), [&](const OperatingPoint* p) { return run(solver, p->id).usable(); });
 }
 
+std::optional<SolverKind> Run::kind() const {
+    if (!summary) return std::nullopt;
+    if (!summary->kind.empty()) {
+        for (const SolverKind k : {SolverKind::Continuum, SolverKind::Lattice, SolverKind::Particles})
+            if (summary->kind == to_string(k)) return k;
+        return std::nullopt;
+    }
+    const auto& run = summary->run;
+    if (run.is_object() && run.contains("simulated_time_s")) return SolverKind::Particles;
+    if (run.is_object() && run.contains("lattice")) return SolverKind::Lattice;
+    return SolverKind::Continuum;
+}
+
+std::optional<SolverKind> Collection::kind(const std::string& solver) const {
+    for (const OperatingPoint* p : points)
+        if (const auto k = run(solver, p->id).kind()) return k;
+    return std::nullopt;
+}
+
 std::size_t Collection::count(ResultState state) const {
     return static_cast<std::size_t>(
         std::count_if(runs.begin(), runs.end(), [&](const auto& kv) { return kv.second.status.state == state; }));
 }
 
-std::vector<std::string> result_solvers(const std::filesystem::path& root, std::vector<std::string>* missing) {
+std::vector<std::string> known_solvers(const Case& c) {
+    std::vector<std::string> known;
+    if (!c.schema) return known;
+    const Schema common = Schema::common();
+    for (const SectionSpec& s : c.schema->sections())
+        if (!common.find(s.name)) known.push_back(s.name);
+    return known;
+}
+
+std::vector<std::string> result_solvers(const std::vector<std::string>& known, const std::filesystem::path& root,
+                                        std::vector<std::string>* missing) {
     std::vector<std::string> solvers, others;
     std::error_code ec;
-    for (const char* s : kKnownSolvers) {
+    for (const auto& s : known) {
         if (std::filesystem::is_directory(root / s, ec))
             solvers.emplace_back(s);
         else if (missing)
@@ -188,7 +217,7 @@ std::vector<std::string> result_solvers(const std::filesystem::path& root, std::
             const std::string name = e.path().filename().string();
             if (!e.is_directory() || name == "report" || name == "initial" || name == kSlurmDir || name.starts_with(".") ||
                 name.find(".partial") != std::string::npos ||
-                std::find(std::begin(kKnownSolvers), std::end(kKnownSolvers), name) != std::end(kKnownSolvers))
+                std::find(known.begin(), known.end(), name) != known.end())
                 continue;
             others.push_back(name);
         }
@@ -202,7 +231,8 @@ Collection collect(const Case& c, const RunOptions& o) {
     Collection col;
     col.root = results_root(c, o);
     col.points = c.select(o.point);
-    col.solvers = result_solvers(col.root, &col.missing_solvers);
+    col.known = known_solvers(c);
+    col.solvers = result_solvers(col.known, col.root, &col.missing_solvers);
     for (const auto& s : col.solvers)
         for (const OperatingPoint* p : col.points) col.runs.emplace(std::pair(s, p->id), load_run(c, col.root, s, *p));
     return col;

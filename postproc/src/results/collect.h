@@ -18,9 +18,11 @@
 
 namespace granlub::postproc {
 
-// The solvers granlub knows, in report order; any other folder under results/ (except report/
-// and initial/) is treated as a solver too and listed after these.
-inline constexpr const char* kKnownSolvers[] = {"continuum", "automaton", "dem", "yade"};
+// The solvers the case's schema declares: the sections `granlub` adds to the common ones, one per
+// solver compiled in, in `granlub run` order (cli/solvers.h). The report's order and colours, and
+// the solvers whose missing results it names; any other folder under results/ (except report/ and
+// initial/) is treated as a solver too and listed after these.
+std::vector<std::string> known_solvers(const Case& c);
 
 struct Run {
     std::string solver;
@@ -60,6 +62,10 @@ struct Run {
     std::optional<double> wall_roughness(bool bottom) const;
     // run.walls.<side>.surface of a particle solver ("plane", "bumps"); "" for the others.
     std::string wall_surface(bool bottom) const;
+    // What the results are (granlub/run/solver_info.h): the summary's "kind"; in a summary written
+    // before it was recorded, read from its run block (a particle engine's simulated time, a
+    // lattice's lattice, else a continuum's); nothing without a summary or with a kind not known.
+    std::optional<SolverKind> kind() const;
 
 private:
     std::optional<double> scaled_error(const std::string& name,
@@ -69,6 +75,7 @@ private:
 struct Collection {
     std::filesystem::path root;                  // results root
     std::vector<const OperatingPoint*> points;   // compared points, case order
+    std::vector<std::string> known;              // known_solvers(case)
     std::vector<std::string> solvers;            // with a results folder, report order
     std::vector<std::string> missing_solvers;    // known solvers without a results folder
     std::map<std::pair<std::string, std::string>, Run> runs;  // (solver, point id) -> run, every solver x point
@@ -76,6 +83,7 @@ struct Collection {
     const Run& run(const std::string& solver, const std::string& point) const;
     std::vector<const Run*> usable(const std::string& point) const;  // solvers order
     bool any_usable(const std::string& solver) const;
+    std::optional<SolverKind> kind(const std::string& solver) const;  // the first of its runs that says
     std::size_t count(ResultState state) const;
 };
 
@@ -83,7 +91,8 @@ Collection collect(const Case& c, const RunOptions& o);
 
 // The solvers with a results folder under `root`, in report order (the known ones, then any other
 // folder but report/, initial/, slurm/ (kSlurmDir) and hidden ones); the known solvers without one go to `missing`.
-std::vector<std::string> result_solvers(const std::filesystem::path& root, std::vector<std::string>* missing = nullptr);
+std::vector<std::string> result_solvers(const std::vector<std::string>& known, const std::filesystem::path& root,
+                                        std::vector<std::string>* missing = nullptr);
 
 // One run's status without loading it into a collection (for summary_table).
 Run load_run(const Case& c, const std::filesystem::path& root, const std::string& solver, const OperatingPoint& p);

@@ -83,7 +83,7 @@ std::string contact_text(const Run& r) {
     const ContactLaw* law = find_contact_law(model);
     if (!law) return "";
     if (law->contacts) return law->contacts;  // the table's line (granlub/particles/contact_laws.h)
-    if (model != "impulse") return "";
+    if (!law->impulse_options) return "";  // the impulse operator's words follow
     const std::string dt_error =
         " (under enduring contacts its wall stresses carry a first-order time-step error, which the Δt check "
         "measures; on the default case's loaded slice the full step is 2–8 % high and the half step within "
@@ -182,8 +182,8 @@ std::string body_forces(const Case& c, const std::vector<const Run*>& runs, bool
     return s;
 }
 
-std::string stresses(const std::string& solver, const Run& first, bool particles, bool iterated) {
-    if (lattice_stresses(solver))
+std::string stresses(const Run& first, bool particles, bool iterated) {
+    if (lattice_stresses(first))
         return "lattice analogues in Pa (wall momentum per lattice step × ρ_p ν_max U², ∝ U² by construction): "
                "not measured stresses, not comparable with the others";
     if (particles) {
@@ -252,7 +252,8 @@ int dense_step_halvings(const Run& r) {
     return d ? d->value("halvings", 1) : 0;
 }
 
-bool lattice_stresses(const std::string& solver) { return solver == "automaton"; }
+bool lattice_stresses(const Run& r) { return r.kind() == SolverKind::Lattice; }
+bool lattice_stresses(const Collection& col, const std::string& solver) { return col.kind(solver) == SolverKind::Lattice; }
 
 SolverScope solver_scope(const Case& c, const Collection& col, const std::string& solver) {
     std::vector<const Run*> runs;
@@ -264,7 +265,7 @@ SolverScope solver_scope(const Case& c, const Collection& col, const std::string
     const RunLengths l = run_lengths(runs);
     const bool particles = !l.simulated.empty();
     s.body_forces = body_forces(c, runs, particles);
-    s.stresses = stresses(solver, first, particles, !l.iterations.empty());
+    s.stresses = stresses(first, particles, !l.iterations.empty());
     s.grains_walls = grains_and_walls(c, first, particles);
     s.run_length = run_length(first, l, runs.size());
     return s;

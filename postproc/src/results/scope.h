@@ -17,9 +17,11 @@ struct SolverScope {
 
 SolverScope solver_scope(const Case& c, const Collection& col, const std::string& solver);
 
-// The automaton's wall stresses are lattice analogues (wall momentum per lattice step scaled by
-// rho_p nu_max U^2, so proportional to U^2 by construction), not measured stresses.
-bool lattice_stresses(const std::string& solver);
+// A lattice solver's wall stresses (the automaton's) are lattice analogues (wall momentum per
+// lattice step scaled by rho_p nu_max U^2, so proportional to U^2 by construction), not measured
+// stresses: a run's, or a solver's (Collection::kind).
+bool lattice_stresses(const Run& r);
+bool lattice_stresses(const Collection& col, const std::string& solver);
 
 // A text field of a run's summary (run.<key>), or "" when it has none.
 std::string run_text(const Run& r, const char* key);

@@ -87,14 +87,14 @@ Table key_numbers(const Case& c, const Collection& col) {
                 const bool moving = r.scalar("gap").has_value();
                 row.push_back({moving ? value_cell(r, "gap", 1e3) : num(c.cell.gap * 1e3) + " (fixed)", cls});
                 const double per = p->control == Control::Load && p->normal_stress > 0 ? 1 / p->normal_stress : 0;
-                row.push_back({lattice_stresses(s) ? "— (lattice, fixed fill)"
+                row.push_back({lattice_stresses(r) ? "— (lattice, fixed fill)"
                                : per > 0 ? value_pm(scaled(r.scalar("normal_stress_top"), per),
                                                   scaled(r.scalar_stderr("normal_stress_top"), per), 3)
                                        : "",
                                cls});
             }
             // The automaton's stresses are lattice analogues: marked in every cell, not only in a footnote.
-            const char* lattice = lattice_stresses(s) ? " (lattice)" : "";
+            const char* lattice = lattice_stresses(r) ? " (lattice)" : "";
             for (const char* q : {"normal_stress_bottom", "shear_stress_bottom", "shear_stress_top"}) {
                 const std::string v = value_cell(r, q);
                 row.push_back({v.empty() ? v : v + lattice, cls});

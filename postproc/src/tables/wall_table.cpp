@@ -30,9 +30,9 @@ std::optional<double> side_wall_drag_share(const Case& c, const Run& r) {
 
 std::string why_no_side_walls(const Case& c, const Run& r) {
     if (has_side_walls(r)) return "";
-    if (lattice_stresses(r.solver)) return "the lattice has no side walls";
+    if (lattice_stresses(r)) return "the lattice has no side walls";
     if (run_text(r, "geometry") == "cross_section") return "not in this result";
-    if (r.solver == "continuum") return "1-D gap: no side walls ([continuum] geometry = \"gap\")";
+    if (r.kind() == SolverKind::Continuum) return "1-D gap: no side walls ([continuum] geometry = \"gap\")";
     if (c.cell.width <= 0) return "periodic across the width: no side walls";
     return "not recorded by this run";
 }
@@ -49,7 +49,7 @@ Table wall_stress_table(const Case& c, const Collection& col) {
             if (!r.usable()) continue;
             any = any || has_side_walls(r);
             const std::string cls = r.steady() ? "" : r.state_class();
-            const char* lattice = lattice_stresses(s) ? " (lattice)" : "";
+            const char* lattice = lattice_stresses(r) ? " (lattice)" : "";
             const std::string why = why_no_side_walls(c, r);
             std::vector<Cell> row{{s, ""}, {p->id, ""}, {r.state_name(), r.state_class()}};
             for (const WallColumn& w : kWallColumns) {

@@ -3,17 +3,18 @@
 #pragma once
 #include "granlub/case/case.h"
 #include "granlub/case/schema.h"
+#include "granlub/run/solver_info.h"
 #include "granlub/run/sweep.h"
 
 namespace granlub::automaton {
 
-// The [automaton] case section, one line per key.
-SectionSpec section();
+// What the solver is (granlub/run/solver_info.h).
+inline constexpr SolverInfo kSolver{.name = "automaton", .description = "lattice cellular automaton (Jasti & Higgs 2006)",
+                                    .kind = SolverKind::Lattice, .seeded = true};
 
-// Runs the selected points through run_sweep(); returns the exit code.
+// The functions every solver module has (granlub/run/solver_info.h).
+SectionSpec section();
 int run(const Case& c, const RunOptions& o);
-// What run() would reject for the selected points (quick and --full run lengths), without
-// running: CaseError for bad input, SolverError for a case this solver cannot run.
 void check(const Case& c, const RunOptions& o);
 
 }  // namespace granlub::automaton

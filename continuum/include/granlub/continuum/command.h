@@ -6,14 +6,14 @@
 
 #include "granlub/case/case.h"
 #include "granlub/case/schema.h"
+#include "granlub/run/solver_info.h"
 #include "granlub/run/sweep.h"
 
 namespace granlub::continuum {
 
-SectionSpec section();                          // the [continuum] case section
-int run(const Case& c, const RunOptions& o);    // solves the selected points through run_sweep()
-// What run() would reject for the selected points (quick and --full run lengths), without
-// running: CaseError for bad input, SolverError for a case this solver cannot run.
+// The functions every solver module has (granlub/run/solver_info.h).
+SectionSpec section();
+int run(const Case& c, const RunOptions& o);
 void check(const Case& c, const RunOptions& o);
 // `granlub continuum CASE --map [--map-grid SPEEDS,LOADS]`: the case's (U, P) map (map.h) written to
 // <results>/continuum/map.csv under its lock (run_lock.h: continuum/map.csv), and one line with its cost. Returns 0,
@@ -31,5 +31,9 @@ struct FitCommand {
 };
 inline constexpr const char* kFitFile = "continuum_fit.toml";
 int run_fit(const Case& c, const FitCommand& o);
+
+// What the solver is (granlub/run/solver_info.h).
+inline constexpr SolverInfo kSolver{.name = "continuum", .description = "granular kinetic lubrication (GKL) continuum solver",
+                                    .kind = SolverKind::Continuum, .map = &run_map};
 
 }  // namespace granlub::continuum

@@ -98,6 +98,11 @@ public:
         spec.old_names(std::move(names));
         return *this;
     }
+    // The key declared last's default is neutral (SectionSpec::neutral_default).
+    BoundKeys& neutral_default() {
+        spec.neutral_default();
+        return *this;
+    }
     // The key read instead of the one bound last with --full: declared next, of its type, with its
     // range and unit.
     BoundKeys& full(const std::string& key, double def, const std::string& doc) {
@@ -188,5 +193,13 @@ private:
     }
     std::vector<Binding> bindings_;
 };
+
+// The keys a section's declare() builds, built once: the body of each solver's keys function
+// (dem_keys(), ...), whose section() is its spec.
+template <class Settings, BoundKeys<Settings> (*declare)()>
+const BoundKeys<Settings>& keys_once() {
+    static const BoundKeys<Settings> keys = declare();
+    return keys;
+}
 
 }  // namespace granlub

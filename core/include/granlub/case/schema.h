@@ -108,6 +108,9 @@ struct SectionSpec {
     // Old names of the key declared last: a case that writes an old name still parses, as this key,
     // with a warning naming it (Case::warnings), as old spellings of values do.
     SectionSpec& old_names(std::vector<std::string> names);
+    // The key declared last does at its default what was computed before it existed
+    // (KeySpec::neutral_default): adding it made no earlier result stale.
+    SectionSpec& neutral_default();
 
     const KeySpec* find(const std::string& key) const;
     // The key that `old` is an old name of, or null.

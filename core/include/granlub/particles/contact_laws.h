@@ -1,15 +1,17 @@
 // The particle engines' contact laws, one row each (src/particles/contact_laws.cpp): the value a
 // case gives to [dem] model or [yade] model, how each engine spells the law, how the law's time
 // step follows from the case and what kind of stiffness it has (the servo's plate cap, servo.h).
-// `granlub dem`'s section, settings and deck writers and `granlub yade`'s settings read this table,
-// but a law is also named elsewhere: a plugin law in its LIGGGHTS model header, the whitelist, its
-// registration and unsupported.cpp; a YADE law in granlub_yade.py's list and branches; a new step
-// rule or stiffness in the engine's settings. docs/architecture.md lists every file that names a
-// law (the repo_doc_file_lists test keeps that list true).
+// `granlub dem`'s section, settings and deck writers, `granlub yade`'s settings and the report read
+// this table; besides its row a law is named only in its engine's code: a plugin law in its two
+// LIGGGHTS model headers (the normal one lists its combinations), a YADE law as its class in
+// granlub_yade.py's LAWS; a new step rule or stiffness in the engine's settings. docs/architecture.md
+// lists every file that names a law (the repo_doc_file_lists test keeps that list true).
 #pragma once
 #include <span>
 #include <string>
 #include <vector>
+
+#include "granlub/case/schema.h"
 
 namespace granlub {
 
@@ -51,6 +53,9 @@ std::vector<std::string> contact_law_names(ParticleEngine e);
 
 // "name = title; ..." of the engine's laws (the model key's doc).
 std::string contact_law_doc(ParticleEngine e);
+
+// The engine's section's `model` key: one of its laws (default `def`), each with its title.
+void add_contact_law_key(SectionSpec& s, ParticleEngine e, std::string def);
 
 // The row of `name` (a value the schema has checked); throws Error for a name not in the table.
 const ContactLaw& contact_law(const std::string& name);

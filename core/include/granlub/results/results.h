@@ -29,6 +29,7 @@
 #include "granlub/results/file_io.h"
 #include "granlub/results/run_id.h"
 #include "granlub/results/table.h"
+#include "granlub/run/solver_info.h"
 
 namespace granlub {
 
@@ -88,6 +89,7 @@ struct Provenance {
 
 struct Summary {
     std::string solver;
+    std::string kind;  // what the results are: to_string(SolverKind) (run/solver_info.h); "" in older results
     std::string case_name;
     std::string point;
     nlohmann::json inputs;  // the point's inputs (filled by make_summary)
@@ -103,6 +105,9 @@ struct Summary {
 // A summary with solver, case, point, inputs and provenance (this process's run id included)
 // filled in.
 Summary make_summary(const Case& c, const OperatingPoint& p, const std::string& solver,
+                     std::optional<std::uint64_t> seed = std::nullopt);
+// The same for a solver's declaration: solver info.name, kind its kind.
+Summary make_summary(const Case& c, const OperatingPoint& p, const SolverInfo& info,
                      std::optional<std::uint64_t> seed = std::nullopt);
 
 std::filesystem::path result_dir(const std::filesystem::path& results_root, const std::string& solver,

@@ -339,7 +339,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
 
     PointResult r;
     r.profile = out.profile;
-    r.summary = make_summary(c, p0, "dem", s.seed);
+    r.summary = make_summary(c, p0, kSolver, s.seed);
     r.summary.outputs = out.outputs;
     r.summary.provenance.settings["resolved"] = s.to_json();
     const double atoms = static_cast<double>(init.particles.size());
@@ -414,7 +414,7 @@ int run(const Case& c, const RunOptions& o) {
     // each point is its own LIGGGHTS process of --np ranks: as many side by side as cores allow
     const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
     return run_sweep(
-        c, "dem", o, [&](const OperatingPoint& p, const fs::path& dir) { return solve_point(c, p, o, dir); }, at_once);
+        c, kSolver.name, o, [&](const OperatingPoint& p, const fs::path& dir) { return solve_point(c, p, o, dir); }, at_once);
 }
 
 }  // namespace granlub::dem

@@ -4,6 +4,7 @@
 // builds it).
 #include "granlub/dem/command.h"
 #include "granlub/particles/contact_laws.h"
+#include "granlub/particles/engine_keys.h"
 #include "granlub/particles/particle_section.h"
 #include "granlub/particles/servo.h"
 #include "settings.h"
@@ -13,10 +14,9 @@ namespace granlub::dem {
 namespace {
 
 BoundKeys<Settings> declare() {
-    BoundKeys<Settings> k(SectionSpec("dem", "particle simulation in LIGGGHTS (granlub-liggghts)"));
+    BoundKeys<Settings> k(SectionSpec(kSolver.name, "particle simulation in LIGGGHTS (granlub-liggghts)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
-    s.choice("model", "impulse", contact_law_names(ParticleEngine::Liggghts),
-             "contact model (granlub/particles/contact_laws.h): " + contact_law_doc(ParticleEngine::Liggghts));
+    add_contact_law_key(s, ParticleEngine::Liggghts, "impulse");
     k.real("beta0", &Settings::beta0, 0.0, Range::closed(-1, 1), "",
            "Walton's tangential restitution of sticking impacts (impulse model); 0 = the stick limit");
     k.boolean("separate_overlaps", &Settings::separate, true,
@@ -32,15 +32,13 @@ BoundKeys<Settings> declare() {
     k.boolean("impact_time", &Settings::impact_time, false,
               "contact_solve = 'single_pass': apply each impact at its time within the step (grains moved by the "
               "distance their new velocity covers since the surfaces met), not at the step's end as Sawyer & Tichy "
-              "do; removes the single pass's first-order flight-timing error (plugin doc gran_model_impulse)");
-    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
+              "do; removes the single pass's first-order flight-timing error (plugin doc gran_model_impulse)").neutral_default();
     k.boolean("speculative", &Settings::speculative, false,
               "impulse model: also act on grains and walls close but not yet touching, so that surfaces meeting "
               "within the step stop at contact (restitution on a real impact) and no overlap is made at the contact "
               "(speculative contacts; plugin doc gran_model_impulse); with contact_solve = 'iterated' the close "
               "contacts join the solve with their gap. Neither removes the loaded cells' time-step error "
-              "(docs/measurements/liggghts.md); cost: about 1.6x the single pass, and far more iterated");
-    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
+              "(docs/measurements/liggghts.md); cost: about 1.6x the single pass, and far more iterated").neutral_default();
     k.real("solve_tolerance", &Settings::solve_tolerance, 1e-4, Range::closed(1e-12, 0.5), "",
            "contact_solve = 'iterated': stop when the largest impulse change of a sweep is at most this times the "
            "largest normal impulse of the step");
@@ -59,20 +57,17 @@ BoundKeys<Settings> declare() {
               "step; 2 = where that check fails the rule, or the full-step run never got steady while the half-step run "
               "did, the step is halved once more (cold, the "
               "whole `time`; the half-step run moves to folder dt_half/) and the answer is the run at a quarter of "
-              "the step, checked against the half step");
-    s.keys.back().neutral_default = true;  // 1: what every earlier result was computed with
+              "the step, checked against the half step").neutral_default();
     k.real("dense_inertial_number", &Settings::dense_inertial_number, 0.0, Range::closed(0, 10), "",
            "impulse model under load control: a point whose nominal inertial number U d / (H sqrt(P / rho)) is "
            "below this is dense and runs at half the step step_fraction gives, its time-step check too (in dense "
            "flows with enduring contacts the single pass's full step is several per cent from its limit: plugin "
-           "README, the step rule); 0 = off");
-    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
+           "README, the step rule); 0 = off").neutral_default();
     k.real("quarter_step_inertial_number", &Settings::quarter_step_inertial_number, 0.0, Range::closed(0, 10), "",
            "with dense_inertial_number: a point whose nominal inertial number is below this (a smaller value) runs "
            "at a quarter of the step step_fraction gives, its time-step check at an eighth (at the slowest loaded "
            "points half the step is still several per cent from its limit: plugin README, the step rule); needs a "
-           "cold check (refine_time = 0) or none; 0 = off");
-    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
+           "cold check (refine_time = 0) or none; 0 = off").neutral_default();
     k.real("time", &Settings::time, 0.1, Range::positive(), "s", "simulated time of a quick run (the README's main job)")
         .full("time_full", 1.0, "simulated time with --full");
     add_until_steady_keys(s);  // time_max, time_max_full (granlub/particles/particle_section.h)
@@ -85,8 +80,7 @@ BoundKeys<Settings> declare() {
     s.real("refine_strain", 0.0, Range::closed(0, 1e6), "",
            "refine_dt with a warm check: the half-step run's length in shear strain U t / H, so that every point's "
            "check covers as many strains; the check runs max(refine_time, min(refine_strain H / U, "
-           "strain_time_max)); 0 = off (refine_time alone)");
-    s.keys.back().neutral_default = true;  // off: what every earlier result was computed with
+           "strain_time_max)); 0 = off (refine_time alone)").neutral_default();
     s.real("time_step", 0.0, Range::non_negative(), "s", "time step; 0 = derived from the case (step_fraction)");
     s.real("step_fraction", 0.02, Range::open_closed(0, kMaxStepFraction), "",
            "impulse model: diameters of the smallest grain travelled per step at the larger of U, sqrt(2 g H) and, under load "
@@ -104,20 +98,14 @@ BoundKeys<Settings> declare() {
     s.real("ring_facet", 0.7, Range::closed(0.05, 5), "",
            "[cell] geometry = annulus: longest facet edge along the ring's circles, in grain diameters (the "
            "meshes' facets per circle follow from the outer wall's circumference; ring_walls = 'mesh' only)");
-    add_sampling_keys(s);  // sample_every, snapshots, stations, blocks (granlub/particles/particle_section.h)
-    add_servo_keys(s);     // fill_for_load, servo_plate, plate_mass, servo_every, ... (granlub/particles/servo.h)
-    k.bind("sample_every", &Settings::sample_every).bind("snapshots", &Settings::snapshots);
-    k.bind("stations", &Settings::stations).bind("blocks", &Settings::blocks);
-    s.uses = {kParticlesSection};  // seed, velocity_noise, periodic_depth: shared with yade
+    add_engine_keys(k);  // sampling and servo keys, [particles] (granlub/particles/engine_keys.h)
+    k.bind("snapshots", &Settings::snapshots);
     return k;
 }
 
 }  // namespace
 
-const BoundKeys<Settings>& dem_keys() {
-    static const BoundKeys<Settings> keys = declare();
-    return keys;
-}
+const BoundKeys<Settings>& dem_keys() { return keys_once<Settings, declare>(); }
 
 SectionSpec section() { return dem_keys().spec; }
 

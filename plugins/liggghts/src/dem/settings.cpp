@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "granlub/dem/command.h"
 #include "granlub/error.h"
 #include "granlub/statistics/flow_regime.h"
 #include "granlub/particles/contact_laws.h"
@@ -182,7 +183,7 @@ void resolve_refine_strain(const Case& c, const OperatingPoint& p, const Section
 }  // namespace
 
 Settings resolve_settings(const Case& c, const OperatingPoint& p, const RunOptions& o) {
-    const Section& s = c.section("dem");
+    const Section& s = c.section(kSolver.name);
     Settings st;
     dem_keys().read(st, s, {o.full, o.vtk});  // the plain keys (section.cpp); time_full with --full
     read_contact(s, st);

@@ -7,17 +7,18 @@
 #pragma once
 #include "granlub/case/case.h"
 #include "granlub/case/schema.h"
+#include "granlub/run/solver_info.h"
 #include "granlub/run/sweep.h"
 
 namespace granlub::dem {
 
-// The [dem] case section, one line per key.
-SectionSpec section();
+// What the solver is (granlub/run/solver_info.h).
+inline constexpr SolverInfo kSolver{.name = "dem", .description = "particle simulation in LIGGGHTS with granlub's contact models",
+                                    .kind = SolverKind::Particles, .engine = true, .seeded = true, .ranks = true};
 
-// Runs the selected points through run_sweep(); returns the process exit code.
+// The functions every solver module has (granlub/run/solver_info.h).
+SectionSpec section();
 int run(const Case& c, const RunOptions& o);
-// What run() would reject for the selected points (quick and --full run lengths), without
-// running: CaseError for bad input, SolverError for a case this solver cannot run.
 void check(const Case& c, const RunOptions& o);
 
 }  // namespace granlub::dem

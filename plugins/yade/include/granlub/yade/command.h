@@ -6,14 +6,20 @@
 #pragma once
 #include "granlub/case/case.h"
 #include "granlub/case/schema.h"
+#include "granlub/run/solver_info.h"
 #include "granlub/run/sweep.h"
 
 namespace granlub::yade {
 
-SectionSpec section();                          // the [yade] case section
-int run(const Case& c, const RunOptions& o);    // all selected points, via run_sweep()
-// What run() would reject for the selected points (quick and --full run lengths), without
-// running: CaseError for bad input, SolverError for a case this solver cannot run.
+// What the solver is (granlub/run/solver_info.h).
+inline constexpr SolverInfo kSolver{.name = "yade", .description = "particle simulation in YADE (cross-check)",
+                                    .kind = SolverKind::Particles, .engine = true, .seeded = true};
+// The solver whose final states [yade] start = "warm" starts from (its results folder).
+inline constexpr const char* kWarmFrom = "dem";
+
+// The functions every solver module has (granlub/run/solver_info.h).
+SectionSpec section();
+int run(const Case& c, const RunOptions& o);
 void check(const Case& c, const RunOptions& o);
 
 }  // namespace granlub::yade
