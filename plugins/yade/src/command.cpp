@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/particles/seeds.h"
 #include "granlub/run/progress.h"
 #include "granlub/results/run_id.h"
 #include "granlub/yade/driver.h"
@@ -57,7 +58,8 @@ nlohmann::json settings_json(const Settings& s) {
 // box, plate limits) and copied into the point folder, so the folder reruns by hand.
 InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingPoint& p, const Settings& s,
                             const fs::path& dir, nlohmann::json& record) {
-    const fs::path from = final_state_path(results_root(c, o), "dem", p.id);
+    // DEM's realisation of the same seed (seeds.h); with one seed its point folder, as always
+    const fs::path from = point_result_dir(c, o, "dem", p.id) / kFinalStateFile;
     if (!fs::exists(from))
         throw SolverError(fmt::format("point {}: [yade] start = \"warm\" starts from granlub dem's final state {}, "
                                       "which does not exist: run `granlub dem` on this case first, or set "
@@ -131,7 +133,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     const InitialParticles init =
         s.warm_start ? warm_start(c, o, p, s, dir, warm)
                      : initial_particles(c, p, results_root(c, o), insertion(c, s), s.periodic_depth,
-                                         s.servo.insert_fill_key);
+                                         s.servo.insert_fill_key, initial_subfolder(c, o));
     ParticleBox start = init.box;  // the driver's cell: the top wall starts where granlub dem's does
     if (!s.warm_start) start.gap = s.servo.plate_start;
     const DriverPaths paths = locate_driver();
@@ -194,6 +196,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
 }  // namespace
 
 void check(const Case& c, const RunOptions& o) {
+    seed_set(c, o);  // --seeds, --seed and [particles] seeds: bad input stops before any point runs
     for_each_run(c, o, [&](const OperatingPoint& p0, const RunOptions& v) {
         const Settings s = resolve_settings(c, p0, v);
         OperatingPoint p = p0;
@@ -203,14 +206,13 @@ void check(const Case& c, const RunOptions& o) {
 }
 
 int run(const Case& c, const RunOptions& o) {
-    // each point is one single-threaded YADE process (-j1): as many side by side as cores allow
-    const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
+    // each point (each seed's realisation of it) is one single-threaded YADE process (-j1)
     // a warm start reads dem's final states: dem's results stay locked (shared) while yade runs, so
     // that no dem run replaces them half-way through the sweep (granlub/run/run_lock.h)
     const bool warm = c.section("yade").string("start") == "warm";
-    return run_sweep(c, "yade", o, [&](const OperatingPoint& p, const fs::path& dir) {
+    return run_particle_sweep(c, "yade", o, [&](const OperatingPoint& p, const RunOptions& ro, const fs::path& dir) {
         try {
-            return solve_point(c, p, o, dir);
+            return solve_point(c, p, ro, dir);
         } catch (const SolverError&) {
             throw;
         } catch (const Error& e) {  // bad input found for this point: same message, as a point failure
@@ -218,7 +220,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    }, at_once, warm ? std::vector<std::string>{"dem"} : std::vector<std::string>{});
+    }, warm ? std::vector<std::string>{"dem"} : std::vector<std::string>{});
 }
 
 }  // namespace granlub::yade

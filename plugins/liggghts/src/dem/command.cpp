@@ -14,6 +14,7 @@
 #include "granlub/error.h"
 #include "granlub/particles/particle_pipeline.h"
 #include "granlub/particles/particles.h"
+#include "granlub/particles/seeds.h"
 #include "granlub/particles/until_steady.h"
 #include "granlub/results/failure_record.h"
 #include "granlub/results/results.h"
@@ -218,6 +219,7 @@ void move_run(const fs::path& dir, const fs::path& to) {
     for (const auto& e : fs::directory_iterator(dir)) {
         const std::string name = e.path().filename().string();
         if (name == kDtCheckDir || name == kDtHalfDir || name == "summary.json" || name == kFailureFile) continue;
+        if (name.starts_with("seed-")) continue;  // the point's realisations of a set of seeds (seeds.h)
         entries.push_back(e.path());
     }
     for (const auto& e : entries) fs::rename(e, to / e.filename());
@@ -321,7 +323,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     p.solid_fraction = s.insert_fill;
 
     const InsertionOptions ins = insertion(c, s);
-    const InitialParticles init = initial_particles(c, p, results_root(c, o), ins, s.box.width, s.insert_fill_key);
+    const InitialParticles init =
+        initial_particles(c, p, results_root(c, o), ins, s.box.width, s.insert_fill_key, initial_subfolder(c, o));
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
@@ -402,6 +405,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
 }  // namespace
 
 void check(const Case& c, const RunOptions& o) {
+    seed_set(c, o);  // --seeds, --seed and [particles] seeds: bad input stops before any point runs
     for_each_run(c, o, [&](const OperatingPoint& p0, const RunOptions& v) {
         OperatingPoint p = p0;
         const Settings s = resolve_settings(c, p, v);
@@ -411,10 +415,10 @@ void check(const Case& c, const RunOptions& o) {
 }
 
 int run(const Case& c, const RunOptions& o) {
-    // each point is its own LIGGGHTS process of --np ranks: as many side by side as cores allow
-    const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
-    return run_sweep(
-        c, "dem", o, [&](const OperatingPoint& p, const fs::path& dir) { return solve_point(c, p, o, dir); }, at_once);
+    // each point (each seed's realisation of it) is its own LIGGGHTS process of --np ranks
+    return run_particle_sweep(c, "dem", o, [&](const OperatingPoint& p, const RunOptions& ro, const fs::path& dir) {
+        return solve_point(c, p, ro, dir);
+    });
 }
 
 }  // namespace granlub::dem
