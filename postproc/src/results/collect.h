@@ -60,6 +60,9 @@ struct Run {
     std::optional<double> wall_roughness(bool bottom) const;
     // run.walls.<side>.surface of a particle solver ("plane", "bumps"); "" for the others.
     std::string wall_surface(bool bottom) const;
+    // How many seeds a particle result pools (run.seeds.pooled, granlub/particles/seed_pool.h): its
+    // standard errors are then the seeds' standard error; 0 for one run, whose are its own block errors.
+    std::size_t seeds_pooled() const;
 
 private:
     std::optional<double> scaled_error(const std::string& name,
