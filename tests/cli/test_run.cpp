@@ -116,7 +116,9 @@ BOOST_AUTO_TEST_CASE(seeds_reach_both_engines_and_are_pooled) {
     fs::create_directories(dir);
     std::string text = granlub::test::tiny_cell("tiny_seeds", "", "time = 0.02\nsample_every = 20\n") +
                        "[yade]\nstart = \"warm\"\ntime = 0.004\n[particles]\nseeds = [3, 5]\n";
-    text.replace(text.find("friction = 0.5\n"), 15, "friction = 0.5\nsize_spread = 0.2\n");
+    // sizes drawn (a spread), at a fill the widest lattice takes
+    text.replace(text.find("friction = 0.5\n"), 15, "friction = 0.5\nsize_spread = 0.05\n");
+    text.replace(text.find("solid_fraction = 0.4"), 20, "solid_fraction = 0.35");
     std::ofstream(dir / "case.toml") << text;
     auto o = run(std::string(GRANLUB_EXE) + " run " + dir.string() + " --solvers dem,yade");
     BOOST_TEST(o.rc == 0, o.text);
