@@ -173,6 +173,7 @@ BOOST_AUTO_TEST_CASE(the_report_says_which_error_it_uses) {
     BOOST_TEST(md.find("cases/sawyer2001_rough_hertz/README.md") != std::string::npos);
     BOOST_TEST(md.find("a median 2.1 and up to 6.5 times") != std::string::npos);
     BOOST_TEST(md.find("docs/measurements/dt-error.md") != std::string::npos);
+    BOOST_TEST(md.find("six seeds at 2.0 m/s there: 4–5 times in ν̄ and τ") != std::string::npos);
     BOOST_TEST(md.find("use the seeds' standard error") == std::string::npos);
     BOOST_TEST(test::slurp(s.o.results_root / "report" / "metrics.csv").find("a_stderr, b_stderr: a particle result "
                                                                            "pooled over seeds") != std::string::npos);

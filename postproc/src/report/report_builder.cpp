@@ -69,8 +69,10 @@ std::string error_used(const Collection& col) {
         "times in YADE on the loose rough cell (three seeds; cases/sawyer2001_rough_hertz/README.md, “The error "
         "bars against the seeds”), in the wall shear stresses a median 2.1 and up to 6.5 times on the dense, "
         "layered default cell (three or four seeds at three speeds and four steps; docs/measurements/dt-error.md, "
-        "“The main job's slice at its three speeds”). So such a z can be 2–6 times too large: a bold z says that "
-        "these two runs differ; whether the solvers do needs several seeds ([particles] seeds or --seeds), pooled. ";
+        "“The main job's slice at its three speeds”; six seeds at 2.0 m/s there: 4–5 times in ν̄ and τ, 9 in the "
+        "slips, docs/measurements/engines.md, “Six seeds pooled”). So such a z can be 2–9 times too large: a bold "
+        "z says that these two runs differ; whether the solvers do needs several seeds ([particles] seeds or "
+        "--seeds), pooled. ";
     if (pooled == 0) return single_text;
     return single == 0 ? pooled_text : pooled_text + single_text;
 }
