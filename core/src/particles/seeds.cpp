@@ -117,6 +117,12 @@ fs::path initial_subfolder(const Case& c, const RunOptions& o) {
     return seed_set(c, o).pooled() ? fs::path(realisation_folder(o.seed.value())) : fs::path();
 }
 
+std::string point_label(const std::string& point, const fs::path& dir) {
+    for (const fs::path& d : {dir, dir.parent_path()})
+        if (const std::string f = d.filename().string(); f.starts_with("seed-")) return point + "/" + f;
+    return point;
+}
+
 int run_particle_sweep(const Case& c, const std::string& solver, const RunOptions& o, const SeedSolver& solve,
                        const std::vector<std::string>& reads) {
     const SeedSet set = seed_set(c, o);

@@ -111,7 +111,7 @@ void run_piece(const DriverPaths& paths, const Case& c, const OperatingPoint& p,
     // a guard against hangs (docs/yade-notes.md §5), not a performance limit: a 2-core machine shared
     // by several jobs ran YADE 6x slower than a quiet one
     const double timeout = s.timeout > 0 ? s.timeout : 600.0 + 1e-4 * static_cast<double>(grains) * steps;
-    Progress progress(fmt::format("yade {}", p.id), static_cast<std::uint64_t>(steps));
+    Progress progress(fmt::format("yade {}", point_label(p.id, dir)), static_cast<std::uint64_t>(steps));
     const fs::path progress_file = dir / "progress";
     auto poll = [&] {
         if (!progress.due()) return;  // the driver's file is read only when a line will be written
@@ -151,7 +151,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     fs::path from = init.file;
     double wall_s = 0, end_gap = start.gap;  // the last piece's plate at its end
     PointResult r;
-    const Continuation k = continue_until_steady(s.until_steady, s.time, "yade " + p.id, [&](std::int64_t times,
+    const Continuation k = continue_until_steady(s.until_steady, s.time, "yade " + point_label(p.id, dir), [&](std::int64_t times,
                                                                                               int index) {
         const Settings piece = index > 0 ? lengthened(s, times) : s;
         if (index > 0) {  // from where the last piece ended

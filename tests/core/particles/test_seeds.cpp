@@ -279,3 +279,10 @@ BOOST_AUTO_TEST_CASE(a_member_in_the_wrong_folder_is_corrupt) {
     BOOST_TEST((r.status.state == ResultState::Corrupt));
     BOOST_TEST(contains(r.status.reason, "says seed 2 but lies in the \"seed-5\" folder"));
 }
+
+BOOST_AUTO_TEST_CASE(a_members_lines_name_its_seed) {
+    BOOST_TEST(point_label("U2.0", "/r/dem/U2.0") == "U2.0");  // one seed: as always
+    BOOST_TEST(point_label("U2.0", "/r/dem/U2.0/dt_full") == "U2.0");
+    BOOST_TEST(point_label("U2.0", "/r/dem/U2.0/seed-3") == "U2.0/seed-3");
+    BOOST_TEST(point_label("U2.0", "/r/dem/U2.0/seed-3/dt_full") == "U2.0/seed-3");
+}

@@ -40,6 +40,10 @@ std::filesystem::path point_result_dir(const Case& c, const RunOptions& o, const
 // seed-<S>): each member keeps its own initial grains.
 std::filesystem::path initial_subfolder(const Case& c, const RunOptions& o);
 
+// How a run's lines (progress, continuation) name the point: "U2.0", or "U2.0/seed-3" for a member of
+// a set of seeds, read from the run's folder (<point>/seed-<S>/, or a check folder inside it).
+std::string point_label(const std::string& point, const std::filesystem::path& dir);
+
 // A particle engine's sweep (`granlub dem`, `granlub yade`): with one seed run_sweep over the points,
 // solve() given o as it is; with several, over every point's members (run_sweep's Realisations),
 // each pooled into the point's files (pool_seeds) after it completes. Points, or points x members,

@@ -93,7 +93,8 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     OneRun r;
     // the check's coarse run names itself in the progress line
     const bool check = dir.filename() == kDtCheckDir;
-    const std::string label = check ? fmt::format("dem {} {}", p.id, kDtCheckDir) : "dem " + p.id;
+    const std::string who = point_label(p.id, dir);  // with a set of seeds, the member too
+    const std::string label = check ? fmt::format("dem {} {}", who, kDtCheckDir) : "dem " + who;
     r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, label);
 
     // LIGGGHTS' files into the shared series; the rest is the one particle pipeline
@@ -164,7 +165,7 @@ Continued run_continued(const Case& c, const OperatingPoint& p, const Settings& 
                         const fs::path& dir, const std::string& prov) {
     Continued r;
     InitialParticles start = init;
-    r.record = continue_until_steady(s.until_steady, s.time, "dem " + p.id, [&](std::int64_t times, int index) {
+    r.record = continue_until_steady(s.until_steady, s.time, "dem " + point_label(p.id, dir), [&](std::int64_t times, int index) {
         Settings piece = s;
         if (index > 0) {  // from where the last piece ended: its grains, spins and plate
             const ParticleState st = read_particle_state(dir / kFinalState);
@@ -259,7 +260,7 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
     r.first_check = std::move(first);
     fmt::print(stderr, "dem {}: the run at half the step is not checked by the full step ({}); halving it once more "
                "([dem] refine_halvings = {})\n",
-               p.id, *why, s.refine_halvings);
+               point_label(p.id, dir), *why, s.refine_halvings);
     move_run(dir, dir / kDtHalfDir);
     write_check_profile(dir / kDtHalfDir, r.runs[1],
                         fmt::format("case {} point {}: the run at half the time step ({:g} s), which failed its check "
