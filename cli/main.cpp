@@ -91,7 +91,7 @@ void add_wait(CLI::App* sub, Args& a) {
                   "--no-wait fail at once with exit code 2");
 }
 
-void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
+void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi, bool particles) {
     add_point(sub, a);
     add_wait(sub, a);
     sub->add_flag("--force", a.opt.force,
@@ -109,6 +109,13 @@ void add_run_options(CLI::App* sub, Args& a, bool stochastic, bool mpi) {
             ->type_name("N")
             ->check(integer_in(0, 1024, "a thread count"));
     }
+    if (particles)  // granlub/particles/seeds.h
+        sub->add_option("--seeds", a.opt.seeds,
+                        "independent realisations of every particle point, pooled into one answer (mean ± the seeds' "
+                        "standard error): a count N, the seeds seed .. seed+N-1, or a comma-separated list, e.g. "
+                        "1,2,7; with several, --seed S runs only member S (default: [particles] seeds, 1)")
+            ->type_name("N|LIST")
+            ->check(CLI::Validator([](std::string& t) { return t.empty() ? std::string("an empty set of seeds (allowed: a whole number of seeds from 1 to 1000, or a comma-separated list of distinct whole numbers)") : std::string(); }, "N|LIST"));
     if (mpi)
         sub->add_option("--np", a.opt.np, "MPI ranks for LIGGGHTS, a count (default: 1)")
             ->type_name("N")
@@ -133,6 +140,10 @@ void add_slurm_options(CLI::App* sub, Args& a, const std::vector<std::string>& s
     sub->add_option("--seed", a.seed, "random seed of every run, a whole number (default: the case's seed keys)")
         ->type_name("N")
         ->check(integer_in(0, std::numeric_limits<std::int64_t>::max(), "a seed", "0 to 2^63 - 1"));
+    sub->add_option("--seeds", a.opt.seeds,
+                    "independent realisations of every particle point, one task each, pooled into one answer: a count "
+                    "N or a comma-separated list, as `granlub dem --seeds` (default: [particles] seeds, 1)")
+        ->type_name("N|LIST");
     sub->add_option("--np", a.opt.np, "MPI ranks of each dem task (Slurm tasks of its job), a count (default: 1)")
         ->type_name("N")
         ->check(integer_in(1, 4096, "a rank count"));
@@ -289,7 +300,7 @@ int main(int argc, char** argv) {
     for (const auto& m : granlub::cli::solver_modules()) {
         auto* sub = app.add_subcommand(m.name, m.info.description);
         add_case(sub, a);
-        add_run_options(sub, a, m.info.seeded, m.info.ranks);
+        add_run_options(sub, a, m.info.seeded, m.info.ranks, m.info.kind == granlub::SolverKind::Particles);
         if (m.info.map) add_map_options(sub, a);
         cmd.solvers.emplace_back(sub, &m);
     }
@@ -334,7 +345,7 @@ int main(int argc, char** argv) {
 
     cmd.run = app.add_subcommand("run", "run the solvers on a case, then compare (the main job)");
     add_case(cmd.run, a);
-    add_run_options(cmd.run, a, true, true);
+    add_run_options(cmd.run, a, true, true, true);
     std::vector<std::string> names;
     for (const auto& m : granlub::cli::solver_modules()) names.push_back(m.name);
     cmd.run->add_option("--solvers", a.solvers,

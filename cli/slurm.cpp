@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "granlub/error.h"
+#include "granlub/particles/seeds.h"
 #include "granlub/results/file_io.h"
 #include "granlub/results/results.h"
 #include "granlub/run/process.h"
@@ -47,8 +48,10 @@ std::string sh(const std::string& s) {
 // The realisations each point's task runs: empty for one seed (one task per point, with the case's
 // seed or --seed, the layout of today); with a set of more than one seed ([particles] seeds,
 // --seeds), its members, one task each.
-// [issue 76, wiring at merge] return the resolved seed set here once `--seeds` exists.
-std::vector<std::uint64_t> task_seeds(const Case&, const RunOptions&) { return {}; }
+std::vector<std::uint64_t> task_seeds(const Case& c, const RunOptions& o) {
+    const SeedSet set = seed_set(c, o);  // bad input (0 seeds, repeats, --seed outside the set) stops here
+    return set.pooled() ? set.run : std::vector<std::uint64_t>{};
+}
 
 // What runs where: the engines as arrays over points x seeds, the other solvers in the last job.
 struct Plan {
@@ -77,7 +80,7 @@ Plan plan_of(const Case& c, const RunOptions& o, const SlurmOptions& s) {
             if (std::find(p.points.begin(), p.points.end(), q) == p.points.end()) p.points.push_back(q);
     if (p.points.empty()) p.points = c.select("");
     p.every_point = p.points.size() == c.points.size();
-    p.seeds = task_seeds(c, o);
+    if (!p.engines.empty()) p.seeds = task_seeds(c, o);
     return p;
 }
 

@@ -244,6 +244,30 @@ BOOST_AUTO_TEST_CASE(seed_and_counts_on_the_command_line_are_exact) {
     }
 }
 
+// --seeds and --seed of the particle engines (granlub/particles/seeds.h): bad input stops before any run,
+// naming the flag and what is allowed.
+BOOST_AUTO_TEST_CASE(bad_seeds_on_the_command_line_stop_with_what_is_allowed) {
+    const std::string allowed = "allowed: a whole number of seeds from 1 to 1000, or a comma-separated list";
+    for (const std::string cmd : {"dem", "yade", "run"}) {
+        if (cmd != "run" && !built(cmd)) continue;
+        if (cmd == "run" && !built("dem")) continue;
+        const std::string base = exe + " " + cmd + " " + src + "/cases/sawyer2001 --results /nonexistent ";
+        for (const auto& [flags, expect] : std::vector<std::pair<std::string, std::string>>{
+                 {"--seeds 0", "--seeds 0: out of range (" + allowed},
+                 {"--seeds 1,2,1", "--seeds 1,2,1: 1 appears twice (" + allowed},
+                 {"--seeds 2.5", "--seeds 2.5: not a whole number (" + allowed},
+                 {"--seeds -3", "--seeds -3: not a whole number"},
+                 {"--seeds ''", "an empty set of seeds"},
+                 {"--seeds 3 --seed 7", "--seed 7: not one of the seeds [1, 2, 3] (--seeds; allowed: one of them"}}) {
+            const auto o = run(base + flags);
+            BOOST_TEST(o.rc == 2, cmd << " " << flags << ": " << o.text);
+            BOOST_TEST(o.text.find(expect) != std::string::npos, cmd << " " << flags << ": " << o.text);
+        }
+    }
+    if (built("automaton"))  // not a particle engine: no --seeds
+        BOOST_TEST(run(exe + " automaton " + src + "/cases/jasti2006 --seeds 3").rc == 2);
+}
+
 // The audit's exploit: a case name with a line break became a `shell` command in the LIGGGHTS
 // deck. It is refused when the case is read, so no deck, data file or results folder is made.
 BOOST_AUTO_TEST_CASE(a_case_file_cannot_run_commands) {

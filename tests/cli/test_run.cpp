@@ -4,7 +4,9 @@
 #include <sstream>
 
 #include <boost/test/unit_test.hpp>
+#include <nlohmann/json.hpp>
 
+#include "granlub/particles/particles.h"
 #include "granlub/results/results.h"
 #include "run_command.h"
 #include "xml_check.h"
@@ -102,6 +104,51 @@ BOOST_AUTO_TEST_CASE(dem_and_a_warm_yade_run_side_by_side) {
     BOOST_TEST(budget.rc == 0, budget.text);
     BOOST_TEST(budget.text.find("== [1/3] dem on tiny_engines (1 point(s)),") != std::string::npos, budget.text);
     BOOST_TEST(budget.text.find("== [2/3] yade on tiny_engines") != std::string::npos, budget.text);
+    fs::remove_all(dir);
+}
+
+// A set of seeds through both engines (granlub/particles/seeds.h): each seed its own size draw and
+// insertion (its own initial grains, its own LIGGGHTS data file), each YADE member warm-started from
+// DEM's member of the same seed, and both points' files pooled over the two seeds.
+BOOST_AUTO_TEST_CASE(seeds_reach_both_engines_and_are_pooled) {
+    const fs::path dir = fs::temp_directory_path() / "granlub_test_run_seeds";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::string text = granlub::test::tiny_cell("tiny_seeds", "", "time = 0.02\nsample_every = 20\n") +
+                       "[yade]\nstart = \"warm\"\ntime = 0.004\n[particles]\nseeds = [3, 5]\n";
+    // sizes drawn (a spread), at a fill the widest lattice takes
+    text.replace(text.find("friction = 0.5\n"), 15, "friction = 0.5\nsize_spread = 0.05\n");
+    text.replace(text.find("solid_fraction = 0.4"), 20, "solid_fraction = 0.35");
+    std::ofstream(dir / "case.toml") << text;
+    auto o = run(std::string(GRANLUB_EXE) + " run " + dir.string() + " --solvers dem,yade");
+    BOOST_TEST(o.rc == 0, o.text);
+    for (const char* line : {"dem U1.0/seed-3", "dem U1.0/seed-5", "yade U1.0/seed-3", "yade U1.0/seed-5"})
+        BOOST_TEST(o.text.find(line) != std::string::npos, line << ": " << o.text);
+    const fs::path res = dir / "results";
+    const std::string grains3 = slurp(res / "initial" / "U1.0" / "seed-3" / "particles.csv");
+    const std::string grains5 = slurp(res / "initial" / "U1.0" / "seed-5" / "particles.csv");
+    BOOST_TEST(grains3.find("seed=3") != std::string::npos);
+    BOOST_TEST(grains5.find("seed=5") != std::string::npos);
+    // the size draw: the radii differ, not only the positions
+    const fs::path initial = res / "initial" / "U1.0";
+    BOOST_TEST((granlub::read_particles_csv(initial / "seed-3" / "particles.csv").radius !=
+                granlub::read_particles_csv(initial / "seed-5" / "particles.csv").radius));
+    // the engine ran each seed's grains: the LIGGGHTS data files differ
+    BOOST_TEST(slurp(res / "dem" / "U1.0" / "seed-3" / "grains.data") != slurp(res / "dem" / "U1.0" / "seed-5" / "grains.data"));
+    for (const int seed : {3, 5}) {
+        const std::string member = "seed-" + std::to_string(seed);
+        const auto dem = granlub::read_summary(res / "dem" / "U1.0" / member / "summary.json");
+        const auto yade = granlub::read_summary(res / "yade" / "U1.0" / member / "summary.json");
+        BOOST_TEST(dem.provenance.seed.value_or(0) == static_cast<unsigned>(seed));
+        BOOST_TEST(yade.provenance.seed.value_or(0) == static_cast<unsigned>(seed));
+        const std::string from = yade.provenance.settings.at("warm_start").at("from").get<std::string>();
+        BOOST_TEST(from.find("dem/U1.0/" + member + "/final_state.csv") != std::string::npos, from);
+    }
+    for (const char* solver : {"dem", "yade"}) {
+        const auto pooled = granlub::read_summary(res / solver / "U1.0" / "summary.json");
+        BOOST_TEST(pooled.run.at("seeds").at("pooled") == nlohmann::json({3, 5}), solver);
+        BOOST_TEST(pooled.outputs.at("shear_stress_bottom").block_stderr.has_value(), solver);
+    }
     fs::remove_all(dir);
 }
 #endif

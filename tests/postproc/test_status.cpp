@@ -159,3 +159,48 @@ BOOST_AUTO_TEST_CASE(failed_unknown_and_dt_unconverged_points_say_why) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Which error the statistics use (issue 76): one run's block error, with the measured factor by
+// which other seeds scatter more and where it was measured; a result pooled over seeds, the seeds'
+// standard error; an incomplete set is no answer.
+BOOST_AUTO_TEST_CASE(the_report_says_which_error_it_uses) {
+    auto s = test::make_case("status_error_used");
+    for (const char* solver : {"continuum", "dem"}) test::write_solver(s, solver);
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    std::string md = test::slurp(s.o.results_root / "report" / "report.md");  // the HTML escapes the apostrophes
+    BOOST_TEST(md.find("The standard errors are each run's own") != std::string::npos);
+    BOOST_TEST(md.find("3.5 times one run's block error in LIGGGHTS and 5.1 times in YADE") != std::string::npos);
+    BOOST_TEST(md.find("cases/sawyer2001_rough_hertz/README.md") != std::string::npos);
+    BOOST_TEST(md.find("a median 2.1 and up to 6.5 times") != std::string::npos);
+    BOOST_TEST(md.find("docs/measurements/dt-error.md") != std::string::npos);
+    BOOST_TEST(md.find("six seeds at 2.0 m/s there: 4–5 times in ν̄ and τ") != std::string::npos);
+    BOOST_TEST(md.find("use the seeds' standard error") == std::string::npos);
+    BOOST_TEST(test::slurp(s.o.results_root / "report" / "metrics.csv").find("a_stderr, b_stderr: a particle result "
+                                                                           "pooled over seeds") != std::string::npos);
+
+    // every dem point pooled over three seeds: the legend names the seeds' error alone
+    for (const auto& p : s.c.points) test::patch_run(s, "dem", p.id, {{"seeds", {{"pooled", {1, 2, 3}}}}});
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    md = test::slurp(s.o.results_root / "report" / "report.md");
+    BOOST_TEST(md.find("use the seeds' standard error") != std::string::npos);
+    BOOST_TEST(md.find("The standard errors are each run's own") == std::string::npos);
+    BOOST_TEST(md.find("3.5 times") == std::string::npos);
+
+    // one point left with one run: both, the measured factor for that one
+    test::patch_run(s, "dem", s.c.points[0].id, {{"seeds", nullptr}});
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    md = test::slurp(s.o.results_root / "report" / "report.md");
+    BOOST_TEST(md.find("use the seeds' standard error") != std::string::npos);
+    BOOST_TEST(md.find("The other statistical results' standard errors are each run's own") != std::string::npos);
+
+    // an incomplete set is labelled and not compared
+    test::patch_run(s, "dem", s.c.points[1].id,
+                    {{"status", "incomplete"}, {"status_reason", "incomplete: 2 of 3 seeds; missing seed 3 (not run yet)"}});
+    BOOST_TEST(postproc::compare(s.c, s.o) == 0);
+    md = test::slurp(s.o.results_root / "report" / "report.md");
+    BOOST_TEST(md.find("incomplete: 2 of 3 seeds; missing seed 3 (not run yet)") != std::string::npos);
+    const auto m = test::read_metrics_row(s.o.results_root / "report" / "metrics.csv", "scalar", s.c.points[1].id,
+                                          "shear_stress_bottom", "continuum", "dem");
+    BOOST_TEST(m.at("z").empty());
+    BOOST_TEST(m.at("status_b") == "incomplete");
+}

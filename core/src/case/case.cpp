@@ -134,6 +134,23 @@ Value parse_value(const std::string& file, const std::string& section, const Key
             return number(file, section, k, n);
         }
         case KeyType::Integer: {
+            if (auto* arr = n.as_array(); arr && k.integer_list) {
+                if (arr->empty()) bad_value(file, section, k, n, "empty list");
+                if (arr->size() > kMaxIntegerList)
+                    bad_value(file, section, k, n, fmt::format("a list of {} values (at most {})", arr->size(),
+                                                               kMaxIntegerList));
+                std::vector<std::int64_t> out;
+                for (const auto& e : *arr) {  // the message shows the whole list and names the element
+                    auto* i = e.as_integer();
+                    if (!i) bad_value(file, section, k, n, fmt::format("{} is not an integer", node_text(e)));
+                    if (!k.list_range.contains(static_cast<double>(i->get())))
+                        bad_value(file, section, k, n, fmt::format("{} is out of range", i->get()));
+                    if (std::find(out.begin(), out.end(), i->get()) != out.end())
+                        bad_value(file, section, k, n, fmt::format("{} appears twice in the list", i->get()));
+                    out.push_back(i->get());
+                }
+                return out;
+            }
             auto* i = n.as_integer();
             if (!i) bad_value(file, section, k, n, "expected an integer");
             double v = static_cast<double>(i->get());
@@ -537,9 +554,9 @@ bool feeds(const Case& c, const std::string& section, std::string_view solver_se
 
 namespace {
 // Whether a key of a section is one of a solver's inputs: given, or defaulted, unless it sits at a
-// neutral default (KeySpec::neutral_default).
+// neutral default (KeySpec::neutral_default), and never when it is no input (KeySpec::input).
 bool is_input(const Section& s, const KeySpec& k) {
-    if (!s.has(k.name)) return false;
+    if (!k.input || !s.has(k.name)) return false;
     return !(k.neutral_default && k.default_value && s.values().at(k.name) == *k.default_value);
 }
 }  // namespace

@@ -101,6 +101,12 @@ std::vector<SectionSpec> common_sections() {
 SectionSpec particles_section() {
     SectionSpec s(kParticlesSection, "what both particle engines (dem, yade) share: the initial grains and the cell's depth");
     s.integer("seed", 1, Range::at_least(0), "seed of the initial configuration (--seed overrides)");
+    s.integer_or_list("seeds", 1, Range::closed(1, kMaxIntegerList), Range::at_least(0),
+                      "independent realisations of every point, pooled into one answer: N = the seeds seed, seed + 1, "
+                      "... seed + N - 1, or the list of seeds itself; each its own size draw, insertion and packing, "
+                      "in <point>/seed-<S>/, the point's files their mean ± the seeds' standard error (--seeds "
+                      "overrides; 1 = one run, as before)");
+    s.keys.back().input = false;  // which realisations run, not what any one of them is
     s.real("velocity_noise", 0.1, Range::non_negative(), "",
            "initial velocity noise per component, standard deviation / U, on the linear Couette profile");
     s.real("periodic_depth", 0.0, Range::non_negative(), "m",

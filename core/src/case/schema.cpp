@@ -29,7 +29,7 @@ std::string Range::text() const {
 std::string KeySpec::type_name() const {
     switch (type) {
         case KeyType::Real: return sweepable ? "number or list of numbers" : "number";
-        case KeyType::Integer: return "integer";
+        case KeyType::Integer: return integer_list ? "integer or list of integers" : "integer";
         case KeyType::Boolean: return "boolean";
         case KeyType::String: return "string";
         case KeyType::Choice: return "string";
@@ -42,7 +42,11 @@ std::string KeySpec::allowed_text() const {
         case KeyType::Real:
             return fmt::format("{} {}{}", sweepable ? "a number (or non-empty list of numbers)" : "a number",
                                range.text(), unit.empty() ? "" : " " + unit);
-        case KeyType::Integer: return fmt::format("an integer {}", range.text());
+        case KeyType::Integer:
+            if (integer_list)
+                return fmt::format("an integer {}, or a non-empty list of distinct integers {}", range.text(),
+                                   list_range.text());
+            return fmt::format("an integer {}", range.text());
         case KeyType::Boolean: return "true or false";
         case KeyType::String: return "a string";
         case KeyType::Choice: {
@@ -96,6 +100,13 @@ SectionSpec& SectionSpec::sweep(const std::string& key, std::optional<double> de
 }
 SectionSpec& SectionSpec::integer(const std::string& key, std::int64_t def, Range r, const std::string& help) {
     keys.push_back(make(key, KeyType::Integer, Value{def}, r, "", help));
+    return *this;
+}
+SectionSpec& SectionSpec::integer_or_list(const std::string& key, std::int64_t def, Range r, Range members,
+                                          const std::string& help) {
+    keys.push_back(make(key, KeyType::Integer, Value{def}, r, "", help));
+    keys.back().integer_list = true;
+    keys.back().list_range = members;
     return *this;
 }
 SectionSpec& SectionSpec::integer_optional(const std::string& key, Range r, const std::string& help) {
@@ -169,6 +180,7 @@ std::string value_text(const Value& v) {
             if (l.size() == 1) return fmt::format("{}", l[0]);
             return fmt::format("[{}]", fmt::join(l, ", "));
         }
+        std::string operator()(const std::vector<std::int64_t>& l) const { return fmt::format("[{}]", fmt::join(l, ", ")); }
     };
     return std::visit(V{}, v);
 }
@@ -189,7 +201,10 @@ std::string key_table(const SectionSpec& spec) {
         std::string allowed;
         switch (k.type) {
             case KeyType::Real: allowed = (k.sweepable ? "number or list, " : "") + k.range.text(); break;
-            case KeyType::Integer: allowed = "integer " + k.range.text(); break;
+            case KeyType::Integer:
+                allowed = "integer " + k.range.text() +
+                          (k.integer_list ? ", or list of distinct integers " + k.list_range.text() : "");
+                break;
             case KeyType::Boolean: allowed = "true, false"; break;
             case KeyType::String: allowed = "string"; break;
             case KeyType::Choice: allowed = fmt::format("{}", fmt::join(k.choices, ", ")); break;
@@ -238,7 +253,15 @@ std::optional<double> Section::maybe_real(const std::string& key) const {
     if (!has(key)) return std::nullopt;
     return real(key);
 }
-std::int64_t Section::integer(const std::string& key) const { return std::get<std::int64_t>(get(key, KeyType::Integer)); }
+std::int64_t Section::integer(const std::string& key) const {
+    const Value& v = get(key, KeyType::Integer);
+    if (!std::holds_alternative<std::int64_t>(v))
+        throw Error(fmt::format("internal: [{}] {} is a list; use integers()", spec_->name, key));
+    return std::get<std::int64_t>(v);
+}
+const std::vector<std::int64_t>* Section::integers(const std::string& key) const {
+    return std::get_if<std::vector<std::int64_t>>(&get(key, KeyType::Integer));
+}
 std::optional<std::int64_t> Section::maybe_integer(const std::string& key) const {
     if (!has(key)) return std::nullopt;
     return integer(key);

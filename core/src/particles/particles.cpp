@@ -359,10 +359,12 @@ void check_initial_particles(const Case& c, const OperatingPoint& pt, double per
 }
 
 InitialParticles initial_particles(const Case& c, const OperatingPoint& pt, const std::filesystem::path& root,
-                                   const InsertionOptions& opt_in, double periodic_depth, const std::string& fill_key) {
+                                   const InsertionOptions& opt_in, double periodic_depth, const std::string& fill_key,
+                                   const std::filesystem::path& member) {
     InitialParticles out;
     out.box = count_box(c, periodic_depth);
     out.file = initial_particles_path(root, pt.id);
+    if (!member.empty()) out.file = out.file.parent_path() / member / out.file.filename();
     const InsertionOptions opt = with_case(c, pt, opt_in);
     const double d = c.grains.diameter;
     const std::size_t n = point_grains(c, pt, out.box, fill_key, opt);

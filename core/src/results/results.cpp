@@ -133,6 +133,7 @@ nlohmann::json summary_json(const Summary& s) {
         out[name] = {{"value", v.value}, {"unit", v.unit}};
         out[name]["stderr"] = v.stderr_ ? nlohmann::json(*v.stderr_) : nlohmann::json(nullptr);
         if (v.dt_error) out[name]["dt_error"] = *v.dt_error;
+        if (v.block_stderr) out[name]["block_stderr"] = *v.block_stderr;
     }
     nlohmann::json prov = {{"granlub_version", s.provenance.version},
                            {"case_file", s.provenance.case_file},
@@ -166,6 +167,8 @@ Summary summary_from_json(const nlohmann::json& j, const std::string& source) {
             sc.unit = v.value("unit", "");
             if (v.contains("stderr") && !v.at("stderr").is_null()) sc.stderr_ = v.at("stderr").get<double>();
             if (v.contains("dt_error") && !v.at("dt_error").is_null()) sc.dt_error = v.at("dt_error").get<double>();
+            if (v.contains("block_stderr") && !v.at("block_stderr").is_null())
+                sc.block_stderr = v.at("block_stderr").get<double>();
             s.outputs[name] = sc;
         }
         const auto& p = j.at("provenance");
@@ -238,8 +241,15 @@ std::string result_problem(const std::filesystem::path& dir, const Summary& s, c
                            const std::string& case_name) {
     const auto sp = (dir / "summary.json").string();
     const auto pp = (dir / "profile.csv").string();
-    const std::string solver = dir.parent_path().filename().string();
-    const std::string point = dir.filename().string();
+    // a member of a set of seeds lies one folder deeper, in seed-<S> (results.h)
+    const std::string folder = dir.filename().string();
+    const bool member = folder.starts_with("seed-");
+    const std::filesystem::path point_dir = member ? dir.parent_path() : dir;
+    const std::string solver = point_dir.parent_path().filename().string();
+    const std::string point = point_dir.filename().string();
+    if (member && (!s.provenance.seed || folder != fmt::format("seed-{}", *s.provenance.seed)))
+        return fmt::format("{}: says seed {} but lies in the \"{}\" folder", sp,
+                           s.provenance.seed ? std::to_string(*s.provenance.seed) : "none", folder);
     if (s.solver != solver)
         return fmt::format("{}: says solver \"{}\" but lies in the \"{}\" results folder", sp, s.solver, solver);
     if (s.point != point) return fmt::format("{}: says point \"{}\" but lies in the \"{}\" folder", sp, s.point, point);
@@ -251,6 +261,9 @@ std::string result_problem(const std::filesystem::path& dir, const Summary& s, c
             return fmt::format("{}: output \"{}\" has stderr {} (allowed: finite, >= 0)", sp, name, *sc.stderr_);
         if (sc.dt_error && !(*sc.dt_error >= 0 && std::isfinite(*sc.dt_error)))
             return fmt::format("{}: output \"{}\" has dt_error {} (allowed: finite, >= 0)", sp, name, *sc.dt_error);
+        if (sc.block_stderr && !(*sc.block_stderr >= 0 && std::isfinite(*sc.block_stderr)))
+            return fmt::format("{}: output \"{}\" has block_stderr {} (allowed: finite, >= 0)", sp, name,
+                               *sc.block_stderr);
     }
     if (!(s.value("max_solid_fraction") > 0))
         return fmt::format("{}: max_solid_fraction = {} (allowed: > 0)", sp, s.value("max_solid_fraction"));

@@ -13,7 +13,8 @@ namespace {
 constexpr std::pair<RegimeStatus, const char*> kNames[] = {{RegimeStatus::Steady, "steady"},
                                                            {RegimeStatus::Transient, "transient"},
                                                            {RegimeStatus::DtUnconverged, "dt-unconverged"},
-                                                           {RegimeStatus::Ordered, "ordered"}};
+                                                           {RegimeStatus::Ordered, "ordered"},
+                                                           {RegimeStatus::Incomplete, "incomplete"}};
 
 double number(const nlohmann::json& j, const char* key, const std::string& where) {
     if (!j.is_object() || !j.contains(key) || !j.at(key).is_number())
@@ -120,7 +121,7 @@ Regime read_regime(const nlohmann::json& run) {
     const auto status = s.is_string() ? regime_status_from_string(s.get<std::string>()) : std::nullopt;
     if (!status)
         return {RegimeStatus::Unknown,
-                fmt::format("run.status = {} (allowed: \"steady\", \"transient\", \"dt-unconverged\", \"ordered\")", s.dump())};
+                fmt::format("run.status = {} (allowed: \"steady\", \"transient\", \"dt-unconverged\", \"ordered\", \"incomplete\")", s.dump())};
     Regime r{*status, run.contains("status_reason") && run.at("status_reason").is_string()
                           ? run.at("status_reason").get<std::string>()
                           : std::string()};

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "granlub/error.h"
+#include "granlub/particles/seeds.h"
 #include "granlub/run/progress.h"
 #include "granlub/results/run_id.h"
 #include "granlub/yade/driver.h"
@@ -57,7 +58,8 @@ nlohmann::json settings_json(const Settings& s) {
 // box, plate limits) and copied into the point folder, so the folder reruns by hand.
 InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingPoint& p, const Settings& s,
                             const fs::path& dir, nlohmann::json& record) {
-    const fs::path from = final_state_path(results_root(c, o), kWarmFrom, p.id);
+    // DEM's realisation of the same seed (seeds.h); with one seed its point folder, as always
+    const fs::path from = point_result_dir(c, o, kWarmFrom, p.id) / kFinalStateFile;
     if (!fs::exists(from))
         throw SolverError(fmt::format("point {}: [yade] start = \"warm\" starts from granlub dem's final state {}, "
                                       "which does not exist: run `granlub dem` on this case first, or set "
@@ -109,7 +111,7 @@ void run_piece(const DriverPaths& paths, const Case& c, const OperatingPoint& p,
     // a guard against hangs (docs/yade-notes.md §5), not a performance limit: a 2-core machine shared
     // by several jobs ran YADE 6x slower than a quiet one
     const double timeout = s.timeout > 0 ? s.timeout : 600.0 + 1e-4 * static_cast<double>(grains) * steps;
-    Progress progress(fmt::format("yade {}", p.id), static_cast<std::uint64_t>(steps));
+    Progress progress(fmt::format("yade {}", point_label(p.id, dir)), static_cast<std::uint64_t>(steps));
     const fs::path progress_file = dir / "progress";
     auto poll = [&] {
         if (!progress.due()) return;  // the driver's file is read only when a line will be written
@@ -131,7 +133,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     const InitialParticles init =
         s.warm_start ? warm_start(c, o, p, s, dir, warm)
                      : initial_particles(c, p, results_root(c, o), insertion(c, s), s.periodic_depth,
-                                         s.servo.insert_fill_key);
+                                         s.servo.insert_fill_key, initial_subfolder(c, o));
     ParticleBox start = init.box;  // the driver's cell: the top wall starts where granlub dem's does
     if (!s.warm_start) start.gap = s.servo.plate_start;
     const DriverPaths paths = locate_driver();
@@ -149,7 +151,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     fs::path from = init.file;
     double wall_s = 0, end_gap = start.gap;  // the last piece's plate at its end
     PointResult r;
-    const Continuation k = continue_until_steady(s.until_steady, s.time, "yade " + p.id, [&](std::int64_t times,
+    const Continuation k = continue_until_steady(s.until_steady, s.time, "yade " + point_label(p.id, dir), [&](std::int64_t times,
                                                                                               int index) {
         const Settings piece = index > 0 ? lengthened(s, times) : s;
         if (index > 0) {  // from where the last piece ended
@@ -194,6 +196,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
 }  // namespace
 
 void check(const Case& c, const RunOptions& o) {
+    seed_set(c, o);  // --seeds, --seed and [particles] seeds: bad input stops before any point runs
     for_each_run(c, o, [&](const OperatingPoint& p0, const RunOptions& v) {
         const Settings s = resolve_settings(c, p0, v);
         OperatingPoint p = p0;
@@ -203,14 +206,13 @@ void check(const Case& c, const RunOptions& o) {
 }
 
 int run(const Case& c, const RunOptions& o) {
-    // each point is one single-threaded YADE process (-j1): as many side by side as cores allow
-    const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
-    // a warm start reads dem's final states: dem's same points stay locked (shared) while yade runs,
-    // so that no dem run replaces them half-way through the sweep (granlub/run/run_lock.h)
+    // each point (each seed's realisation of it) is one single-threaded YADE process (-j1)
+    // a warm start reads dem's final states: dem's results stay locked (shared) while yade runs, so
+    // that no dem run replaces them half-way through the sweep (granlub/run/run_lock.h)
     const bool warm = c.section(kSolver.name).string("start") == "warm";
-    return run_sweep(c, kSolver.name, o, [&](const OperatingPoint& p, const fs::path& dir) {
+    return run_particle_sweep(c, kSolver.name, o, [&](const OperatingPoint& p, const RunOptions& ro, const fs::path& dir) {
         try {
-            return solve_point(c, p, o, dir);
+            return solve_point(c, p, ro, dir);
         } catch (const SolverError&) {
             throw;
         } catch (const Error& e) {  // bad input found for this point: same message, as a point failure
@@ -218,7 +220,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    }, at_once, warm ? std::vector<std::string>{kWarmFrom} : std::vector<std::string>{});
+    }, warm ? std::vector<std::string>{kWarmFrom} : std::vector<std::string>{});
 }
 
 }  // namespace granlub::yade

@@ -50,9 +50,36 @@ void summary_part(Report& rep, const Collection& col) {
     for (const auto& t : s.sentences) rep.note(t);
 }
 
+// Which standard error the statistics use (z, "a = b", bold): a result pooled over seeds has the
+// seeds' standard error; one run has its own block error, and how far that one can be trusted is
+// the measured factor by which other seeds scatter more (the sources named in the text).
+std::string error_used(const Collection& col) {
+    std::size_t pooled = 0, single = 0;
+    for (const auto& [key, r] : col.runs)
+        if (r.usable() && (key.first == "dem" || key.first == "yade")) ++(r.seeds_pooled() > 1 ? pooled : single);
+    const std::string pooled_text =
+        "Where a particle result pools several seeds ([particles] seeds or --seeds; its summary's run.seeds), its ± "
+        "and every z and a = b with it use the seeds' standard error, the scatter of the seeds' own results over √n "
+        "(the runs' block errors combined are kept beside it, block_stderr in summary.json); a point is steady only "
+        "if each of its seeds is, and incomplete while one is missing. ";
+    const std::string single_text =
+        std::string(pooled > 0 ? "The other statistical results' standard errors are" : "The standard errors are") +
+        " each run's own (block averages over one seed's steady window). Runs with other seeds scatter by more, "
+        "because each seed packs its own way: measured, in ν̄ 3.5 times one run's block error in LIGGGHTS and 5.1 "
+        "times in YADE on the loose rough cell (three seeds; cases/sawyer2001_rough_hertz/README.md, “The error "
+        "bars against the seeds”), in the wall shear stresses a median 2.1 and up to 6.5 times on the dense, "
+        "layered default cell (three or four seeds at three speeds and four steps; docs/measurements/dt-error.md, "
+        "“The main job's slice at its three speeds”; six seeds at 2.0 m/s there: 4–5 times in ν̄ and τ, 9 in the "
+        "slips, docs/measurements/engines.md, “Six seeds pooled”). So such a z can be 2–9 times too large: a bold "
+        "z says that these two runs differ; whether the solvers do needs several seeds ([particles] seeds or "
+        "--seeds), pooled. ";
+    if (pooled == 0) return single_text;
+    return single == 0 ? pooled_text : pooled_text + single_text;
+}
+
 // The one legend: what every figure's markers, lines and bands mean, the statuses and the table
 // cells; the captions say only what is particular to their figure.
-void how_to_read(Report& rep) {
+void how_to_read(Report& rep, const Collection& col) {
     rep.heading("How to read this report");
     rep.text("Figures: one colour, dash and marker per solver, the same in every figure (Okabe–Ito colours, "
              "distinguishable in greyscale). y/H = 0 is the moving wall (speed U), y/H = 1 the stationary wall; "
@@ -63,18 +90,15 @@ void how_to_read(Report& rep) {
              "“dem: transient”, “dem: dt-unconverged”); they are shown for information only and left out of every fit "
              "and comparison. Under each figure: its SVG, PDF, data and gnuplot source.");
     rep.text("Statuses: steady: a steady-state result, compared. transient: the run ended before a steady state "
-             "was detected. dt-unconverged: halving the time step changed the answer. status unknown: the summary "
-             "does not say (written before granlub recorded it). These three are greyed and italic in tables and "
+             "was detected. dt-unconverged: halving the time step changed the answer. incomplete: a point pooled over seeds that some of "
+             "its seeds are still missing from. status unknown: the summary "
+             "does not say (written before granlub recorded it). These are greyed and italic in tables and "
              "hollow in figures, never fitted, compared or bold. failed: the solver failed on the point. no answer: "
              "the solver's model cannot answer the point's question (not a failure). missing: no result. stale: "
              "computed for other inputs (rerun the solver). corrupt: cannot be read or fails the checks.");
     rep.text("Tables: in the summary, a = b: steady results agreeing within their combined standard errors "
              "(|z| ≤ 2); the others: their difference from the first. Bold = a significant difference, more than "
-             "twice the combined standard error (|z| > 2). The standard errors are each run's own (block averages "
-             "over one seed's steady window). Runs with other seeds can scatter by more, because each seed packs "
-             "its own way (measured: in ν̄ 3–5 times one run's error on the loose rough cell; in the wall stresses "
-             "a median 2 and up to 6 times on the dense, layered default cell), so a bold z says that these two "
-             "runs differ; whether the solvers do needs more seeds (--seed). "
+             "twice the combined standard error (|z| > 2). " + error_used(col) +
              "Between deterministic results every difference is a model difference and has no z. [Δt x]: the "
              "value's time-step error estimate. “(lattice)”, “lattice analogue”: " + std::string(kLatticeStressNote) +
              ". Wall stresses are fitted against U as σ = c Uⁿ over a solver's steady points (at "
@@ -251,7 +275,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     Report rep;
     opening(rep, c, col);
     summary_part(rep, col);
-    how_to_read(rep);
+    how_to_read(rep, col);
     results_found(rep, c, col);
     // The registry's headings in its order; the stress exponents after the stress figures, the
     // regimes after them, the ring after the figures.

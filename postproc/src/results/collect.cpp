@@ -108,6 +108,13 @@ Run load_run(const Case& c, const std::filesystem::path& root, const std::string
     return r;
 }
 
+std::size_t Run::seeds_pooled() const {
+    if (!usable() || !summary->run.is_object()) return 0;
+    const auto it = summary->run.find("seeds");
+    if (it == summary->run.end() || !it->is_object() || !it->contains("pooled") || !it->at("pooled").is_array()) return 0;
+    return it->at("pooled").size();
+}
+
 std::string Run::state_name() const {
     if (usable()) return regime.status == RegimeStatus::Unknown ? "status unknown" : to_string(regime.status);
     if (failure) return failure->no_answer ? "no answer" : "failed";

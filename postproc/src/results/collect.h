@@ -66,6 +66,9 @@ struct Run {
     // before it was recorded, read from its run block (a particle engine's simulated time, a
     // lattice's lattice, else a continuum's); nothing without a summary or with a kind not known.
     std::optional<SolverKind> kind() const;
+    // How many seeds a particle result pools (run.seeds.pooled, granlub/particles/seed_pool.h): its
+    // standard errors are then the seeds' standard error; 0 for one run, whose are its own block errors.
+    std::size_t seeds_pooled() const;
 
 private:
     std::optional<double> scaled_error(const std::string& name,

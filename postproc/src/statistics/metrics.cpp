@@ -198,6 +198,8 @@ std::string metrics_csv(const std::vector<MetricRow>& rows) {
     std::string out = "# granlub compare: cross-code metrics. Differences are solver_a - solver_b on normalised\n"
                       "# profiles (y/H grid of 101 points over the overlap of both solvers' stations) and scalars;\n"
                       "# combined_stderr = sqrt(se_a^2 + se_b^2), z = difference / combined_stderr, significant = |z| > 2.\n"
+                      "# a_stderr, b_stderr: a particle result pooled over seeds (run.seeds in its summary): the seeds'\n"
+                      "# standard error; one run: its own block error (other seeds scatter 2-9x more: the report's legend).\n"
                       "# exponent rows: n in stress = c U^n fitted per solver (a = n, a_stderr its standard error)\n"
                       "# over steady points only, at least 3. status_a/status_b: each run's regime (steady, transient,\n"
                       "# dt-unconverged, status unknown); a pair with a run that is not steady has no difference, z or\n"

@@ -84,6 +84,8 @@ struct OperatingPoint {
 
 // Bounds on what a case may ask for, so that a typo cannot exhaust memory or overflow a count.
 inline constexpr std::size_t kMaxOperatingPoints = 10000;
+// The longest list an integer key takes ([particles] seeds), and the largest count of seeds.
+inline constexpr std::size_t kMaxIntegerList = 1000;
 inline constexpr std::size_t kMaxCaseFileBytes = 1u << 20;
 inline constexpr std::size_t kMaxTitleBytes = 200;
 

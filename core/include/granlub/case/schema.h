@@ -47,8 +47,9 @@ struct Range {
 
 enum class KeyType { Real, Integer, Boolean, String, Choice };
 
-// A value as stored after parsing. Sweepable keys hold a list of reals.
-using Value = std::variant<double, std::int64_t, bool, std::string, std::vector<double>>;
+// A value as stored after parsing. Sweepable keys hold a list of reals; an integer key that takes a
+// list (SectionSpec::integer_or_list), given one, holds that list of integers.
+using Value = std::variant<double, std::int64_t, bool, std::string, std::vector<double>, std::vector<std::int64_t>>;
 
 struct KeySpec {
     std::string name;
@@ -67,6 +68,13 @@ struct KeySpec {
     // The default does what was computed before the key existed: at its default the key is left
     // out of the inputs hash (Case::inputs_hash), so adding it made no earlier result stale.
     bool neutral_default = false;
+    // Integer keys: a non-empty list of distinct integers, each in list_range, is also taken
+    // (SectionSpec::integer_or_list; e.g. [particles] seeds: a count or the seeds themselves).
+    bool integer_list = false;
+    Range list_range;
+    // False: not one of the results' inputs (never in the inputs hash), for a key that chooses
+    // which results are computed, not what any of them is ([particles] seeds).
+    bool input = true;
 
     std::string allowed_text() const;    // "a real number in (0, 1]", "one of "a", "b"", ...
     std::string type_name() const;
@@ -98,6 +106,9 @@ struct SectionSpec {
                        const std::string& doc);
     SectionSpec& integer(const std::string& key, std::int64_t def, Range r, const std::string& doc);
     SectionSpec& integer_optional(const std::string& key, Range r, const std::string& doc);
+    // An integer in `r`, or a non-empty list of distinct integers each in `members` (Section::integers).
+    SectionSpec& integer_or_list(const std::string& key, std::int64_t def, Range r, Range members,
+                                 const std::string& doc);
     SectionSpec& boolean(const std::string& key, bool def, const std::string& doc);
     SectionSpec& string(const std::string& key, std::string def, const std::string& doc);
     SectionSpec& choice(const std::string& key, std::string def, std::vector<std::string> allowed,
@@ -136,6 +147,8 @@ public:
     bool boolean(const std::string& key) const;
     const std::string& string(const std::string& key) const;  // String and Choice keys
     const std::vector<double>& list(const std::string& key) const;  // sweepable keys
+    // An integer_or_list key given as a list: that list; null when it holds one integer (integer()).
+    const std::vector<std::int64_t>* integers(const std::string& key) const;
     bool has(const std::string& key) const;
     bool is_default(const std::string& key) const;
     std::optional<SourcePos> where(const std::string& key) const;

@@ -128,10 +128,12 @@ struct InitialParticles {
 // when it exists and was made from the same inputs (its "key" comment matches: box, d, N,
 // U, noise, seed); otherwise inserts the grains to the point's solid_fraction and writes the file.
 // The first particle solver to run a point creates it, the other reuses it.
-// `fill_key` names where p.solid_fraction came from, for error messages.
+// `fill_key` names where p.solid_fraction came from, for error messages. `member`: a realisation
+// of a set of seeds keeps its own file, in initial/<point>/<member>/ (seeds.h, initial_subfolder).
 InitialParticles initial_particles(const Case& c, const OperatingPoint& p, const std::filesystem::path& results_root,
                                    const InsertionOptions& opt, double periodic_depth = 0,
-                                   const std::string& fill_key = "[operating] solid_fraction");
+                                   const std::string& fill_key = "[operating] solid_fraction",
+                                   const std::filesystem::path& member = {});
 // What initial_particles() would reject (too many grains, more than fit without overlaps), found
 // without inserting any: the particle solvers' part of `granlub check`. Throws CaseError.
 void check_initial_particles(const Case& c, const OperatingPoint& p, double periodic_depth = 0,

@@ -9,6 +9,8 @@
 //   Standard outputs (see kStandardOutputs): normal and shear stress on each wall (Pa, positive
 //   magnitudes), slip at each wall (m/s: U - u(0) at the bottom, u(H) at the top),
 //   mean_solid_fraction, max_solid_fraction.
+// A point pooled over several seeds (granlub/particles/seeds.h) holds its members' results one
+// folder deeper, <solver>/<point>/seed-<S>/, each a point result of its own.
 // summary.json is written last and is the completion marker: a run that dies leaves at most a
 // profile.csv without a current summary, which counts as incomplete.
 // Every file of a point names the run that wrote it (run_id.h): summary.json's provenance.run_id
@@ -59,6 +61,9 @@ struct Scalar {
     // the time-step error estimate of a value checked at half the time step: |value(dt) - value(dt/2)|,
     // the value being the dt/2 run's (the error of a first-order method at dt/2)
     std::optional<double> dt_error = std::nullopt;
+    // a point pooled over seeds (seed_pool.h): stderr is the seeds' standard error, and this the
+    // members' own block errors combined, sqrt(sum se_i^2) / n, what they alone would claim
+    std::optional<double> block_stderr = std::nullopt;
 };
 
 // The tables a point's run may write beside profile.csv, named here so that the results model
@@ -144,7 +149,8 @@ struct LoadedResult {
 // `granlub compare` (plot or name as corrupt) alike. Corrupt: a file is missing or unreadable, a
 // number is not finite, a standard error is negative, y_over_H is not increasing within [0, 1],
 // max_solid_fraction is not positive, or the summary names another solver, point (both taken
-// from the folder, <root>/<solver>/<point>) or case (when `case_name` is given), or the point's
+// from the folder, <root>/<solver>/<point>, or <root>/<solver>/<point>/seed-<S> for a member of a
+// set of seeds, whose summary must name seed S) or case (when `case_name` is given), or the point's
 // files do not all name the summary's run (a table from another run, or results written before
 // run ids: recomputing them is the safe side, see load_result). Stale: all that
 // holds but the summary's inputs_hash differs from the key's. Never throws for bad files.

@@ -2,7 +2,7 @@
 // Every solver writes it into summary.json's run block; the report reads it and never shows a
 // transient as a result.
 //
-//   run.status         "steady" | "transient" | "dt-unconverged" | "ordered"
+//   run.status         "steady" | "transient" | "dt-unconverged" | "ordered" | "incomplete"
 //   run.status_reason  one sentence: why (empty for a plain steady result)
 //   run.dt_refinement  optional: the same point rerun at half the time step, see below
 //
@@ -27,10 +27,12 @@ enum class RegimeStatus {
     DtUnconverged,  // steady, but halving the time step changes the answer
     Ordered,        // a continuum solution its own theory calls ordered (crystallization criterion):
                     // outside the theory's validity, labelled, never drawn as a number
+    Incomplete,     // a point pooled over seeds (seed_pool.h) that some of its seeds are still missing
+                    // from: not an answer until every one is there
     Unknown,        // the summary does not say (older summaries)
 };
 
-std::string to_string(RegimeStatus s);  // "steady", "transient", "dt-unconverged", "ordered", "unknown"
+std::string to_string(RegimeStatus s);  // "steady", "transient", "dt-unconverged", "ordered", "incomplete", "unknown"
 // The written names only ("unknown" is never written); nothing for any other text.
 std::optional<RegimeStatus> regime_status_from_string(std::string_view s);
 

@@ -18,7 +18,9 @@ namespace granlub {
 struct RunOptions {
     std::string point;                        // empty: all points
     bool force = false;                       // recompute complete points
-    std::optional<std::uint64_t> seed;        // statistical solvers
+    std::optional<std::uint64_t> seed;        // statistical solvers; with a set of seeds, the one member to run
+    std::string seeds;                        // particle engines: --seeds N|LIST ("" = [particles] seeds;
+                                              // granlub/particles/seeds.h)
     int np = 1;                               // MPI ranks (dem)
     int threads = 0;                          // 0: solver default
     bool vtk = false;                         // write ParaView files where supported
@@ -56,6 +58,24 @@ void for_each_run(const Case& c, const RunOptions& o,
 // (pipeline.h) the pipeline holds those locks, and each point waits for the points it reads.
 int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const PointSolver& solve,
               int points_at_once = 1, const std::vector<std::string>& reads = {});
+
+// A point answered by several realisations (the particle engines' seeds, granlub/particles/seeds.h):
+// each member of `run` is computed into <point>/seed-<S>/ as a point of its own (skipped when
+// complete with that seed, recomputed when stale; its own failure record), by solve() given the
+// options with seed = S. After each member that is complete (computed or skipped), pool() rewrites
+// the point's own files, <point>/profile.csv and summary.json, from the members found there; a
+// pipeline (pipeline.h) knows each member as "<point>/seed-<S>". Members of a point, and points,
+// share the `points_at_once` slots.
+struct Realisations {
+    std::vector<std::uint64_t> run;  // the members this sweep computes, ascending
+    std::function<PointResult(const OperatingPoint&, const RunOptions&, const std::filesystem::path& dir)> solve;
+    std::function<void(const OperatingPoint&, const std::filesystem::path& point_dir)> pool;
+};
+int run_sweep(const Case& c, const std::string& solver, const RunOptions& o, const Realisations& r,
+              int points_at_once = 1, const std::vector<std::string>& reads = {});
+
+// The folder of a point's realisation with seed S inside the point's folder: "seed-<S>".
+std::string realisation_folder(std::uint64_t seed);
 
 // How many single-process points fit the machine: --threads (default: all cores) over --np ranks
 // per point, at least 1 and at most `points`; all of them when they are fewer than two rounds of

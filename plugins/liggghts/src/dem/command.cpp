@@ -14,6 +14,7 @@
 #include "granlub/error.h"
 #include "granlub/particles/particle_pipeline.h"
 #include "granlub/particles/particles.h"
+#include "granlub/particles/seeds.h"
 #include "granlub/particles/until_steady.h"
 #include "granlub/results/failure_record.h"
 #include "granlub/results/results.h"
@@ -92,7 +93,8 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     OneRun r;
     // the check's coarse run names itself in the progress line
     const bool check = dir.filename() == kDtCheckDir;
-    const std::string label = check ? fmt::format("dem {} {}", p.id, kDtCheckDir) : "dem " + p.id;
+    const std::string who = point_label(p.id, dir);  // with a set of seeds, the member too
+    const std::string label = check ? fmt::format("dem {} {}", who, kDtCheckDir) : "dem " + who;
     r.er = run_engine(dir, kDeck, s.np, s.steps, kWallFile, s.sample_every, label);
 
     // LIGGGHTS' files into the shared series; the rest is the one particle pipeline
@@ -163,7 +165,7 @@ Continued run_continued(const Case& c, const OperatingPoint& p, const Settings& 
                         const fs::path& dir, const std::string& prov) {
     Continued r;
     InitialParticles start = init;
-    r.record = continue_until_steady(s.until_steady, s.time, "dem " + p.id, [&](std::int64_t times, int index) {
+    r.record = continue_until_steady(s.until_steady, s.time, "dem " + point_label(p.id, dir), [&](std::int64_t times, int index) {
         Settings piece = s;
         if (index > 0) {  // from where the last piece ended: its grains, spins and plate
             const ParticleState st = read_particle_state(dir / kFinalState);
@@ -218,6 +220,7 @@ void move_run(const fs::path& dir, const fs::path& to) {
     for (const auto& e : fs::directory_iterator(dir)) {
         const std::string name = e.path().filename().string();
         if (name == kDtCheckDir || name == kDtHalfDir || name == "summary.json" || name == kFailureFile) continue;
+        if (name.starts_with("seed-")) continue;  // the point's realisations of a set of seeds (seeds.h)
         entries.push_back(e.path());
     }
     for (const auto& e : entries) fs::rename(e, to / e.filename());
@@ -257,7 +260,7 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
     r.first_check = std::move(first);
     fmt::print(stderr, "dem {}: the run at half the step is not checked by the full step ({}); halving it once more "
                "([dem] refine_halvings = {})\n",
-               p.id, *why, s.refine_halvings);
+               point_label(p.id, dir), *why, s.refine_halvings);
     move_run(dir, dir / kDtHalfDir);
     write_check_profile(dir / kDtHalfDir, r.runs[1],
                         fmt::format("case {} point {}: the run at half the time step ({:g} s), which failed its check "
@@ -321,7 +324,8 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     p.solid_fraction = s.insert_fill;
 
     const InsertionOptions ins = insertion(c, s);
-    const InitialParticles init = initial_particles(c, p, results_root(c, o), ins, s.box.width, s.insert_fill_key);
+    const InitialParticles init =
+        initial_particles(c, p, results_root(c, o), ins, s.box.width, s.insert_fill_key, initial_subfolder(c, o));
 
     const std::string prov = fmt::format("granlub {}, case hash {}, seed {}, {}", version(), c.file_hash, s.seed,
                                          utc_now());
@@ -402,6 +406,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
 }  // namespace
 
 void check(const Case& c, const RunOptions& o) {
+    seed_set(c, o);  // --seeds, --seed and [particles] seeds: bad input stops before any point runs
     for_each_run(c, o, [&](const OperatingPoint& p0, const RunOptions& v) {
         OperatingPoint p = p0;
         const Settings s = resolve_settings(c, p, v);
@@ -411,10 +416,10 @@ void check(const Case& c, const RunOptions& o) {
 }
 
 int run(const Case& c, const RunOptions& o) {
-    // each point is its own LIGGGHTS process of --np ranks: as many side by side as cores allow
-    const int at_once = points_at_once(o, static_cast<int>(c.select(o.point).size()));
-    return run_sweep(
-        c, kSolver.name, o, [&](const OperatingPoint& p, const fs::path& dir) { return solve_point(c, p, o, dir); }, at_once);
+    // each point (each seed's realisation of it) is its own LIGGGHTS process of --np ranks
+    return run_particle_sweep(c, kSolver.name, o, [&](const OperatingPoint& p, const RunOptions& ro, const fs::path& dir) {
+        return solve_point(c, p, ro, dir);
+    });
 }
 
 }  // namespace granlub::dem
