@@ -146,3 +146,29 @@ BOOST_AUTO_TEST_CASE(each_engine_is_an_array_of_one_task_per_point) {
     fs::remove_all(dir);
 }
 #endif
+
+#ifdef GRANLUB_TEST_ENGINES
+BOOST_AUTO_TEST_CASE(a_set_of_seeds_is_one_task_per_point_and_member) {
+    const fs::path dir = scratch("seeds");
+    std::string text = granlub::test::tiny_cell("tiny_slurm_seeds", "", "time = 0.02\nsample_every = 20\n");
+    text.replace(text.find("speed = [1.0]"), 13, "speed = [1.0, 2.0]");
+    std::ofstream(dir / "case.toml") << text;
+    const fs::path root = dir / "results";
+    const auto o = slurm(dir.string() + " --solvers dem --seeds 1,2,7 --results " + root.string());
+    BOOST_TEST_REQUIRE(o.rc == 0, o.text);
+    const std::string dem = read_file(root / "slurm" / "dem.sbatch");
+    BOOST_TEST(has(dem, "#SBATCH --array=0-5\n"), dem);  // 2 points x 3 members
+    const std::string case_file = (dir / "case.toml").string();
+    // task i: point i / 3, member i % 3
+    BOOST_TEST(task_command(root / "slurm" / "dem.sbatch", 4) ==
+               "dem " + case_file + " --results " + root.string() + " --point U2.0 --seeds 1,2,7 --seed 2\n");
+    BOOST_TEST(task_command(root / "slurm" / "dem.sbatch", 2) ==
+               "dem " + case_file + " --results " + root.string() + " --point U1.0 --seeds 1,2,7 --seed 7\n");
+    // a set with a repeated seed stops before anything is written, naming the flag
+    const auto bad = slurm(dir.string() + " --solvers dem --seeds 1,1 --results " + (dir / "bad").string());
+    BOOST_TEST(bad.rc == 2, bad.text);
+    BOOST_TEST(has(bad.text, "--seeds"), bad.text);
+    BOOST_TEST(!fs::exists(dir / "bad" / "slurm" / "dem.sbatch"));
+    fs::remove_all(dir);
+}
+#endif
