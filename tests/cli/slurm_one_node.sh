@@ -5,14 +5,15 @@
 # submitted, waited for (at most 400 s), and their results and report checked. The daemons are
 # stopped on every way out (the EXIT trap; they are this script's children, not forked away).
 # Exit 77 (ctest: skipped) when no Slurm can be started here, saying why.
-# Usage: slurm_one_node.sh GRANLUB
+# Usage: slurm_one_node.sh GRANLUB PRINT_TINY_CELL
 #
 # What a one-node Slurm needs, measured on Debian 12 (Slurm 22.05, munge 0.5.15) on 2026-12-06:
 # munged in the foreground with --force (as root it only warns) on its own socket and key;
 # slurmctld -D and slurmd -D with one slurm.conf (SLURM_CONF for the clients); the node is `idle`
 # in `sinfo` a few seconds after. Tasks of an array run two at a time on 2 cores.
 set -uo pipefail
-granlub=$(realpath "${1:?usage: slurm_one_node.sh GRANLUB}")
+granlub=$(realpath "${1:?usage: slurm_one_node.sh GRANLUB PRINT_TINY_CELL}")
+print_tiny_cell=$(realpath "${2:?usage: slurm_one_node.sh GRANLUB PRINT_TINY_CELL}")
 
 skip() { echo "SKIP: $*"; exit 77; }
 [ "$(id -u)" -eq 0 ] || skip "not root: slurmd must run as root to start jobs (run the suite as root to test the cluster route)"
@@ -110,34 +111,9 @@ done
 # --- the case: the small shear cell of the particle tests (tests/liggghts/tiny_cell_text.h), two
 # speeds, DEM for 0.02 s and YADE warm-started from it for 0.004 s: seconds a task
 mkdir -p "$tmp/case"
-cat >"$tmp/case/case.toml" <<'EOF'
-[case]
-name = "tiny_slurm"
-[grains]
-diameter = 1.0e-3
-density = 2500.0
-restitution = 0.9
-friction = 0.5
-[walls]
-restitution = 0.8
-roughness = 0.5
-[cell]
-gap = 6.0e-3
-length = 8.0e-3
-width = 6.0e-3
-annulus_radius = 0.05
-[operating]
-speed = [1.0, 2.0]
-solid_fraction = 0.4
-[body_forces]
-gravity = 9.81
-[dem]
-time = 0.02
-sample_every = 20
-[yade]
-start = "warm"
-time = 0.004
-EOF
+"$print_tiny_cell" tiny_slurm "" $'time = 0.02\nsample_every = 20\n' $'[yade]\nstart = "warm"\ntime = 0.004\n' |
+  sed 's/^speed = \[1\.0\]$/speed = [1.0, 2.0]/' >"$tmp/case/case.toml" || fail "could not write the case"
+grep -q '^speed = \[1.0, 2.0\]$' "$tmp/case/case.toml" || fail "the tiny cell has no speed = [1.0] line to widen"
 
 results="$tmp/case/results"
 cd "$tmp"  # the jobs start in the folder they were submitted from
