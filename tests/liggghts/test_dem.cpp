@@ -22,6 +22,7 @@
 #include "granlub/results/run_status.h"
 #include "granlub/results/results.h"
 #include "granlub/run/sweep.h"
+#include "deck.h"
 #include "outputs.h"
 #include "run_driver.h"
 #include "settings.h"
@@ -298,6 +299,43 @@ BOOST_AUTO_TEST_CASE(bad_inputs_give_clear_errors) {
             BOOST_TEST(std::string(e.what()).find("time_step") != std::string::npos);
         }
     }
+}
+
+// [dem] boundary_pairs: "pass_start" writes model impulse's boundary_start on (the single pass's
+// boundary pairs from the positions as the pass began); "sequential", the default, leaves the deck,
+// the provenance and the inputs hash as they were before the key existed.
+BOOST_AUTO_TEST_CASE(boundary_pairs_pass_start_is_a_switch_of_the_single_pass) {
+    const Case base = parse_case(kCase, "tiny.toml", schema());
+    auto with = [](const std::string& keys) {
+        return parse_case(edit(kCase, "\\[dem\\]", "[dem]\n" + keys), "tiny.toml", schema());
+    };
+    const Case sequential = with("boundary_pairs = \"sequential\"");
+    const Case pass_start = with("boundary_pairs = \"pass_start\"");
+    BOOST_TEST(sequential.inputs_hash("dem") == base.inputs_hash("dem"));  // neutral: no result stale
+    BOOST_TEST(pass_start.inputs_hash("dem") != base.inputs_hash("dem"));
+    const auto s0 = dem::resolve_settings(base, base.points.front(), RunOptions{});
+    const auto s1 = dem::resolve_settings(pass_start, pass_start.points.front(), RunOptions{});
+    BOOST_TEST(!s0.boundary_start);
+    BOOST_TEST(s1.boundary_start);
+    BOOST_TEST(dem::model_text(s0).settings == " beta0 0 separate on iterate off");  // as before the key
+    BOOST_TEST(dem::model_text(s1).settings == " beta0 0 separate on iterate off boundary_start on");
+    BOOST_TEST(!s0.to_json().contains("boundary_pairs"));
+    BOOST_TEST(s1.to_json().at("boundary_pairs") == "pass_start");
+    // refused where nothing moves in a single pass: another law, the iterated solve, no overlap removal
+    for (const char* combo : {"model = \"hertz\"", "contact_solve = \"iterated\"", "separate_overlaps = false"}) {
+        const Case c = with(std::string(combo) + "\nboundary_pairs = \"pass_start\"");
+        try {
+            dem::resolve_settings(c, c.points.front(), RunOptions{});
+            BOOST_FAIL("expected a CaseError for " << combo);
+        } catch (const CaseError& e) {
+            const std::string w = e.what();
+            BOOST_TEST(w.find("boundary_pairs") != std::string::npos, w);
+            BOOST_TEST(w.find("allowed") != std::string::npos, w);
+        }
+    }
+    // impact_time moves grains in the pass too: accepted without overlap removal
+    const Case timed = with("separate_overlaps = false\nimpact_time = true\nboundary_pairs = \"pass_start\"");
+    BOOST_TEST(dem::resolve_settings(timed, timed.points.front(), RunOptions{}).boundary_start);
 }
 
 // [dem] strain: a run length in shear strain U t / H, never below `time`, capped by strain_time_max.

@@ -30,7 +30,8 @@
     impulses would differ between the two sides, so momentum would not be
     conserved (measured: docs/measurements/enduring-contacts.md, "The recorded wall
     forces balance the grains' momentum"). From the same start-of-step state
-    both sides give the same impulse, equal and opposite.
+    both sides give the same impulse, equal and opposite in the velocities.
+    Their positions agree only with boundary_start on (below).
 
     What Sawyer & Tichy state and what we add. S&T define the operator for
     a collision (Eq. 19) and resolve overlaps one after the other; they say
@@ -51,6 +52,14 @@
     approach speeds above V, e = 0 below, as Chrono, Bullet and Box2D do for
     resting contacts. It neither changes the answer nor speeds up its
     convergence in dt (measured: the same page), so it is off by default.
+
+    boundary_start on|off (default off; ours). With iterate off and
+    separate (or impact_time) on, a pair across a periodic or processor
+    boundary takes its geometry from the positions as the pair pass began:
+    `separate` moves the owned grain during the pass, not its image on the
+    other side, so without it the two owners see two geometries and
+    momentum is made (impulse_boundary.h). Off keeps the sequential
+    geometry of every earlier result; on costs about a quarter more per step.
 
     iterate on|off (default on; ours). With iterate on this model computes no
     force: it hands every contact it finds (geometry, e, bounce_speed,
@@ -100,6 +109,7 @@ NORMAL_MODEL(IMPULSE,impulse,50)
 #include "fix_wall_gran.h"
 #include "comm.h"
 #include <cstdio>
+#include "impulse_boundary.h"
 #include "impulse_contacts.h"
 #include "impulse_impact_time.h"
 #include "impulse_speculative.h"
@@ -124,7 +134,10 @@ namespace ContactModels
       speculative(false),
       historyOffset(-1),
       wall(dynamic_cast<LAMMPS_NS::FixWallGran *>(hsetup)),
-      sink(NULL)
+      sink(NULL),
+      boundaryStartOn(false),
+      startRecorded(false),
+      warnedBeyond(false)
     {}
 
     // separate on (default): also remove the overlap (see above); off: velocities only.
@@ -137,6 +150,7 @@ namespace ContactModels
       settings.registerOnOff("iterate", iterate, true);
       settings.registerOnOff("impact_time", impactTime, false);
       settings.registerOnOff("speculative", speculative, false);  // impulse_speculative.h
+      settings.registerOnOff("boundary_start", boundaryStartOn, false);  // impulse_boundary.h
     }
     inline void postSettings(IContactHistorySetup * hsetup, ContactModelBase * cmb)
     {
@@ -145,6 +159,10 @@ namespace ContactModels
       if (impactTime && iterate)
         error->all(FLERR, "model impulse: impact_time on is an option of the single pass: it needs 'iterate off' "
                           "(allowed: impact_time off with iterate on or off, impact_time on with iterate off)");
+      if (boundaryStartOn && iterate)
+        error->all(FLERR, "model impulse: boundary_start on is an option of the single pass (the iterated solve "
+                          "resolves boundary pairs from one state already): it needs 'iterate off' (allowed: "
+                          "boundary_start off with iterate on or off, boundary_start on with iterate off)");
       if (speculative && impactTime)
         error->all(FLERR, "model impulse: speculative on and impact_time on are two alternatives of the single pass "
                           "(allowed: at most one of them on)");
@@ -175,6 +193,9 @@ namespace ContactModels
       sink = find_sink();
       // speculative on: pairs and walls that are close but not touching reach surfacesClose
       if (speculative) neighbor->register_contact_dist_factor(kSpeculativeDistance);
+      // the single pass moving positions: boundary pairs that touched as the pass began (impulse_boundary.h)
+      if (moves_in_pass()) neighbor->register_contact_dist_factor(kBoundaryDistance);
+      warnedBeyond = false;
       if (iterate && !sink && !wall) sink = make_sink();
       if (iterate && !sink)
         error->all(FLERR, ("model impulse (" + where() + ") iterates ('iterate on', the default) but the run has no "
@@ -198,7 +219,13 @@ namespace ContactModels
         collect(sidata);
         return;
       }
+      if (start_geometry(sidata)) resolve_boundary(sidata, i_forces, j_forces, false);
+      else single_pass(sidata, i_forces, j_forces);
+    }
 
+    // Sawyer & Tichy's single pass on a touching contact (iterate off)
+    inline void single_pass(SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
+    {
       // approaching only: v_n = (v_i - v_j).e_n < 0 (e_n points from j to i), with the
       // impulses of the contacts resolved earlier in this step (sequential resolution) -- except
       // across a periodic or processor boundary (see boundary_pair)
@@ -224,6 +251,13 @@ namespace ContactModels
     {
       if (scdata.contact_flags)
         *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
+      if (boundaryStartOn) {
+        static_cast<SurfacesIntersectData &>(scdata).Fn = 0.0;  // tangential impulse may read it
+        if (start_geometry(scdata)) {
+          resolve_boundary(static_cast<SurfacesIntersectData &>(scdata), i_forces, j_forces, true);
+          return;
+        }
+      }
       if (!speculative) return;
       if (iterate) collect_close(scdata);
       else speculate(scdata, i_forces, j_forces);
@@ -233,8 +267,24 @@ namespace ContactModels
     inline void beginPass(SurfacesIntersectData & sidata, ForceData &, ForceData &)
     {
       if (iterate && sidata.computeflag && !sidata.is_wall) sink->begin_collection();
+      // the single pass: where the owned grains were as the pass began (impulse_boundary.h)
+      startRecorded = moves_in_pass() && sidata.computeflag && !sidata.is_wall;
+      if (startRecorded) boundaryStart.record(atom->x, atom->nlocal);
     }
-    inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &)
+    {
+      if (!startRecorded) return;
+      startRecorded = false;
+      const int moved = boundaryStart.beyond(atom->x, atom->radius, atom->nlocal);
+      if (moved == 0 || warnedBeyond) return;
+      warnedBeyond = true;
+      char msg[320];
+      std::snprintf(msg, sizeof(msg), "model impulse: at step %lld separate moved %d grains by more than %g of their "
+                    "radius within one pass: a pair of theirs across a periodic or processor boundary may have been "
+                    "resolved on one side only (impulse_boundary.h; a smaller time step keeps the moves small; warned "
+                    "once per run)", static_cast<long long>(update->ntimestep), moved, kBoundaryDistance - 1.0);
+      error->warning(FLERR, msg);
+    }
 
     // One grain a ghost: resolved from the start-of-step velocities alone, identically by both
     // owners (newton off) or once (newton on), so the two grains get equal and opposite impulses.
@@ -244,6 +294,44 @@ namespace ContactModels
     }
 
   private:
+    // boundary_start on and the single pass moves grains during the pass (separate, impact_time's replay)
+    inline bool moves_in_pass() const
+    {
+      return boundaryStartOn && !iterate && !wall && (separate || impactTime);
+    }
+
+    // a boundary pair of a force pass whose start positions were recorded: its geometry is theirs
+    // (impulse_boundary.h), both in the overlap path and in the close one
+    inline bool start_geometry(const SurfacesCloseData & scdata) const
+    {
+      const SurfacesIntersectData & sidata = static_cast<const SurfacesIntersectData &>(scdata);
+      return startRecorded && sidata.computeflag && boundary_pair(sidata);
+    }
+
+    // A boundary pair from the positions as the pass began: the single pass if it touched then, the
+    // speculative rule if it was close (speculative on), else nothing. From surfacesClose (close:
+    // pair gran has not set the masses and spins) or from surfacesIntersect.
+    inline void resolve_boundary(SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces,
+                                 bool close)
+    {
+      sidata.Fn = sidata.kn = sidata.kt = sidata.gamman = sidata.gammat = 0.0;
+      const double reach = speculative ? kSpeculativeDistance : 1.0;
+      if (!boundaryStart.geometry(sidata, atom->x, reach)) return;
+      if (close) {
+        sidata.mi = atom->rmass[sidata.i];
+        sidata.mj = atom->rmass[sidata.j];
+        sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
+        sidata.omega_i = atom->omega[sidata.i];
+        sidata.omega_j = atom->omega[sidata.j];
+      }
+      if (sidata.r < sidata.radsum) {
+        single_pass(sidata, i_forces, j_forces);
+        if (sidata.Fn > 0.0) sidata.has_force_update = true;
+      } else if (speculative) {
+        speculate(sidata, i_forces, j_forces);
+      }
+    }
+
     // v_n plus the impulses of the contacts resolved earlier in this step (the forces accumulated so
     // far in f, times dt/m) -- except across a periodic or processor boundary (see boundary_pair)
     inline double with_resolved_impulses(const SurfacesIntersectData & sidata, double vn) const
@@ -474,6 +562,10 @@ namespace ContactModels
     int historyOffset;                // iterate on: kImpulseHistoryValues values from here
     LAMMPS_NS::FixWallGran * wall;    // the wall this model belongs to; NULL in pair gran
     ImpulseContactSink * sink;        // fix impulse/solve (iterate on)
+    bool boundaryStartOn;             // boundary_start on: boundary pairs from the pass's start positions
+    BoundaryStart boundaryStart;      // ... the owned grains' positions as the pass began
+    bool startRecorded;               // ... recorded for the pass under way
+    bool warnedBeyond;                // a grain moved beyond kBoundaryDistance: warned (once per run)
   };
 }
 }

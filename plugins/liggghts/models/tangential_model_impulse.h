@@ -69,6 +69,7 @@ namespace ContactModels
       iterate(true),
       impactTime(false),
       speculative(false),
+      boundaryStart(false),
       sink(NULL)
     {}
 
@@ -79,6 +80,7 @@ namespace ContactModels
       settings.registerOnOff("iterate", iterate, true);
       settings.registerOnOff("impact_time", impactTime, false);  // model impulse checks it
       settings.registerOnOff("speculative", speculative, false);  // model impulse checks it
+      settings.registerOnOff("boundary_start", boundaryStart, false);  // model impulse checks it
     }
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *)
@@ -187,14 +189,18 @@ namespace ContactModels
     {
       if (scdata.contact_flags)
         *scdata.contact_flags &= ~CONTACT_TANGENTIAL_MODEL;
-      if (!speculative) return;
+      // boundary_start on: a pair across a boundary that touched as the pass began reaches the single
+      // pass here too, with model impulse's normal impulse (impulse_boundary.h); model impulse writes
+      // Fn for every pair it sees here with boundary_start on
+      const bool boundary = boundaryStart && !iterate && !scdata.is_wall && scdata.j >= atom->nlocal;
+      if (!speculative && !boundary) return;
       if (iterate) {  // model impulse has just collected this close contact (a real force pass only)
         if (scdata.computeflag && sink) sink->set_friction(coeffFrict[scdata.itype][scdata.jtype], beta0);
         return;
       }
-      // speculative on: model impulse has just given this close pair a normal impulse (Fn > 0) or
-      // none (Fn = 0); friction on it as on a touching contact (impulse_speculative.h). The pair is
-      // not touching: its contact flag stays cleared.
+      // speculative on, or a boundary pair: model impulse has just given this close pair a normal
+      // impulse (Fn > 0) or none (Fn = 0); friction on it as on a touching contact
+      // (impulse_speculative.h, impulse_boundary.h). Its contact flag stays cleared.
       SurfacesIntersectData & sidata = static_cast<SurfacesIntersectData &>(scdata);
       if (!(sidata.Fn > 0.0)) return;
       int * const flags = sidata.contact_flags;
@@ -232,6 +238,7 @@ namespace ContactModels
     bool iterate;
     bool impactTime;            // impact_time on (a setting of model impulse, shared by both)
     bool speculative;           // speculative on (a setting of model impulse, shared by both)
+    bool boundaryStart;         // boundary_start on (a setting of model impulse, shared by both)
     ImpulseContactSink * sink;  // fix impulse/solve (iterate on)
   };
 }

@@ -42,7 +42,7 @@ struct ContactLaw {
     StepRule step;
     Stiffness stiffness;
     // the impulse operator's options ([dem] beta0, separate_overlaps, bounce_speed, contact_solve,
-    // impact_time, speculative): written on the model's line, refused with any other law
+    // impact_time, speculative, boundary_pairs): written on the model's line, refused with any other law
     bool impulse_options = false;
 };
 

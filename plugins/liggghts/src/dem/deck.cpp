@@ -151,13 +151,15 @@ bool fixed_top_ending(const Settings& s, const DeckLine& line) {
 ModelText model_text(const Settings& s) {
     if (!s.law->impulse_options) return {s.law->liggghts, ""};
     return {s.law->liggghts,
-            fmt::format(" beta0 {} separate {}{}{}", s.beta0, s.separate ? "on" : "off",
+            fmt::format(" beta0 {} separate {}{}{}{}", s.beta0, s.separate ? "on" : "off",
                         s.bounce_speed > 0 ? fmt::format(" bounce_speed {}", s.bounce_speed) : "",
                         // iterate explicit: the model's default is on
                         s.iterated      ? (s.speculative ? " iterate on speculative on" : " iterate on")
                         : s.impact_time ? " iterate off impact_time on"
                         : s.speculative ? " iterate off speculative on"
-                                        : " iterate off")};
+                                        : " iterate off",
+                        // only when on: the decks of boundary_pairs = 'sequential' stay as they were
+                        s.boundary_start ? " boundary_start on" : "")};
 }
 
 DeckLine deck_lines(std::string& d) {

@@ -39,6 +39,15 @@ BoundKeys<Settings> declare() {
               "(speculative contacts; plugin doc gran_model_impulse); with contact_solve = 'iterated' the close "
               "contacts join the solve with their gap. Neither removes the loaded cells' time-step error "
               "(docs/measurements/liggghts.md); cost: about 1.6x the single pass, and far more iterated").neutral_default();
+    s.choice("boundary_pairs", "sequential", {"sequential", "pass_start"},
+             "contact_solve = 'single_pass': a pair across a periodic or processor boundary (resolved by both of its "
+             "owners) takes its geometry from 'sequential' = the positions as the pass has moved them so far (every "
+             "earlier result; separate_overlaps moves the owned grain but not its image, so the two sides can differ "
+             "and momentum is made at those boundaries) or 'pass_start' = the positions as the pair pass began "
+             "(model impulse boundary_start on: momentum conserved at periodic and processor boundaries, about +27 % "
+             "per step; plugin README, Missing / deviations); 'pass_start' is refused with another model, with "
+             "contact_solve = 'iterated' (which conserves it already) and without separate_overlaps or impact_time "
+             "(nothing moves in the pass)").neutral_default();
     k.real("solve_tolerance", &Settings::solve_tolerance, 1e-4, Range::closed(1e-12, 0.5), "",
            "contact_solve = 'iterated': stop when the largest impulse change of a sweep is at most this times the "
            "largest normal impulse of the step");

@@ -45,6 +45,13 @@ void read_contact(const Section& s, Settings& st) {
         s.fail("speculative", "true is an option of the impulse model (single pass or iterated): it needs model = "
                               "'impulse' and impact_time = false (allowed: false with any model, true with those "
                               "two)");
+    st.boundary_start = s.string("boundary_pairs") == "pass_start";
+    if (st.boundary_start && (!impulse || st.iterated || !(st.separate || st.impact_time)))
+        s.fail("boundary_pairs", "'pass_start' is an option of the impulse model's single pass where grains move in "
+                                 "the pass: it needs model = 'impulse', contact_solve = 'single_pass' (the iterated "
+                                 "solve conserves momentum already) and separate_overlaps or impact_time = true "
+                                 "(else nothing moves and the geometries agree) (allowed: 'sequential' always, "
+                                 "'pass_start' with those)");
 }
 
 // The time step by the law's rule (contact_laws.h): derived from the case, or given and checked.
@@ -317,6 +324,7 @@ nlohmann::json Settings::to_json() const {
                                 {"dense_step_halvings", dense_halvings()}});
     if (impact_time) j.update(nlohmann::json{{"impact_time", true}});  // absent: off, as every earlier result
     if (speculative) j.update(nlohmann::json{{"speculative", true}});  // absent: off, as every earlier result
+    if (boundary_start) j.update(nlohmann::json{{"boundary_pairs", "pass_start"}});  // absent: sequential, as earlier
     if (iterated)
         j.update(nlohmann::json{{"solve_tolerance", solve_tolerance}, {"solve_iterations", solve_iterations}});
     if (load) j.update(nlohmann::json{{"servo_gain_used", plate_gain}, {"plate_overlap_m", plate_overlap}});

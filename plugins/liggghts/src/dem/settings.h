@@ -30,6 +30,7 @@ struct Settings : ServoSettings {
     bool iterated = false;        // impulse: contacts solved to convergence (fix impulse/solve), not one pass
     bool impact_time = false;     // impulse, single pass: each impact applied at its time within the step
     bool speculative = false;     // impulse, single pass: contacts activated on their predicted gap
+    bool boundary_start = false;  // impulse, single pass: boundary pairs from the pass's start positions
     double solve_tolerance = 0;   // iterated: largest impulse change / largest normal impulse, to stop
     std::int64_t solve_iterations = 0;  // iterated: cap on the sweeps per step
     double time_step = 0;         // s
