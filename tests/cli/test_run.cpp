@@ -8,6 +8,7 @@
 
 #include "granlub/particles/particles.h"
 #include "granlub/results/results.h"
+#include "granlub/statistics/flow_regime.h"
 #include "run_command.h"
 #include "xml_check.h"
 #ifdef GRANLUB_TEST_ENGINES
@@ -148,6 +149,17 @@ BOOST_AUTO_TEST_CASE(seeds_reach_both_engines_and_are_pooled) {
         const auto pooled = granlub::read_summary(res / solver / "U1.0" / "summary.json");
         BOOST_TEST(pooled.run.at("seeds").at("pooled") == nlohmann::json({3, 5}), solver);
         BOOST_TEST(pooled.outputs.at("shear_stress_bottom").block_stderr.has_value(), solver);
+        // the flow regime's Z pooled too, its verdict the pooled Z's (seed_pool.h)
+        const nlohmann::json& fr = pooled.run.at("flow_regime");
+        double z = 0;
+        for (const int seed : {3, 5})
+            z += granlub::read_summary(res / solver / "U1.0" / ("seed-" + std::to_string(seed)) / "summary.json")
+                     .run.at("flow_regime").at("coordination_number").get<double>() / 2;
+        BOOST_TEST(fr.at("coordination_number").get<double>() == z, boost::test_tools::tolerance(1e-12));
+        BOOST_TEST(fr.contains("coordination_number_block_stderr"), solver);
+        BOOST_TEST(fr.at("regime").get<std::string>() ==
+                       granlub::to_string(granlub::lubrication_verdict(z, fr.at("contact_persistence").get<double>()).lubrication),
+                   solver);
     }
     fs::remove_all(dir);
 }

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -14,6 +16,7 @@
 #include "granlub/results/failure_record.h"
 #include "granlub/results/run_status.h"
 #include "granlub/run/sweep.h"
+#include "granlub/statistics/flow_regime.h"
 
 namespace granlub {
 
@@ -119,6 +122,21 @@ Profile pooled_profile(const std::vector<Member>& m) {
     return ordered;
 }
 
+// One quantity over the members, pooled as every output is: the mean; stderr the seeds' standard
+// error (one member: its own error; the same value in every member without an error: none);
+// block_stderr the members' own errors combined.
+Scalar pooled_scalar(const std::vector<double>& v, const std::vector<std::optional<double>>& se) {
+    const Pooled p = pool(v, se);
+    Scalar s;
+    s.value = p.mean;
+    const bool constant = std::all_of(v.begin(), v.end(), [&](double x) { return x == v.front(); });
+    const bool any_se = std::any_of(se.begin(), se.end(), [](const auto& e) { return e.has_value(); });
+    if (v.size() == 1) s.stderr_ = se.front();
+    else if (any_se || !constant) s.stderr_ = p.seed_stderr;
+    if (v.size() > 1 && p.block_stderr) s.block_stderr = p.block_stderr;
+    return s;
+}
+
 std::map<std::string, Scalar> pooled_outputs(const std::vector<Member>& m, std::vector<std::string>& not_everywhere) {
     std::set<std::string> names;
     for (const Member& x : m)
@@ -137,15 +155,8 @@ std::map<std::string, Scalar> pooled_outputs(const std::vector<Member>& m, std::
             not_everywhere.push_back(name);
             continue;
         }
-        const Pooled p = pool(v, se);
-        Scalar s;
-        s.value = p.mean;
+        Scalar s = pooled_scalar(v, se);
         s.unit = m.front().summary.outputs.at(name).unit;
-        const bool constant = std::all_of(v.begin(), v.end(), [&](double x) { return x == v.front(); });
-        const bool any_se = std::any_of(se.begin(), se.end(), [](const auto& e) { return e.has_value(); });
-        if (m.size() == 1) s.stderr_ = se.front();
-        else if (any_se || !constant) s.stderr_ = p.seed_stderr;
-        if (m.size() > 1 && p.block_stderr) s.block_stderr = p.block_stderr;
         if (dt.size() == m.size()) {
             double sum = 0;
             for (double e : dt) sum += e;
@@ -154,6 +165,93 @@ std::map<std::string, Scalar> pooled_outputs(const std::vector<Member>& m, std::
         out[name] = s;
     }
     return out;
+}
+
+// The run blocks whose measured facts are pooled, and in each the measured means that carry no
+// error of their own (the rest of a block's numbers without a <name>_stderr partner are counts and
+// settings, the lowest seed's). A fact with a <name>_stderr partner is pooled wherever it stands.
+const std::map<std::string, std::vector<std::string>> kPooledRunBlocks = {
+    {"flow_regime",
+     {"contact_persistence", "inertial_number_nominal", "inertial_number_mid_gap", "mean_normal_stress_Pa",
+      "mean_overlap"}},
+    {"order", {"layering", "layer_spacing_over_d", "mean_neighbours"}}};
+
+// What became of the run facts: pooled, recomputed from the pooled ones, missing in some seed
+// (null), and the lowest seed's.
+struct RunFacts {
+    std::vector<std::string> pooled, recomputed, not_in_every_seed;
+};
+
+// run.<block>'s facts pooled over the members (at least two) into `out` (the lowest member's block).
+void pool_block(const std::vector<Member>& m, const std::string& block, const std::vector<std::string>& measured,
+                nlohmann::json& out, RunFacts& facts) {
+    std::set<std::string> names(measured.begin(), measured.end());
+    for (const Member& x : m)
+        for (const auto& [name, v] : x.summary.run.at(block).items())
+            if (v.is_number() && x.summary.run.at(block).contains(name + "_stderr")) names.insert(name);
+    for (const std::string& name : names) {
+        const std::string se_name = name + "_stderr";
+        std::vector<double> v;
+        std::vector<std::optional<double>> se;
+        for (const Member& x : m) {
+            const nlohmann::json& b = x.summary.run.at(block);
+            if (!b.contains(name) || !b.at(name).is_number()) continue;
+            v.push_back(b.at(name).get<double>());
+            se.push_back(b.contains(se_name) && b.at(se_name).is_number() ? std::optional(b.at(se_name).get<double>())
+                                                                          : std::nullopt);
+        }
+        if (v.empty()) continue;  // measured in no seed (or not a fact of this block): as it stands
+        const std::string fact = block + "." + name;
+        if (v.size() < m.size()) {
+            out[name] = nullptr;
+            if (out.contains(se_name)) out[se_name] = nullptr;
+            facts.not_in_every_seed.push_back(fact);
+            continue;
+        }
+        const Scalar s = pooled_scalar(v, se);
+        out[name] = s.value;
+        if (s.stderr_) out[se_name] = *s.stderr_;
+        if (s.block_stderr) out[name + "_block_stderr"] = *s.block_stderr;
+        facts.pooled.push_back(fact);
+    }
+}
+
+// The flow-regime verdict of the pooled numbers, by the function that writes every run's
+// (flow_regime.h): a verdict of one seed's Z beside the pooled Z would contradict it.
+void recompute_flow_verdict(nlohmann::json& fr, RunFacts& facts) {
+    if (!fr.is_object() || !fr.contains("verdict_version")) return;
+    const auto number = [&](const char* k) {
+        return fr.contains(k) && fr.at(k).is_number() ? std::optional(fr.at(k).get<double>()) : std::nullopt;
+    };
+    FlowDiagnostics d;
+    d.inertial_nominal = number("inertial_number_nominal");
+    d.inertial_mid_gap = number("inertial_number_mid_gap");
+    d.coordination = number("coordination_number");
+    d.coordination_stderr = number("coordination_number_stderr");
+    d.persistence = number("contact_persistence");
+    const std::set<std::string> pooled(facts.pooled.begin(), facts.pooled.end());
+    const nlohmann::json verdict = flow_regime_json(d);
+    for (const auto& [name, v] : verdict.items()) {
+        const std::string fact = "flow_regime." + name;
+        if (!pooled.contains(fact) && !(name.ends_with("_stderr") && pooled.contains(fact.substr(0, fact.size() - 7))))
+            facts.recomputed.push_back(fact);
+        fr[name] = v;
+    }
+}
+
+// The pooled run facts (run.flow_regime, run.order) of two or more members, in `run` (the lowest
+// member's run block); every other fact stays the lowest member's.
+RunFacts pool_run_facts(const std::vector<Member>& m, nlohmann::json& run) {
+    RunFacts facts;
+    for (const auto& [block, measured] : kPooledRunBlocks) {
+        const bool everywhere = std::all_of(m.begin(), m.end(), [&](const Member& x) {
+            return x.summary.run.contains(block) && x.summary.run.at(block).is_object();
+        });
+        if (!everywhere) continue;
+        pool_block(m, block, measured, run[block], facts);
+        if (block == "flow_regime") recompute_flow_verdict(run[block], facts);
+    }
+    return facts;
 }
 
 nlohmann::json member_record(const Member& x) {
@@ -166,6 +264,34 @@ nlohmann::json member_record(const Member& x) {
             {"status_reason", x.regime.reason},
             {"run_id", x.summary.provenance.run_id},
             {"outputs", outputs}};
+}
+
+// run.seeds.run_facts_from: which run facts pool the seeds, which are recomputed from them, and
+// which are the lowest seed's (every fact of `run`, the pooled run block, named).
+nlohmann::json run_facts_record(const RunFacts& f, const nlohmann::json& run, std::uint64_t lowest) {
+    std::set<std::string> done(f.pooled.begin(), f.pooled.end());
+    done.insert(f.recomputed.begin(), f.recomputed.end());
+    done.insert(f.not_in_every_seed.begin(), f.not_in_every_seed.end());
+    for (const std::string& x : f.pooled) done.insert({x + "_stderr", x + "_block_stderr"});
+    for (const std::string& x : f.not_in_every_seed) done.insert(x + "_stderr");
+    std::vector<std::string> from_lowest;
+    for (const auto& [key, v] : run.items()) {
+        if (key == "seeds" || key == "wall_clock_s" || key == "status" || key == "status_reason") continue;
+        if (!kPooledRunBlocks.contains(key) || !v.is_object() || f.pooled.empty()) {
+            from_lowest.push_back(key);
+            continue;
+        }
+        for (const auto& [name, x] : v.items())
+            if (!done.contains(key + "." + name)) from_lowest.push_back(key + "." + name);
+    }
+    return {{"pooled", f.pooled},
+            {"pooled_as", "the mean over the pooled seeds; <name>_stderr the seeds' standard error, "
+                          "<name>_block_stderr the seeds' own block errors combined (as the outputs)"},
+            {"recomputed", f.recomputed},
+            {"recomputed_by", "flow_regime_json (granlub/statistics/flow_regime.h), from the pooled numbers"},
+            {"not_in_every_seed", f.not_in_every_seed},
+            {"lowest_seed", realisation_folder(lowest)},
+            {"from_lowest_seed", from_lowest}};
 }
 
 }  // namespace
@@ -203,6 +329,7 @@ void pool_seeds(const fs::path& point_dir, const std::vector<std::uint64_t>& see
     std::vector<std::string> not_everywhere;
     s.outputs = pooled_outputs(members, not_everywhere);
     s.run = base.summary.run;
+    const RunFacts facts = members.size() > 1 ? pool_run_facts(members, s.run) : RunFacts{};  // one: its own
 
     nlohmann::json pooled = nlohmann::json::array(), records = nlohmann::json::array();
     std::string ids, utc;
@@ -222,9 +349,7 @@ void pool_seeds(const fs::path& point_dir, const std::vector<std::uint64_t>& see
         {"error", n > 1 ? "stderr: the seeds' standard error, the sample standard deviation over the pooled seeds / "
                           "sqrt(their number); block_stderr: the seeds' own block errors combined, sqrt(sum se_i^2) / n"
                         : "one seed: stderr is its own block error (no seeds' standard error yet)"},
-        {"run_facts_from", fmt::format("{} (the lowest pooled seed): the run facts beside run.seeds are that "
-                                       "realisation's; the outputs and the profile pool every pooled seed",
-                                       realisation_folder(base.seed))},
+        {"run_facts_from", run_facts_record(facts, s.run, base.seed)},
         {"members", records}};
     if (!not_everywhere.empty()) s.run["seeds"]["outputs_not_in_every_seed"] = not_everywhere;
     s.run["wall_clock_s"] = wall;

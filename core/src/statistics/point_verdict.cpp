@@ -98,7 +98,7 @@ EngineRegime engine_regime(const std::string& engine, const nlohmann::json& run)
 PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
     std::string each, briefs;
     std::optional<Lubrication> agreed;
-    bool disagree = false, near = false, step = false;
+    bool disagree = false, near = false, step = false, seeds_error = false;
     for (const EngineRegime& r : runs) {
         const FlowVerdict v = read_flow_verdict(r.flow_regime);
         const bool moved = step_moves_across(r, v);
@@ -107,7 +107,11 @@ PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
         if (v.lubrication == Lubrication::Undetermined) continue;
         if (agreed && *agreed != v.lubrication) disagree = true;
         agreed = v.lubrication;
-        near = near || straddles(r.flow_regime);
+        if (straddles(r.flow_regime)) {
+            near = true;
+            // pooled over seeds (seed_pool.h): its error is the seeds' standard error
+            seeds_error = seeds_error || r.flow_regime.contains("coordination_number_block_stderr");
+        }
         step = step || moved;
     }
     const std::string thresholds =
@@ -124,7 +128,8 @@ PointVerdict point_verdict(const std::vector<EngineRegime>& runs) {
                 briefs, false, true};
     if (near)
         return {PointRegime::Transition,
-                fmt::format("Z within {:g} block errors of {:g}: {} ({})", kTransitionSigmas, kEnduringMinCoordination,
+                fmt::format("Z within {:g} {} of {:g}: {} ({})", kTransitionSigmas,
+                            seeds_error ? "standard errors (the seeds')" : "block errors", kEnduringMinCoordination,
                             each, thresholds),
                 briefs};
     return {*agreed == Lubrication::Contact ? PointRegime::Contact : PointRegime::Collision, each, briefs};

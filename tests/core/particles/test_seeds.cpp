@@ -2,6 +2,7 @@
 // their bad inputs, the set a run computes, the sweep over the members of a set and the pooled
 // files (mean, the seeds' standard error, the status from every seed, incomplete sets labelled),
 // the same bytes in any order of completion.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -16,6 +17,7 @@
 #include "granlub/results/file_io.h"
 #include "granlub/results/run_status.h"
 #include "granlub/run/sweep.h"
+#include "granlub/statistics/flow_regime.h"
 
 using namespace granlub;
 namespace fs = std::filesystem;
@@ -67,9 +69,25 @@ PointResult member_result(const Case& c, const OperatingPoint& p, std::uint64_t 
     r.summary.set("mean_solid_fraction", 0.58 + 0.001 * k, "", 0.0001);
     r.summary.set("max_solid_fraction", 0.65, "");
     r.summary.set("layering", 0.1 * k, "");
+    r.summary.set("q6", 0.40 + 0.01 * k, "", 0.002);
     r.summary.provenance.utc_time = "2026-12-06T10:00:0" + std::to_string(seed % 10) + "Z";
     r.summary.provenance.run_id = "run-of-seed-" + std::to_string(seed);
     r.summary.run["wall_clock_s"] = 60.0 + k;
+    // the run facts as the particle pipeline writes them: Z 3.9, 4.1, 4.3 for seeds 1, 2, 3 (collision
+    // lubrication below Z = 4, contact above), a constant persistence without an error
+    FlowDiagnostics d;
+    d.coordination = 3.7 + 0.2 * k;
+    d.coordination_stderr = 0.03;
+    d.persistence = 0.8;
+    d.inertial_nominal = 0.05 + 0.001 * k;
+    d.inertial_mid_gap = 0.06 + 0.001 * k;
+    r.summary.run["flow_regime"] = flow_regime_json(d);
+    r.summary.run["flow_regime"]["coordination_number_core"] = 4.5 + 0.1 * k;
+    r.summary.run["flow_regime"]["coordination_number_core_stderr"] = nullptr;  // too few blocks
+    r.summary.run["flow_regime"]["coordination_snapshots"] = 40 + seed;         // a count: the lowest seed's
+    r.summary.run["order"] = {{"q6", 0.40 + 0.01 * k}, {"q6_stderr", 0.002},   {"Q6", 0.1},
+                              {"Q6_stderr", 0.01},      {"layering", 0.1 * k}, {"neighbour_cutoff", 1.2},
+                              {"snapshots", 40 + seed}};
     set_regime(r.summary.run, steady ? RegimeStatus::Steady : RegimeStatus::Transient,
                steady ? "" : "no steady state detected in 0.3 s of simulated time");
     r.line = "ok";
@@ -170,7 +188,10 @@ BOOST_AUTO_TEST_CASE(one_seed_runs_in_the_point_folder_as_before) {
         // the default: the options untouched (the case's seed); a list of one: its seed
         BOOST_TEST((seed == 3 ? !given.has_value() : given == std::optional<std::uint64_t>(7)));
         BOOST_TEST(!fs::exists(o.results_root / "dem" / "U1.0" / ("seed-" + std::to_string(seed))));
-        BOOST_TEST((read_summary(o.results_root / "dem" / "U1.0" / "summary.json").provenance.seed == seed));
+        const Summary s = read_summary(o.results_root / "dem" / "U1.0" / "summary.json");
+        BOOST_TEST((s.provenance.seed == seed));
+        BOOST_TEST(!s.run.contains("seeds"));  // never pooled: the run's own facts
+        BOOST_TEST(s.run.at("flow_regime").dump() == member_result(c, c.points[0], seed).summary.run.at("flow_regime").dump());
     }
 }
 
@@ -216,6 +237,60 @@ BOOST_AUTO_TEST_CASE(a_set_is_run_member_by_member_and_pooled) {
     BOOST_TEST(p.column("u_over_U_stderr")[0] == 0.01 / std::sqrt(3.0), boost::test_tools::tolerance(1e-9));
     BOOST_TEST(p.column("u_over_U_block_stderr")[1] == 0.002 / std::sqrt(3.0), boost::test_tools::tolerance(1e-9));
     BOOST_TEST(p.has("v_over_U_stderr"));  // a column without a block error gains the seeds'
+    // the run facts with an error pool as the outputs: Z's mean 4.1, the seeds' error 0.2 / sqrt(3),
+    // the block errors 0.03 each combined beside it
+    const nlohmann::json& fr = s.run.at("flow_regime");
+    BOOST_TEST(fr.at("coordination_number").get<double>() == 4.1, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(fr.at("coordination_number_stderr").get<double>() == 0.2 / std::sqrt(3.0),
+               boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(fr.at("coordination_number_block_stderr").get<double>() == std::sqrt(3 * 0.03 * 0.03) / 3,
+               boost::test_tools::tolerance(1e-12));
+    // the core's Z without block errors: the seeds' error, no block error to keep
+    BOOST_TEST(fr.at("coordination_number_core").get<double>() == 4.7, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(fr.at("coordination_number_core_stderr").get<double>() == 0.1 / std::sqrt(3.0),
+               boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(!fr.contains("coordination_number_core_block_stderr"));
+    // a measured mean without an error: pooled, the same in every seed so without a seeds' error
+    BOOST_TEST(fr.at("contact_persistence").get<double>() == 0.8, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(!fr.contains("contact_persistence_stderr"));
+    BOOST_TEST(fr.at("inertial_number_mid_gap").get<double>() == 0.062, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(fr.at("inertial_number").get<double>() == 0.062, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(fr.at("coordination_snapshots").get<int>() == 41);  // a count: the lowest seed's
+    // the verdict is the pooled Z's (4.1: contact), not the lowest seed's (3.9: collision), made by the
+    // function that made each seed's
+    const nlohmann::json lowest = read_summary(point / "seed-1" / "summary.json").run.at("flow_regime");
+    BOOST_TEST(lowest.at("regime").get<std::string>() == "collision lubrication");
+    BOOST_TEST(fr.at("regime").get<std::string>() == "contact lubrication");
+    BOOST_TEST((read_flow_verdict(fr).lubrication == Lubrication::Contact));
+    BOOST_TEST(contains(fr.at("criterion").get<std::string>(), "Z = 4.1 >= 4"));
+    BOOST_TEST(contains(fr.at("reason").get<std::string>(), "contact lubrication: Z = 4.1"));
+    BOOST_TEST(fr.at("enduring_contacts").get<bool>());
+    // run.order: q6 as its output, layering as its output (which has no error of its own)
+    const nlohmann::json& order = s.run.at("order");
+    BOOST_TEST(order.at("q6").get<double>() == s.outputs.at("q6").value, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(order.at("q6_stderr").get<double>() == *s.outputs.at("q6").stderr_, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(order.at("q6_block_stderr").get<double>() == *s.outputs.at("q6").block_stderr,
+               boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(order.at("layering").get<double>() == s.outputs.at("layering").value, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(order.at("layering_stderr").get<double>() == *s.outputs.at("layering").stderr_,
+               boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(order.at("Q6_stderr").get<double>() < 1e-15);  // the same Q6 in every seed: no scatter
+    BOOST_TEST(order.at("snapshots").get<int>() == 41);
+    // run_facts_from names each pooled, recomputed and lowest-seed fact
+    const nlohmann::json& from = s.run.at("seeds").at("run_facts_from");
+    const auto names = [&](const char* k) { return from.at(k).get<std::vector<std::string>>(); };
+    const auto has = [](const std::vector<std::string>& v, const std::string& x) {
+        return std::find(v.begin(), v.end(), x) != v.end();
+    };
+    BOOST_TEST(has(names("pooled"), "flow_regime.coordination_number"));
+    BOOST_TEST(has(names("pooled"), "flow_regime.contact_persistence"));
+    BOOST_TEST(has(names("pooled"), "order.layering"));
+    BOOST_TEST(!has(names("pooled"), "order.snapshots"));
+    BOOST_TEST(has(names("recomputed"), "flow_regime.regime"));
+    BOOST_TEST(has(names("from_lowest_seed"), "flow_regime.coordination_snapshots"));
+    BOOST_TEST(has(names("from_lowest_seed"), "order.neighbour_cutoff"));
+    BOOST_TEST(!has(names("from_lowest_seed"), "flow_regime.coordination_number_stderr"));
+    BOOST_TEST(from.at("lowest_seed").get<std::string>() == "seed-1");
     // a second sweep finds every member complete
     BOOST_TEST(sweep(c, tmp.path, std::nullopt, &calls) == 0);
     BOOST_TEST(calls == 3);
@@ -234,6 +309,28 @@ BOOST_AUTO_TEST_CASE(a_set_is_run_member_by_member_and_pooled) {
     BOOST_TEST(fs::exists(point / "seed-2" / "summary.json"));  // the members stay, for a set again
 }
 
+// A run fact one seed did not measure is no pooled fact: null, named, and the verdict says Z is missing.
+BOOST_AUTO_TEST_CASE(a_run_fact_missing_in_one_seed_is_null_in_the_pool) {
+    const TmpDir tmp("seeds_fact_missing");
+    const Case c = case_with("seeds = 2");
+    RunOptions o;
+    o.results_root = tmp.path;
+    o.point = "U1.0";
+    BOOST_TEST(run_particle_sweep(c, "dem", o, [&](const OperatingPoint& p, const RunOptions& ro, const fs::path&) {
+        PointResult r = member_result(c, p, *ro.seed);
+        if (*ro.seed == 2) r.summary.run["flow_regime"]["coordination_number"] = nullptr;
+        return r;
+    }) == 0);
+    const Summary s = read_summary(tmp.path / "dem" / "U1.0" / "summary.json");
+    const nlohmann::json& fr = s.run.at("flow_regime");
+    BOOST_TEST(fr.at("coordination_number").is_null());
+    BOOST_TEST(fr.at("coordination_number_stderr").is_null());
+    BOOST_TEST(fr.at("regime").get<std::string>() == "undetermined");
+    BOOST_TEST(s.run.at("seeds").at("run_facts_from").at("not_in_every_seed") ==
+               nlohmann::json({"flow_regime.coordination_number"}));
+    BOOST_TEST(fr.at("coordination_number_core").get<double>() == 4.65, boost::test_tools::tolerance(1e-12));
+}
+
 BOOST_AUTO_TEST_CASE(an_incomplete_or_unsteady_set_is_no_answer) {
     const TmpDir tmp("seeds_incomplete");
     const Case c = case_with("seeds = [4, 8, 9]");
@@ -245,6 +342,10 @@ BOOST_AUTO_TEST_CASE(an_incomplete_or_unsteady_set_is_no_answer) {
     BOOST_TEST(contains(s.run.at("status_reason").get<std::string>(), "seed 4 (not run yet)"));
     BOOST_TEST(s.run.at("seeds").at("missing").size() == 2u);
     BOOST_TEST(*s.outputs.at("shear_stress_bottom").stderr_ == 2.0);  // one seed: its own block error
+    const Summary only = read_summary(point / "seed-8" / "summary.json");  // and its own run facts
+    BOOST_TEST(s.run.at("flow_regime").dump() == only.run.at("flow_regime").dump());
+    BOOST_TEST(s.run.at("order").dump() == only.run.at("order").dump());
+    BOOST_TEST(s.run.at("seeds").at("run_facts_from").at("pooled").empty());
     BOOST_TEST(sweep(c, tmp.path, 4, nullptr, 9) == 0);
     BOOST_TEST(sweep(c, tmp.path, 9, nullptr, 9) == 0);  // seed 9 is transient
     s = read_summary(point / "summary.json");
@@ -263,6 +364,10 @@ BOOST_AUTO_TEST_CASE(the_same_seeds_give_the_same_bytes_in_any_order_of_completi
         BOOST_TEST(x == y, f << " differs between the orders");
         BOOST_TEST(!x.empty());
     }
+    // the bytes compared hold the pooled run facts and the verdict recomputed from them
+    const Summary s = read_summary(b.path / "dem" / "U1.0" / "summary.json");
+    BOOST_TEST(s.run.at("flow_regime").contains("coordination_number_block_stderr"));
+    BOOST_TEST(s.run.at("flow_regime").at("regime").get<std::string>() == "contact lubrication");
     // and pooling again changes nothing
     const std::string before = read_file(a.path / "dem" / "U1.0" / "summary.json");
     pool_seeds(a.path / "dem" / "U1.0", {3, 2, 1}, result_key(c, "dem"));

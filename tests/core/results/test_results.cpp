@@ -1,7 +1,11 @@
 // Result files: round trip, refusal of non-finite data, atomicity, and the resume test.
+#include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <thread>
+#include <vector>
 
 #include <unistd.h>
 
@@ -11,6 +15,7 @@
 #include "case_text.h"
 #include "granlub/case/case.h"
 #include "granlub/error.h"
+#include "granlub/results/file_io.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_id.h"
 
@@ -136,6 +141,43 @@ BOOST_AUTO_TEST_CASE(atomic_write_replaces_whole_file) {
     std::ifstream in(t.path / "a.txt");
     std::string all((std::istreambuf_iterator<char>(in)), {});
     BOOST_TEST(all == "second\n");
+    BOOST_TEST(!tmp_files_left(t.path));
+}
+
+// Two threads writing one file at once (as two processes, or two nodes over a shared filesystem,
+// may): every read and the file they leave is one of the writes, whole, and no temp file is left.
+BOOST_AUTO_TEST_CASE(concurrent_writers_of_one_file_leave_one_write_whole) {
+    TmpDir t("atomic_concurrent");
+    const fs::path file = t.path / "summary.json";
+    constexpr int kRounds = 60;
+    // write r of writer w: a header naming both, then a body of w's letter whose length depends on both
+    const auto content = [](int w, int r) {
+        return fmt::format("writer {} round {}\n", w, r) + std::string(20000 + 997 * r + 5000 * w, w ? 'b' : 'a');
+    };
+    const auto whole = [&](const std::string& text) {
+        int w = -1, r = -1;
+        return std::sscanf(text.c_str(), "writer %d round %d", &w, &r) == 2 && (w == 0 || w == 1) && r >= 0 &&
+               r < kRounds && text == content(w, r);
+    };
+    write_file_atomic(file, content(0, 0));
+    std::atomic<int> done{0}, torn{0}, reads{0};
+    std::vector<std::thread> writers;
+    for (int w = 0; w < 2; ++w)
+        writers.emplace_back([&, w] {
+            for (int r = 0; r < kRounds; ++r) write_file_atomic(file, content(w, r));
+            ++done;
+        });
+    std::thread reader([&] {
+        while (done < 2) {
+            if (!whole(read_file(file))) ++torn;
+            ++reads;
+        }
+    });
+    for (auto& th : writers) th.join();
+    reader.join();
+    BOOST_TEST(torn.load() == 0, torn.load() << " of " << reads.load() << " reads were no whole write");
+    const std::string last = read_file(file);
+    BOOST_TEST((last == content(0, kRounds - 1) || last == content(1, kRounds - 1)));
     BOOST_TEST(!tmp_files_left(t.path));
 }
 

@@ -56,6 +56,14 @@ BOOST_AUTO_TEST_CASE(one_engine_within_its_errors_of_the_threshold) {
     BOOST_TEST((point_verdict({run("dem", 4.05, 0.9, 0.02)}).regime == PointRegime::Contact));
     // no error recorded (older summaries): the engine's own verdict
     BOOST_TEST((point_verdict({run("dem", 4.01, 0.9)}).regime == PointRegime::Contact));
+    // the criterion names the error: one run's block error, or a pool's seeds' standard error
+    // (seed_pool.h keeps the block errors beside it as coordination_number_block_stderr)
+    BOOST_TEST(has(point_verdict({run("dem", 4.05, 0.9, 0.04)}).criterion, "Z within 2 block errors of 4"));
+    EngineRegime pooled = run("dem", 4.05, 0.9, 0.04);
+    pooled.flow_regime["coordination_number_block_stderr"] = 0.01;
+    const PointVerdict v = point_verdict({pooled});
+    BOOST_TEST((v.regime == PointRegime::Transition));
+    BOOST_TEST(has(v.criterion, "Z within 2 standard errors (the seeds') of 4"), v.criterion);
 }
 
 // The rough regimes case: halving the step takes Z down by 0.1-0.4 at the dense points, tens of

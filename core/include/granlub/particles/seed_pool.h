@@ -11,9 +11,14 @@
 //   - run.status: steady only if every member is (its Δt check included); otherwise the status of the
 //     first member in seed order that is not, the reason naming each; while a member of the set is
 //     missing, "incomplete" ("k of N seeds"), never an answer.
-//   - run.seeds: the set, the seeds pooled and those missing with why, the error used, and each
-//     member's status and outputs. The rest of run (flow regime, walls, order, the Δt check record)
-//     is the lowest member's (run.seeds.run_facts_from says so); run.wall_clock_s the members' sum.
+//   - run.flow_regime and run.order (two or more members): every number with a <name>_stderr partner
+//     and the measured means without one (kPooledRunBlocks in seed_pool.cpp) pooled as the outputs,
+//     the block errors combined as <name>_block_stderr; the flow-regime verdict recomputed from the
+//     pooled numbers by flow_regime_json (flow_regime.h); a number missing in some member null.
+//     Counts and settings there, and the rest of run (walls, load control, the Δt check record), are
+//     the lowest member's; run.seeds.run_facts_from names each fact: pooled, recomputed, the lowest's.
+//   - run.seeds: the set, the seeds pooled and those missing with why, the error used, each
+//     member's status and outputs, run_facts_from; run.wall_clock_s the members' sum.
 //   - provenance: the lowest member's, with no single seed, the latest member's time and a run id
 //     made from the members' (seeds-<hash>): the files are a function of the members' files alone,
 //     so the same seeds give the same bytes in any order of completion.

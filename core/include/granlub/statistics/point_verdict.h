@@ -3,7 +3,8 @@
 //
 // Each engine's verdict is flow_regime.h's. The point's is
 //   that verdict when every engine that decided agrees and none has its coordination number Z
-//     within kTransitionSigmas block errors of kEnduringMinCoordination;
+//     within kTransitionSigmas block errors of kEnduringMinCoordination (a point pooled over seeds:
+//     the seeds' standard errors, seed_pool.h);
 //   "at the transition" when the engines disagree (one contact, one collision lubrication) or an
 //     engine's Z lies within those errors of the threshold: the numbers sit on the boundary and
 //     the criterion gives each engine's Z (± error) and persistence beside the thresholds;
