@@ -70,13 +70,19 @@ std::vector<std::size_t> agreeing(const std::vector<Answer>& a) {
 
 // The continuum against a particle run on equal grains: outside its scope (kinetic theory describes a
 // disordered fluid; equal grains order into layers in the particle runs), not a model difference.
-constexpr const char* kEqualGrainsScope =
-    "outside the continuum's scope, not a model difference: the grains are equal ([grains] size_spread = 0) and "
-    "order into layers in the particle runs (How ordered the particle packings are), a crystal its kinetic "
-    "theory does not describe";
+// The particle run's layer order (its summary's layer_order) is quoted when it has one.
+std::string equal_grains_scope(const Run& particles) {
+    const auto order = particles.scalar("layer_order");
+    return fmt::format("outside the continuum's scope (not a model difference): its kinetic theory does not describe "
+                       "the layered crystal that equal grains ([grains] size_spread = 0) form in the particle runs{} "
+                       "(How ordered the particle packings are)",
+                       order ? fmt::format(", layer order {} in {} here", num(*order, 2), particles.solver) : "");
+}
 
-bool continuum_and_particles(const Run& a, const Run& b) {
+// Whether one of a, b is the continuum and the other a particle run; the particle run in `particles`.
+bool continuum_and_particles(const Run& a, const Run& b, const Run** particles) {
     const auto ka = a.kind(), kb = b.kind();
+    *particles = ka == SolverKind::Particles ? &a : &b;
     return (ka == SolverKind::Continuum && kb == SolverKind::Particles) ||
            (kb == SolverKind::Continuum && ka == SolverKind::Particles);
 }
@@ -91,7 +97,8 @@ std::string known_cause(const Asked& q, const Answer& a, const Answer& b, bool e
         return rel <= 0.15 ? "the size of the impulse operator's time-step error (about 10 % at the default step; "
                              "What each solver's numbers mean)"
                            : "larger than the impulse operator's time-step error (about 10 %): no known cause";
-    if (equal_grains && continuum_and_particles(*a.run, *b.run)) return kEqualGrainsScope;
+    if (const Run* grains = nullptr; equal_grains && continuum_and_particles(*a.run, *b.run, &grains))
+        return equal_grains_scope(*grains);
     if (!particle(*a.run) || !particle(*b.run))
         return "a model difference";  // what each model leaves out: the scope table
     return "no known cause";

@@ -13,8 +13,8 @@ namespace {
 std::string how_judged() {
     return fmt::format(
         "This case's particle cell is periodic across the width ([cell] width = 0: no side walls), so granlub dem "
-        "solves the continuum's 1-D problem: the continuum's twin. Each target below is one a constant μ cannot "
-        "meet: μ = |τ|/σ_yy at each wall within {:g} % of the DEM's; μ's rise from the slowest to the fastest speed "
+        "solves the continuum's 1-D problem: the continuum's twin. The targets are ones a constant μ cannot meet "
+        "together (it has no slip, ν, gap or T, and its μ does not rise with speed): μ = |τ|/σ_yy at each wall within {:g} % of the DEM's; μ's rise from the slowest to the fastest speed "
         "at each load and wall within {:g} % of the DEM's rise; the slip at each wall within {:g} U; the solid "
         "fraction ν(y) (not ν/ν_max: the models' ν_max differ) within {:g} in RMS over {:g} ≤ y/H ≤ {:g}, the "
         "continuum's profile interpolated linearly onto the DEM's stations; the gap within {:g} mm; T(y) within a "

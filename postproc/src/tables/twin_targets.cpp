@@ -202,7 +202,7 @@ std::vector<TargetCheck> continuum_checks(const Case& c, const Run& dem, const R
     const double gd = twin_gap(c, dem), gm = ok ? twin_gap(c, model, &fixed) : 0;
     if (ok) {
         out.push_back(absolute_check("gap", kGapRule, kTwinGap, gd, dem.scalar_stderr("gap"), gm));
-        if (fixed) out.back().note = "the continuum's gap is the case's (fixed)";
+        if (fixed) out.back().note = "the case's gap: the continuum keeps it fixed";
     } else {
         out.push_back(missed("gap", kGapRule, gd, dem.scalar_stderr("gap"), why));
     }
