@@ -13,6 +13,7 @@
 #include "results/scope.h"
 #include "report/ring_slice.h"
 #include "report/shared_captions.h"
+#include "report/twin_part.h"
 #include "tables/differences.h"
 #include "tables/exponents.h"
 #include "tables/provenance.h"
@@ -35,9 +36,9 @@ void opening(Report& rep, const Case& c, const Collection& col) {
 }
 
 // The answer first (summary.h): who agrees on what, the largest disagreement, what is not an answer.
-void summary_part(Report& rep, const Collection& col) {
+void summary_part(Report& rep, const Case& c, const Collection& col) {
     rep.heading("Summary");
-    const CaseSummary s = case_summary(col);
+    const CaseSummary s = case_summary(col, c.grains.size_spread == 0);
     std::vector<std::string> with;
     for (const auto& solver : col.solvers)
         if (col.any_usable(solver)) with.push_back(solver);
@@ -274,7 +275,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
                     const RingSlicePart* ring, const RegimePart* regime) {
     Report rep;
     opening(rep, c, col);
-    summary_part(rep, col);
+    summary_part(rep, c, col);
     how_to_read(rep, col);
     results_found(rep, c, col);
     // The registry's headings in its order; the stress exponents after the stress figures, the
@@ -288,6 +289,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
         }
     }
     if (ring) ring_part(rep, *ring, figs);
+    add_twin_part(rep, c, col);  // a periodic-width case with continuum and DEM results only
     differences(rep, col, metrics);
     rep.heading("Provenance of every run");
     rep.text(fmt::format("This report: written {} by granlub {}.", utc_now(), version()));

@@ -68,8 +68,27 @@ std::vector<std::size_t> agreeing(const std::vector<Answer>& a) {
     return best;
 }
 
+// The continuum against a particle run on equal grains: outside its scope (kinetic theory describes a
+// disordered fluid; equal grains order into layers in the particle runs), not a model difference.
+// The particle run's layer order (its summary's layer_order) is quoted when it has one.
+std::string equal_grains_scope(const Run& particles) {
+    const auto order = particles.scalar("layer_order");
+    return fmt::format("outside the continuum's scope (not a model difference): its kinetic theory does not describe "
+                       "the layered crystal that equal grains ([grains] size_spread = 0) form in the particle runs{} "
+                       "(How ordered the particle packings are)",
+                       order ? fmt::format(", layer order {} in {} here", num(*order, 2), particles.solver) : "");
+}
+
+// Whether one of a, b is the continuum and the other a particle run; the particle run in `particles`.
+bool continuum_and_particles(const Run& a, const Run& b, const Run** particles) {
+    const auto ka = a.kind(), kb = b.kind();
+    *particles = ka == SolverKind::Particles ? &a : &b;
+    return (ka == SolverKind::Continuum && kb == SolverKind::Particles) ||
+           (kb == SolverKind::Continuum && ka == SolverKind::Particles);
+}
+
 // What the report knows about a difference b − a beyond the combined standard errors.
-std::string known_cause(const Asked& q, const Answer& a, const Answer& b) {
+std::string known_cause(const Asked& q, const Answer& a, const Answer& b, bool equal_grains) {
     const double d = std::abs(b.v - a.v), rel = a.v != 0 ? d / std::abs(a.v) : 0;
     if ((a.dt > 0 || b.dt > 0) && d <= 2 * std::sqrt(a.se * a.se + b.se * b.se + a.dt * a.dt + b.dt * b.dt))
         return "within the time-step error ([Δt] in the key numbers)";
@@ -78,6 +97,8 @@ std::string known_cause(const Asked& q, const Answer& a, const Answer& b) {
         return rel <= 0.15 ? "the size of the impulse operator's time-step error (about 10 % at the default step; "
                              "What each solver's numbers mean)"
                            : "larger than the impulse operator's time-step error (about 10 %): no known cause";
+    if (const Run* grains = nullptr; equal_grains && continuum_and_particles(*a.run, *b.run, &grains))
+        return equal_grains_scope(*grains);
     if (!particle(*a.run) || !particle(*b.run))
         return "a model difference";  // what each model leaves out: the scope table
     return "no known cause";
@@ -98,7 +119,8 @@ std::string size_text(const Asked& q, const Answer& ref, const Answer& b) {
 
 // One cell: who agrees, and each other solver's difference from the first of them.
 // "Largest disagreement: τ moving wall at U2.0: dem − continuum = −327 ± 64 Pa (−20 %, z = −5.1): cause."
-std::string largest_text(const Asked& q, const Answer& ref, const Answer& b, const std::string& point) {
+std::string largest_text(const Asked& q, const Answer& ref, const Answer& b, const std::string& point,
+                         bool equal_grains) {
     const double d = b.v - ref.v, se = std::hypot(ref.se, b.se);
     std::string size = num(d, 3) + (se > 0 ? " ± " + num(se, 2) : "") + q.unit;
     std::vector<std::string> extra;
@@ -106,12 +128,12 @@ std::string largest_text(const Asked& q, const Answer& ref, const Answer& b, con
     if (se > 0) extra.push_back(z_text(d / se));
     if (!extra.empty()) size += " (" + list_text(extra) + ")";
     return fmt::format("Largest disagreement: {} at {}: {} − {} = {}: {}.", q.label, point, b.run->solver, ref.run->solver,
-                       size, known_cause(q, ref, b));
+                       size, known_cause(q, ref, b, equal_grains));
 }
 
 // `largest`: the largest relative disagreement so far; `largest_slip` the largest in units of U.
 Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::string& point, Disagreement& largest,
-                   Disagreement& largest_slip) {
+                   Disagreement& largest_slip, bool equal_grains) {
     if (a.empty()) return {"—", ""};
     if (a.size() == 1) return {"only " + a[0].run->solver, ""};
     const auto group = agreeing(a);
@@ -125,7 +147,7 @@ Cell quantity_cell(const Asked& q, const std::vector<Answer>& a, const std::stri
         text += fmt::format("{}{} {}", text.empty() ? "" : "; ", a[i].run->solver, size_text(q, ref, a[i]));
         const double size = q.absolute ? std::abs(a[i].v - ref.v) : std::abs(a[i].v - ref.v) / std::abs(ref.v);
         if (Disagreement& l = q.absolute ? largest_slip : largest; size > l.size)
-            l = {size, largest_text(q, ref, a[i], point)};
+            l = {size, largest_text(q, ref, a[i], point, equal_grains)};
     }
     if (group.size() == 1) text += " vs " + ref.run->solver;
     return {text, ""};
@@ -202,7 +224,7 @@ std::optional<RegimeReading> regime_reading(const Collection& col, const std::st
     return RegimeReading{fmt::format("undetermined: {}", v.criterion), true};
 }
 
-CaseSummary case_summary(const Collection& col) {
+CaseSummary case_summary(const Collection& col, bool equal_grains) {
     CaseSummary s;
     s.table.header = {"quantity"};
     for (const OperatingPoint* p : col.points) s.table.header.push_back(p->id);
@@ -222,7 +244,7 @@ CaseSummary case_summary(const Collection& col) {
                 a.push_back({r, *v, r->scalar_stderr(q.key).value_or(0), r->scalar_dt_error(q.key).value_or(0)});
             }
             any = any || !a.empty();
-            row.push_back(quantity_cell(q, a, p->id, largest, largest_slip));
+            row.push_back(quantity_cell(q, a, p->id, largest, largest_slip, equal_grains));
             all = all && (a.size() < 2 || row.back().cls == "ok");
         }
         if (any) s.table.rows.push_back(std::move(row));

@@ -27,6 +27,8 @@ struct CaseSummary {
     std::vector<std::string> sentences;  // the largest disagreement, the numbers that are not answers
     bool all_agree = false;              // one line says so
 };
-CaseSummary case_summary(const Collection& col);
+// equal_grains: the case's [grains] size_spread is 0, so the particle runs order into layers and the
+// continuum's difference from them is named as outside its scope, not as a model difference.
+CaseSummary case_summary(const Collection& col, bool equal_grains = false);
 
 }  // namespace granlub::postproc
