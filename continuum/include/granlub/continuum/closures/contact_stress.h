@@ -36,11 +36,12 @@ struct ContactStress {
         return direction(x, S(0.0));
     }
     // The component along n of the regularised unit strain-rate direction grad u^ / |grad u^|_eps, for the gradient's
-    // components g_n along n and g_t across it: g_n / sqrt(g_n^2 + g_t^2 + eps^2). In 2-D (the cross-section) the
-    // contact shear is mu_c p_c grad u / |grad u|_eps, i.e. Schaeffer's (1987) frictional viscosity mu_c p_c / |grad u|
-    // (as MFiX and OpenFOAM's JohnsonJacksonSchaeffer frictional stress use it, sin phi = mu_c) regularised with the
-    // 1-D eps [ASSUMPTION: the papers give the rate-independent tensor, not its regularisation; the isotropic form
-    // keeps |tau_c| <= mu_c p_c, and with g_t = 0 it is the 1-D sgn_eps bit for bit (x*x + 0 is x*x)].
+    // components g_n along n and g_t across it: g_n / sqrt(g_n^2 + g_t^2 + eps^2). On the cross-section (u(y, z))
+    // the contact shear is mu_c p_c grad u / |grad u|_eps: Schaeffer's (1987) frictional viscosity p_c sin phi/|grad u|
+    // [SRC: JohnsonJacksonSchaefferFrictionalStress.C::nu of OpenFOAM (openfoamdotcom), nu_f = p_f sin phi / (2
+    // sqrt(II_D') + SMALL), sqrt(II_D') = |grad u|/2 here; the paper not read], regularised with the 1-D eps
+    // [ASSUMPTION: the sources give the rate-independent stress, not this regularisation; it keeps |tau_c| <= mu_c p_c,
+    // and with g_t = 0 it is the 1-D sgn_eps bit for bit (x*x + 0 is x*x)].
     template <class S>
     S direction(const S& gn, const S& gt) const {
         using std::sqrt;
