@@ -557,6 +557,13 @@ BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
     double grains = 0;
     for (double nu : map.column("solid_fraction")) grains += nu / static_cast<double>(map.rows());
     BOOST_TEST(std::abs(grains - s.value("mean_solid_fraction")) < 1e-3);
+    // with the contact stress a point solves and books the contacts' dissipation
+    TempDir tc;
+    const Case cc = parse(contact + "cross_section_cells_y = 24\n", trough);
+    BOOST_TEST(continuum::run(cc, into(tc, "U2.0")) == 0);
+    const Summary sc = read_summary(tc.path / "continuum" / "U2.0" / "summary.json");
+    BOOST_TEST(sc.run.at("contact_stress").at("model") == "johnson_jackson");
+    BOOST_TEST(sc.run.at("energy_budget").at("contact_dissipation_W_m").get<double>() > 0.0);
 }
 
 // The side walls from [walls] sides: plane = the declared roughness (side_roughness overrides it), as_bottom = the
