@@ -59,10 +59,10 @@ void BM_point_shooting(benchmark::State& state) {
 }
 BENCHMARK(BM_point_shooting)->Unit(benchmark::kMillisecond);
 
-// One rough-case point with extended kinetic theory and the gap solved from the grain inventory
-// (cases/sawyer2001_regimes_rough's [continuum] set): U = 1.4 m/s, P = 2250 Pa. Issue target: <= 5 ms.
-void BM_point_ekt_inventory(benchmark::State& state) {
-    Problem p = sawyer(1.4, 2250);
+// A rough-case point with extended kinetic theory and the gap solved from the grain inventory
+// (cases/sawyer2001_regimes_rough's [continuum] set).
+Problem rough_inventory(double U, double P) {
+    Problem p = sawyer(U, P);
     ClosureParams cp;
     cp.restitution = 0.9;
     cp.dissipation_restitution = 0.9 - 1.5 * 0.5 * std::exp(-1.5);  // Chialvo & Sundaresan 2013, mu_p = 0.5
@@ -73,6 +73,12 @@ void BM_point_ekt_inventory(benchmark::State& state) {
     p.mode = Mode::Inventory;
     p.inventory = 0.595 * 4e-3 / 0.787e-3;
     p.Lambda = (4e-3 - 0.787e-3) / 0.787e-3;
+    return p;
+}
+
+// One of them: U = 1.4 m/s, P = 2250 Pa. Issue target: <= 5 ms.
+void BM_point_ekt_inventory(benchmark::State& state) {
+    const Problem p = rough_inventory(1.4, 2250);
     SolverSettings st;
     int its = 0;
     for (auto _ : state) {
@@ -146,5 +152,31 @@ void BM_cross_section_point_body_forces(benchmark::State& state) {
     solve_trough(state, p, CrossSectionSettings{});
 }
 BENCHMARK(BM_cross_section_point_body_forces)->Unit(benchmark::kMillisecond);
+
+// The same trough with the rough cases' extended kinetic theory (BM_point_ekt_inventory's closures, U = 1.4 m/s,
+// P = 2250 Pa, the gap from the inventory) and the contact stress (docs/continuum-model.md §2.9) with Johnson &
+// Jackson's constants (Fr = 0.05 Pa, n = 2, m = 5, nu_min = 0.5; mu_c = 0.36, illustrative, not fitted); range(0) x
+// range(1) cells.
+void BM_cross_section_point_contact(benchmark::State& state) {
+    CrossSectionProblem p = sawyer_trough();
+    const Problem ekt = rough_inventory(1.4, 2250);
+    const ContactStress jj{0.05 / 2250, 0.5, 0.587, 2, 5, 0.36};  // Fr/P_y, nu_min, nu_c, n, m, mu_c
+    p.gap = ekt;
+    p.gap.closures = std::make_shared<Closures>(ekt.closures->with_contact(jj));
+    p.outer = p.inner = p.gap.bottom;
+    p.gap.inventory = 0.595 * 4e-3 / 0.787e-3;  // grains per length / (d W): the 1-D inventory over the width
+    CrossSectionSettings st;
+    st.cells_y = static_cast<int>(state.range(0));
+    st.cells_z = static_cast<int>(state.range(1));
+    int continued = 0;
+    for (auto _ : state) {
+        const CrossSectionSolution s = solve_cross_section(p, st);
+        continued = s.continuation_steps;
+        benchmark::DoNotOptimize(s.nu.data());
+        state.counters["newton_iterations"] = s.iterations;
+    }
+    state.counters["continuation_steps"] = continued;
+}
+BENCHMARK(BM_cross_section_point_contact)->Args({40, 100})->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -34,6 +34,48 @@ CrossSectionObservables observe(const CrossSectionProblem& p0, const CrossSectio
         }
     o.nu_mean = mean / A;
     o.bulk_dissipation = energy * bulk;
+    // The contact shear (docs/continuum-model.md §2.9; 0 without it), as the solver's fluxes have it
+    // (cross_section_solver.cpp): tau_c/P = mu_c pi_c x the regularised direction (closures/contact_stress.h), with
+    // the nodes' gradients from the wall conditions on the walls and central differences elsewhere.
+    const ContactStress& cs = p.closures->contact();
+    const bool contact = cs.active() && cs.friction > 0;
+    using W = CrossSectionWall;
+    const auto wall_dn = [&](W w, std::size_t k) {  // du/dn into the flow from wall w's condition at node k
+        const WallBC& bc = p0.wall(w);
+        return wall_gradients(bc.params, wall_coefficients(p, bc, s.nu[k]), (w == W::Top ? 0.0 : 1.0) - s.u[k], L,
+                              Pi / pr(k)).du;
+    };
+    const auto du_dz = [&](int i, int j) {
+        if (!s.periodic && j == 0) return wall_dn(W::Outer, s.at(i, 0));
+        if (!s.periodic && j == Nz) return -wall_dn(W::Inner, s.at(i, Nz));
+        const int jm = (j + s.nz() - 1) % s.nz(), jp = (j + 1) % s.nz();
+        return (s.u[s.at(i, jp)] - s.u[s.at(i, jm)]) / (2 * hz);
+    };
+    const auto du_dy = [&](int i, int j) {
+        if (i == 0) return wall_dn(W::Floor, s.at(0, j));
+        if (i == Ny) return -wall_dn(W::Top, s.at(Ny, j));
+        return (s.u[s.at(i + 1, j)] - s.u[s.at(i - 1, j)]) / (2 * hy);
+    };
+    if (contact) {  // its work in the bulk, face by face: face length x tau_c x the jump of u^
+        double faces = 0;
+        for (int j = 0; j < s.nz(); ++j)
+            for (int i = 0; i < s.ny(); ++i) {
+                const std::size_t k = s.at(i, j);
+                const double pc = cs.ratio(s.nu[k]);
+                if (i < Ny) {
+                    const std::size_t n = s.at(i + 1, j);
+                    const double du = s.u[n] - s.u[k];
+                    faces += wz(j) * cs.face_flux(pc, cs.ratio(s.nu[n]), du / hy, 0.5 * (du_dz(i, j) + du_dz(i + 1, j))) * du;
+                }
+                if (j < Nz || s.periodic) {
+                    const int je = (j + 1) % s.nz();
+                    const std::size_t e = s.at(i, je);
+                    const double du = s.u[e] - s.u[k];
+                    faces += wy(i) * cs.face_flux(pc, cs.ratio(s.nu[e]), du / hz, 0.5 * (du_dy(i, j) + du_dy(i, je))) * du;
+                }
+            }
+        o.contact_dissipation = cs.friction * faces;
+    }
     // One wall: its nodes, the wall's speed and the length each node stands for.
     const auto wall = [&](CrossSectionWall w) {
         CrossSectionWallOutput r;
@@ -52,7 +94,13 @@ CrossSectionObservables observe(const CrossSectionProblem& p0, const CrossSectio
             const auto g = wall_gradients(bc.params, wall_coefficients(p, bc, nu), slip, L, Pi / pw);
             const auto c0 = node_coefficients(*p.closures, nu);
             const double M = std::sqrt(pw) * c0.M, K = std::pow(pw, 1.5) * c0.K;
-            const double traction = -stress * M * g.du;  // on the flow along x, tau/P: + forward
+            double traction = -stress * M * g.du;  // on the flow along x, tau/P: + forward
+            if (contact) {  // the wall's contact traction; its slip work is dissipated in the contacts
+                const double tangential = along_z ? du_dz(i, j) : du_dy(i, j);
+                const double tc = -cs.friction * cs.wall_flux(cs.ratio(nu), g.du, tangential);
+                traction += tc;
+                o.contact_dissipation += ds * tc * slip;
+            }
             r.force += ds * traction;
             r.slip += ds * std::abs(slip);
             r.work += ds * traction * u_wall;
@@ -78,7 +126,7 @@ CrossSectionObservables observe(const CrossSectionProblem& p0, const CrossSectio
     for (const auto& w : o.walls) sum += w.force, work += w.work, sinks += w.sink;
     o.force_balance = sum / top;
     o.side_share = (std::abs(o.walls[2].force) + std::abs(o.walls[3].force)) / top;
-    o.energy_defect = (work - o.bulk_dissipation - sinks) / work;
+    o.energy_defect = (work - o.bulk_dissipation - sinks - o.contact_dissipation) / work;
     return o;
 }
 

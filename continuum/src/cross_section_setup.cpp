@@ -40,9 +40,11 @@ void resolve_cross_section_settings(const Case& c, Settings& s) {
                                          c.cell.width));
     if (s.method == Method::Shooting)
         sec.fail("method", "method = \"shooting\" solves the 1-D gap only; with geometry = \"cross_section\" allowed: \"fv\"");
-    if (s.contact.active())
-        sec.fail("contact_stress", "contact_stress = \"johnson_jackson\" is solved on the 1-D gap only (docs/continuum-model.md "
-                                   "§2.9); with geometry = \"cross_section\" allowed: \"none\"");
+    // the contact stress's constants are checked as on the 1-D gap (case_setup.cpp); with body forces pi_c = p_c/p
+    // and its cap nu_P would vary over the section, which the solver does not do
+    if (s.contact.active() && s.body_forces)
+        sec.fail("contact_stress", "contact_stress = \"johnson_jackson\" on the cross-section needs a uniform pressure "
+                                   "(docs/continuum-model.md §2.9a); allowed: \"none\", or body_forces = \"off\"");
     for (const OperatingPoint& p : c.points)
         if (p.control != Control::Load)
             sec.fail("geometry", fmt::format("geometry = \"cross_section\" solves under a load, but point {} has "
@@ -224,6 +226,7 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
         walls[names[w]] = {{"work_W_m", PU * o.walls[w].work}, {"sink_W_m", PU * o.walls[w].sink}};
     m.run["energy_budget"] = {{"walls", walls},
                               {"bulk_dissipation_W_m", PU * o.bulk_dissipation},
+                              {"contact_dissipation_W_m", PU * o.contact_dissipation},
                               {"relative_defect", o.energy_defect}};
     m.run["force_balance"] = o.force_balance;
     m.run["body_forces"] = s.body_forces ? fmt::format("gravity {} m/s^2 and the centripetal force (outer wall radius {} m) "

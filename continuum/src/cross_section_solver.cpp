@@ -8,6 +8,7 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include "contact_continuation.h"
 #include "damped_newton.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/walls/wall_condition.h"
@@ -26,16 +27,18 @@ const WallBC& CrossSectionProblem::wall(CrossSectionWall w) const {
 
 namespace cross_section_fv {  // named: the library is a unity build beside fv_solver.cpp
 
-using D = Dual<11>;
-// Stencil members: centre, south (i - 1), north (i + 1), west (j - 1), east (j + 1); member m has the unknown
-// slots 2m (u^) and 2m + 1 (s); slot 10 is the bordering unknown ln Lambda.
-constexpr int kMembers = 5, kLam = 10;
-enum Member { kC = 0, kS = 1, kN = 2, kW = 3, kE = 4 };
+using D = Dual<19>;
+// Stencil members: centre, south (i - 1), north (i + 1), west (j - 1), east (j + 1), and the four diagonal
+// neighbours (the contact shear's tangential gradients at the faces only; without it they are not in the pattern);
+// member m has the unknown slots 2m (u^) and 2m + 1 (s); slot 18 is the bordering unknown ln Lambda.
+constexpr int kMembers = 9, kLam = 18;
+enum Member { kC = 0, kS = 1, kN = 2, kW = 3, kE = 4, kSW = 5, kSE = 6, kNW = 7, kNE = 8 };
 
 // Node closures with derivatives in the logit unknown s.
 struct NodeVal {
     double nu, dnu, M, dM, K, dK, C, dC;
     double Kp = 0, dKp = 0, p = 1;  // with a pressure field: p^^1/2 K_p of the grad-p heat flux, and p^
+    double pc = 0, dpc = 0;         // the contact pressure over P_y (docs/continuum-model.md §2.9), 0 without one
 };
 // A wall's coefficients b5..b8 at a node, with d/ds.
 struct WallVal {
@@ -44,10 +47,13 @@ struct WallVal {
 
 template <class S>
 struct Local {
-    S u[kMembers], nu[kMembers], M[kMembers], K[kMembers], Kp[kMembers];
+    S u[kMembers], nu[kMembers], M[kMembers], K[kMembers], Kp[kMembers], pc[kMembers];
     double p[kMembers];
     S C, Pi, L, hz;
     S b[kCrossSectionWalls][4];  // the coefficients of the walls the node lies on
+    // with the contact shear: members S, N (W, E) on the centre's side wall (floor or top) carry that wall's
+    // coefficients, for their z^ (y^) gradient
+    S bt[kMembers][4];
 };
 
 // Which faces of node (i, j)'s control volume are walls, and where it is.
@@ -57,19 +63,24 @@ struct NodeGeom {
 };
 
 // The flux balance of one control volume per unit width (1-D units: the 1-D solver's residual when nothing
-// depends on z^). Ru = div(M grad u^), Rn = div(K grad nu) - source, integrated over the CV and divided by its
-// z^-width.
+// depends on z^). Ru = div(M grad u^ + tau_c), Rn = div(K grad nu) - source, integrated over the CV and divided by
+// its z^-width. The contact shear tau_c (closures/contact_stress.h; `cs` null without it) at a face: the faces'
+// mean pi_c, the face difference as the normal gradient and the mean of the two nodes' tangential gradients (central
+// differences, or a wall condition's gradient on a wall) across it; at a wall face the node's pi_c and gradients.
 template <class S>
-void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l, double hy, S& Ru, S& Rn) {
+void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l, double hy, const ContactStress* cs,
+              S& Ru, S& Rn) {
     using W = CrossSectionWall;
-    const auto at_wall = [&](W w, const S& slip) {
+    // the condition of wall w at member m (coefficients b), as the gradient along n into the flow
+    const auto at_wall = [&](W w, int m, const S* b) {
         const WallBC& bc = p.wall(w);
-        const int k = static_cast<int>(w);
+        const S slip = w == W::Top ? S(-l.u[m]) : S(1.0 - l.u[m]);  // the top is still, the others move at U
         // the wall condition at the local pressure: Pi = rho U^2 / p (the b's are in P-scaled form)
-        auto gr = wall_gradients(bc.params, l.b[k][0], l.b[k][1], l.b[k][2], l.b[k][3], slip, l.L, l.Pi / l.p[kC]);
+        auto gr = wall_gradients(bc.params, b[0], b[1], b[2], b[3], slip, l.L, l.Pi / l.p[m]);
         if (p.source) {
+            const double dy = m == kS ? -hy : (m == kN ? hy : 0.0), dz = m == kW ? -value(l.hz) : (m == kE ? value(l.hz) : 0.0);
             double cu = 0, cn = 0;
-            p.source->wall(w, g.y, g.z, cu, cn);
+            p.source->wall(w, g.y + dy, g.z + dz, cu, cn);
             gr.du = gr.du + cu;
             gr.dnu = gr.dnu + cn;
         }
@@ -77,9 +88,9 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
     };
     const bool floor = g.wall[0], top = g.wall[1], outer = g.wall[2], inner = g.wall[3];
     // y^: fluxes M du/dy on the south and north faces, and du/dy at the node
-    S Fu_s, Fu_n, Fn_s, Fn_n, duy, duz, Fu_w, Fu_e, Fn_w, Fn_e;
+    S Fu_s, Fu_n, Fn_s, Fn_n, Fu_w, Fu_e, Fn_w, Fn_e, duy(0.0), duz(0.0);
     if (floor) {  // n = +y^, u^_wall = 1
-        const auto gr = at_wall(W::Floor, S(1.0 - l.u[kC]));
+        const auto gr = at_wall(W::Floor, kC, l.b[0]);
         Fu_s = l.M[kC] * gr.du, Fn_s = l.K[kC] * gr.dnu, duy = gr.du;
     } else {
         Fu_s = 0.5 * (l.M[kS] + l.M[kC]) * (l.u[kC] - l.u[kS]) / hy;
@@ -87,7 +98,7 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
                0.5 * (l.Kp[kS] + l.Kp[kC]) * ((l.p[kC] - l.p[kS]) / hy);
     }
     if (top) {  // n = -y^, u^_wall = 0
-        const auto gr = at_wall(W::Top, S(-l.u[kC]));
+        const auto gr = at_wall(W::Top, kC, l.b[1]);
         Fu_n = -(l.M[kC] * gr.du), Fn_n = -(l.K[kC] * gr.dnu), duy = -gr.du;
     } else {
         Fu_n = 0.5 * (l.M[kC] + l.M[kN]) * (l.u[kN] - l.u[kC]) / hy;
@@ -97,7 +108,7 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
     if (!floor && !top) duy = (l.u[kN] - l.u[kS]) / (2 * hy);
     // z^: the side walls move with the floor
     if (outer) {  // n = +z^
-        const auto gr = at_wall(W::Outer, S(1.0 - l.u[kC]));
+        const auto gr = at_wall(W::Outer, kC, l.b[2]);
         Fu_w = l.M[kC] * gr.du, Fn_w = l.K[kC] * gr.dnu, duz = gr.du;
     } else {
         Fu_w = 0.5 * (l.M[kW] + l.M[kC]) * (l.u[kC] - l.u[kW]) / l.hz;
@@ -105,7 +116,7 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
                0.5 * (l.Kp[kW] + l.Kp[kC]) * ((l.p[kC] - l.p[kW]) / l.hz);
     }
     if (inner) {  // n = -z^
-        const auto gr = at_wall(W::Inner, S(1.0 - l.u[kC]));
+        const auto gr = at_wall(W::Inner, kC, l.b[3]);
         Fu_e = -(l.M[kC] * gr.du), Fn_e = -(l.K[kC] * gr.dnu), duz = -gr.du;
     } else {
         Fu_e = 0.5 * (l.M[kC] + l.M[kE]) * (l.u[kE] - l.u[kC]) / l.hz;
@@ -116,7 +127,40 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
     const double wy = (floor || top ? 0.5 : 1.0) * hy;
     const double wzf = outer || inner ? 0.5 : 1.0;
     const S ratio = (wy / wzf) / l.hz;  // CV height over CV width
-    const S src = l.Pi * l.M[kC] * (duy * duy + duz * duz) - l.L * l.L * l.C;
+    S src = l.Pi * l.M[kC] * (duy * duy + duz * duz) - l.L * l.L * l.C;  // shear work - collisional dissipation
+    if (cs) {
+        // The contact shear's fluxes. Tangential gradients at the neighbours: du/dz at S and N (on the centre's
+        // side wall if it has one, else central over their diagonal neighbours), du/dy at W and E (likewise).
+        const auto dz_at = [&](int m, int mw, int me) {
+            if (outer) return S(at_wall(W::Outer, m, l.bt[m]).du);
+            if (inner) return S(-at_wall(W::Inner, m, l.bt[m]).du);
+            return S((l.u[me] - l.u[mw]) / (2.0 * l.hz));
+        };
+        const auto dy_at = [&](int m, int ms, int mn) {
+            if (floor) return S(at_wall(W::Floor, m, l.bt[m]).du);
+            if (top) return S(-at_wall(W::Top, m, l.bt[m]).du);
+            return S((l.u[mn] - l.u[ms]) / (2 * hy));
+        };
+        const S k = cs->scale(l.L, l.Pi);
+        if (floor) Fu_s = Fu_s + k * cs->wall_flux(l.pc[kC], duy, duz);
+        else Fu_s = Fu_s + k * cs->face_flux(l.pc[kS], l.pc[kC], S((l.u[kC] - l.u[kS]) / hy), S(0.5 * (dz_at(kS, kSW, kSE) + duz)));
+        if (top) Fu_n = Fu_n + k * cs->wall_flux(l.pc[kC], duy, duz);
+        else Fu_n = Fu_n + k * cs->face_flux(l.pc[kC], l.pc[kN], S((l.u[kN] - l.u[kC]) / hy), S(0.5 * (duz + dz_at(kN, kNW, kNE))));
+        if (outer) Fu_w = Fu_w + k * cs->wall_flux(l.pc[kC], duz, duy);
+        else Fu_w = Fu_w + k * cs->face_flux(l.pc[kW], l.pc[kC], S((l.u[kC] - l.u[kW]) / l.hz), S(0.5 * (dy_at(kW, kSW, kNW) + duy)));
+        if (inner) Fu_e = Fu_e + k * cs->wall_flux(l.pc[kC], duz, duy);
+        else Fu_e = Fu_e + k * cs->face_flux(l.pc[kC], l.pc[kE], S((l.u[kE] - l.u[kC]) / l.hz), S(0.5 * (duy + dy_at(kE, kSE, kNE))));
+        // The kinetic shear work as the 1-D solver has it with the branch (fv_solver.cpp): the mean of the faces'
+        // M u^'^2 along each axis (a wall's gradient on a wall face), the discrete counterpart of the momentum flux.
+        const auto face_work = [](const S& Ma, const S& Mb, const S& du) { return 0.5 * (Ma + Mb) * du * du; };
+        const S wy_work = floor || top ? S(l.M[kC] * duy * duy)
+                                       : S(0.5 * (face_work(l.M[kC], l.M[kN], S((l.u[kN] - l.u[kC]) / hy)) +
+                                                  face_work(l.M[kS], l.M[kC], S((l.u[kC] - l.u[kS]) / hy))));
+        const S wz_work = outer || inner ? S(l.M[kC] * duz * duz)
+                                         : S(0.5 * (face_work(l.M[kC], l.M[kE], S((l.u[kE] - l.u[kC]) / l.hz)) +
+                                                    face_work(l.M[kW], l.M[kC], S((l.u[kC] - l.u[kW]) / l.hz))));
+        src = l.Pi * (wy_work + wz_work) - l.L * l.L * l.C;
+    }
     Ru = (Fu_n - Fu_s) + ratio * (Fu_e - Fu_w);
     Rn = (Fn_n - Fn_s) + ratio * (Fn_e - Fn_w) - wy * src;
     if (p.source) {
@@ -132,10 +176,17 @@ public:
     Fv2(const CrossSectionProblem& p, const CrossSectionSettings& st)
         : p_(p), Ny_(st.cells_y), Nz_(st.cells_z), ny_(Ny_ + 1), nz_(p.periodic ? Nz_ : Nz_ + 1),
           n_(static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_)), hy_(1.0 / Ny_),
-          cap_(p.gap.closures->cap()), inventory_(p.gap.mode == Mode::Inventory), nodes_(n_), walls_(n_),
+          cap_(p.gap.closures->cap()), inventory_(p.gap.mode == Mode::Inventory),
+          contact_(p.gap.closures->contact().active() && p.gap.closures->contact().friction > 0
+                       ? &p.gap.closures->contact() : nullptr),
+          nodes_(n_), walls_(n_),
           F_(static_cast<Eigen::Index>(2 * n_)), Fl_(F_.size()), x_(F_.size()), y_(F_.size()) {
         if (p.gap.mode == Mode::Fill) throw SolverError("the cross-section solves a load (Load or Inventory), not a fill");
         if (Ny_ < 2 || Nz_ < (p.periodic ? 3 : 2)) throw SolverError("the cross-section needs at least 2 x 3 cells");
+        if (p.gap.closures->contact().active() && (p.body.on() || !p.pressure.empty()))
+            throw SolverError("the contact stress (docs/continuum-model.md §2.9) on the cross-section needs a uniform "
+                              "pressure: with body forces pi_c = p_c/p and the cap nu_P vary from node to node, which "
+                              "is not implemented; allowed: [continuum] body_forces = \"off\"");
         // Sparsity of the 5-point stencil in 2x2 blocks; each entry's place in the value array kept, so the
         // Newton loop refills the values in place.
         // every (row, column) of the pattern: node k's two residuals against member m's two unknowns, slot 2a + b
@@ -174,7 +225,15 @@ public:
             case kS: return i > 0 ? idx(i - 1, j) : -1;
             case kN: return i < Ny_ ? idx(i + 1, j) : -1;
             case kW: return j > 0 ? idx(i, j - 1) : (p_.periodic ? idx(i, nz_ - 1) : -1);
-            default: return j < nz_ - 1 ? idx(i, j + 1) : (p_.periodic ? idx(i, 0) : -1);
+            case kE: return j < nz_ - 1 ? idx(i, j + 1) : (p_.periodic ? idx(i, 0) : -1);
+            default: {  // the diagonals: with the contact shear only
+                if (!contact_) return -1;
+                const int di = m == kSW || m == kSE ? -1 : 1, dj = m == kSW || m == kNW ? -1 : 1;
+                const int a = i + di, b = j + dj;
+                if (a < 0 || a > Ny_) return -1;
+                if (b >= 0 && b < nz_) return idx(a, b);
+                return p_.periodic ? idx(a, (b + nz_) % nz_) : -1;
+            }
         }
     }
     NodeGeom geom(int i, int j, double hz) const {
@@ -199,7 +258,17 @@ public:
             const auto c = node_coefficients(*p_.gap.closures, nu);
             nodes_[k] = {nu, dnu, c.M, c.dM * dnu, c.K, c.dK * dnu, c.C, c.dC * dnu};
             if (!p_.pressure.empty()) at_pressure(nodes_[k], p_.pressure[k]);
+            const ContactStress& cs = p_.gap.closures->contact();
+            nodes_[k].pc = cs.ratio(nu), nodes_[k].dpc = cs.dratio(nu) * dnu;
         }
+        // the walls' coefficients first: with the contact shear a node's stencil reads its neighbours' too
+        for (int j = 0; j < nz_; ++j)
+            for (int i = 0; i < ny_; ++i) {
+                const std::size_t k = static_cast<std::size_t>(idx(i, j));
+                const NodeGeom g = geom(i, j, hz);
+                for (int w = 0; w < kCrossSectionWalls; ++w)
+                    if (g.wall[w]) walls_[k][w] = wall_val(p_.wall(static_cast<CrossSectionWall>(w)), nodes_[k]);
+            }
         if (jac) std::fill(J_.valuePtr(), J_.valuePtr() + J_.nonZeros(), 0.0);
         double norm = 0, mean = 0;
         for (int j = 0; j < nz_; ++j)
@@ -207,20 +276,18 @@ public:
                 const std::size_t k = static_cast<std::size_t>(idx(i, j));
                 const NodeGeom g = geom(i, j, hz);
                 mean += weight(i, j) * nodes_[k].nu;
-                for (int w = 0; w < kCrossSectionWalls; ++w)
-                    if (g.wall[w]) walls_[k][w] = wall_val(p_.wall(static_cast<CrossSectionWall>(w)), nodes_[k]);
                 double ru, rn;
                 if (!jac) {
                     Local<double> l;
                     fill_local(l, i, j, x, Pi, L, hz, g, [](double v, int, double) { return v; });
-                    residual(p_, g, l, hy_, ru, rn);
+                    residual(p_, g, l, hy_, contact_, ru, rn);
                 } else {
                     Local<D> l;
                     fill_local(l, i, j, x, Pi, L, hz, g, [](double v, int slot, double dv) { return D::lifted(v, slot, dv); });
                     l.L = D::lifted(L, kLam, inventory_ ? L : 0.0);
                     l.hz = D::lifted(hz, kLam, inventory_ ? -hz : 0.0);  // A = width/Lambda
                     D dru, drn;
-                    residual(p_, g, l, hy_, dru, drn);
+                    residual(p_, g, l, hy_, contact_, dru, drn);
                     ru = dru.v, rn = drn.v;
                     double* v = J_.valuePtr();
                     for (int m = 0; m < kMembers; ++m) {
@@ -282,6 +349,26 @@ public:
 
     double mean_nu() const { return mean_; }
 
+    // The largest difference between the exact Jacobian at x and central differences of the residual with steps
+    // `step`, relative to max(1, |entry|) (Load mode; tests, as fv_jacobian_defect).
+    double jacobian_defect(const Eigen::VectorXd& x, double lam, double step) {
+        evaluate(x, lam, true);
+        const Eigen::MatrixXd J = Eigen::MatrixXd(J_);
+        double worst = 0;
+        for (Eigen::Index c = 0; c < x.size(); ++c) {
+            Eigen::VectorXd xp = x, xm = x;
+            xp[c] += step, xm[c] -= step;
+            evaluate(xp, lam, false);
+            const Eigen::VectorXd Fp = F_;
+            evaluate(xm, lam, false);
+            for (Eigen::Index r = 0; r < x.size(); ++r) {
+                const double fd = (Fp[r] - F_[r]) / (2 * step), ex = J(r, c);
+                worst = std::max(worst, std::abs(fd - ex) / std::max(1.0, std::abs(ex)));
+            }
+        }
+        return worst;
+    }
+
 private:
     // T = p/(rho_p f_p) at the local p^: M -> p^^1/2 M, K and C -> p^^3/2 K, C; K_p = p^^1/2 f_kappa f_p^-3/2.
     void at_pressure(NodeVal& n, double p) const {
@@ -304,7 +391,7 @@ private:
         for (int m = 0; m < kMembers; ++m) {
             const long nb = member(i, j, m);
             if (nb < 0) {
-                l.u[m] = l.nu[m] = l.M[m] = l.K[m] = l.Kp[m] = S(0.0);
+                l.u[m] = l.nu[m] = l.M[m] = l.K[m] = l.Kp[m] = l.pc[m] = S(0.0);
                 l.p[m] = 1.0;
                 continue;
             }
@@ -315,6 +402,7 @@ private:
             l.K[m] = lift(n.K, 2 * m + 1, n.dK);
             l.Kp[m] = lift(n.Kp, 2 * m + 1, n.dKp);
             l.p[m] = n.p;
+            l.pc[m] = lift(n.pc, 2 * m + 1, n.dpc);
         }
         const NodeVal& c = nodes_[static_cast<std::size_t>(idx(i, j))];
         l.C = lift(c.C, 1, c.dC);
@@ -324,6 +412,18 @@ private:
                 const WallVal& b = walls_[static_cast<std::size_t>(idx(i, j))][w];
                 for (int q = 0; q < 4; ++q) l.b[w][q] = lift(b.b[q], 1, b.db[q]);
             }
+        if (!contact_) return;
+        // the tangential gradients' walls: S and N on the centre's side wall, W and E on its floor or top
+        const auto tangential = [&](int m, int w) {
+            const long nb = member(i, j, m);
+            if (nb < 0) return;
+            const WallVal& b = walls_[static_cast<std::size_t>(nb)][w];
+            for (int q = 0; q < 4; ++q) l.bt[m][q] = lift(b.b[q], 2 * m + 1, b.db[q]);
+        };
+        for (int w : {2, 3})
+            if (g.wall[w]) tangential(kS, w), tangential(kN, w);
+        for (int w : {0, 1})
+            if (g.wall[w]) tangential(kW, w), tangential(kE, w);
     }
 
     const CrossSectionProblem& p_;
@@ -331,6 +431,7 @@ private:
     std::size_t n_;
     double hy_, cap_;
     bool inventory_;
+    const ContactStress* contact_;  // its shear (§2.9); nullptr without one or with mu_c = 0
     double L_ = 0, mean_ = 0, g_ = 0;
     std::vector<NodeVal> nodes_;
     std::vector<std::array<WallVal, kCrossSectionWalls>> walls_;
@@ -373,6 +474,15 @@ NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSecti
         rep.why = "Newton fell onto the empty-channel branch (mean nu < 0.01)";
     }
     return rep;
+}
+
+double cross_section_jacobian_defect(const CrossSectionProblem& p, const CrossSectionSolution& s, double step) {
+    using namespace cross_section_fv;
+    if (p.gap.mode != Mode::Load) throw Error("cross_section_jacobian_defect: Load mode only");
+    CrossSectionSettings st;
+    st.cells_y = s.cells_y, st.cells_z = s.cells_z;
+    Fv2 fv(p, st);
+    return fv.jacobian_defect(unknowns(s, fv.cap()), std::log(p.gap.Lambda), step);
 }
 
 double cross_section_residual(const CrossSectionProblem& p, const CrossSectionSolution& s) {
@@ -528,7 +638,42 @@ CrossSectionSolution solve_at_uniform_pressure(const CrossSectionProblem& p, con
 
 }  // namespace cross_section_fv
 
+namespace cross_section_fv {
+
+// With the contact stress (§2.9): the 1-D solver's two continuations (contact_continuation.h), from the kinetic
+// solution. On a bed near nu_P the moving side walls loosen the bed beside them and push the rest onto the cap,
+// where T = 0 and the conduction and kinetic shear vanish, and Newton stalls there: measured on the rough trough at
+// 2250 Pa with Johnson & Jackson's constants (bench_continuum's BM_cross_section_point_contact), Newton from the 1-D
+// solution with the whole branch and the kinetic solve at the full contact pressure both stall, and the pressure's
+// continuation with the 1-D's start 1e-6 below the cap needs 330 iterations. So: no direct attempts, a start sits
+// 2 % of nu_P - nu_min below the cap (pi_c ~ 0.85 there), and the first step is half the way (the whole way stalls
+// there); and a step is "hard" (halving the next) above 25 iterations, not 12: with the contact shear the section's
+// Newton needs 15-18 iterations however short the step (the illustrative constants' wide section at 1 m/s, where
+// halving after each converged step never reached mu_c) [ASSUMPTION: numerical choices, measured].
+CrossSectionSolution solve_with_contact(const CrossSectionProblem& p, const CrossSectionSettings& st) {
+    const ContactStress& cs = p.gap.closures->contact();
+    return detail::contact_continuation<CrossSectionSolution>(
+        cs,
+        [&](double coefficient, double friction) {
+            CrossSectionProblem q = p;
+            q.gap.closures = detail::scaled_contact(*p.gap.closures, cs, coefficient, friction);
+            return q;
+        },
+        [&](const CrossSectionProblem& q) { return solve_at_uniform_pressure(q, st); },
+        [&](const CrossSectionProblem& q, CrossSectionSolution& trial) { return newton_cross_section(q, st, trial); },
+        [](const CrossSectionProblem& q) { return q.gap.closures->cap(); }, st.max_continuation_steps,
+        "cross-section at " + describe(p), detail::ContactPath{false, 0.5, 25, 1e-6, 0.02});
+}
+
+}  // namespace cross_section_fv
+
 CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st) {
+    if (p.gap.closures->contact().active()) {
+        if (p.body.on())
+            throw SolverError("the contact stress (docs/continuum-model.md §2.9) on the cross-section needs a uniform "
+                              "pressure; allowed: [continuum] body_forces = \"off\"");
+        return cross_section_fv::solve_with_contact(p, st);
+    }
     CrossSectionSolution s = cross_section_fv::solve_at_uniform_pressure(p, st);
     if (!p.body.on()) return s;
     // The body forces' pressure from the last (u^, nu), then Newton at that pressure, until p^ settles: the forces

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "block_tridiagonal.h"
+#include "contact_continuation.h"
 #include "damped_newton.h"
 #include "granlub/continuum/homogeneous.h"
 #include "granlub/continuum/walls/wall_condition.h"
@@ -75,20 +76,19 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
         Ru = l.Mc * du - 0.5 * (l.Mm + l.Mc) * (l.uc - l.um) / h;
         Rn = l.Kc * dn - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm) / h - 0.5 * h * src;
     }
-    if (cs) {
-        using std::sqrt;
-        const S k = cs->friction * L / sqrt(l.Pi);
+    if (cs) {  // the fluxes of closures/contact_stress.h, shared with the cross-section
+        const S k = cs->scale(L, l.Pi), none(0.0);
         const auto face = [&](const S& pa, const S& pb, const S& ua, const S& ub) {
-            return 0.5 * (pa + pb) * cs->sign(S((ub - ua) / h));
+            return cs->face_flux(pa, pb, S((ub - ua) / h), none);
         };
         if (kind == Kind::Interior) {
             Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - face(l.pcm, l.pcc, l.um, l.uc));  // Ru is a flux difference
         } else if (kind == Kind::Bottom) {
             const S du = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(1.0 - l.uc), L, l.Pi).du;
-            Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - l.pcc * cs->sign(du));
+            Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - cs->wall_flux(l.pcc, du, none));
         } else {
             const S du = -wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(-l.uc), L, l.Pi).du;
-            Ru = Ru + k * (l.pcc * cs->sign(du) - face(l.pcm, l.pcc, l.um, l.uc));
+            Ru = Ru + k * (cs->wall_flux(l.pcc, du, none) - face(l.pcm, l.pcc, l.um, l.uc));
         }
     }
 }
@@ -417,58 +417,17 @@ Solution solve_fv_kinetic(const Problem& p, const SolverSettings& st) {
 Solution solve_fv(const Problem& p, const SolverSettings& st) {
     const ContactStress& cs = p.closures->contact();
     if (!cs.active()) return solve_fv_kinetic(p, st);
-    // With a contact stress (§2.9), two continuations: the contact pressure at full strength without its shear
-    // (mu_c = 0; from the uniform-shear guess, or if that fails from the kinetic solution with the coefficient
-    // scaled by t from 0 to 1, the cap nu_P following), then the contact shear, mu_c scaled by t from 0 to 1.
-    const auto scaled = [&](double coefficient, double friction) {
-        ContactStress c = cs;
-        c.coefficient *= coefficient;
-        c.friction *= friction;
-        Problem q = p;
-        q.closures = std::make_shared<Closures>(p.closures->with_contact(c));
-        return q;
-    };
-    // Newton's iterations here are 5-7 at most steps (the residual's floor is near the tolerance): "easy" is 6;
-    // the whole way is tried first (it is enough on the cases measured), halved on failure.
-    const detail::StepPolicy policy{6, 12, 1.0};
-    // Each start sits below the next problem's cap by this fraction: the cap nu_P moves with t, and a start at the
-    // cap has a singular Jacobian in the logit unknown.
-    constexpr double kHeadroom = 1e-6;
-    Solution s;
-    int total = 0, steps = 0;
-    const auto continue_in = [&](const auto& at, const char* what) {
-        const auto c = detail::continuation(
-            s,
-            [&](double t, Solution& trial) {
-                const Problem q = at(t);
-                const double top = q.closures->cap() * (1 - kHeadroom);
-                for (double& nu : trial.nu) nu = std::min(nu, top);
-                return newton_fv(q, st, trial);
-            },
-            st.max_continuation_steps, total, policy);
-        steps += c.steps;
-        if (!c.reached) {
-            std::ostringstream m;
-            m << "the contact stress's continuation in " << what << " (§2.9) stalled before " << describe(p)
-              << " after " << steps << " steps (last Newton residual " << c.last.residual << ": " << c.last.why
-              << "); try a larger [continuum] max_continuation_steps or other contact_* constants";
-            throw SolverError(m.str());
-        }
-    };
-    try {
-        s = solve_fv_kinetic(scaled(1.0, 0.0), st);
-        total = s.iterations;
-        steps = s.continuation_steps;
-    } catch (const SolverError&) {
-        s = solve_fv_kinetic(scaled(0.0, 0.0), st);
-        total = s.iterations;
-        steps = s.continuation_steps;
-        continue_in([&](double t) { return scaled(t, 0.0); }, "its pressure");
-    }
-    if (cs.friction > 0) continue_in([&](double t) { return scaled(1.0, t); }, "its friction");
-    s.iterations = total;
-    s.continuation_steps = steps;
-    return s;
+    // With a contact stress (§2.9): its two continuations (contact_continuation.h).
+    return detail::contact_continuation<Solution>(
+        cs,
+        [&](double coefficient, double friction) {
+            Problem q = p;
+            q.closures = detail::scaled_contact(*p.closures, cs, coefficient, friction);
+            return q;
+        },
+        [&](const Problem& q) { return solve_fv_kinetic(q, st); },
+        [&](const Problem& q, Solution& trial) { return newton_fv(q, st, trial); },
+        [](const Problem& q) { return q.closures->cap(); }, st.max_continuation_steps, describe(p));
 }
 
 }  // namespace granlub::continuum

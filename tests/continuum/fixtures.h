@@ -56,6 +56,27 @@ inline Spec jasti(double P = 5.5e3) {
     return s;
 }
 
+// An illustrative contact stress (docs/continuum-model.md §2.9; not fitted): Johnson & Jackson's form with n = 2,
+// m = 5, nu_min = 0.5, nu_c = 0.65 (the fixtures' nu_max) and Fr/P = 3e-5, so p_c = P at nu_P ~ 0.60; mu_c = 0.2,
+// below the kinetic theory's own mu at nu_P (LSJC with Ogawa's g0: 0.30), so that mu(I) rises from mu_c: with mu_c
+// above it mu(I) falls with I (rate weakening) and the gap's core stops shearing.
+constexpr double kIllustrativeMuC = 0.2;
+inline ContactStress illustrative_contact(double friction = kIllustrativeMuC, double eps = 1e-2) {
+    ContactStress c;
+    c.coefficient = 3e-5;
+    c.onset = 0.5;
+    c.jamming = 0.65;
+    c.n = 2;
+    c.m = 5;
+    c.friction = friction;
+    c.sign_width = eps;
+    return c;
+}
+inline Problem with_contact(Problem p, const ContactStress& c) {
+    p.closures = std::make_shared<Closures>(p.closures->with_contact(c));
+    return p;
+}
+
 inline double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
 }  // namespace granlub::continuum::testing

@@ -491,12 +491,33 @@ BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
     BOOST_TEST(contains(e, ">= 21"), e);
     e = settings_error("[continuum]\ngeometry = \"cross_section\"\nmethod = \"shooting\"\n", trough);
     BOOST_TEST(contains(e, "method"), e);
-    e = settings_error("[continuum]\ngeometry = \"cross_section\"\ncontact_stress = \"johnson_jackson\"\n"
-                       "contact_coefficient = 0.05\ncontact_onset_fraction = 0.5\ncontact_exponent_onset = 2\n"
-                       "contact_exponent_jamming = 5\ncontact_friction = 0.2\n",
-                       trough);
+    // the contact stress (§2.9) on the cross-section: its constants checked as on the gap, refused with body forces
+    const std::string contact = "[continuum]\ngeometry = \"cross_section\"\ncontact_stress = \"johnson_jackson\"\n"
+                                "contact_coefficient = 0.05\ncontact_onset_fraction = 0.5\ncontact_exponent_onset = 2\n"
+                                "contact_exponent_jamming = 5\ncontact_friction = 0.2\n";
+    BOOST_TEST(settings_error(contact, trough).empty());
+    e = settings_error(contact + "body_forces = \"on\"\n", trough);
     BOOST_TEST(contains(e, "contact_stress"), e);
-    BOOST_TEST(contains(e, "1-D gap only"), e);
+    BOOST_TEST(contains(e, "body_forces = \"off\""), e);
+    std::string high = contact;
+    high.replace(high.find("contact_onset_fraction = 0.5"), 28, "contact_onset_fraction = 0.7");
+    e = settings_error(high, trough);
+    BOOST_TEST(contains(e, "contact_onset_fraction"), e);
+    BOOST_TEST(contains(e, "0.65"), e);
+    std::string without = contact;
+    without.erase(without.find("contact_friction"));
+    e = settings_error(without, trough);
+    BOOST_TEST(contains(e, "contact_friction"), e);
+    for (const auto& [line, key, allowed] : {std::tuple{"contact_coefficient = -1", "contact_coefficient", "> 0"},
+                                             {"contact_friction = 3", "contact_friction", "2"}}) {
+        std::string bad = contact;
+        const std::string k = std::string(key) + " = ";
+        const auto at = bad.find(k);
+        bad.replace(at, bad.find('\n', at) - at, line);
+        const std::string x = case_error(bad);  // the case's key ranges, whatever the geometry
+        BOOST_TEST(contains(x, key), x);
+        BOOST_TEST(contains(x, allowed), x);
+    }
     e = settings_error("[continuum]\nside_roughness = 0.3\n", trough);
     BOOST_TEST(contains(e, "side_roughness"), e);
     e = settings_error("[continuum]\nbody_forces = \"on\"\n", trough);
@@ -536,6 +557,13 @@ BOOST_AUTO_TEST_CASE(cross_section_geometry_keys_and_outputs) {
     double grains = 0;
     for (double nu : map.column("solid_fraction")) grains += nu / static_cast<double>(map.rows());
     BOOST_TEST(std::abs(grains - s.value("mean_solid_fraction")) < 1e-3);
+    // with the contact stress a point solves and books the contacts' dissipation
+    TempDir tc;
+    const Case cc = parse(contact + "cross_section_cells_y = 24\n", trough);
+    BOOST_TEST(continuum::run(cc, into(tc, "U2.0")) == 0);
+    const Summary sc = read_summary(tc.path / "continuum" / "U2.0" / "summary.json");
+    BOOST_TEST(sc.run.at("contact_stress").at("model") == "johnson_jackson");
+    BOOST_TEST(sc.run.at("energy_budget").at("contact_dissipation_W_m").get<double>() > 0.0);
 }
 
 // The side walls from [walls] sides: plane = the declared roughness (side_roughness overrides it), as_bottom = the

@@ -17,28 +17,9 @@ using namespace granlub::continuum::testing;
 
 namespace {
 
-// Below the kinetic theory's own mu at nu_P (LSJC with Ogawa's g0: 0.30), so that mu(I) rises from mu_c: with
-// mu_c above it mu(I) falls with I (rate weakening) and the gap's core stops shearing (§2.9).
-constexpr double kMuC = 0.2;
+constexpr double kMuC = kIllustrativeMuC;
 
-// Johnson & Jackson's form with n = 2, m = 5, nu_min = 0.5, nu_c = 0.65 (the fixtures' nu_max) and Fr/P = 3e-5:
-// p_c = P at nu_P ~ 0.60.
-ContactStress contact(double friction = kMuC, double eps = 1e-2) {
-    ContactStress c;
-    c.coefficient = 3e-5;
-    c.onset = 0.5;
-    c.jamming = 0.65;
-    c.n = 2;
-    c.m = 5;
-    c.friction = friction;
-    c.sign_width = eps;
-    return c;
-}
-
-Problem with_contact(Problem p, const ContactStress& c) {
-    p.closures = std::make_shared<Closures>(p.closures->with_contact(c));
-    return p;
-}
+ContactStress contact(double friction = kMuC, double eps = 1e-2) { return illustrative_contact(friction, eps); }
 
 // The S&T grains between family-K walls, a gap of `lambda` grain diameters, speed U, load 5.5 kPa; the kinetic
 // theory alone.

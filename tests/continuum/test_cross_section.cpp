@@ -7,6 +7,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "cross_section_fixtures.h"
 #include "fixtures.h"
 #include "granlub/continuum/cross_section_solver.h"
 #include "granlub/continuum/fv_solver.h"
@@ -17,8 +18,6 @@ using namespace granlub::continuum::testing;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // S&T's cell (fixtures.h) with its trough: W = 19 mm, side walls as the floor.
 CrossSectionProblem trough(const Spec& sp, double W = 19e-3) {
     CrossSectionProblem p;
@@ -26,12 +25,6 @@ CrossSectionProblem trough(const Spec& sp, double W = 19e-3) {
     p.outer = p.inner = p.gap.bottom;
     p.width = W / sp.d;
     return p;
-}
-
-CrossSectionSettings grid(int ny, int nz) {
-    CrossSectionSettings s;
-    s.cells_y = ny, s.cells_z = nz;
-    return s;
 }
 
 }  // namespace

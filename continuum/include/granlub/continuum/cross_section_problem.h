@@ -86,9 +86,12 @@ struct CrossSectionObservables {
     CrossSectionWallOutput walls[kCrossSectionWalls];
     double nu_mean = 0, nu_max_node = 0;
     double bulk_dissipation = 0;  // per unit length over P_y U H
+    // the contact stress's work (docs/continuum-model.md §2.9), dissipated in the contacts: in the bulk and the
+    // walls' contact tractions times their slips, per unit length over P_y U H (0 without it)
+    double contact_dissipation = 0;
     double side_share = 0;        // side walls' force over the top wall's
     double force_balance = 0;     // sum of the walls' forces (signed: moving walls +) over the top's
-    double energy_defect = 0;     // (work - bulk dissipation - sinks) / work, O(h^2)
+    double energy_defect = 0;     // (work - bulk dissipation - sinks - contact dissipation) / work, O(h^2)
 };
 CrossSectionObservables observe(const CrossSectionProblem& p, const CrossSectionSolution& s);
 

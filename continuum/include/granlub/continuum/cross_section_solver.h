@@ -4,7 +4,8 @@
 //   control volumes around the nodes (halves at walls, quarters at corners); face coefficients node averages;
 //   a wall face of a control volume takes its flux from its own wall's condition at that node (wall_condition.h),
 //   so a corner node carries two walls' conditions, one on each of its two wall faces
-//   exact Jacobian: node closures in Dual<1>, the 5-point stencil (+ ln Lambda) in Dual<11>
+//   exact Jacobian: node closures in Dual<1>, the 5-point stencil (9-point with the contact shear, whose face
+//   fluxes need the tangential gradient) (+ ln Lambda) in Dual<19>
 //   linear algebra: Eigen SparseLU, pattern analysed once, the matrix values refilled in place
 #pragma once
 #include <string>
@@ -24,6 +25,10 @@ NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSecti
 // mean = the load), Newton at that pressure, until it moves < 1e-10; the solution keeps it (`pressure`).
 // Throws granlub::SolverError.
 CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st);
+
+// The largest relative difference between the exact Jacobian at `s` and central differences with steps `step`
+// (Load mode; tests).
+double cross_section_jacobian_defect(const CrossSectionProblem& p, const CrossSectionSolution& s, double step);
 
 // Max-norm residual of a solution (tests).
 double cross_section_residual(const CrossSectionProblem& p, const CrossSectionSolution& s);

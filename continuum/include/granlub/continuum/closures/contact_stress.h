@@ -30,11 +30,39 @@ struct ContactStress {
     double sign_width = 1e-2;  // eps of sgn_eps (see above; tests/continuum/test_contact_stress.cpp checks eps -> 0)
     bool active() const { return coefficient > 0; }
 
-    // sgn_eps(x) = x/sqrt(x^2 + eps^2), templated on the scalar.
+    // sgn_eps(x) = x/sqrt(x^2 + eps^2), templated on the scalar: direction() with no tangential gradient.
     template <class S>
     S sign(const S& x) const {
+        return direction(x, S(0.0));
+    }
+    // The component along n of the regularised unit strain-rate direction grad u^ / |grad u^|_eps, for the gradient's
+    // components g_n along n and g_t across it: g_n / sqrt(g_n^2 + g_t^2 + eps^2). On the cross-section (u(y, z))
+    // the contact shear is mu_c p_c grad u / |grad u|_eps: Schaeffer's (1987) frictional viscosity p_c sin phi/|grad u|
+    // [SRC: JohnsonJacksonSchaefferFrictionalStress.C::nu of OpenFOAM (openfoamdotcom), nu_f = p_f sin phi / (2
+    // sqrt(II_D') + SMALL), sqrt(II_D') = |grad u|/2 here; the paper not read], regularised with the 1-D eps
+    // [ASSUMPTION: the sources give the rate-independent stress, not this regularisation; it keeps |tau_c| <= mu_c p_c,
+    // and with g_t = 0 it is the 1-D sgn_eps bit for bit (x*x + 0 is x*x)].
+    template <class S>
+    S direction(const S& gn, const S& gt) const {
         using std::sqrt;
-        return x / sqrt(x * x + sign_width * sign_width);
+        return gn / sqrt(gn * gn + gt * gt + sign_width * sign_width);
+    }
+    // The finite-volume fluxes of the contact shear in the momentum equation's units, M u^' (the solvers' u^, y^ =
+    // y/H): scale() x pi_c x direction, scale = mu_c Lambda / sqrt(Pi) (tau_c/P = mu_c pi_c x direction).
+    template <class S>
+    S scale(const S& Lambda, const S& Pi) const {
+        using std::sqrt;
+        return friction * Lambda / sqrt(Pi);
+    }
+    // ... through a face between two nodes: pi_c the mean of theirs, g_n the face difference, g_t the tangential
+    // gradient at the face (0 in 1-D); at a wall, pi_c of the wall node with the wall condition's gradient.
+    template <class S>
+    S face_flux(const S& pa, const S& pb, const S& gn, const S& gt) const {
+        return 0.5 * (pa + pb) * direction(gn, gt);
+    }
+    template <class S>
+    S wall_flux(const S& pw, const S& gn, const S& gt) const {
+        return pw * direction(gn, gt);
     }
 
     // pi_c = p_c / P_y and its nu-derivative, templated on the scalar (exact dual derivatives).
