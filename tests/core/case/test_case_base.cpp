@@ -9,6 +9,7 @@
 
 using namespace granlub;
 using granlub::test::kValidCase;
+using granlub::test::load_error;
 using granlub::test::TmpDir;
 using granlub::test::with;
 
@@ -19,16 +20,6 @@ fs::path write(const fs::path& dir, const std::string& text) {
     fs::create_directories(dir);
     std::ofstream(dir / "case.toml") << text;
     return dir;
-}
-
-// The CaseError message of loading `dir`; "" when it loads.
-std::string load_error(const fs::path& dir) {
-    try {
-        load_case(dir, Schema::common());
-    } catch (const CaseError& e) {
-        return e.what();
-    }
-    return "";
 }
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
