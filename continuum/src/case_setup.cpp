@@ -205,6 +205,17 @@ double bump_offset(const Case& c, const Settings& s, const OperatingPoint& p) {
 }
 }  // namespace
 
+std::vector<double> profile_y_over_H(const std::vector<double>& eta, double floor_offset, double H_c, double gap,
+                                     const Settings& s, Summary& m) {
+    m.run["wall_plane"] = {{"plane", s.wall_at_bump_tops ? "bump_tops" : "bump_centres"},
+                           {"floor_y_over_H", floor_offset / gap},
+                           {"top_y_over_H", (floor_offset + H_c) / gap}};
+    if (!s.wall_at_bump_tops) return eta;  // the domain is the gap between the planes: bit for bit as before
+    std::vector<double> y(eta);
+    for (double& v : y) v = (floor_offset + v * H_c) / gap;
+    return y;
+}
+
 double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side) {
     if (!s.roughness_from_bumps) return w.roughness;
     // sin(theta) = l/(d_w + d) of the layer the particle solvers build (Jenkins & Richman 1986; wall_bumps.h):
@@ -343,11 +354,11 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     std::vector<double> T_over_U2(sol.nodes());
     // q's closures: with a contact stress T = (P - p_c)/(rho_p f_p), its f_p the effective one (§2.9)
     for (std::size_t i = 0; i < sol.nodes(); ++i) T_over_U2[i] = 1.0 / (sol.Pi * q.closures->state(sol.nu[i]).fp.v);
-    r.profile.add("y_over_H", sol.y).add("u_over_U", sol.u).add("solid_fraction", sol.nu)
-        .add("temperature_over_U2", T_over_U2);
-
     Summary& m = r.summary;
     m = make_summary(c, p, kSolver);
+    const double floor_offset = s.wall_at_bump_tops ? bump_protrusion(c, p.bottom) : 0.0;
+    r.profile.add("y_over_H", profile_y_over_H(sol.y, floor_offset, H_c, gap, s, m))
+        .add("u_over_U", sol.u).add("solid_fraction", sol.nu).add("temperature_over_U2", T_over_U2);
     m.set("normal_stress_bottom", P, "Pa").set("normal_stress_top", P, "Pa");
     m.set("shear_stress_bottom", tau_b, "Pa").set("shear_stress_top", tau_t, "Pa");
     m.set("slip_bottom", U * o.slip_bottom, "m/s").set("slip_top", U * o.slip_top, "m/s");

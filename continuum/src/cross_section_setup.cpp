@@ -183,11 +183,10 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
     std::vector<double> T_over_U2(mid.nodes());
     for (std::size_t i = 0; i < mid.nodes(); ++i)
         T_over_U2[i] = p_mid[i] / (sol.Pi * s.closures->state(mid.nu[i]).fp.v);  // T = p/(rho_p f_p)
-    r.profile.add("y_over_H", mid.y).add("u_over_U", mid.u).add("solid_fraction", mid.nu)
-        .add("temperature_over_U2", T_over_U2);
-
     Summary& m = r.summary;
     m = make_summary(c, p, kSolver);
+    r.profile.add("y_over_H", profile_y_over_H(mid.y, off_y, Hc, gap, s, m))
+        .add("u_over_U", mid.u).add("solid_fraction", mid.nu).add("temperature_over_U2", T_over_U2);
     const auto& fl = o.walls[0];
     const auto& tp = o.walls[1];
     const auto& ou = o.walls[2];

@@ -41,8 +41,8 @@ BoundKeys<Settings> declare() {
              "particle solvers insert ([operating] solid_fraction x [cell] gap per wall area)");
     s.choice("wall_plane", "bump_centres", {"bump_centres", "bump_tops"},
              "where the continuum meets a bumpy wall ([walls] surface = bumps): the plane through the bumps' "
-             "centres, or their tops (the room the bumps leave); gap and mean nu are reported between the "
-             "centres' planes either way");
+             "centres, or their tops (the room the bumps leave); gap, mean nu and profile.csv's y/H are reported "
+             "between the centres' planes either way");
     s.choice("wall_roughness", "declared", {"declared", "bumps"},
              "R5..R8 of a bumpy wall ([walls] surface = bumps): the declared roughness, or sin(theta) = l/(d_w + d) of the "
              "bumps the particle solvers build from it (their diameter and spacing, whole bumps in the periodic length)");

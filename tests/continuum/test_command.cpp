@@ -351,6 +351,35 @@ BOOST_AUTO_TEST_CASE(lubrication_label_uses_the_local_solid_fraction) {
     }
 }
 
+// profile.csv's y_over_H on the one scale of every solver (kProfileYDefinition): from the floor's wall plane over the
+// gap between the planes through the bumps' centres. With wall_plane = "bump_tops" the continuum's own domain is
+// narrower by the bumps' protrusion at each wall: its nodes then run from prot/gap to 1 - prot/gap, evenly, and the
+// summary says where its walls lie; with the wall at the centres' planes the nodes span 0..1.
+BOOST_AUTO_TEST_CASE(profile_y_is_on_the_wall_planes_scale) {
+    std::string bumpy(kCase);
+    bumpy.replace(bumpy.find("roughness = 0.5\n"), 16, "roughness = 0.5\nsurface = \"bumps\"\n");
+    bumpy.replace(bumpy.find("normal_stress = 5.5e3"), 21, "normal_stress = 5.5e3\nsolid_fraction = 0.595");
+    for (const bool tops : {false, true}) {
+        const Case c = parse(fmt::format("[continuum]\ngap = \"inventory\"\nwall_plane = \"{}\"\n",
+                                         tops ? "bump_tops" : "bump_centres"),
+                             bumpy);
+        const OperatingPoint& p = c.points[0];
+        const auto r = continuum::solve_point(c, p, continuum::resolve_settings(c));
+        const auto& y = r.profile.column("y_over_H");
+        const double gap = r.summary.value("gap"), prot = bump_protrusion(c, p.bottom);
+        BOOST_TEST(prot > 0.3e-3);  // bumps of the grains' size: d/2 above the plane
+        const double lo = tops ? prot / gap : 0.0, hi = tops ? 1 - prot / gap : 1.0;
+        BOOST_TEST(std::abs(y.front() - lo) < 1e-12, y.front());
+        BOOST_TEST(std::abs(y.back() - hi) < 1e-12, y.back());
+        const double step = (hi - lo) / static_cast<double>(y.size() - 1);
+        for (std::size_t i = 1; i < y.size(); ++i) BOOST_TEST(std::abs(y[i] - y[i - 1] - step) < 1e-9);
+        const auto& w = r.summary.run.at("wall_plane");
+        BOOST_TEST(w.at("plane") == (tops ? "bump_tops" : "bump_centres"));
+        BOOST_TEST(std::abs(w.at("floor_y_over_H").get<double>() - lo) < 1e-12);
+        BOOST_TEST(std::abs(w.at("top_y_over_H").get<double>() - hi) < 1e-12);
+    }
+}
+
 // wall_roughness = "bumps": a bumpy wall's R5..R8 are sin(theta) = l/(d_w + d) of the layer the particle
 // solvers build (whole bumps in the periodic length: 38 of 0.789 mm over 30 mm, R = 0.5016), not the declared
 // R = 0.5 that asked for them; the summary says which. Plane walls refuse it, naming the key.

@@ -52,6 +52,16 @@ inline std::string error_of(const std::string& text) {
     return "";
 }
 
+// The CaseError message of loading a case directory or file with the common schema; "" when it loads.
+inline std::string load_error(const std::filesystem::path& p) {
+    try {
+        load_case(p, Schema::common());
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
 // A fresh folder under the system temp folder, removed at the end of the scope.
 struct TmpDir {
     std::filesystem::path path;

@@ -3,25 +3,21 @@
 #include "granlub/case/case.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
 #include <unordered_set>
 
-#include <sys/stat.h>
-
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "case_base.h"
+#include "case_file.h"
 #include "common_sections.h"
 #include "granlub/case/wall_bumps.h"
 #include "granlub/error.h"
 #include "granlub/text.h"
-#include "toml_screen.h"
 
 namespace granlub {
 
@@ -72,11 +68,6 @@ std::string suggestion(const std::string& bad, const std::vector<std::string>& n
         if (d < best_d) best_d = d, best = n;
     }
     return best.empty() ? "" : fmt::format("did you mean '{}'? ", best);
-}
-
-std::string where(const std::string& file, const toml::source_region& r) {
-    if (r.begin.line == 0) return file;
-    return fmt::format("{}:{}:{}", file, r.begin.line, r.begin.column);
 }
 
 std::string node_text(const toml::node& n) {
@@ -210,8 +201,10 @@ void read_section(const std::string& file, const SectionSpec& spec, const toml::
             }
             Value v = parse_value(file, spec.name, *k, node, notes);
             if (k->sweepable && node.is_array()) given_as_list.insert(k->name);
+            const auto& path = node.source().path;  // another file's for a value merged from a base
             out.set(k->name, std::move(v),
-                    SourcePos{static_cast<int>(node.source().begin.line), static_cast<int>(node.source().begin.column)},
+                    SourcePos{static_cast<int>(node.source().begin.line), static_cast<int>(node.source().begin.column),
+                              path && *path != file ? *path : ""},
                     false);
         }
     }
@@ -234,29 +227,6 @@ std::string id_number(double v, bool force_decimal) {
 }
 
 // The steps of parse_case, in order.
-
-// The file's text as a TOML table: size, UTF-8 and the screen for what toml++ mishandles first.
-toml::table read_toml(std::string_view text, const std::string& source) {
-    if (text.size() > kMaxCaseFileBytes)
-        throw CaseError(fmt::format("{}: {} bytes; a case file may have at most {} bytes", source, text.size(),
-                                    kMaxCaseFileBytes));
-    // A case file is UTF-8 text; and toml++ 3.3 has undefined behaviour on some malformed TOML
-    // (toml_screen.h), which is therefore rejected before toml++ sees it.
-    if (const auto bad = invalid_utf8_offset(text)) {
-        const LineColumn lc = line_column(text, *bad);
-        throw CaseError(fmt::format("{}:{}:{}: byte 0x{:02x} is not valid UTF-8 (a case file is UTF-8 text)", source,
-                                    lc.line, lc.column, static_cast<unsigned char>(text[*bad])));
-    }
-    if (const auto bad = screen_toml(text)) {
-        const LineColumn lc = line_column(text, bad->offset);
-        throw CaseError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, lc.line, lc.column, bad->why));
-    }
-    try {
-        return toml::parse(text, source);
-    } catch (const toml::parse_error& e) {
-        throw CaseError(fmt::format("{}: TOML syntax error: {}", where(source, e.source()), e.description()));
-    }
-}
 
 // Every top-level entry must be a known section, written as a table.
 void check_top_level(const toml::table& root, const std::string& source, const Schema& schema) {
@@ -454,7 +424,8 @@ void expand_sweep(Case& c, Control control, const std::set<std::string>& swept_l
 
 // ---------------------------------------------------------------------------------------------
 Case parse_case(std::string_view text, const std::string& source, const Schema& schema_in) {
-    toml::table root = read_toml(text, source);
+    CaseWithBases merged = merge_bases(read_toml(text, source), source);
+    toml::table& root = merged.root;
     auto owned = std::make_shared<const Schema>(schema_in);
     const Schema& schema = *owned;
 
@@ -462,7 +433,15 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
     c.schema = owned;
     c.file = source;
     c.dir = std::filesystem::path(source).parent_path();
-    c.file_hash = hash_hex(text);
+    // The bytes of the file and of each base, nearest first: a change in a base is a new case.
+    // Without a base the hash of the file's bytes, as before bases existed.
+    std::string hashed(text);
+    for (const auto& b : merged.bases) {
+        hashed += '\0';
+        hashed += b.text;
+        c.bases.push_back(b.file);
+    }
+    c.file_hash = hash_hex(hashed);
 
     check_top_level(root, source, schema);
     const std::set<std::string> swept_lists = read_sections(root, source, schema, c);
@@ -477,49 +456,9 @@ Case parse_case(std::string_view text, const std::string& source, const Schema& 
     return c;
 }
 
-namespace {
-// Why `file` cannot be read as a case file, or "" when it is a readable regular file. Checked
-// before opening: opening a FIFO would block, a directory reads as empty.
-std::string unreadable_case_file(const std::filesystem::path& file, bool from_directory) {
-    namespace fs = std::filesystem;
-    const std::string hint = "(a case is a directory holding case.toml, e.g. cases/sawyer2001)";
-    struct stat lst {};
-    if (::lstat(file.c_str(), &lst) != 0) {
-        if (errno == ENOENT)
-            return from_directory ? fmt::format("{}: no case.toml in this directory {}", file.parent_path().string(), hint)
-                                  : fmt::format("{}: no such case directory or file {}", file.string(), hint);
-        return fmt::format("{}: cannot be examined: {}", file.string(), std::strerror(errno));
-    }
-    struct stat st {};
-    if (::stat(file.c_str(), &st) != 0) {
-        if (errno == ELOOP) return fmt::format("{}: a loop of symbolic links", file.string());
-        std::error_code ec;
-        const auto target = fs::read_symlink(file, ec);
-        return fmt::format("{}: a symbolic link to {}, which {}", file.string(), ec ? "?" : target.string(),
-                           errno == ENOENT ? "does not exist" : std::strerror(errno));
-    }
-    if (S_ISDIR(st.st_mode)) return fmt::format("{}: a directory, not a case file {}", file.string(), hint);
-    if (!S_ISREG(st.st_mode))
-        return fmt::format("{}: not a regular file (a FIFO, socket or device); a case file is a TOML text file",
-                           file.string());
-    if (static_cast<std::uintmax_t>(st.st_size) > kMaxCaseFileBytes)
-        return fmt::format("{}: {} bytes; a case file may have at most {} bytes", file.string(), st.st_size,
-                           kMaxCaseFileBytes);
-    return "";
-}
-}  // namespace
-
 Case load_case(const std::filesystem::path& dir_or_file, const Schema& schema) {
-    std::filesystem::path file = dir_or_file;
-    std::error_code ec;
-    const bool from_directory = std::filesystem::is_directory(file, ec);
-    if (from_directory) file /= "case.toml";
-    if (const std::string why = unreadable_case_file(file, from_directory); !why.empty()) throw CaseError(why);
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw CaseError(fmt::format("{}: cannot be read: {}", file.string(), std::strerror(errno)));
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return parse_case(ss.str(), file.string(), schema);
+    const CaseFileText f = read_case_file(dir_or_file);
+    return parse_case(f.text, f.file.string(), schema);
 }
 
 const Section& Case::section(std::string_view which) const {
@@ -595,8 +534,11 @@ bool common_sections_contains(std::string_view section) {
 
 std::string describe(const Case& c) {
     std::ostringstream os;
-    os << fmt::format("# {} (hash {})\n# values marked (default) were not given in the file\n", c.file.string(),
-                      c.file_hash);
+    os << fmt::format("# {} (hash {})\n", c.file.string(), c.file_hash);
+    for (const auto& b : c.bases)
+        os << fmt::format("# base: {} (read first; values marked (from base) were given there, not here)\n",
+                          b.string());
+    os << "# values marked (default) were not given in the file\n";
     std::vector<const Section*> order;  // declaration order: common sections first
     for (const auto& spec : c.schema->sections()) order.push_back(&c.section(spec.name));
     for (const Section* s : order) {
@@ -604,6 +546,8 @@ std::string describe(const Case& c) {
         for (const auto& k : s->spec().keys) {
             std::string val = s->has(k.name) ? value_text(s->values().at(k.name)) : "(not set)";
             std::string note = s->is_default(k.name) ? "(default) " : "";
+            if (s->has(k.name) && !s->is_default(k.name) && s->file_of(k.name) != c.file.string())
+                note = fmt::format("(from base {}) ", s->file_of(k.name));
             std::string unit = k.unit.empty() ? "" : "[" + k.unit + "] ";
             os << fmt::format("{:<20} = {:<22} # {}{}{}\n", k.name, val, note, unit, k.doc);
         }

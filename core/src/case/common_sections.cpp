@@ -15,6 +15,11 @@ std::vector<SectionSpec> common_sections() {
     SectionSpec c("case", "identification");
     c.string("name", "", "short name; default: the case directory's name");
     c.string("title", "", "one-line description");
+    c.string("base", "",
+             "the case this one is a variant of: a case directory or file, relative to this file; its keys are read "
+             "first and this file's merged over them key by key (a table not given is the base's; [case] is never "
+             "inherited); \"\" = none");
+    c.keys.back().input = false;  // the values it brings are the inputs, not where they were written
     s.push_back(c);
 
     SectionSpec g("grains", "the granular material");

@@ -284,8 +284,13 @@ std::optional<SourcePos> Section::where(const std::string& key) const {
     return it->second;
 }
 
+const std::string& Section::file_of(const std::string& key) const {
+    auto it = pos_.find(key);
+    return it == pos_.end() || it->second.file.empty() ? file_ : it->second.file;
+}
+
 void Section::fail(const std::string& key, const std::string& why) const {
-    std::string place = file_;
+    std::string place = file_of(key);
     if (auto p = where(key)) place += fmt::format(":{}:{}", p->line, p->column);
     std::string value = has(key) ? clipped(value_text(values_.at(key))) : "(not set)";
     std::string def = is_default(key) ? " (default)" : "";

@@ -230,7 +230,8 @@ void write_result(const std::filesystem::path& dir, const Profile& profile, cons
                       profile_csv(profile, {fmt::format("granlub {} profile: case {} point {}", summary.solver,
                                                         summary.case_name, summary.point),
                                             fmt::format("granlub {} inputs_hash {}", summary.provenance.version,
-                                                        summary.provenance.inputs_hash)},
+                                                        summary.provenance.inputs_hash),
+                                            kProfileYDefinition},
                                   summary.provenance.run_id));
     write_file_atomic(dir / "summary.json", summary_json(summary).dump(2) + "\n");
 }

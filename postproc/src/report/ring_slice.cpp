@@ -156,6 +156,12 @@ void add_figures(RingSlicePart& part, const OperatingPoint& p, const Run& ring, 
     }
 }
 
+// [report] slice_case, relative to the file that gives it (a base's when inherited: [case] base).
+std::filesystem::path slice_case_path(const Case& ring) {
+    const Section& rep = ring.section("report");
+    return std::filesystem::path(rep.file_of("slice_case")).parent_path() / rep.string("slice_case");
+}
+
 }  // namespace
 
 RingSlicePart ring_slice_part(const Case& ring, const Collection& col) {
@@ -164,7 +170,7 @@ RingSlicePart ring_slice_part(const Case& ring, const Collection& col) {
     if (part.slice_case.empty()) return part;
     Case slice;
     try {
-        slice = load_case(ring.dir / part.slice_case, *ring.schema);
+        slice = load_case(slice_case_path(ring), *ring.schema);
     } catch (const Error& e) {
         part.notes.push_back(fmt::format("[report] slice_case = \"{}\": {}", part.slice_case, e.what()));
         return part;
@@ -233,7 +239,7 @@ std::optional<Case> slice_case(const Case& ring) {
     const std::string slice_case = ring.section("report").string("slice_case");
     if (slice_case.empty()) return std::nullopt;
     try {
-        return load_case(ring.dir / slice_case, *ring.schema);  // as ring_slice_part() above
+        return load_case(slice_case_path(ring), *ring.schema);  // as ring_slice_part() above
     } catch (const Error&) {
         return std::nullopt;  // ring_slice_part says why in the report
     }

@@ -19,23 +19,9 @@ using namespace granlub;
 using granlub::test::TmpDir;
 using granlub::test::kValidCase;
 using granlub::test::error_of;
+using granlub::test::load_error;
 using granlub::test::with;
 namespace fs = std::filesystem;
-
-namespace {
-
-
-std::string load_error(const fs::path& p) {
-    try {
-        load_case(p, Schema::common());
-    } catch (const CaseError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-
-}  // namespace
 
 BOOST_AUTO_TEST_CASE(names_that_could_become_commands_are_refused) {
     // TOML basic-string escapes: \n is a line break in the value, \" a quote.

@@ -44,6 +44,13 @@ Settings resolve_settings(const Case& c);
 // The roughness R of one wall of a point for R5..R8: the declared one, or with wall_roughness = "bumps" on a
 // bumpy wall sin(theta) = l/(d_w + d) of the bump layer the particle solvers build (wall_bumps.h).
 double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side);
+// The continuum's nodes, at eta = 0..1 across its own domain of height H_c whose floor lies `floor_offset`
+// above the floor's wall plane (the bumps' protrusion with wall_plane = "bump_tops", else 0), as y/H on the
+// one scale of every profile.csv (kProfileYDefinition, granlub/results/results.h): y from the floor's wall
+// plane over the gap between the wall planes. Records where its own walls lie on that scale in the summary's
+// run.wall_plane. With wall_plane = "bump_centres" the nodes are eta unchanged.
+std::vector<double> profile_y_over_H(const std::vector<double>& eta, double floor_offset, double H_c, double gap,
+                                     const Settings& s, Summary& m);
 // Throws SolverError when the point cannot have a sheared steady state (e.g. R5 = 0).
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p);
 // What every solved point records in summary.json's run (the solve, the model's names, warnings, and the regime:

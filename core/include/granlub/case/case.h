@@ -105,7 +105,9 @@ struct Case {
     double gravity = 0;  // m/s^2 along -y
     std::vector<OperatingPoint> points;
     std::map<std::string, Section> sections;  // every declared section, resolved
-    std::string file_hash;                    // hash of the file's bytes (provenance)
+    // [case] base: the files read under this one, nearest first (src/case/case_base.h)
+    std::vector<std::filesystem::path> bases;
+    std::string file_hash;  // hash of the file's bytes and its bases' (provenance)
     std::vector<std::string> warnings;        // accepted but to be changed: old spellings of values, old key names
 
     const Section& section(std::string_view name) const;

@@ -132,6 +132,7 @@ struct SectionSpec {
 struct SourcePos {
     int line = 0;
     int column = 0;
+    std::string file;  // "" = the section's file; a base's for a value merged from it ([case] base)
 };
 
 // The resolved values of one section.
@@ -152,6 +153,8 @@ public:
     bool has(const std::string& key) const;
     bool is_default(const std::string& key) const;
     std::optional<SourcePos> where(const std::string& key) const;
+    // The file the key's value was read from: the case's, or a base's ([case] base).
+    const std::string& file_of(const std::string& key) const;
 
     // Throws CaseError "<file>:<line>:<col>: [section] key = value: why".
     [[noreturn]] void fail(const std::string& key, const std::string& why) const;

@@ -3,7 +3,9 @@
 //
 // profile.csv: '#' comment lines (provenance), a header row, one row per station across the gap.
 //   Required columns: y_over_H, u_over_U, solid_fraction, temperature_over_U2; statistical
-//   solvers add <column>_stderr; solvers may add further columns.
+//   solvers add <column>_stderr; solvers may add further columns. y_over_H has one meaning in
+//   every solver's file (kProfileYDefinition, written as a comment line), so that profiles
+//   overlay without knowing any solver's conventions.
 // summary.json: {"format", "solver", "case", "point", "inputs", "outputs", "run", "provenance"}.
 //   outputs: name -> {"value", "stderr" (null when not statistical), "unit"[, "dt_error"]}.
 //   Standard outputs (see kStandardOutputs): normal and shear stress on each wall (Pa, positive
@@ -79,6 +81,13 @@ inline constexpr const char* kStandardOutputs[] = {
     "slip_bottom",          "slip_top",          "mean_solid_fraction", "max_solid_fraction"};
 inline constexpr const char* kProfileColumns[] = {"y_over_H", "u_over_U", "solid_fraction",
                                                   "temperature_over_U2"};
+// What y_over_H is in every profile.csv: the walls' planes are the case's ([cell] gap apart when
+// the gap is fixed), with bumps the planes through the bumps' centres (granlub/case/wall_bumps.h);
+// a solver whose own domain ends elsewhere (the continuum's wall_plane = "bump_tops") writes its
+// rows on this scale all the same, its first and last rows then off 0 and 1.
+inline constexpr const char* kProfileYDefinition =
+    "y_over_H = y / H: y from the floor's wall plane, H the gap between the two walls' planes (with bumps the "
+    "planes through their centres; under a load the solver's own gap)";
 
 struct Provenance {
     std::string version;      // granlub version (git describe)
