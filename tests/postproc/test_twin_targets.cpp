@@ -186,7 +186,7 @@ BOOST_AUTO_TEST_CASE(a_transient_dem_point_is_listed_not_judged) {
     BOOST_TEST(t.continuum.required == 2);
     for (const auto& r : t.rises) BOOST_TEST(r.fast == 2.0);  // the rise spans the judged points only
     const auto table = postproc::twin_count_table(t);
-    BOOST_TEST(table.rows[0][1].text == "1 of 2 judged; 1 of 3 points not judged, the DEM's result not steady: U4.0 "
+    BOOST_TEST(table.rows[0][1].text == "1 of 2 judged; 1 of 3 points not judged (no steady DEM result): U4.0 "
                                         "(transient)",
                table.rows[0][1].text);
 }

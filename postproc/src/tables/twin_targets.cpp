@@ -438,7 +438,7 @@ Table twin_count_table(const TwinTargets& t) {
         if (!p.judged) not_judged.push_back(fmt::format("{} ({})", p.point->id, p.dem_state));
     const std::string denominator =
         not_judged.empty() ? ""
-                           : fmt::format("; {} of {} points not judged, the DEM's result not steady: {}", not_judged.size(),
+                           : fmt::format("; {} of {} points not judged (no steady DEM result): {}", not_judged.size(),
                                          t.points.size(), list_text(not_judged));
     auto row = [&](const std::string& model, const ModelCount& m) {
         tab.rows.push_back({{model, ""},
