@@ -25,6 +25,8 @@
 
 namespace granlub {
 
+struct SolverInfo;  // granlub/run/solver_info.h: carried by a solver's section, not read here
+
 // Closed/open numeric interval; the text form is used in error messages ("allowed: (0, 1]").
 struct Range {
     double lo = -std::numeric_limits<double>::infinity();
@@ -93,6 +95,9 @@ struct SectionSpec {
     // False for a section no solver reads (e.g. [report]): in no solver's inputs hash, so a change
     // there leaves every result current.
     bool solver_input = true;
+    // The declaration of the solver this section is (section_for(), granlub/run/solver_info.h);
+    // nullptr for the common sections.
+    const SolverInfo* solver = nullptr;
     // Cross-key checks of this section; call Section::fail(key, why) to reject.
     std::function<void(const Section&)> validate;
 

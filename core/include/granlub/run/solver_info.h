@@ -6,10 +6,16 @@
 //   void check(const Case&, const RunOptions&);      what run() would reject for the selected points
 //       (quick and --full run lengths), without running: CaseError for bad input, SolverError for a
 //       case the solver cannot run
-// `granlub` reads the row (its subcommand, options and stage; cli/solvers.h lists the modules), the
+// `granlub` reads the row (its subcommand, options and stage; cmake/GranlubSolverList.cmake lists the modules), the
 // solver's own code names itself by it, and every summary.json it writes records its kind
 // ("kind"): how the report, which reads files only, tells the kinds of results apart.
 #pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "granlub/case/schema.h"
 
 namespace granlub {
 
@@ -37,8 +43,36 @@ struct SolverInfo {
     bool engine = false;
     bool seeded = false;  // stochastic: takes --seed and --threads
     bool ranks = false;   // runs MPI ranks: takes --np
-    // `granlub <name> CASE --map`: the case's (U, P) map instead of its points; nullptr: no map
+    // `granlub <name> CASE --map`: the case's (U, P) map instead of its points, written to
+    // <results>/<name>/kMapFile (the report reads it); nullptr: no map
     int (*map)(const Case& c, const RunOptions& o, int speeds, int loads) = nullptr;
+    // runs a ring case ([cell] geometry = "annulus") as built; the report sets these results beside
+    // its slice case's ([report] slice_case)
+    bool whole_ring = false;
+    // its points are what `granlub bulk-rheology` reduces to the bulk-rheology table
+    bool bulk_rheology = false;
+    // with its section's start = "warm", each point starts from this solver's final state of the same
+    // point (its results folder), so it runs after it; nullptr: always cold
+    const char* warm_from = nullptr;
 };
+
+// The file of a solver's (U, P) map under <results>/<name>/ (SolverInfo::map).
+inline constexpr const char* kMapFile = "map.csv";
+
+// A solver's case section, named as the solver and carrying its declaration (SectionSpec::solver),
+// so that what reads a case (the report) knows the solvers' data without linking them.
+inline SectionSpec section_for(const SolverInfo& solver, std::string doc) {
+    SectionSpec s(solver.name, std::move(doc));
+    s.solver = &solver;
+    return s;
+}
+
+// The declarations of the solvers a schema holds, in its order (`granlub run` order).
+inline std::vector<const SolverInfo*> declared_solvers(const Schema& schema) {
+    std::vector<const SolverInfo*> out;
+    for (const SectionSpec& s : schema.sections())
+        if (s.solver) out.push_back(s.solver);
+    return out;
+}
 
 }  // namespace granlub
