@@ -190,7 +190,7 @@ struct KeysCommand {
     }
 
     int run() const {
-        const granlub::Schema schema = granlub::cli::full_schema();
+        const granlub::Schema schema = granlub::cli::case_schema();
         if (!check.empty() || !update.empty()) {
             try {
                 const bool updating = !update.empty();
@@ -247,7 +247,7 @@ int bulk_rheology(const granlub::Case& c, const Args& a) {
 // Runs the parsed case subcommand; the exit code, errors printed.
 int run_case_command(const CaseCommands& cmd, const Args& a) {
     try {
-        const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
+        const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::case_schema());
         for (const auto& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
         if (cmd.check->parsed()) {
             fmt::print("{}", granlub::describe(c));

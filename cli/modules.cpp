@@ -6,6 +6,7 @@
 
 #include "granlub/error.h"
 #include "granlub/registry.h"
+#include "full_schema.h"
 #include "granlub/results/results.h"
 #include "solver_commands.h"
 
@@ -27,6 +28,12 @@ const std::vector<SolverModule>& solver_modules() {
         return m;
     }();
     return modules;
+}
+
+Schema case_schema() {
+    Schema s = full_schema();
+    for (const SolverModule& m : solver_modules()) s.declare_solver(m.name, &m.info);
+    return s;
 }
 
 void check_input(const SolverModule& m, const Case& c, const RunOptions& o) {

@@ -23,7 +23,7 @@ PartField<Params, RunSpec, T> run(T RunSpec::*m) { return part(&Params::run, m);
 // One call per key declares it and binds it to its field; a switch's values come from its variant
 // table (variants.h).
 BoundKeys<Params> declare() {
-    BoundKeys<Params> k(section_for(kSolver, "lattice cellular automaton (Jasti & Higgs 2006)"));
+    BoundKeys<Params> k(SectionSpec(kSolver.name, "lattice cellular automaton (Jasti & Higgs 2006)"));
     k.choice("mode", rule(&Rules::mode), variants<Mode>(), Mode::JH,
              "rules: jh = JH06 as specified (scalar u_p); vector = momentum-consistent variant [ASSUMPTION]");
     k.real_optional("fill", lattice(&LatticeSpec::fill), Range::open_closed(0, 1), "",

@@ -14,7 +14,7 @@ namespace {
 
 BoundKeys<Settings> declare() {
     BoundKeys<Settings> k(
-        section_for(kSolver, "GKL continuum solver (Sawyer & Tichy 2001; closures of Lun et al. 1984)"));
+        SectionSpec(kSolver.name, "GKL continuum solver (Sawyer & Tichy 2001; closures of Lun et al. 1984)"));
     // Keys declared on s are read by hand (case_setup.cpp, cross_section_setup.cpp): their values resolve to
     // registry objects or enums, take a default from another section, go into the closures' parameters or a
     // wall's per-point roughness, or are checked against other keys.

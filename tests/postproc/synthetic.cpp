@@ -25,7 +25,7 @@ constexpr SolverInfo kSolvers[] = {
 
 Schema synthetic_schema() {
     Schema s = Schema::common();
-    for (const SolverInfo& solver : kSolvers) s.add(section_for(solver, ""));
+    for (const SolverInfo& solver : kSolvers) s.add(SectionSpec(solver.name, "")).declare_solver(solver.name, &solver);
     return s;
 }
 

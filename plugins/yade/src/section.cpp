@@ -14,7 +14,7 @@ namespace {
 
 // The same shape as plugins/liggghts/src/dem/section.cpp's declare(), not shared: each engine's own keys, Settings and default law.
 BoundKeys<Settings> declare() {
-    BoundKeys<Settings> k(section_for(kSolver, "YADE cross-check of the particle simulation (plugins/yade)"));
+    BoundKeys<Settings> k(SectionSpec(kSolver.name, "YADE cross-check of the particle simulation (plugins/yade)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
     add_contact_law_key(s, ParticleEngine::Yade, "viscel");
     k.real("contact_time", &Settings::contact_time, 1e-5, Range::positive(), "s", "viscel: binary contact duration t_c");

@@ -11,8 +11,6 @@
 // ("kind"): how the report, which reads files only, tells the kinds of results apart.
 #pragma once
 
-#include <string>
-#include <utility>
 #include <vector>
 
 #include "granlub/case/schema.h"
@@ -59,15 +57,9 @@ struct SolverInfo {
 // The file of a solver's (U, P) map under <results>/<name>/ (SolverInfo::map).
 inline constexpr const char* kMapFile = "map.csv";
 
-// A solver's case section, named as the solver and carrying its declaration (SectionSpec::solver),
-// so that what reads a case (the report) knows the solvers' data without linking them.
-inline SectionSpec section_for(const SolverInfo& solver, std::string doc) {
-    SectionSpec s(solver.name, std::move(doc));
-    s.solver = &solver;
-    return s;
-}
-
-// The declarations of the solvers a schema holds, in its order (`granlub run` order).
+// The declarations of the solvers a schema's sections carry (Schema::declare_solver; `granlub`'s
+// case_schema(), cli/modules.h), in its order (`granlub run` order): what the report, which links no
+// solver, knows of them.
 inline std::vector<const SolverInfo*> declared_solvers(const Schema& schema) {
     std::vector<const SolverInfo*> out;
     for (const SectionSpec& s : schema.sections())

@@ -15,7 +15,7 @@ namespace {
 
 // The same shape as plugins/yade/src/section.cpp's declare(), not shared: each engine's own keys, Settings and default law.
 BoundKeys<Settings> declare() {
-    BoundKeys<Settings> k(section_for(kSolver, "particle simulation in LIGGGHTS (granlub-liggghts)"));
+    BoundKeys<Settings> k(SectionSpec(kSolver.name, "particle simulation in LIGGGHTS (granlub-liggghts)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)
     add_contact_law_key(s, ParticleEngine::Liggghts, "impulse");
     k.real("beta0", &Settings::beta0, 0.0, Range::closed(-1, 1), "",
