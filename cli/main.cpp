@@ -190,7 +190,7 @@ struct KeysCommand {
     }
 
     int run() const {
-        const granlub::Schema schema = granlub::cli::full_schema();
+        const granlub::Schema schema = granlub::cli::case_schema();
         if (!check.empty() || !update.empty()) {
             try {
                 const bool updating = !update.empty();
@@ -225,13 +225,18 @@ struct CaseCommands {
     CLI::App* slurm = nullptr;
 };
 
-// `granlub bulk-rheology CASE`: the core's rheology of every DEM point (bulk_rheology_table.h),
-// written atomically beside case.toml (or to --out), read while no run writes the DEM's results.
+// `granlub bulk-rheology CASE`: the core's rheology of every point of the solver declared for it
+// (SolverInfo::bulk_rheology: the DEM; bulk_rheology_table.h), written atomically beside case.toml
+// (or to --out), read while no run writes that solver's results.
 int bulk_rheology(const granlub::Case& c, const Args& a) {
+    const granlub::cli::SolverModule* from = nullptr;
+    for (const auto& m : granlub::cli::solver_modules())
+        if (m.info.bulk_rheology && !from) from = &m;
+    if (!from) throw granlub::Error("granlub was built without a solver whose results make the bulk-rheology table");
     const auto root = granlub::results_root(c, a.opt);
-    const granlub::ResultsLock lock(granlub::point_locks(root, "dem", c.select(""), granlub::LockMode::Shared),
+    const granlub::ResultsLock lock(granlub::point_locks(root, from->name, c.select(""), granlub::LockMode::Shared),
                                     a.opt.wait);  // every point's: the table reads them all
-    const granlub::BulkTable t = granlub::bulk_rheology_table(c, root);
+    const granlub::BulkTable t = granlub::bulk_rheology_table(c, root, from->name);
     const std::filesystem::path out = a.out.empty() ? c.dir / granlub::kBulkTableFile : std::filesystem::path(a.out);
     granlub::write_file_atomic(out, t.csv);
     for (const auto& n : t.notes) fmt::print(stderr, "note: {}\n", n);
@@ -242,7 +247,7 @@ int bulk_rheology(const granlub::Case& c, const Args& a) {
 // Runs the parsed case subcommand; the exit code, errors printed.
 int run_case_command(const CaseCommands& cmd, const Args& a) {
     try {
-        const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::full_schema());
+        const granlub::Case c = granlub::load_case(a.case_path, granlub::cli::case_schema());
         for (const auto& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
         if (cmd.check->parsed()) {
             fmt::print("{}", granlub::describe(c));

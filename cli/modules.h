@@ -18,6 +18,9 @@ struct SolverModule {
 };
 
 const std::vector<SolverModule>& solver_modules();
+// full_schema() with each solver's section carrying its declaration (SectionSpec::solver): the
+// schema `granlub` reads cases with, so that the report knows the solvers' data from the case.
+Schema case_schema();
 // m.check(c, o) before any run: bad input throws (CaseError, exit 2); a point m cannot run does not
 // (its run names it and goes on with the other points).
 void check_input(const SolverModule& m, const Case& c, const RunOptions& o);

@@ -8,7 +8,7 @@
 namespace granlub::cli {
 // `granlub run`: the selected solvers (all when empty), then compare; one overall progress line
 // per stage and a closing table. Returns 0 if every stage succeeded. The engines (dem, yade;
-// solvers.h) are one stage, their sweeps side by side under one SweepPipeline (pipeline.h), so a
+// the generated solvers.h) are one stage, their sweeps side by side under one SweepPipeline (pipeline.h), so a
 // YADE point starts once the DEM point it reads is done; with --np > 1 (ranks busy-wait) or
 // --threads (a core budget) they run one after the other. Each stage takes and frees its own locks
 // (run_lock.h); none is held from one stage into the next, so a run cannot wait on itself. With

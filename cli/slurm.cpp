@@ -172,11 +172,13 @@ std::string submit_script(const Case& c, const SlurmOptions& s, const Plan& p) {
                                    "<name> <job id>.");
     out += "set -euo pipefail\nhere=$(cd \"$(dirname \"${BASH_SOURCE[0]}\")\" && pwd)\nmkdir -p \"$here/logs\"\n";
     std::vector<std::string> ended;  // the arrays the last job waits for
-    const bool warm = p.runs("dem") && c.sections.contains("yade") && c.section("yade").string("start") == "warm";
     for (const auto* m : p.engines) {
         std::string dep;
-        if (m->name == "yade" && warm)  // each YADE task starts from the final state of the same DEM task
-            dep = " --dependency=aftercorr:$dem --kill-on-invalid-dep=yes";
+        // a warm start (SolverInfo::warm_from): each task starts from the final state of the same task of
+        // the solver it starts from
+        const char* from = m->info.warm_from;
+        if (from && p.runs(from) && c.sections.contains(m->name) && c.section(m->name).string("start") == "warm")
+            dep = fmt::format(" --dependency=aftercorr:${} --kill-on-invalid-dep=yes", from);
         out += fmt::format("{0}=$(sbatch --parsable --output=\"$here/logs/{0}-%A_%a.out\"{1} \"$here/{0}.sbatch\")\n"
                            "{0}=${{{0}%%;*}}\necho \"{0} ${0}\"\n",
                            m->name, dep);

@@ -2,8 +2,8 @@
 # A solver module names the sources that declare its case section (the section() that
 # cli/full_schema.cpp adds under GRANLUB_HAVE_<MODULE>) and the include folders they need. The
 # case-parser fuzzer (tests/core/fuzz) compiles exactly these with core's case model, so it
-# parses with the schema `granlub` uses; cli/CMakeLists.txt stops when a linked solver module
-# has not registered its section. The sources must need nothing but core (no solver engine).
+# parses with the schema `granlub` uses. The modules registered here, in this order, are granlub's
+# solver modules (cmake/GranlubSolverList.cmake writes cli's solver list from them). The sources must need nothing but core (no solver engine).
 function(granlub_case_section module)
   cmake_parse_arguments(arg "" "" "SOURCES;INCLUDES" ${ARGN})
   if(NOT arg_SOURCES)

@@ -1,6 +1,6 @@
 // Robustness envelope of the FV solver (not a timing benchmark): solves 7200 points over
 // wall family x g0 x e_p x H/d x R x control x (Pi or mean nu) from scratch and counts the
-// failures by cause. Takes a few minutes; numbers are quoted in continuum/README.md.
+// failures by cause. Takes a few minutes; numbers are quoted in docs/measurements/continuum.md.
 #include <chrono>
 #include <cmath>
 #include <cstdio>

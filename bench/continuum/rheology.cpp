@@ -1,4 +1,4 @@
-// The continuum's diagnostics, reproducible (continuum/README.md "Extended kinetic theory against the DEM"):
+// The continuum's diagnostics, reproducible (docs/measurements/continuum.md "Extended kinetic theory against the DEM"):
 //   continuum_rheology CASE            every point: top-wall mu, mid-gap I and nu, the homogeneous-shear mu of the
 //                                      same closures at that I (simple_shear.h), their ratio, the regime label
 //   continuum_rheology CASE I [I ...]  the homogeneous-shear nu, mu and T/(d gamma_dot)^2 of the case's closures at

@@ -75,7 +75,7 @@ std::string continuum_map_csv(const Case& c, const MapGrid& g, MapStats* stats) 
 std::filesystem::path write_continuum_map(const Case& c, const MapGrid& g, const std::filesystem::path& results_root,
                                           MapStats* stats) {
     const std::string csv = continuum_map_csv(c, g, stats);
-    const auto path = results_root / kSolver.name / "map.csv";
+    const auto path = results_root / kSolver.name / kMapFile;
     std::filesystem::create_directories(path.parent_path());
     write_file_atomic(path, csv);
     return path;
@@ -86,7 +86,7 @@ int run_map(const Case& c, const RunOptions& o, int speeds, int loads) {
     g.speeds = speeds;
     g.loads = loads;
     const std::filesystem::path root = results_root(c, o);
-    const ResultsLock held({{root, "continuum/map.csv", LockMode::Exclusive}}, o.wait);
+    const ResultsLock held({{root, fmt::format("{}/{}", kSolver.name, kMapFile), LockMode::Exclusive}}, o.wait);
     MapStats st;
     const std::clock_t c0 = std::clock();
     const auto path = write_continuum_map(c, g, root, &st);

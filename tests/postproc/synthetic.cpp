@@ -8,12 +8,24 @@
 #include "case_text.h"
 #include "granlub/results/run_status.h"
 #include "granlub/results/results.h"
+#include "granlub/run/solver_info.h"
 
 namespace granlub::test {
 
+namespace {
+int no_map(const Case&, const RunOptions&, int, int) { return 0; }
+// The four solvers as their modules declare what the report reads of them (granlub/<module>/command.h).
+constexpr SolverInfo kSolvers[] = {
+    {.name = "continuum", .description = "", .kind = SolverKind::Continuum, .map = &no_map},
+    {.name = "automaton", .description = "", .kind = SolverKind::Lattice},
+    {.name = "dem", .description = "", .kind = SolverKind::Particles, .engine = true, .seeded = true, .ranks = true,
+     .whole_ring = true, .bulk_rheology = true},
+    {.name = "yade", .description = "", .kind = SolverKind::Particles, .engine = true, .seeded = true}};
+}  // namespace
+
 Schema synthetic_schema() {
     Schema s = Schema::common();
-    for (const char* solver : {"continuum", "automaton", "dem", "yade"}) s.add(SectionSpec(solver, ""));
+    for (const SolverInfo& solver : kSolvers) s.add(SectionSpec(solver.name, "")).declare_solver(solver.name, &solver);
     return s;
 }
 

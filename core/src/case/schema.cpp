@@ -304,6 +304,15 @@ Schema& Schema::add(SectionSpec section) {
     return *this;
 }
 
+Schema& Schema::declare_solver(std::string_view name, const SolverInfo* solver) {
+    for (auto& s : sections_)
+        if (s.name == name) {
+            s.solver = solver;
+            return *this;
+        }
+    throw Error(fmt::format("internal: no section [{}] for a solver's declaration", name));
+}
+
 const SectionSpec* Schema::find(std::string_view name) const {
     for (const auto& s : sections_)
         if (s.name == name) return &s;

@@ -84,13 +84,13 @@ const char* kColumns[] = {
 
 }  // namespace
 
-BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root) {
+BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const std::string& solver) {
     BulkTable t;
-    const ResultKey key = result_key(c, "dem");
+    const ResultKey key = result_key(c, solver);
     std::string rows;
     const double d = c.grains.diameter, rho = c.grains.density;
     for (const auto& p : c.points) {
-        const fs::path dir = result_dir(results_root, "dem", p.id);
+        const fs::path dir = result_dir(results_root, solver, p.id);
         const LoadedResult res = load_result(dir, key);
         if (res.status.state != ResultState::Complete) {
             t.notes.push_back(fmt::format("point {} left out: {}{}", p.id,
@@ -147,7 +147,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root) {
     std::string head = fmt::format("# format {}\n# case {} ({}), case file hash {}\n# written {} by granlub {}\n",
                                    kBulkTableFormat, c.name, c.file.string(), c.file_hash, utc_now(), version());
     head += fmt::format("# from {}; columns, units and method: cases/bulk_shear/README.md\n",
-                        (results_root / "dem").string());
+                        (results_root / solver).string());
     for (const auto& n : t.notes) head += "# " + n + "\n";
     t.csv = head + fmt::format("{}\n", fmt::join(kColumns, ",")) + rows;
     return t;

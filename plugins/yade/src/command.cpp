@@ -59,7 +59,7 @@ nlohmann::json settings_json(const Settings& s) {
 InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingPoint& p, const Settings& s,
                             const fs::path& dir, nlohmann::json& record) {
     // DEM's realisation of the same seed (seeds.h); with one seed its point folder, as always
-    const fs::path from = point_result_dir(c, o, kWarmFrom, p.id) / kFinalStateFile;
+    const fs::path from = point_result_dir(c, o, kSolver.warm_from, p.id) / kFinalStateFile;
     if (!fs::exists(from))
         throw SolverError(fmt::format("point {}: [yade] start = \"warm\" starts from granlub dem's final state {}, "
                                       "which does not exist: run `granlub dem` on this case first, or set "
@@ -220,7 +220,7 @@ int run(const Case& c, const RunOptions& o) {
         } catch (const std::exception& e) {
             throw SolverError(fmt::format("point {}: {}", p.id, e.what()));
         }
-    }, warm ? std::vector<std::string>{kWarmFrom} : std::vector<std::string>{});
+    }, warm ? std::vector<std::string>{kSolver.warm_from} : std::vector<std::string>{});
 }
 
 }  // namespace granlub::yade

@@ -12,6 +12,7 @@ namespace granlub::yade {
 
 namespace {
 
+// The same shape as plugins/liggghts/src/dem/section.cpp's declare(), not shared: each engine's own keys, Settings and default law.
 BoundKeys<Settings> declare() {
     BoundKeys<Settings> k(SectionSpec(kSolver.name, "YADE cross-check of the particle simulation (plugins/yade)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)

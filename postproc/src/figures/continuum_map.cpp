@@ -12,6 +12,7 @@
 #include "figures/figures.h"
 #include "granlub/error.h"
 #include "granlub/results/file_io.h"
+#include "granlub/run/solver_info.h"
 #include "figures/mu_of_i.h"
 
 namespace granlub::postproc {
@@ -160,7 +161,13 @@ Figure field_figure(const Grid& g, const Collection& col, const std::string& nam
 }  // namespace
 
 std::vector<Figure> continuum_map_figures(const Case& c, const Collection& col) {
-    const auto rows = read_continuum_map(col.root / "continuum" / "map.csv");
+    // the map of the solver declared with one (SolverInfo::map), under its results folder
+    std::filesystem::path file;
+    if (c.schema)
+        for (const SolverInfo* s : declared_solvers(*c.schema))
+            if (s->map && file.empty()) file = col.root / s->name / kMapFile;
+    if (file.empty()) return {};
+    const auto rows = read_continuum_map(file);
     if (rows.empty()) return {};
     const Grid g = grid_of(rows);
     std::vector<Figure> figs;

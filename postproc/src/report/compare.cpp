@@ -15,6 +15,7 @@
 #include "granlub/error.h"
 #include "granlub/postproc/command.h"
 #include "granlub/run/run_lock.h"
+#include "granlub/run/solver_info.h"
 #include "report/paraview.h"
 #include "report/regimes.h"
 #include "report/report_builder.h"
@@ -114,8 +115,10 @@ std::string text_table(const Table& t) {
 // do not swap their reports in at once; and the slice case's dem points it sets beside a ring's.
 std::vector<LockRequest> compare_locks(const Case& c, const RunOptions& o) {
     const auto root = results_root(c, o);
-    std::vector<LockRequest> locks{{root, "report", LockMode::Exclusive},
-                                   {root, "continuum/map.csv", LockMode::Shared}};
+    std::vector<LockRequest> locks{{root, "report", LockMode::Exclusive}};
+    if (c.schema)
+        for (const SolverInfo* s : declared_solvers(*c.schema))
+            if (s->map) locks.push_back({root, fmt::format("{}/{}", s->name, kMapFile), LockMode::Shared});
     const auto add = [&](const std::filesystem::path& r, const std::string& solver,
                          const std::vector<const OperatingPoint*>& points) {
         for (auto& l : point_locks(r, solver, points, LockMode::Shared)) locks.push_back(std::move(l));
@@ -124,7 +127,8 @@ std::vector<LockRequest> compare_locks(const Case& c, const RunOptions& o) {
     const std::vector<std::string> known = known_solvers(c);
     for (const auto& s : known) add(root, s, points);
     for (const auto& s : result_solvers(known, root)) add(root, s, points);  // duplicates: one lock
-    if (const auto slice = slice_case(c)) add(results_root(*slice, RunOptions{}), kRingSolver, slice->select(""));
+    if (const auto slice = slice_case(c); slice && !ring_solver(c).empty())
+        add(results_root(*slice, RunOptions{}), ring_solver(c), slice->select(""));
     return locks;
 }
 

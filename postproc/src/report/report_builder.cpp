@@ -57,7 +57,7 @@ void summary_part(Report& rep, const Case& c, const Collection& col) {
 std::string error_used(const Collection& col) {
     std::size_t pooled = 0, single = 0;
     for (const auto& [key, r] : col.runs)
-        if (r.usable() && (key.first == "dem" || key.first == "yade")) ++(r.seeds_pooled() > 1 ? pooled : single);
+        if (r.usable() && r.kind() == SolverKind::Particles) ++(r.seeds_pooled() > 1 ? pooled : single);
     const std::string pooled_text =
         "Where a particle result pools several seeds ([particles] seeds or --seeds; its summary's run.seeds), its ± "
         "and every z and a = b with it use the seeds' standard error, the scatter of the seeds' own results over √n "
@@ -223,14 +223,14 @@ void ring_part(Report& rep, const RingSlicePart& ring_s, const ReportFigures& fi
     if (!ring->slice_case.empty()) {
         rep.heading("The whole ring against its slice");
         rep.text(fmt::format(
-            "granlub dem ran this case as the whole ring ([cell] geometry = \"annulus\": turning floor and side "
+            "granlub {} ran this case as the whole ring ([cell] geometry = \"annulus\": turning floor and side "
             "walls, the curvature instead of a body force); [report] slice_case = \"{}\" ran the same points as a "
             "periodic slice with the centripetal body force standing in for the curvature. Both are written in the "
             "slice's frame (the ring by an equal-area map: z/W = −1/2 is the outer wall), so they compare quantity by "
             "quantity. Bold and z as in every table (“How to read this report”): a bold z says that these "
             "two runs differ; whether the geometries do needs more seeds (--seed). The side walls' shear "
             "stresses are the ring's torques on the cylinders over their areas and radii.",
-            ring->slice_case));
+            ring->solver, ring->slice_case));
         for (const auto& n : ring->notes) rep.text(n);
         if (!ring->table.rows.empty()) rep.table(ring->table);
         rep.figures(figs.ring_slice);

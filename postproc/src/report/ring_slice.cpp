@@ -11,6 +11,7 @@
 #include "formats/format.h"
 #include "granlub/error.h"
 #include "granlub/results/table.h"
+#include "granlub/run/solver_info.h"
 
 namespace granlub::postproc {
 namespace {
@@ -164,10 +165,22 @@ std::filesystem::path slice_case_path(const Case& ring) {
 
 }  // namespace
 
+std::string ring_solver(const Case& c) {
+    if (c.schema)
+        for (const SolverInfo* s : declared_solvers(*c.schema))
+            if (s->whole_ring) return s->name;
+    return {};
+}
+
 RingSlicePart ring_slice_part(const Case& ring, const Collection& col) {
     RingSlicePart part;
     part.slice_case = ring.section("report").string("slice_case");
     if (part.slice_case.empty()) return part;
+    part.solver = ring_solver(ring);
+    if (part.solver.empty()) {
+        part.notes.push_back("No solver built into granlub runs the whole ring: nothing to set beside the slice.");
+        return part;
+    }
     Case slice;
     try {
         slice = load_case(slice_case_path(ring), *ring.schema);
@@ -183,9 +196,10 @@ RingSlicePart ring_slice_part(const Case& ring, const Collection& col) {
     }
     const Collection scol = collect(slice, RunOptions{});
     for (const auto* c : {&col, &scol})
-        if (std::find(c->solvers.begin(), c->solvers.end(), kRingSolver) == c->solvers.end()) {
-            part.notes.push_back(fmt::format("No granlub dem results in {}: run `granlub dem` on {} first.",
-                                            c->root.string(), c == &col ? ring.dir.string() : slice.dir.string()));
+        if (std::find(c->solvers.begin(), c->solvers.end(), part.solver) == c->solvers.end()) {
+            part.notes.push_back(fmt::format("No granlub {} results in {}: run `granlub {}` on {} first.", part.solver,
+                                            c->root.string(), part.solver,
+                                            c == &col ? ring.dir.string() : slice.dir.string()));
             return part;
         }
     part.table.header = {"point", "quantity", "whole ring", "slice", "ring − slice", "z"};
@@ -204,11 +218,11 @@ RingSlicePart ring_slice_part(const Case& ring, const Collection& col) {
                                             p->id, slice.name));
             continue;
         }
-        const Run& r = col.run(kRingSolver, p->id);
-        const Run& s = scol.run(kRingSolver, q->id);
+        const Run& r = col.run(part.solver, p->id);
+        const Run& s = scol.run(part.solver, q->id);
         if (!r.usable() || !s.usable()) {
-            part.notes.push_back(fmt::format("point {}: granlub dem's result is {} for the ring, {} for the slice ({})",
-                                            p->id, r.state_name(), s.state_name(), slice.dir.string()));
+            part.notes.push_back(fmt::format("point {}: granlub {}'s result is {} for the ring, {} for the slice ({})",
+                                            p->id, part.solver, r.state_name(), s.state_name(), slice.dir.string()));
             continue;
         }
         const bool both = r.steady() && s.steady();

@@ -14,10 +14,13 @@
 
 namespace granlub::postproc {
 
-inline constexpr const char* kRingSolver = "dem";  // the engine that runs the whole ring
+// The solver that runs the whole ring, as its declaration says (SolverInfo::whole_ring, carried by
+// its case section); empty when no solver built in does.
+std::string ring_solver(const Case& c);
 
 struct RingSlicePart {
     std::string slice_case;          // as [report] slice_case gives it
+    std::string solver;              // ring_solver(): whose results are set side by side
     std::vector<std::string> notes;  // what could not be compared, and why
     Table table;                     // per point and quantity: ring, slice, difference in standard errors
     std::vector<Figure> figures;     // per compared point: across the width and across the gap

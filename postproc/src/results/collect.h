@@ -19,7 +19,7 @@
 namespace granlub::postproc {
 
 // The solvers the case's schema declares: the sections `granlub` adds to the common ones, one per
-// solver compiled in, in `granlub run` order (cli/solvers.h). The report's order and colours, and
+// solver compiled in, in `granlub run` order (the generated solvers.h, cmake/GranlubSolverList.cmake). The report's order and colours, and
 // the solvers whose missing results it names; any other folder under results/ (except report/ and
 // initial/) is treated as a solver too and listed after these.
 std::vector<std::string> known_solvers(const Case& c);

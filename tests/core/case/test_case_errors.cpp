@@ -10,6 +10,7 @@
 #include "case_text.h"
 #include "granlub/case/case.h"
 #include "granlub/error.h"
+#include "granlub/run/solver_info.h"
 
 using namespace granlub;
 using granlub::test::kValidCase;
@@ -166,4 +167,19 @@ BOOST_AUTO_TEST_CASE(solver_sections_are_declared_by_modules) {
     } catch (const CaseError& e) {
         BOOST_TEST(std::string(e.what()).find("expected an integer") != std::string::npos, e.what());
     }
+}
+
+BOOST_AUTO_TEST_CASE(a_solver_section_carries_its_declaration) {
+    // What the report knows of a solver is its declaration, carried by its section and by every case
+    // parsed with the schema (granlub/run/solver_info.h, cli case_schema()).
+    static constexpr SolverInfo toy{.name = "toy", .description = "", .kind = SolverKind::Particles, .whole_ring = true};
+    Schema schema = Schema::common();
+    schema.add(SectionSpec("toy", "a toy solver")).declare_solver("toy", &toy);
+    BOOST_TEST(schema.find("toy")->solver == &toy);
+    BOOST_TEST(schema.find("grains")->solver == nullptr);
+    const Case c = parse_case(kValidCase + "\n[toy]\n", "t.toml", schema);
+    const auto declared = declared_solvers(*c.schema);
+    BOOST_TEST_REQUIRE(declared.size() == 1u);
+    BOOST_TEST(declared.front()->whole_ring);
+    BOOST_CHECK_THROW(schema.declare_solver("nosuch", &toy), Error);
 }

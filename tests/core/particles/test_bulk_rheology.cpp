@@ -180,7 +180,7 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
         write_result(dir, synthetic(61, linear(0.8), 0.58, 4e-4), s);
     };
     const auto row = [&]() {
-        const BulkTable t = bulk_rheology_table(c, tmp.path);
+        const BulkTable t = bulk_rheology_table(c, tmp.path, "dem");
         BOOST_TEST(t.rows == 1u);
         BOOST_TEST(t.notes.size() == 1u);  // the second point has no result
         BOOST_TEST(t.csv.find("# point U2.0 left out: no result") != std::string::npos, t.csv);

@@ -25,6 +25,8 @@
 
 namespace granlub {
 
+struct SolverInfo;  // granlub/run/solver_info.h: carried by a solver's section, not read here
+
 // Closed/open numeric interval; the text form is used in error messages ("allowed: (0, 1]").
 struct Range {
     double lo = -std::numeric_limits<double>::infinity();
@@ -93,6 +95,9 @@ struct SectionSpec {
     // False for a section no solver reads (e.g. [report]): in no solver's inputs hash, so a change
     // there leaves every result current.
     bool solver_input = true;
+    // The declaration of the solver this section is (granlub/run/solver_info.h), set by
+    // Schema::declare_solver; nullptr for the common sections and where no solver is linked.
+    const SolverInfo* solver = nullptr;
     // Cross-key checks of this section; call Section::fail(key, why) to reject.
     std::function<void(const Section&)> validate;
 
@@ -183,6 +188,9 @@ class Schema {
 public:
     static Schema common();            // the common sections and [particles]: every section but the solvers'
     Schema& add(SectionSpec section);  // a solver's section
+    // The declaration of the solver whose section is `name` (its kSolver row, which outlives the
+    // schema), carried by that section for what reads the case; throws Error for an unknown section.
+    Schema& declare_solver(std::string_view name, const SolverInfo* solver);
     const SectionSpec* find(std::string_view name) const;
     const std::vector<SectionSpec>& sections() const { return sections_; }
 

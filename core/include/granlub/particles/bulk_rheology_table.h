@@ -24,11 +24,12 @@ struct BulkTable {
     std::vector<std::string> notes;  // the points left out, and why (also in the comment lines)
 };
 
-// Reads results_root/dem/<point>/ for every point of the case. A point whose result is missing, stale
+// Reads results_root/<solver>/<point>/ for every point of the case (solver: the one declared with
+// SolverInfo::bulk_rheology, granlub/run/solver_info.h). A point whose result is missing, stale
 // or corrupt (load_result) is left out with a note; a complete one is a row whatever its status
 // (steady, transient, dt-unconverged: the row says which). Throws Error when a complete result lacks
 // what the reduction needs (a profile column, too few core stations).
-BulkTable bulk_rheology_table(const Case& c, const std::filesystem::path& results_root);
+BulkTable bulk_rheology_table(const Case& c, const std::filesystem::path& results_root, const std::string& solver);
 
 // One row of a table as a reader needs it. Cells left empty by the writer (not available) read as NaN.
 struct BulkRow {

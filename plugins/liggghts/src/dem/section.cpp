@@ -13,6 +13,7 @@ namespace granlub::dem {
 
 namespace {
 
+// The same shape as plugins/yade/src/section.cpp's declare(), not shared: each engine's own keys, Settings and default law.
 BoundKeys<Settings> declare() {
     BoundKeys<Settings> k(SectionSpec(kSolver.name, "particle simulation in LIGGGHTS (granlub-liggghts)"));
     SectionSpec& s = k.spec;  // keys read by hand: their values convert or combine (settings.cpp)

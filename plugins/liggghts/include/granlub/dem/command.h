@@ -14,7 +14,8 @@ namespace granlub::dem {
 
 // What the solver is (granlub/run/solver_info.h).
 inline constexpr SolverInfo kSolver{.name = "dem", .description = "particle simulation in LIGGGHTS with granlub's contact models",
-                                    .kind = SolverKind::Particles, .engine = true, .seeded = true, .ranks = true};
+                                    .kind = SolverKind::Particles, .engine = true, .seeded = true, .ranks = true,
+                                    .whole_ring = true, .bulk_rheology = true};
 
 // The functions every solver module has (granlub/run/solver_info.h).
 SectionSpec section();

@@ -13,9 +13,8 @@ namespace granlub::yade {
 
 // What the solver is (granlub/run/solver_info.h).
 inline constexpr SolverInfo kSolver{.name = "yade", .description = "particle simulation in YADE (cross-check)",
-                                    .kind = SolverKind::Particles, .engine = true, .seeded = true};
-// The solver whose final states [yade] start = "warm" starts from (its results folder).
-inline constexpr const char* kWarmFrom = "dem";
+                                    .kind = SolverKind::Particles, .engine = true, .seeded = true,
+                                    .warm_from = "dem"};
 
 // The functions every solver module has (granlub/run/solver_info.h).
 SectionSpec section();
