@@ -41,7 +41,7 @@ void resolve_cross_section_settings(const Case& c, Settings& s) {
     if (s.method == Method::Shooting)
         sec.fail("method", "method = \"shooting\" solves the 1-D gap only; with geometry = \"cross_section\" allowed: \"fv\"");
     // the contact stress's constants are checked as on the 1-D gap (case_setup.cpp); with body forces pi_c = p_c/p
-    // and its cap nu_P would vary over the section, which the solver does not do
+    // and its cap nu_P would vary over the cross-section, which the solver does not do
     if (s.contact.active() && s.body_forces)
         sec.fail("contact_stress", "contact_stress = \"johnson_jackson\" on the cross-section needs a uniform pressure "
                                    "(docs/continuum-model.md §2.9a); allowed: \"none\", or body_forces = \"off\"");

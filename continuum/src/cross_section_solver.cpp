@@ -647,8 +647,8 @@ namespace cross_section_fv {
 // solution with the whole branch and the kinetic solve at the full contact pressure both stall, and the pressure's
 // continuation with the 1-D's start 1e-6 below the cap needs 330 iterations. So: no direct attempts, a start sits
 // 2 % of nu_P - nu_min below the cap (pi_c ~ 0.85 there), and the first step is half the way (the whole way stalls
-// there); and a step is "hard" (halving the next) above 25 iterations, not 12: with the contact shear the section's
-// Newton needs 15-18 iterations however short the step (the illustrative constants' wide section at 1 m/s, where
+// there); and a step is "hard" (halving the next) above 25 iterations, not 12: with the contact shear the cross-section's
+// Newton needs 15-18 iterations however short the step (the illustrative constants' wide cross-section at 1 m/s, where
 // halving after each converged step never reached mu_c) [ASSUMPTION: numerical choices, measured].
 CrossSectionSolution solve_with_contact(const CrossSectionProblem& p, const CrossSectionSettings& st) {
     const ContactStress& cs = p.gap.closures->contact();

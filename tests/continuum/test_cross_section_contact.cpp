@@ -45,7 +45,7 @@ BOOST_AUTO_TEST_CASE(periodic_cross_section_reproduces_the_1d_branch) {
             SolverSettings s1;
             s1.cells = 200;
             const Solution one = solve_fv(p.gap, s1);
-            // solve_cross_section starts from the 1-D solution (where the section's residual must vanish); Newton
+            // solve_cross_section starts from the 1-D solution (where the cross-section's residual must vanish); Newton
             // from a guess varying along z^ and off in Lambda must come back to it
             const CrossSectionSolution two = solve_cross_section(p, grid(200, 4));
             BOOST_TEST(cross_section_residual(p, two) < 1e-9);
@@ -82,7 +82,7 @@ BOOST_AUTO_TEST_CASE(periodic_cross_section_reproduces_the_1d_branch) {
             BOOST_TEST(std::abs(o2.walls[1].tau - o1.tau_top) < 1e-6 * o1.tau_top);
             BOOST_TEST(std::abs(o2.walls[0].slip - o1.slip_bottom) < 1e-6);
             BOOST_TEST(std::abs(o2.nu_mean - o1.nu_mean) < 1e-6);
-            // per unit width (over A) the section's contact dissipation is the gap's, both over P_y U
+            // per unit width (over A) the cross-section's contact dissipation is the gap's, both over P_y U
             BOOST_TEST(std::abs(o2.contact_dissipation / p.aspect(two.Lambda) - b1.contact_dissipation) <
                        1e-6 * b1.contact_dissipation);
         }
@@ -113,7 +113,7 @@ BOOST_AUTO_TEST_CASE(exact_jacobian_matches_finite_differences) {
         }
 }
 
-// A wide section (20 diameters deep, 80 wide; one cell per diameter, enough for the wall's mu: 30 x 120 cells move it
+// A wide cross-section (20 diameters deep, 80 wide; one cell per diameter, enough for the wall's mu: 30 x 120 cells move it
 // by < 7e-4) at falling speed: the top wall's mu = tau/P falls towards mu_c and
 // stays above it. The kinetic theory alone (LSJC, no correlation length) levels off near its own mu instead, far
 // from mu_c: it fails the same check.
