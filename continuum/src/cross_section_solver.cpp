@@ -171,22 +171,27 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
     }
 }
 
+// The logit's cap nu < cap per node (n nodes): the closures' (Closures::cap), at the node's p^ with a pressure field
+// (with a contact stress the root nu_P of p_c(nu_P) = p there, §2.9a; without one g0's, the same at every node).
+std::vector<double> node_caps(const CrossSectionProblem& p, std::size_t n) {
+    if (p.pressure.empty()) return std::vector<double>(n, p.gap.closures->cap());
+    std::vector<double> c(n);
+    for (std::size_t k = 0; k < n; ++k) c[k] = p.gap.closures->cap(p.pressure[k]);
+    return c;
+}
+
 class Fv2 {
 public:
     Fv2(const CrossSectionProblem& p, const CrossSectionSettings& st)
         : p_(p), Ny_(st.cells_y), Nz_(st.cells_z), ny_(Ny_ + 1), nz_(p.periodic ? Nz_ : Nz_ + 1),
           n_(static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_)), hy_(1.0 / Ny_),
-          cap_(p.gap.closures->cap()), inventory_(p.gap.mode == Mode::Inventory),
+          caps_(node_caps(p, n_)), inventory_(p.gap.mode == Mode::Inventory),
           contact_(p.gap.closures->contact().active() && p.gap.closures->contact().friction > 0
                        ? &p.gap.closures->contact() : nullptr),
           nodes_(n_), walls_(n_),
           F_(static_cast<Eigen::Index>(2 * n_)), Fl_(F_.size()), x_(F_.size()), y_(F_.size()) {
         if (p.gap.mode == Mode::Fill) throw SolverError("the cross-section solves a load (Load or Inventory), not a fill");
         if (Ny_ < 2 || Nz_ < (p.periodic ? 3 : 2)) throw SolverError("the cross-section needs at least 2 x 3 cells");
-        if (p.gap.closures->contact().active() && (p.body.on() || !p.pressure.empty()))
-            throw SolverError("the contact stress (docs/continuum-model.md §2.9) on the cross-section needs a uniform "
-                              "pressure: with body forces pi_c = p_c/p and the cap nu_P vary from node to node, which "
-                              "is not implemented; allowed: [continuum] body_forces = \"off\"");
         // Sparsity of the 5-point stencil in 2x2 blocks; each entry's place in the value array kept, so the
         // Newton loop refills the values in place.
         // every (row, column) of the pattern: node k's two residuals against member m's two unknowns, slot 2a + b
@@ -213,10 +218,10 @@ public:
     }
 
     std::size_t nodes() const { return n_; }
-    double cap() const { return cap_; }
+    const std::vector<double>& caps() const { return caps_; }
     bool inventory() const { return inventory_; }
     double Lambda_of(double lam) const { return inventory_ ? std::exp(lam) : p_.gap.Lambda; }
-    double nu_of(double s) const { return cap_ / (1.0 + std::exp(-s)); }
+    double nu_of(std::size_t k, double s) const { return caps_[k] / (1.0 + std::exp(-s)); }
     long idx(int i, int j) const { return static_cast<long>(j) * ny_ + i; }
     // Node of stencil member m of (i, j), or -1 where a wall closes the control volume.
     long member(int i, int j, int m) const {
@@ -253,11 +258,13 @@ public:
         const double hz = p_.aspect(L) / Nz_;
         L_ = L;
         for (std::size_t k = 0; k < n_; ++k) {
-            const double nu = nu_of(x[static_cast<Eigen::Index>(2 * k + 1)]);
-            const double dnu = nu * (1.0 - nu / cap_);
-            const auto c = node_coefficients(*p_.gap.closures, nu);
+            const double nu = nu_of(k, x[static_cast<Eigen::Index>(2 * k + 1)]);
+            const double dnu = nu * (1.0 - nu / caps_[k]);
+            const double pk = p_.pressure.empty() ? 1.0 : p_.pressure[k];
+            const auto c = node_coefficients(*p_.gap.closures, nu, pk);
             nodes_[k] = {nu, dnu, c.M, c.dM * dnu, c.K, c.dK * dnu, c.C, c.dC * dnu};
-            if (!p_.pressure.empty()) at_pressure(nodes_[k], p_.pressure[k]);
+            if (!p_.pressure.empty()) at_pressure(nodes_[k], pk);
+            // the contact shear's p_c over P_y (not over the local p: the momentum equation is in units of P_y)
             const ContactStress& cs = p_.gap.closures->contact();
             nodes_[k].pc = cs.ratio(nu), nodes_[k].dpc = cs.dratio(nu) * dnu;
         }
@@ -371,16 +378,19 @@ public:
 
 private:
     // T = p/(rho_p f_p) at the local p^: M -> p^^1/2 M, K and C -> p^^3/2 K, C; K_p = p^^1/2 f_kappa f_p^-3/2.
+    // With a contact stress (§2.9a) T = (p - p_c)/(rho_p f_p) = p/(rho_p f~_p), f~_p = f_p/(1 - p_c/p) at the local p:
+    // M, K, C are the closures' at p^ (node_coefficients), and the grad-p part of -kappa grad T has the kinetic
+    // f_p, K_p = f_kappa f~_p^-1/2 / f_p (f_p = f~_p without one).
     void at_pressure(NodeVal& n, double p) const {
-        const auto st = p_.gap.closures->state(n.nu);
-        const D1 Kp = st.fk * pow(st.fp, -1.5);
+        const auto st = p_.gap.closures->state(n.nu, p);
+        const D1 Kp = p_.gap.closures->contact().active() ? st.fk / (sqrt(st.fp) * st.fpk) : st.fk * pow(st.fp, -1.5);
         const double a = std::sqrt(p), b = p * a;
         n.M *= a, n.dM *= a, n.K *= b, n.dK *= b, n.C *= b, n.dC *= b;
         n.Kp = a * Kp.v, n.dKp = a * Kp.d[0] * n.dnu, n.p = p;
     }
 
     WallVal wall_val(const WallBC& w, const NodeVal& n) const {
-        const auto b = wall_coefficients(p_.gap, w, n.nu);
+        const auto b = wall_coefficients(p_.gap, w, n.nu, n.p);
         return {{b.b5.v, b.b6.v, b.b7.v, b.b8.v},
                 {b.b5.d[0] * n.dnu, b.b6.d[0] * n.dnu, b.b7.d[0] * n.dnu, b.b8.d[0] * n.dnu}};
     }
@@ -429,7 +439,8 @@ private:
     const CrossSectionProblem& p_;
     int Ny_, Nz_, ny_, nz_;
     std::size_t n_;
-    double hy_, cap_;
+    double hy_;
+    std::vector<double> caps_;  // the logit's cap per node: uniform but with a contact stress under body forces
     bool inventory_;
     const ContactStress* contact_;  // its shear (§2.9); nullptr without one or with mu_c = 0
     double L_ = 0, mean_ = 0, g_ = 0;
@@ -441,9 +452,10 @@ private:
     Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
 };
 
-Eigen::VectorXd unknowns(const CrossSectionSolution& s, double cap) {
+Eigen::VectorXd unknowns(const CrossSectionSolution& s, const std::vector<double>& caps) {
     Eigen::VectorXd x(static_cast<Eigen::Index>(2 * s.u.size()));
     for (std::size_t k = 0; k < s.u.size(); ++k) {
+        const double cap = caps[k];
         const double nu = std::clamp(s.nu[k], 1e-9 * cap, (1 - 1e-12) * cap);
         x[static_cast<Eigen::Index>(2 * k)] = s.u[k];
         x[static_cast<Eigen::Index>(2 * k + 1)] = std::log(nu / (cap - nu));
@@ -459,12 +471,12 @@ NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSecti
     Fv2 fv(p, st);
     if (sol.u.size() != fv.nodes() || sol.cells_y != st.cells_y || sol.cells_z != st.cells_z)
         throw Error("newton_cross_section: the initial guess is not on the solver's grid");
-    Eigen::VectorXd x = unknowns(sol, fv.cap()), dx(x.size()), xt(x.size());
+    Eigen::VectorXd x = unknowns(sol, fv.caps()), dx(x.size()), xt(x.size());
     double lam = std::log(fv.inventory() ? (sol.Lambda > 0 ? sol.Lambda : p.gap.Lambda) : p.gap.Lambda);
     NewtonReport rep = detail::damped_newton(fv, x, lam, dx, xt, st.tolerance, st.max_iterations);
     for (std::size_t k = 0; k < sol.u.size(); ++k) {
         sol.u[k] = x[static_cast<Eigen::Index>(2 * k)];
-        sol.nu[k] = fv.nu_of(x[static_cast<Eigen::Index>(2 * k + 1)]);
+        sol.nu[k] = fv.nu_of(k, x[static_cast<Eigen::Index>(2 * k + 1)]);
     }
     sol.Pi = p.gap.Pi;
     sol.Lambda = fv.Lambda_of(lam);
@@ -476,21 +488,34 @@ NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSecti
     return rep;
 }
 
-double cross_section_jacobian_defect(const CrossSectionProblem& p, const CrossSectionSolution& s, double step) {
-    using namespace cross_section_fv;
-    if (p.gap.mode != Mode::Load) throw Error("cross_section_jacobian_defect: Load mode only");
-    CrossSectionSettings st;
-    st.cells_y = s.cells_y, st.cells_z = s.cells_z;
-    Fv2 fv(p, st);
-    return fv.jacobian_defect(unknowns(s, fv.cap()), std::log(p.gap.Lambda), step);
+namespace cross_section_fv {
+
+// The problem at the solution's pressure field (body forces) unless the problem has its own.
+CrossSectionProblem at_solution_pressure(const CrossSectionProblem& p, const CrossSectionSolution& s) {
+    CrossSectionProblem q = p;
+    if (q.pressure.empty()) q.pressure = s.pressure;
+    return q;
 }
 
-double cross_section_residual(const CrossSectionProblem& p, const CrossSectionSolution& s) {
+}  // namespace cross_section_fv
+
+double cross_section_jacobian_defect(const CrossSectionProblem& p0, const CrossSectionSolution& s, double step) {
     using namespace cross_section_fv;
+    if (p0.gap.mode != Mode::Load) throw Error("cross_section_jacobian_defect: Load mode only");
+    const CrossSectionProblem p = at_solution_pressure(p0, s);
     CrossSectionSettings st;
     st.cells_y = s.cells_y, st.cells_z = s.cells_z;
     Fv2 fv(p, st);
-    return fv.evaluate(unknowns(s, fv.cap()), std::log(fv.inventory() ? s.Lambda : p.gap.Lambda), false);
+    return fv.jacobian_defect(unknowns(s, fv.caps()), std::log(p.gap.Lambda), step);
+}
+
+double cross_section_residual(const CrossSectionProblem& p0, const CrossSectionSolution& s) {
+    using namespace cross_section_fv;
+    const CrossSectionProblem p = at_solution_pressure(p0, s);
+    CrossSectionSettings st;
+    st.cells_y = s.cells_y, st.cells_z = s.cells_z;
+    Fv2 fv(p, st);
+    return fv.evaluate(unknowns(s, fv.caps()), std::log(fv.inventory() ? s.Lambda : p.gap.Lambda), false);
 }
 
 namespace cross_section_fv {  // named: the library is a unity build beside fv_solver.cpp
@@ -668,23 +693,25 @@ CrossSectionSolution solve_with_contact(const CrossSectionProblem& p, const Cros
 }  // namespace cross_section_fv
 
 CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st) {
-    if (p.gap.closures->contact().active()) {
-        if (p.body.on())
-            throw SolverError("the contact stress (docs/continuum-model.md §2.9) on the cross-section needs a uniform "
-                              "pressure; allowed: [continuum] body_forces = \"off\"");
-        return cross_section_fv::solve_with_contact(p, st);
-    }
-    CrossSectionSolution s = cross_section_fv::solve_at_uniform_pressure(p, st);
+    using cross_section_fv::node_caps;
+    CrossSectionSolution s = p.gap.closures->contact().active() ? cross_section_fv::solve_with_contact(p, st)
+                                                                : cross_section_fv::solve_at_uniform_pressure(p, st);
     if (!p.body.on()) return s;
     // The body forces' pressure from the last (u^, nu), then Newton at that pressure, until p^ settles: the forces
-    // move p^ by a few per cent, so the passes contract fast.
+    // move p^ by a few per cent, so the passes contract fast. With a contact stress the cap nu_P moves with p^ at
+    // each node; nu keeps its place between 0 and the cap (the logit unknown) from one pass to the next
+    // [ASSUMPTION: numerical; a node over its new cap would have T = 0].
     CrossSectionProblem q = p;
     q.pressure.assign(s.u.size(), 1.0);
     for (int pass = 0; pass < 50; ++pass) {
         std::vector<double> pr = cross_section_fv::pressure_field(p, s);
         double change = 0;
         for (std::size_t k = 0; k < pr.size(); ++k) change = std::max(change, std::abs(pr[k] - q.pressure[k]));
+        const std::vector<double> was = node_caps(q, s.u.size());
         q.pressure.swap(pr);
+        const std::vector<double> cap = node_caps(q, s.u.size());
+        for (std::size_t k = 0; k < cap.size(); ++k)
+            if (cap[k] != was[k]) s.nu[k] *= cap[k] / was[k];
         const auto rep = newton_cross_section(q, st, s);
         s.iterations += rep.iterations;
         if (!rep.converged)
