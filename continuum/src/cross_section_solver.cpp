@@ -254,6 +254,15 @@ public:
 
     // Residual (and Jacobian when `jac`) at x = (u^, s) interleaved per node and lam; the max norm.
     double evaluate(const Eigen::VectorXd& x, double lam, bool jac) {
+        jac = jac && !chord_;
+        // a chord step's line search has evaluated its accepted point already
+        if (!jac && last_ok_ && lam == last_lam_ && x == last_x_) return last_norm_;
+        last_ok_ = false;
+        const double norm = evaluate_at(x, lam, jac);
+        if (!jac) last_x_ = x, last_lam_ = lam, last_norm_ = norm, last_ok_ = true;
+        return norm;
+    }
+    double evaluate_at(const Eigen::VectorXd& x, double lam, bool jac) {
         const double L = Lambda_of(lam), Pi = p_.gap.Pi;
         const double hz = p_.aspect(L) / Nz_;
         L_ = L;
@@ -329,7 +338,7 @@ public:
 
     // Newton step for the last evaluate(..., true): dx and dlam. False when the matrix is singular.
     bool step(Eigen::VectorXd& dx, double& dlam) {
-        lu_.factorize(J_);
+        if (!chord_) lu_.factorize(J_);
         if (lu_.info() != Eigen::Success) return false;
         x_ = lu_.solve(F_);
         x_ = -x_;
@@ -355,6 +364,12 @@ public:
     }
 
     double mean_nu() const { return mean_; }
+
+    // The problem's pressure field changed (a Picard pass): the caps follow.
+    void pressure_changed() { caps_ = node_caps(p_, n_), last_ok_ = false; }
+    // Chord steps: the last factorised Jacobian (and bordering column) for every step, none evaluated (a Picard pass
+    // after the first, where the pressure has moved little). Only after a step without them.
+    void set_chord(bool on) { chord_ = on; }
 
     // The largest difference between the exact Jacobian at x and central differences of the residual with steps
     // `step`, relative to max(1, |entry|) (Load mode; tests, as fv_jacobian_defect).
@@ -443,6 +458,10 @@ private:
     std::vector<double> caps_;  // the logit's cap per node: uniform but with a contact stress under body forces
     bool inventory_;
     const ContactStress* contact_;  // its shear (§2.9); nullptr without one or with mu_c = 0
+    bool chord_ = false;
+    Eigen::VectorXd last_x_;  // the last residual-only evaluation (its F_, nodes_ and norm are current)
+    double last_lam_ = 0, last_norm_ = 0;
+    bool last_ok_ = false;
     double L_ = 0, mean_ = 0, g_ = 0;
     std::vector<NodeVal> nodes_;
     std::vector<std::array<WallVal, kCrossSectionWalls>> walls_;
@@ -465,10 +484,11 @@ Eigen::VectorXd unknowns(const CrossSectionSolution& s, const std::vector<double
 
 }  // namespace cross_section_fv
 
-NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st,
-                                  CrossSectionSolution& sol) {
-    using namespace cross_section_fv;
-    Fv2 fv(p, st);
+namespace cross_section_fv {
+
+// Newton with `fv` (on the problem p) from sol; sol holds the last iterate.
+NewtonReport newton_with(Fv2& fv, const CrossSectionProblem& p, const CrossSectionSettings& st,
+                         CrossSectionSolution& sol) {
     if (sol.u.size() != fv.nodes() || sol.cells_y != st.cells_y || sol.cells_z != st.cells_z)
         throw Error("newton_cross_section: the initial guess is not on the solver's grid");
     Eigen::VectorXd x = unknowns(sol, fv.caps()), dx(x.size()), xt(x.size());
@@ -486,6 +506,14 @@ NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSecti
         rep.why = "Newton fell onto the empty-channel branch (mean nu < 0.01)";
     }
     return rep;
+}
+
+}  // namespace cross_section_fv
+
+NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st,
+                                  CrossSectionSolution& sol) {
+    cross_section_fv::Fv2 fv(p, st);
+    return cross_section_fv::newton_with(fv, p, st, sol);
 }
 
 namespace cross_section_fv {
@@ -693,34 +721,52 @@ CrossSectionSolution solve_with_contact(const CrossSectionProblem& p, const Cros
 }  // namespace cross_section_fv
 
 CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st) {
-    using cross_section_fv::node_caps;
+    using namespace cross_section_fv;
     CrossSectionSolution s = p.gap.closures->contact().active() ? cross_section_fv::solve_with_contact(p, st)
                                                                 : cross_section_fv::solve_at_uniform_pressure(p, st);
     if (!p.body.on()) return s;
     // The body forces' pressure from the last (u^, nu), then Newton at that pressure, until p^ settles: the forces
-    // move p^ by a few per cent, so the passes contract fast. With a contact stress the cap nu_P moves with p^ at
-    // each node; nu keeps its place between 0 and the cap (the logit unknown) from one pass to the next
+    // move p^ by a few per cent, so the passes contract fast. Newton takes chord steps (the last factorised Jacobian,
+    // after two full steps in the first pass), full ones where those fail: the passes' p^ differ little, and the
+    // factorisation is most of a step's cost [numerical choice, measured on bench_continuum's contact point with
+    // body forces: 1.1 s of Picard passes with full steps, 0.3 s with these]. With a contact stress the cap nu_P moves
+    // with p^ at each node; nu keeps its place between 0 and the cap (the logit unknown) from one pass to the next
     // [ASSUMPTION: numerical; a node over its new cap would have T = 0].
     CrossSectionProblem q = p;
     q.pressure.assign(s.u.size(), 1.0);
+    Fv2 fv(q, st);
     for (int pass = 0; pass < 50; ++pass) {
-        std::vector<double> pr = cross_section_fv::pressure_field(p, s);
+        std::vector<double> pr = pressure_field(p, s);
         double change = 0;
         for (std::size_t k = 0; k < pr.size(); ++k) change = std::max(change, std::abs(pr[k] - q.pressure[k]));
-        const std::vector<double> was = node_caps(q, s.u.size());
+        if (pass > 0 && change < 1e-10) {  // s solves the field it gives
+            s.pressure = q.pressure;
+            return s;
+        }
+        const std::vector<double> was = fv.caps();
         q.pressure.swap(pr);
-        const std::vector<double> cap = node_caps(q, s.u.size());
-        for (std::size_t k = 0; k < cap.size(); ++k)
-            if (cap[k] != was[k]) s.nu[k] *= cap[k] / was[k];
-        const auto rep = newton_cross_section(q, st, s);
+        fv.pressure_changed();
+        for (std::size_t k = 0; k < was.size(); ++k)
+            if (fv.caps()[k] != was[k]) s.nu[k] *= fv.caps()[k] / was[k];
+        CrossSectionSolution from = s;
+        if (pass == 0) {  // one full step for a Jacobian at this pressure
+            CrossSectionSettings one = st;
+            one.max_iterations = 2;
+            const auto first = newton_with(fv, q, one, s);
+            s.iterations += first.iterations;
+        }
+        fv.set_chord(true);
+        auto rep = newton_with(fv, q, st, s);
+        if (!rep.converged) {
+            s.iterations += rep.iterations;
+            s = from;
+            fv.set_chord(false);
+            rep = newton_with(fv, q, st, s);
+        }
         s.iterations += rep.iterations;
         if (!rep.converged)
             throw SolverError("cross-section with the body forces: Newton at the forces' pressure failed: " + rep.why +
                               "; try finer cross_section_cells_y/z or [continuum] body_forces = \"off\"");
-        if (change < 1e-10) {
-            s.pressure = q.pressure;
-            return s;
-        }
     }
     throw SolverError("cross-section with the body forces: the pressure field did not settle in 50 passes; try "
                       "[continuum] body_forces = \"off\"");
