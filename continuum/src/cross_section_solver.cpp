@@ -574,7 +574,9 @@ CrossSectionSolution initial_guess(const CrossSectionProblem& p, const CrossSect
 // volume the flux balance of grad p^ - f, (grad p^ - f).n = 0 on the walls, and the mean of p^ over the top wall
 // = 1 (the load) in place of one node's balance (the balances sum to zero). Without secondary flow the cross-
 // section's y and z momentum balances are grad p^ = f, which has a solution only where curl f = 0; the rest of f
-// would drive a secondary flow, which this model leaves out [ASSUMPTION].
+// would drive a secondary flow, which this model leaves out [ASSUMPTION]. p is the whole normal stress, p_KT + p_c
+// with a contact stress (§2.9a: its pressure isotropic as the kinetic one [ASSUMPTION: as OpenFOAM's frictional
+// pressure]), so the field is the same with or without one.
 std::vector<double> pressure_field(const CrossSectionProblem& p, const CrossSectionSolution& s) {
     const int Ny = s.cells_y, Nz = s.cells_z, ny = s.ny(), nz = s.nz();
     const double L = s.Lambda, Pi = p.gap.Pi, hy = 1.0 / Ny, hz = p.aspect(L) / Nz;
