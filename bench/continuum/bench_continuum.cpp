@@ -156,7 +156,7 @@ BENCHMARK(BM_cross_section_point_body_forces)->Unit(benchmark::kMillisecond);
 // The same trough with the rough cases' extended kinetic theory (BM_point_ekt_inventory's closures, U = 1.4 m/s,
 // P = 2250 Pa, the gap from the inventory) and the contact stress (docs/continuum-model.md §2.9) with Johnson &
 // Jackson's constants (Fr = 0.05 Pa, n = 2, m = 5, nu_min = 0.5; mu_c = 0.36, illustrative, not fitted); range(0) x
-// range(1) cells.
+// range(1) cells; range(2) = 1: with the body forces (gravity, the centripetal force of S&T's annulus; §2.9a).
 void BM_cross_section_point_contact(benchmark::State& state) {
     CrossSectionProblem p = sawyer_trough();
     const Problem ekt = rough_inventory(1.4, 2250);
@@ -165,6 +165,10 @@ void BM_cross_section_point_contact(benchmark::State& state) {
     p.gap.closures = std::make_shared<Closures>(ekt.closures->with_contact(jj));
     p.outer = p.inner = p.gap.bottom;
     p.gap.inventory = 0.595 * 4e-3 / 0.787e-3;  // grains per length / (d W): the 1-D inventory over the width
+    if (state.range(2) == 1) {
+        p.body.gravity = 2550 * 9.81 * 0.787e-3 / 2250;
+        p.body.radius = (76.2e-3 + 9.5e-3) / 0.787e-3;
+    }
     CrossSectionSettings st;
     st.cells_y = static_cast<int>(state.range(0));
     st.cells_z = static_cast<int>(state.range(1));
@@ -177,6 +181,6 @@ void BM_cross_section_point_contact(benchmark::State& state) {
     }
     state.counters["continuation_steps"] = continued;
 }
-BENCHMARK(BM_cross_section_point_contact)->Args({40, 100})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_cross_section_point_contact)->Args({40, 100, 0})->Args({40, 100, 1})->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -22,14 +22,16 @@ CrossSectionObservables observe(const CrossSectionProblem& p0, const CrossSectio
     CrossSectionObservables o;
     const auto wy = [&](int i) { return (i == 0 || i == Ny ? 0.5 : 1.0) * hy; };
     const auto wz = [&](int j) { return (!s.periodic && (j == 0 || j == Nz) ? 0.5 : 1.0) * hz; };
-    // p^ at a node (1 without body forces); T = p/(rho_p f_p) scales M by p^^1/2, K and C by p^^3/2
+    // p^ at a node (1 without body forces); T = p/(rho_p f_p) scales M by p^^1/2, K and C by p^^3/2 (and with a
+    // contact stress the closures see pi_c = p_c/p there, §2.9a)
     const auto pr = [&](std::size_t k) { return s.pressure.empty() ? 1.0 : s.pressure[k]; };
     double bulk = 0, mean = 0;
     for (int j = 0; j < s.nz(); ++j)
         for (int i = 0; i < s.ny(); ++i) {
             const double nu = s.nu[s.at(i, j)];
             mean += wy(i) * wz(j) * nu;
-            bulk += wy(i) * wz(j) * L * L * std::pow(pr(s.at(i, j)), 1.5) * node_coefficients(*p.closures, nu).C;
+            const double pk = pr(s.at(i, j));
+            bulk += wy(i) * wz(j) * L * L * std::pow(pk, 1.5) * node_coefficients(*p.closures, nu, pk).C;
             o.nu_max_node = std::max(o.nu_max_node, nu);
         }
     o.nu_mean = mean / A;
@@ -42,8 +44,8 @@ CrossSectionObservables observe(const CrossSectionProblem& p0, const CrossSectio
     using W = CrossSectionWall;
     const auto wall_dn = [&](W w, std::size_t k) {  // du/dn into the flow from wall w's condition at node k
         const WallBC& bc = p0.wall(w);
-        return wall_gradients(bc.params, wall_coefficients(p, bc, s.nu[k]), (w == W::Top ? 0.0 : 1.0) - s.u[k], L,
-                              Pi / pr(k)).du;
+        return wall_gradients(bc.params, wall_coefficients(p, bc, s.nu[k], pr(k)), (w == W::Top ? 0.0 : 1.0) - s.u[k],
+                              L, Pi / pr(k)).du;
     };
     const auto du_dz = [&](int i, int j) {
         if (!s.periodic && j == 0) return wall_dn(W::Outer, s.at(i, 0));
@@ -91,8 +93,8 @@ CrossSectionObservables observe(const CrossSectionProblem& p0, const CrossSectio
             const double u = s.u[s.at(i, j)], nu = s.nu[s.at(i, j)], pw = pr(s.at(i, j));
             const double ds = along_z ? wz(j) : wy(i);
             const double slip = u_wall - u;
-            const auto g = wall_gradients(bc.params, wall_coefficients(p, bc, nu), slip, L, Pi / pw);
-            const auto c0 = node_coefficients(*p.closures, nu);
+            const auto g = wall_gradients(bc.params, wall_coefficients(p, bc, nu, pw), slip, L, Pi / pw);
+            const auto c0 = node_coefficients(*p.closures, nu, pw);
             const double M = std::sqrt(pw) * c0.M, K = std::pow(pw, 1.5) * c0.K;
             double traction = -stress * M * g.du;  // on the flow along x, tau/P: + forward
             if (contact) {  // the wall's contact traction; its slip work is dissipated in the contacts

@@ -40,11 +40,7 @@ void resolve_cross_section_settings(const Case& c, Settings& s) {
                                          c.cell.width));
     if (s.method == Method::Shooting)
         sec.fail("method", "method = \"shooting\" solves the 1-D gap only; with geometry = \"cross_section\" allowed: \"fv\"");
-    // the contact stress's constants are checked as on the 1-D gap (case_setup.cpp); with body forces pi_c = p_c/p
-    // and its cap nu_P would vary over the cross-section, which the solver does not do
-    if (s.contact.active() && s.body_forces)
-        sec.fail("contact_stress", "contact_stress = \"johnson_jackson\" on the cross-section needs a uniform pressure "
-                                   "(docs/continuum-model.md §2.9a); allowed: \"none\", or body_forces = \"off\"");
+    // the contact stress's constants are checked as on the 1-D gap (case_setup.cpp)
     for (const OperatingPoint& p : c.points)
         if (p.control != Control::Load)
             sec.fail("geometry", fmt::format("geometry = \"cross_section\" solves under a load, but point {} has "
@@ -182,7 +178,7 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
     PointResult r;
     std::vector<double> T_over_U2(mid.nodes());
     for (std::size_t i = 0; i < mid.nodes(); ++i)
-        T_over_U2[i] = p_mid[i] / (sol.Pi * s.closures->state(mid.nu[i]).fp.v);  // T = p/(rho_p f_p)
+        T_over_U2[i] = p_mid[i] / (sol.Pi * q.gap.closures->state(mid.nu[i], p_mid[i]).fp.v);  // T = p/(rho_p f~_p)
     Summary& m = r.summary;
     m = make_summary(c, p, kSolver);
     r.profile.add("y_over_H", profile_y_over_H(mid.y, off_y, Hc, gap, s, m))

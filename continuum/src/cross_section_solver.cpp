@@ -171,22 +171,27 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
     }
 }
 
+// The logit's cap nu < cap per node (n nodes): the closures' (Closures::cap), at the node's p^ with a pressure field
+// (with a contact stress the root nu_P of p_c(nu_P) = p there, §2.9a; without one g0's, the same at every node).
+std::vector<double> node_caps(const CrossSectionProblem& p, std::size_t n) {
+    if (p.pressure.empty()) return std::vector<double>(n, p.gap.closures->cap());
+    std::vector<double> c(n);
+    for (std::size_t k = 0; k < n; ++k) c[k] = p.gap.closures->cap(p.pressure[k]);
+    return c;
+}
+
 class Fv2 {
 public:
     Fv2(const CrossSectionProblem& p, const CrossSectionSettings& st)
         : p_(p), Ny_(st.cells_y), Nz_(st.cells_z), ny_(Ny_ + 1), nz_(p.periodic ? Nz_ : Nz_ + 1),
           n_(static_cast<std::size_t>(ny_) * static_cast<std::size_t>(nz_)), hy_(1.0 / Ny_),
-          cap_(p.gap.closures->cap()), inventory_(p.gap.mode == Mode::Inventory),
+          caps_(node_caps(p, n_)), inventory_(p.gap.mode == Mode::Inventory),
           contact_(p.gap.closures->contact().active() && p.gap.closures->contact().friction > 0
                        ? &p.gap.closures->contact() : nullptr),
           nodes_(n_), walls_(n_),
           F_(static_cast<Eigen::Index>(2 * n_)), Fl_(F_.size()), x_(F_.size()), y_(F_.size()) {
         if (p.gap.mode == Mode::Fill) throw SolverError("the cross-section solves a load (Load or Inventory), not a fill");
         if (Ny_ < 2 || Nz_ < (p.periodic ? 3 : 2)) throw SolverError("the cross-section needs at least 2 x 3 cells");
-        if (p.gap.closures->contact().active() && (p.body.on() || !p.pressure.empty()))
-            throw SolverError("the contact stress (docs/continuum-model.md §2.9) on the cross-section needs a uniform "
-                              "pressure: with body forces pi_c = p_c/p and the cap nu_P vary from node to node, which "
-                              "is not implemented; allowed: [continuum] body_forces = \"off\"");
         // Sparsity of the 5-point stencil in 2x2 blocks; each entry's place in the value array kept, so the
         // Newton loop refills the values in place.
         // every (row, column) of the pattern: node k's two residuals against member m's two unknowns, slot 2a + b
@@ -213,10 +218,10 @@ public:
     }
 
     std::size_t nodes() const { return n_; }
-    double cap() const { return cap_; }
+    const std::vector<double>& caps() const { return caps_; }
     bool inventory() const { return inventory_; }
     double Lambda_of(double lam) const { return inventory_ ? std::exp(lam) : p_.gap.Lambda; }
-    double nu_of(double s) const { return cap_ / (1.0 + std::exp(-s)); }
+    double nu_of(std::size_t k, double s) const { return caps_[k] / (1.0 + std::exp(-s)); }
     long idx(int i, int j) const { return static_cast<long>(j) * ny_ + i; }
     // Node of stencil member m of (i, j), or -1 where a wall closes the control volume.
     long member(int i, int j, int m) const {
@@ -249,15 +254,26 @@ public:
 
     // Residual (and Jacobian when `jac`) at x = (u^, s) interleaved per node and lam; the max norm.
     double evaluate(const Eigen::VectorXd& x, double lam, bool jac) {
+        jac = jac && !chord_;
+        // a chord step's line search has evaluated its accepted point already
+        if (!jac && last_ok_ && lam == last_lam_ && x == last_x_) return last_norm_;
+        last_ok_ = false;
+        const double norm = evaluate_at(x, lam, jac);
+        if (!jac) last_x_ = x, last_lam_ = lam, last_norm_ = norm, last_ok_ = true;
+        return norm;
+    }
+    double evaluate_at(const Eigen::VectorXd& x, double lam, bool jac) {
         const double L = Lambda_of(lam), Pi = p_.gap.Pi;
         const double hz = p_.aspect(L) / Nz_;
         L_ = L;
         for (std::size_t k = 0; k < n_; ++k) {
-            const double nu = nu_of(x[static_cast<Eigen::Index>(2 * k + 1)]);
-            const double dnu = nu * (1.0 - nu / cap_);
-            const auto c = node_coefficients(*p_.gap.closures, nu);
+            const double nu = nu_of(k, x[static_cast<Eigen::Index>(2 * k + 1)]);
+            const double dnu = nu * (1.0 - nu / caps_[k]);
+            const double pk = p_.pressure.empty() ? 1.0 : p_.pressure[k];
+            const auto c = node_coefficients(*p_.gap.closures, nu, pk);
             nodes_[k] = {nu, dnu, c.M, c.dM * dnu, c.K, c.dK * dnu, c.C, c.dC * dnu};
-            if (!p_.pressure.empty()) at_pressure(nodes_[k], p_.pressure[k]);
+            if (!p_.pressure.empty()) at_pressure(nodes_[k], pk);
+            // the contact shear's p_c over P_y (not over the local p: the momentum equation is in units of P_y)
             const ContactStress& cs = p_.gap.closures->contact();
             nodes_[k].pc = cs.ratio(nu), nodes_[k].dpc = cs.dratio(nu) * dnu;
         }
@@ -322,7 +338,7 @@ public:
 
     // Newton step for the last evaluate(..., true): dx and dlam. False when the matrix is singular.
     bool step(Eigen::VectorXd& dx, double& dlam) {
-        lu_.factorize(J_);
+        if (!chord_) lu_.factorize(J_);
         if (lu_.info() != Eigen::Success) return false;
         x_ = lu_.solve(F_);
         x_ = -x_;
@@ -349,6 +365,12 @@ public:
 
     double mean_nu() const { return mean_; }
 
+    // The problem's pressure field changed (a Picard pass): the caps follow.
+    void pressure_changed() { caps_ = node_caps(p_, n_), last_ok_ = false; }
+    // Chord steps: the last factorised Jacobian (and bordering column) for every step, none evaluated (a Picard pass
+    // after the first, where the pressure has moved little). Only after a step without them.
+    void set_chord(bool on) { chord_ = on; }
+
     // The largest difference between the exact Jacobian at x and central differences of the residual with steps
     // `step`, relative to max(1, |entry|) (Load mode; tests, as fv_jacobian_defect).
     double jacobian_defect(const Eigen::VectorXd& x, double lam, double step) {
@@ -371,16 +393,19 @@ public:
 
 private:
     // T = p/(rho_p f_p) at the local p^: M -> p^^1/2 M, K and C -> p^^3/2 K, C; K_p = p^^1/2 f_kappa f_p^-3/2.
+    // With a contact stress (§2.9a) T = (p - p_c)/(rho_p f_p) = p/(rho_p f~_p), f~_p = f_p/(1 - p_c/p) at the local p:
+    // M, K, C are the closures' at p^ (node_coefficients), and the grad-p part of -kappa grad T has the kinetic
+    // f_p, K_p = f_kappa f~_p^-1/2 / f_p (f_p = f~_p without one).
     void at_pressure(NodeVal& n, double p) const {
-        const auto st = p_.gap.closures->state(n.nu);
-        const D1 Kp = st.fk * pow(st.fp, -1.5);
+        const auto st = p_.gap.closures->state(n.nu, p);
+        const D1 Kp = p_.gap.closures->contact().active() ? st.fk / (sqrt(st.fp) * st.fpk) : st.fk * pow(st.fp, -1.5);
         const double a = std::sqrt(p), b = p * a;
         n.M *= a, n.dM *= a, n.K *= b, n.dK *= b, n.C *= b, n.dC *= b;
         n.Kp = a * Kp.v, n.dKp = a * Kp.d[0] * n.dnu, n.p = p;
     }
 
     WallVal wall_val(const WallBC& w, const NodeVal& n) const {
-        const auto b = wall_coefficients(p_.gap, w, n.nu);
+        const auto b = wall_coefficients(p_.gap, w, n.nu, n.p);
         return {{b.b5.v, b.b6.v, b.b7.v, b.b8.v},
                 {b.b5.d[0] * n.dnu, b.b6.d[0] * n.dnu, b.b7.d[0] * n.dnu, b.b8.d[0] * n.dnu}};
     }
@@ -429,9 +454,14 @@ private:
     const CrossSectionProblem& p_;
     int Ny_, Nz_, ny_, nz_;
     std::size_t n_;
-    double hy_, cap_;
+    double hy_;
+    std::vector<double> caps_;  // the logit's cap per node: uniform but with a contact stress under body forces
     bool inventory_;
     const ContactStress* contact_;  // its shear (§2.9); nullptr without one or with mu_c = 0
+    bool chord_ = false;
+    Eigen::VectorXd last_x_;  // the last residual-only evaluation (its F_, nodes_ and norm are current)
+    double last_lam_ = 0, last_norm_ = 0;
+    bool last_ok_ = false;
     double L_ = 0, mean_ = 0, g_ = 0;
     std::vector<NodeVal> nodes_;
     std::vector<std::array<WallVal, kCrossSectionWalls>> walls_;
@@ -441,9 +471,10 @@ private:
     Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
 };
 
-Eigen::VectorXd unknowns(const CrossSectionSolution& s, double cap) {
+Eigen::VectorXd unknowns(const CrossSectionSolution& s, const std::vector<double>& caps) {
     Eigen::VectorXd x(static_cast<Eigen::Index>(2 * s.u.size()));
     for (std::size_t k = 0; k < s.u.size(); ++k) {
+        const double cap = caps[k];
         const double nu = std::clamp(s.nu[k], 1e-9 * cap, (1 - 1e-12) * cap);
         x[static_cast<Eigen::Index>(2 * k)] = s.u[k];
         x[static_cast<Eigen::Index>(2 * k + 1)] = std::log(nu / (cap - nu));
@@ -453,18 +484,19 @@ Eigen::VectorXd unknowns(const CrossSectionSolution& s, double cap) {
 
 }  // namespace cross_section_fv
 
-NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st,
-                                  CrossSectionSolution& sol) {
-    using namespace cross_section_fv;
-    Fv2 fv(p, st);
+namespace cross_section_fv {
+
+// Newton with `fv` (on the problem p) from sol; sol holds the last iterate.
+NewtonReport newton_with(Fv2& fv, const CrossSectionProblem& p, const CrossSectionSettings& st,
+                         CrossSectionSolution& sol) {
     if (sol.u.size() != fv.nodes() || sol.cells_y != st.cells_y || sol.cells_z != st.cells_z)
         throw Error("newton_cross_section: the initial guess is not on the solver's grid");
-    Eigen::VectorXd x = unknowns(sol, fv.cap()), dx(x.size()), xt(x.size());
+    Eigen::VectorXd x = unknowns(sol, fv.caps()), dx(x.size()), xt(x.size());
     double lam = std::log(fv.inventory() ? (sol.Lambda > 0 ? sol.Lambda : p.gap.Lambda) : p.gap.Lambda);
     NewtonReport rep = detail::damped_newton(fv, x, lam, dx, xt, st.tolerance, st.max_iterations);
     for (std::size_t k = 0; k < sol.u.size(); ++k) {
         sol.u[k] = x[static_cast<Eigen::Index>(2 * k)];
-        sol.nu[k] = fv.nu_of(x[static_cast<Eigen::Index>(2 * k + 1)]);
+        sol.nu[k] = fv.nu_of(k, x[static_cast<Eigen::Index>(2 * k + 1)]);
     }
     sol.Pi = p.gap.Pi;
     sol.Lambda = fv.Lambda_of(lam);
@@ -476,21 +508,42 @@ NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSecti
     return rep;
 }
 
-double cross_section_jacobian_defect(const CrossSectionProblem& p, const CrossSectionSolution& s, double step) {
-    using namespace cross_section_fv;
-    if (p.gap.mode != Mode::Load) throw Error("cross_section_jacobian_defect: Load mode only");
-    CrossSectionSettings st;
-    st.cells_y = s.cells_y, st.cells_z = s.cells_z;
-    Fv2 fv(p, st);
-    return fv.jacobian_defect(unknowns(s, fv.cap()), std::log(p.gap.Lambda), step);
+}  // namespace cross_section_fv
+
+NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st,
+                                  CrossSectionSolution& sol) {
+    cross_section_fv::Fv2 fv(p, st);
+    return cross_section_fv::newton_with(fv, p, st, sol);
 }
 
-double cross_section_residual(const CrossSectionProblem& p, const CrossSectionSolution& s) {
+namespace cross_section_fv {
+
+// The problem at the solution's pressure field (body forces) unless the problem has its own.
+CrossSectionProblem at_solution_pressure(const CrossSectionProblem& p, const CrossSectionSolution& s) {
+    CrossSectionProblem q = p;
+    if (q.pressure.empty()) q.pressure = s.pressure;
+    return q;
+}
+
+}  // namespace cross_section_fv
+
+double cross_section_jacobian_defect(const CrossSectionProblem& p0, const CrossSectionSolution& s, double step) {
     using namespace cross_section_fv;
+    if (p0.gap.mode != Mode::Load) throw Error("cross_section_jacobian_defect: Load mode only");
+    const CrossSectionProblem p = at_solution_pressure(p0, s);
     CrossSectionSettings st;
     st.cells_y = s.cells_y, st.cells_z = s.cells_z;
     Fv2 fv(p, st);
-    return fv.evaluate(unknowns(s, fv.cap()), std::log(fv.inventory() ? s.Lambda : p.gap.Lambda), false);
+    return fv.jacobian_defect(unknowns(s, fv.caps()), std::log(p.gap.Lambda), step);
+}
+
+double cross_section_residual(const CrossSectionProblem& p0, const CrossSectionSolution& s) {
+    using namespace cross_section_fv;
+    const CrossSectionProblem p = at_solution_pressure(p0, s);
+    CrossSectionSettings st;
+    st.cells_y = s.cells_y, st.cells_z = s.cells_z;
+    Fv2 fv(p, st);
+    return fv.evaluate(unknowns(s, fv.caps()), std::log(fv.inventory() ? s.Lambda : p.gap.Lambda), false);
 }
 
 namespace cross_section_fv {  // named: the library is a unity build beside fv_solver.cpp
@@ -521,7 +574,9 @@ CrossSectionSolution initial_guess(const CrossSectionProblem& p, const CrossSect
 // volume the flux balance of grad p^ - f, (grad p^ - f).n = 0 on the walls, and the mean of p^ over the top wall
 // = 1 (the load) in place of one node's balance (the balances sum to zero). Without secondary flow the cross-
 // section's y and z momentum balances are grad p^ = f, which has a solution only where curl f = 0; the rest of f
-// would drive a secondary flow, which this model leaves out [ASSUMPTION].
+// would drive a secondary flow, which this model leaves out [ASSUMPTION]. p is the whole normal stress, p_KT + p_c
+// with a contact stress (§2.9a: its pressure isotropic as the kinetic one [ASSUMPTION: as OpenFOAM's frictional
+// pressure]), so the field is the same with or without one.
 std::vector<double> pressure_field(const CrossSectionProblem& p, const CrossSectionSolution& s) {
     const int Ny = s.cells_y, Nz = s.cells_z, ny = s.ny(), nz = s.nz();
     const double L = s.Lambda, Pi = p.gap.Pi, hy = 1.0 / Ny, hz = p.aspect(L) / Nz;
@@ -668,32 +723,52 @@ CrossSectionSolution solve_with_contact(const CrossSectionProblem& p, const Cros
 }  // namespace cross_section_fv
 
 CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st) {
-    if (p.gap.closures->contact().active()) {
-        if (p.body.on())
-            throw SolverError("the contact stress (docs/continuum-model.md §2.9) on the cross-section needs a uniform "
-                              "pressure; allowed: [continuum] body_forces = \"off\"");
-        return cross_section_fv::solve_with_contact(p, st);
-    }
-    CrossSectionSolution s = cross_section_fv::solve_at_uniform_pressure(p, st);
+    using namespace cross_section_fv;
+    CrossSectionSolution s = p.gap.closures->contact().active() ? cross_section_fv::solve_with_contact(p, st)
+                                                                : cross_section_fv::solve_at_uniform_pressure(p, st);
     if (!p.body.on()) return s;
     // The body forces' pressure from the last (u^, nu), then Newton at that pressure, until p^ settles: the forces
-    // move p^ by a few per cent, so the passes contract fast.
+    // move p^ by a few per cent, so the passes contract fast. Newton takes chord steps (the last factorised Jacobian,
+    // after two full steps in the first pass), full ones where those fail: the passes' p^ differ little, and the
+    // factorisation is most of a step's cost [numerical choice, measured on bench_continuum's contact point with
+    // body forces: 1.1 s of Picard passes with full steps, 0.3 s with these]. With a contact stress the cap nu_P moves
+    // with p^ at each node; nu keeps its place between 0 and the cap (the logit unknown) from one pass to the next
+    // [ASSUMPTION: numerical; a node over its new cap would have T = 0].
     CrossSectionProblem q = p;
     q.pressure.assign(s.u.size(), 1.0);
+    Fv2 fv(q, st);
     for (int pass = 0; pass < 50; ++pass) {
-        std::vector<double> pr = cross_section_fv::pressure_field(p, s);
+        std::vector<double> pr = pressure_field(p, s);
         double change = 0;
         for (std::size_t k = 0; k < pr.size(); ++k) change = std::max(change, std::abs(pr[k] - q.pressure[k]));
+        if (pass > 0 && change < 1e-10) {  // s solves the field it gives
+            s.pressure = q.pressure;
+            return s;
+        }
+        const std::vector<double> was = fv.caps();
         q.pressure.swap(pr);
-        const auto rep = newton_cross_section(q, st, s);
+        fv.pressure_changed();
+        for (std::size_t k = 0; k < was.size(); ++k)
+            if (fv.caps()[k] != was[k]) s.nu[k] *= fv.caps()[k] / was[k];
+        CrossSectionSolution from = s;
+        if (pass == 0) {  // one full step for a Jacobian at this pressure
+            CrossSectionSettings one = st;
+            one.max_iterations = 2;
+            const auto first = newton_with(fv, q, one, s);
+            s.iterations += first.iterations;
+        }
+        fv.set_chord(true);
+        auto rep = newton_with(fv, q, st, s);
+        if (!rep.converged) {
+            s.iterations += rep.iterations;
+            s = from;
+            fv.set_chord(false);
+            rep = newton_with(fv, q, st, s);
+        }
         s.iterations += rep.iterations;
         if (!rep.converged)
             throw SolverError("cross-section with the body forces: Newton at the forces' pressure failed: " + rep.why +
                               "; try finer cross_section_cells_y/z or [continuum] body_forces = \"off\"");
-        if (change < 1e-10) {
-            s.pressure = q.pressure;
-            return s;
-        }
     }
     throw SolverError("cross-section with the body forces: the pressure field did not settle in 50 passes; try "
                       "[continuum] body_forces = \"off\"");

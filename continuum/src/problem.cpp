@@ -14,14 +14,14 @@ bool Problem::symmetric() const {
            a.r7 == b.r7 && a.r8 == b.r8 && a.slip_dissipation == b.slip_dissipation && a.energy == b.energy;
 }
 
-NodeCoefficients node_coefficients(const Closures& c, double nu) {
-    const auto s = c.state(nu);
+NodeCoefficients node_coefficients(const Closures& c, double nu, double pressure) {
+    const auto s = c.state(nu, pressure);
     const D1 M = s.M(), K = s.K(), C = s.C();
     return {M.v, M.d[0], K.v, K.d[0], C.v, C.d[0]};
 }
 
-WallCoefficients wall_coefficients(const Problem& p, const WallBC& w, double nu) {
-    return w.family->coefficients(p.closures->state(nu), w.params, p.closures->numax());
+WallCoefficients wall_coefficients(const Problem& p, const WallBC& w, double nu, double pressure) {
+    return w.family->coefficients(p.closures->state(nu, pressure), w.params, p.closures->numax());
 }
 
 namespace {

@@ -7,7 +7,8 @@
 // Pressure uniform (P_y = the load), or with the body forces on the field p^ = p/P_y of their potential part
 // (cross_section_solver.h); T = p/(rho_p f_p(nu)) locally, so with p^ the coefficients become
 //   M -> p^^1/2 M,  K -> p^^3/2 K,  C -> p^^3/2 C,  and the heat flux gains -p^^1/2 K_p grad p^,  K_p = f_kappa f_p^-3/2
-// and a wall condition sees Pi/p^ (derivation: docs/continuum-model.md §11). No secondary flow.
+// and a wall condition sees Pi/p^ (derivation: docs/continuum-model.md §11); a contact stress's share pi_c = p_c/p and
+// its cap nu_P are the local p's (§2.9a). No secondary flow.
 #pragma once
 #include <vector>
 

@@ -20,14 +20,16 @@ NewtonReport newton_cross_section(const CrossSectionProblem& p, const CrossSecti
                                   CrossSectionSolution& s);
 
 // Full solve: the 1-D solution of the same gap (solve_fv on the same nodes in y^) extended over z^ as the
-// initial guess, Newton, and continuation in ln Lambda and ln Pi (as the 1-D solver) when Newton fails. With body
-// forces, then Picard passes: the pressure field of their potential part from the last solution (the top wall's
-// mean = the load), Newton at that pressure, until it moves < 1e-10; the solution keeps it (`pressure`).
-// Throws granlub::SolverError.
+// initial guess, Newton, and continuation in ln Lambda and ln Pi (as the 1-D solver) when Newton fails; with a contact
+// stress the continuation in it (contact_continuation.h). With body forces, then Picard passes: the pressure field of
+// their potential part from the last solution (the top wall's mean = the load), Newton at that pressure (with a
+// contact stress pi_c = p_c/p and the cap nu_P at each node's p), until it moves < 1e-10; the solution keeps it
+// (`pressure`). Throws granlub::SolverError.
 CrossSectionSolution solve_cross_section(const CrossSectionProblem& p, const CrossSectionSettings& st);
 
 // The largest relative difference between the exact Jacobian at `s` and central differences with steps `step`
-// (Load mode; tests).
+// (Load mode; tests). Both functions take the pressure field of `p`, or else the solution's (`s.pressure`, fixed as
+// in a Picard pass).
 double cross_section_jacobian_defect(const CrossSectionProblem& p, const CrossSectionSolution& s, double step);
 
 // Max-norm residual of a solution (tests).

@@ -74,10 +74,12 @@ struct Observables {
 struct NodeCoefficients {
     double M, dM, K, dK, C, dC;
 };
-NodeCoefficients node_coefficients(const Closures& c, double nu);
+// `pressure` = p/P_y (Closures::state): 1 but on the cross-section with body forces.
+NodeCoefficients node_coefficients(const Closures& c, double nu, double pressure = 1.0);
 
-// Wall coefficients at a wall node, and u^' there from the momentum wall condition.
-WallCoefficients wall_coefficients(const Problem& p, const WallBC& w, double nu);
+// Wall coefficients at a wall node (under p^ = `pressure`, as node_coefficients), and u^' there from the momentum
+// wall condition.
+WallCoefficients wall_coefficients(const Problem& p, const WallBC& w, double nu, double pressure = 1.0);
 double wall_du(const Problem& p, bool top, double u, double nu);
 
 // The problem with the solution's Pi and Lambda (the solved unknowns of Fill and Inventory), as Load:

@@ -22,12 +22,13 @@ public:
         const double e = p_.restitution, ee = p_.e_eff();
         friction_factor_ = ee == e ? 1.0 : (1.0 - ee * ee) / (1.0 - e * e);
     }
-    // All functions at nu, with exact d/dnu in the dual parts.
-    ClosureState<D1> state(D1 nu) const {
+    // All functions at nu, with exact d/dnu in the dual parts, under the pressure p^ = p/P_y: 1 but for the
+    // cross-section's body forces (their local p), where only the contact pressure's share pi_c = p_c/p sees it.
+    ClosureState<D1> state(D1 nu, double pressure = 1.0) const {
         ClosureState<D1> s = family_->state(p_, nu, g0_->g0(nu), g0_->dg0(nu));
         s.fpk = s.fp;
-        if (contact_.active()) {  // fp -> fp/(1 - pi_c), with its exact derivative (§2.9)
-            const D1 q = 1.0 - contact_.ratio(nu), dq = -contact_.dratio(nu);
+        if (contact_.active()) {  // fp -> fp/(1 - pi_c), with its exact derivative at fixed p (§2.9, §2.9a)
+            const D1 q = 1.0 - contact_.ratio(nu) / pressure, dq = -contact_.dratio(nu) / pressure;
             s.dfp = (s.dfp * q - s.fpk * dq) / (q * q);
             s.fp = s.fpk / q;
         }
@@ -40,13 +41,17 @@ public:
         s.G = s.fk * s.dfp / s.fp - s.fphi;
         return s;
     }
-    ClosureState<D1> state(double nu) const { return state(D1::variable(nu, 0)); }
+    ClosureState<D1> state(double nu, double pressure = 1.0) const { return state(D1::variable(nu, 0), pressure); }
     const ClosureParams& params() const { return p_; }
     const RadialDistribution& g0() const { return *g0_; }
     const ClosureFamily& family() const { return *family_; }
     double numax() const { return g0_->numax(); }
-    // Upper bound of nu for the logit map: g0's, or below it where the contact pressure alone carries P (T = 0).
-    double cap() const { return contact_.active() ? std::min(g0_->cap(), contact_limit_) : g0_->cap(); }
+    // Upper bound of nu for the logit map: g0's, or below it where the contact pressure alone carries p = p^ P_y
+    // (T = 0).
+    double cap(double pressure = 1.0) const {
+        if (!contact_.active()) return g0_->cap();
+        return std::min(g0_->cap(), pressure == 1.0 ? contact_limit_ : contact_.limit(pressure));
+    }
     // The same closures with a contact stress at one point's P_y (ContactStress::coefficient = Fr/P_y).
     Closures with_contact(const ContactStress& c) const {
         Closures r = *this;

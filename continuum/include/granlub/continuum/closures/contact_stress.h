@@ -12,8 +12,9 @@
 // sgn(u') is regularised, sgn_eps(x) = x/sqrt(x^2 + eps^2) [ASSUMPTION: a numerical choice, so that Newton has a
 // derivative where the bed stops shearing (T -> 0, the contact shear carrying the whole stress)]; eps =
 // sign_width in units of u^' = du^/dy^ (the Couette gap's mean |u^'| is O(1)); eps -> 0 is checked in the tests.
-// In the eliminated-T formulation the problem sees pi_c = p_c/P_y (P_y of the point), so a Closures object
-// carries it per point (closure_set.h, Closures::with_contact).
+// In the eliminated-T formulation the problem sees pi_c = p_c/p: p = P_y of the point, so a Closures object carries
+// it per point (closure_set.h, Closures::with_contact), or the local p = p^ P_y of the cross-section's body forces
+// (Closures::state's `pressure` p^; docs/continuum-model.md §2.9a).
 #pragma once
 #include <cmath>
 
@@ -77,12 +78,13 @@ struct ContactStress {
         if (!(value(nu) > onset)) return S(0.0);
         return ratio(nu) * (n / (nu - onset) + m / (jamming - nu));
     }
-    // The solid fraction at which p_c = P_y (T = 0): the bed's limit under this load (bisection; onset < it < jamming).
-    double limit() const {
+    // The solid fraction at which p_c = level x P_y (T = 0 there): the bed's limit under this load (level 1), or under
+    // a local pressure p = level x P_y (the cross-section's body forces) (bisection; onset < it < jamming).
+    double limit(double level = 1.0) const {
         double lo = onset, hi = jamming;
         for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
             const double mid = 0.5 * (lo + hi);
-            (ratio(mid) < 1.0 ? lo : hi) = mid;
+            (ratio(mid) < level ? lo : hi) = mid;
         }
         return lo;
     }
