@@ -17,12 +17,14 @@ std::string how_judged() {
         "together (it has no slip, ν, gap or T, and its μ does not rise with speed): μ = |τ|/σ_yy at each wall within {:g} % of the DEM's; μ's rise from the slowest to the fastest speed "
         "at each load and wall within {:g} % of the DEM's rise; the slip at each wall within {:g} U; the solid "
         "fraction ν(y) (not ν/ν_max: the models' ν_max differ) within {:g} in RMS over {:g} ≤ y/H ≤ {:g}, the "
-        "continuum's profile interpolated linearly onto the DEM's stations; the gap within {:g} mm; T(y) within a "
+        "continuum's profile interpolated linearly onto the DEM's stations and the DEM's ν the mean over {:g} grain "
+        "diameter about each (a continuum's ν is a coarse-grained field; the stations also resolve the walls' "
+        "layers [ASSUMPTION, ours]); the gap within {:g} mm; T(y) within a "
         "factor {:g} at every station where the DEM resolves it (a finite T > 0 whose standard error is below {:g} % "
         "of it [ASSUMPTION, ours]). A model meets the case when it meets every target at ≥ {:g} % of the judged "
         "points (all of them when the case has {} points or fewer) and every rise.",
         100 * kTwinMuRelative, 100 * kTwinRiseRelative, kTwinSlipOverU, kTwinNuCoreRms, kTwinCoreLo, kTwinCoreHi,
-        kTwinGap * 1e3, kTwinTemperatureFactor, 100 * kTwinTemperatureMaxRelativeError, 100 * kTwinPointsFraction,
+        kTwinNuGrainWindow, kTwinGap * 1e3, kTwinTemperatureFactor, 100 * kTwinTemperatureMaxRelativeError, 100 * kTwinPointsFraction,
         kTwinAllPointsUpTo);
 }
 
