@@ -169,6 +169,24 @@ BOOST_AUTO_TEST_CASE(verdicts_per_target_and_the_constant_fails_the_rise) {
     BOOST_TEST(t.constant.rises_met == 0);
     BOOST_TEST(!t.constant.overall);
 
+    // By target: ν and the gap missed at U2.0, the top slip at U4.0, the rest met at all three; the
+    // constant μ has no slip (not judged).
+    const auto by = postproc::twin_by_target_table(t);
+    auto row = [&](const std::string& target) {
+        for (const auto& r : by.rows)
+            if (r[0].text == target) return r;
+        BOOST_FAIL("no row " + target);
+        return by.rows.front();
+    };
+    BOOST_TEST(row("μ floor")[2].text == "3 of 3");
+    BOOST_TEST(row("ν(y) core")[2].text == "2 of 3");
+    BOOST_TEST(row("ν(y) core")[2].cls == "failed");
+    BOOST_TEST(row("gap")[2].text == "2 of 3");
+    BOOST_TEST(row("slip floor / U")[2].text == "3 of 3");
+    BOOST_TEST(row("slip top / U")[2].text == "2 of 3");
+    BOOST_TEST(row("T(y)")[2].text == "3 of 3");
+    BOOST_TEST(row("slip top / U")[3].text == "— (not judged)");
+
     // In the report: the part, its count table and a fold per point with the verdicts.
     BOOST_TEST_REQUIRE(postproc::compare(s.c, s.o) == 0);
     const std::string md = test::slurp(s.o.results_root / "report" / "report.md");

@@ -57,6 +57,7 @@ void add_twin_part(Report& rep, const Case& c, const Collection& col) {
                  "ordered the particle packings are”), a crystal that no kinetic theory describes. The verdicts below "
                  "are outside the continuum's scope: shown, not a test of its model.");
     rep.table(twin_count_table(t));
+    rep.table(twin_by_target_table(t));
     rep.note(constant_and_rules(t));
     if (!t.rises.empty()) {
         rep.heading("μ's rise with speed", 3);

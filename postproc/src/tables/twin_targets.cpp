@@ -492,6 +492,28 @@ Table twin_rise_table(const TwinTargets& t) {
     return tab;
 }
 
+Table twin_by_target_table(const TwinTargets& t) {
+    Table tab;
+    tab.header = {"target", "rule", "continuum: met at", "constant μ: met at"};
+    const TwinPoint* first = nullptr;
+    for (const auto& p : t.points)
+        if (p.judged && !first) first = &p;
+    if (!first) return tab;
+    auto tally = [&](std::size_t i, std::vector<TargetCheck> TwinPoint::*model) {
+        int met = 0, judged = 0;
+        for (const auto& p : t.points)
+            if (p.judged && ((p.*model)[i]).judged) ++judged, met += ((p.*model)[i]).met;
+        if (judged == 0) return Cell{"— (not judged)", ""};
+        return Cell{fmt::format("{} of {}", met, judged), met == judged ? "ok" : "failed"};
+    };
+    for (std::size_t i = 0; i < first->continuum.size(); ++i)
+        tab.rows.push_back({{first->continuum[i].target, ""},
+                            {first->continuum[i].rule, ""},
+                            tally(i, &TwinPoint::continuum),
+                            tally(i, &TwinPoint::constant)});
+    return tab;
+}
+
 Table twin_point_table(const TwinPoint& p) {
     Table tab;
     tab.header = {"target", "rule", "DEM (± se)", "continuum", "difference", "verdict", "constant μ", "difference",

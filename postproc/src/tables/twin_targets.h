@@ -86,6 +86,8 @@ TwinTargets twin_targets(const Case& c, const Collection& col);
 // The count per model against the rule; μ's rises; one point's targets.
 Table twin_count_table(const TwinTargets& t);
 Table twin_rise_table(const TwinTargets& t);
+// Per target, at how many judged points each model meets it: what the models miss, at a glance.
+Table twin_by_target_table(const TwinTargets& t);
 Table twin_point_table(const TwinPoint& p);
 
 }  // namespace granlub::postproc
