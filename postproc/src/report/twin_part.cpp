@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "granlub/results/results.h"
+
 #include "formats/format.h"
 #include "tables/twin_targets.h"
 #include "tables/twin_thresholds.h"
@@ -40,9 +42,9 @@ std::string constant_and_rules(const TwinTargets& t) {
         "DEM point is listed and not judged, and the count's denominator says so; {} of the {} judged points carry a "
         "half-time-step check (the others are steady but their Δt error is unmeasured). μ's standard error combines "
         "τ's and σ's as independent. A miss by less than {:g} of the DEM's standard errors beyond the band is a miss "
-        "by the target's rule; its verdict says so. y/H: each solver's profile stations, 0 at the moving wall, over "
-        "that solver's own gap; the gap: each solver's gap output (the case's gap for a solver that keeps it fixed).",
-        num(t.constant_floor, 3), num(t.constant_top, 3), checked, judged, kTwinDemErrorZ);
+        "by the target's rule; its verdict says so. Profiles are compared on the one y/H every profile.csv is "
+        "written on ({}); the gap: each solver's gap output (the case's gap for a solver that keeps it fixed).",
+        num(t.constant_floor, 3), num(t.constant_top, 3), checked, judged, kTwinDemErrorZ, kProfileYDefinition);
 }
 
 }  // namespace

@@ -7,13 +7,24 @@
 #include <fmt/format.h>
 
 #include "formats/format.h"
+#include "granlub/run/solver_info.h"
 #include "statistics/metrics.h"
 #include "statistics/stats.h"
 #include "tables/twin_thresholds.h"
 
 namespace granlub::postproc {
 
-std::vector<double> twin_y_over_H(const Run& r) { return r.y(); }
+TwinSolvers twin_solvers(const Case& c, const Collection& col) {
+    TwinSolvers t;
+    if (!c.schema) return t;
+    for (const SolverInfo* s : declared_solvers(*c.schema)) {
+        const bool collected = std::find(col.solvers.begin(), col.solvers.end(), s->name) != col.solvers.end();
+        if (!collected || !col.any_usable(s->name)) continue;
+        if (s->kind == SolverKind::Continuum && t.model.empty()) t.model = s->name;
+        if (s->kind == SolverKind::Particles && t.particles.empty()) t.particles = s->name;
+    }
+    return t;
+}
 
 double twin_gap(const Case& c, const Run& r, bool* fixed) {
     const auto g = r.scalar("gap");
@@ -116,7 +127,7 @@ double coarse_grained(const std::vector<double>& y, const std::vector<double>& v
 // minus the DEM's coarse-grained over one diameter (kTwinNuGrainWindow); `dem` is the DEM's core mean,
 // `model` the model's there, dem_se the DEM's noise RMS. The note gives the per-station RMS too.
 TargetCheck nu_core(const Case& c, const Run& dem, const Run& model, double dem_gap) {
-    const auto yd = twin_y_over_H(dem), ym = twin_y_over_H(model);
+    const auto yd = dem.y(), ym = model.y();
     const auto& nd = dem.profile->column("solid_fraction");
     const auto& nm = model.profile->column("solid_fraction");
     const std::string se_col = "solid_fraction_stderr";
@@ -152,7 +163,7 @@ TargetCheck temperature(const Run& dem, const Run& model) {
     const std::string col = "temperature_over_U2", se_col = "temperature_over_U2_stderr";
     if (!dem.profile->has(col) || !dem.profile->has(se_col) || !model.profile->has(col))
         return unjudged("T(y)", kTRule, "no T with standard errors in the DEM's profile");
-    const auto yd = twin_y_over_H(dem), ym = twin_y_over_H(model);
+    const auto yd = dem.y(), ym = model.y();
     const auto &td = dem.profile->column(col), &sd = dem.profile->column(se_col), &tm = model.profile->column(col);
     TargetCheck t = check("T(y)", kTRule);
     int n = 0;
@@ -286,9 +297,9 @@ std::string group_label(const PointGroup& g) {
 }
 
 // The closures of the continuum as run, from its summary's run block (continuum case_setup.cpp record_run).
-std::string closures_text(const Collection& col) {
+std::string closures_text(const Collection& col, const std::string& model) {
     for (const OperatingPoint* p : col.points) {
-        const Run& r = col.run(kTwinModelSolver, p->id);
+        const Run& r = col.run(model, p->id);
         if (!r.usable() || !r.summary->run.is_object()) continue;
         const auto& run = r.summary->run;
         std::vector<std::string> parts;
@@ -361,10 +372,8 @@ std::string with_note(std::string s, const std::string& note) { return note.empt
 }  // namespace
 
 bool twin_applies(const Case& c, const Collection& col) {
-    const auto has = [&](const char* s) {
-        return std::find(col.solvers.begin(), col.solvers.end(), s) != col.solvers.end() && col.any_usable(s);
-    };
-    return c.cell.width <= 0 && !c.cell.ring() && has(kTwinModelSolver) && has(kTwinParticleSolver);
+    const TwinSolvers s = twin_solvers(c, col);
+    return c.cell.width <= 0 && !c.cell.ring() && !s.model.empty() && !s.particles.empty();
 }
 
 std::pair<double, double> twin_constant_mu(const std::vector<double>& floor, const std::vector<double>& top) {
@@ -386,12 +395,14 @@ std::pair<double, double> twin_constant_mu(const std::vector<double>& floor, con
 
 TwinTargets twin_targets(const Case& c, const Collection& col) {
     TwinTargets t;
-    t.closures = closures_text(col);
+    t.solvers = twin_solvers(c, col);
+    const std::string &particles = t.solvers.particles, &model = t.solvers.model;
+    t.closures = closures_text(col, model);
     t.equal_grains = c.grains.size_spread == 0;
     // The constant μ over the judged points (the DEM steady, μ on both walls).
     std::vector<double> floor, top;
     for (const OperatingPoint* p : col.points) {
-        const Run& d = col.run(kTwinParticleSolver, p->id);
+        const Run& d = col.run(particles, p->id);
         if (!d.steady()) continue;
         const auto f = wall_mu(d, kWalls[0]), u = wall_mu(d, kWalls[1]);
         if (f && u) floor.push_back(f->v), top.push_back(u->v);
@@ -400,12 +411,12 @@ TwinTargets twin_targets(const Case& c, const Collection& col) {
     for (const OperatingPoint* p : col.points) {
         TwinPoint tp;
         tp.point = p;
-        const Run& d = col.run(kTwinParticleSolver, p->id);
+        const Run& d = col.run(particles, p->id);
         tp.judged = d.steady();
         tp.dem_state = d.state_name();
         tp.dt_checked = d.usable() && d.summary->run.is_object() && d.summary->run.contains("dt_refinement");
         if (tp.judged) {
-            tp.continuum = continuum_checks(c, d, col.run(kTwinModelSolver, p->id));
+            tp.continuum = continuum_checks(c, d, col.run(model, p->id));
             tp.constant = constant_checks(d, t.constant_floor, t.constant_top);
             tp.continuum_met = all_met(tp.continuum);
             tp.constant_met = all_met(tp.constant);
@@ -416,14 +427,14 @@ TwinTargets twin_targets(const Case& c, const Collection& col) {
     for (const PointGroup& g : speed_groups(col.points)) {
         std::vector<const OperatingPoint*> judged;
         for (const OperatingPoint* p : g.points)
-            if (col.run(kTwinParticleSolver, p->id).steady()) judged.push_back(p);
+            if (col.run(particles, p->id).steady()) judged.push_back(p);
         if (judged.size() < 2) continue;
         const auto [slow, fast] = std::minmax_element(judged.begin(), judged.end(), [](auto* a, auto* b) {
             return a->speed < b->speed;
         });
         if ((*slow)->speed == (*fast)->speed) continue;
-        const Run &ds = col.run(kTwinParticleSolver, (*slow)->id), &df = col.run(kTwinParticleSolver, (*fast)->id);
-        const Run &ms = col.run(kTwinModelSolver, (*slow)->id), &mf = col.run(kTwinModelSolver, (*fast)->id);
+        const Run &ds = col.run(particles, (*slow)->id), &df = col.run(particles, (*fast)->id);
+        const Run &ms = col.run(model, (*slow)->id), &mf = col.run(model, (*fast)->id);
         for (const WallMu& w : kWalls) {
             const auto a = wall_mu(ds, w), b = wall_mu(df, w);
             if (!a || !b) continue;

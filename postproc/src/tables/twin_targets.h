@@ -15,13 +15,13 @@
 
 namespace granlub::postproc {
 
-inline constexpr const char* kTwinModelSolver = "continuum";
-inline constexpr const char* kTwinParticleSolver = "dem";
+// The twin's two solvers, from the solvers' declarations (SolverInfo::kind): the first continuum and the
+// first particle engine, in declared order (granlub dem before yade), with usable results; "" where none.
+struct TwinSolvers {
+    std::string model, particles;
+};
+TwinSolvers twin_solvers(const Case& c, const Collection& col);
 
-// The one definition of y/H the twin targets use (another change is unifying it between solvers):
-// each solver's profile stations as it writes them, 0 at the moving wall and 1 at the stationary one,
-// over that run's own gap (twin_gap).
-std::vector<double> twin_y_over_H(const Run& r);
 // The one definition of the gap the twin targets use: the run's `gap` output (m), else the case's
 // [cell] gap (a solver that keeps the gap fixed); `fixed` says which.
 double twin_gap(const Case& c, const Run& r, bool* fixed = nullptr);
@@ -63,6 +63,7 @@ struct ModelCount {
 };
 
 struct TwinTargets {
+    TwinSolvers solvers;
     std::string closures;       // the continuum as run: its closures named from its summary
     double constant_floor = 0, constant_top = 0;  // the constant μ at each wall (twin_constant_mu)
     bool equal_grains = false;  // [grains] size_spread = 0: the particle runs order into layers
