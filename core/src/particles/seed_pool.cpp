@@ -220,17 +220,8 @@ void pool_block(const std::vector<Member>& m, const std::string& block, const st
 // (flow_regime.h): a verdict of one seed's Z beside the pooled Z would contradict it.
 void recompute_flow_verdict(nlohmann::json& fr, RunFacts& facts) {
     if (!fr.is_object() || !fr.contains("verdict_version")) return;
-    const auto number = [&](const char* k) {
-        return fr.contains(k) && fr.at(k).is_number() ? std::optional(fr.at(k).get<double>()) : std::nullopt;
-    };
-    FlowDiagnostics d;
-    d.inertial_nominal = number("inertial_number_nominal");
-    d.inertial_mid_gap = number("inertial_number_mid_gap");
-    d.coordination = number("coordination_number");
-    d.coordination_stderr = number("coordination_number_stderr");
-    d.persistence = number("contact_persistence");
     const std::set<std::string> pooled(facts.pooled.begin(), facts.pooled.end());
-    const nlohmann::json verdict = flow_regime_json(d);
+    const nlohmann::json verdict = flow_regime_json(read_flow_diagnostics(fr));
     for (const auto& [name, v] : verdict.items()) {
         const std::string fact = "flow_regime." + name;
         if (!pooled.contains(fact) && !(name.ends_with("_stderr") && pooled.contains(fact.substr(0, fact.size() - 7))))

@@ -140,19 +140,30 @@ std::string FlowVerdict::label() const {
                                   : fmt::format("{} (I {})", to_string(lubrication), inertial_class);
 }
 
+FlowDiagnostics read_flow_diagnostics(const nlohmann::json& fr) {
+    auto number = [&](const char* k) -> std::optional<double> {
+        const auto it = fr.find(k);
+        return it != fr.end() && it->is_number() ? std::optional<double>(it->get<double>()) : std::nullopt;
+    };
+    FlowDiagnostics d;
+    d.inertial_nominal = number("inertial_number_nominal");
+    d.inertial_mid_gap = number("inertial_number_mid_gap");
+    d.coordination = number("coordination_number");
+    d.coordination_stderr = number("coordination_number_stderr");
+    d.persistence = number("contact_persistence");
+    return d;
+}
+
 FlowVerdict read_flow_verdict(const nlohmann::json& fr) {
     FlowVerdict out;
     if (!fr.is_object()) {
         out.criterion = "no flow-regime record";
         return out;
     }
-    auto number = [&](const char* k) -> std::optional<double> {
-        const auto it = fr.find(k);
-        return it != fr.end() && it->is_number() ? std::optional<double>(it->get<double>()) : std::nullopt;
-    };
-    out.inertial_nominal = number("inertial_number_nominal");
-    out.inertial_mid_gap = number("inertial_number_mid_gap");
-    const Verdict v = lubrication_verdict(number("coordination_number"), number("contact_persistence"));
+    const FlowDiagnostics d = read_flow_diagnostics(fr);
+    out.inertial_nominal = d.inertial_nominal;
+    out.inertial_mid_gap = d.inertial_mid_gap;
+    const Verdict v = lubrication_verdict(d.coordination, d.persistence);
     const auto version = fr.find("verdict_version");
     if (version != fr.end() && version->is_number_integer() && version->get<int>() >= 2) {
         const std::string r = fr.value("regime", nlohmann::json()).is_string() ? fr["regime"].get<std::string>() : "";

@@ -94,6 +94,8 @@ struct FlowDiagnostics {
     std::optional<double> coordination_stderr = {};  // block error of Z: "coordination_number_stderr"
 };
 nlohmann::json flow_regime_json(const FlowDiagnostics& d);
+// The diagnostics a run.flow_regime record was made from (its numbers; absent or null: unknown).
+FlowDiagnostics read_flow_diagnostics(const nlohmann::json& flow_regime);
 
 // A run.flow_regime record of any version as the verdict, its criterion and the inertial class
 // ("" when unknown). An older record's verdict is recomputed from its coordination number and
