@@ -5,6 +5,7 @@
 #define BOOST_TEST_MODULE granlub slurm
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <string>
 
 #include <boost/test/unit_test.hpp>
@@ -33,6 +34,12 @@ fs::path scratch(const std::string& name) {
 granlub::test::Output slurm(const std::string& args) { return run(std::string(GRANLUB_EXE) + " slurm " + args); }
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// A command refused with exit 2, its message holding each of `says`.
+void refused(const granlub::test::Output& o, std::initializer_list<const char*> says) {
+    BOOST_TEST(o.rc == 2, o.text);
+    for (const char* s : says) BOOST_TEST(has(o.text, s), o.text);
+}
 
 // The command an array script runs as task `task`: the script with granlub replaced by echo.
 std::string task_command(const fs::path& script, int task) {
@@ -77,24 +84,11 @@ BOOST_AUTO_TEST_CASE(the_last_job_runs_the_other_solvers_then_compare) {
 BOOST_AUTO_TEST_CASE(bad_options_stop_with_the_key_and_what_is_allowed) {
     const fs::path root = scratch("bad");
     const std::string base = kCase + " --results " + root.string();
-    const auto ranks = slurm(base + " --np 0");
-    BOOST_TEST(ranks.rc == 2, ranks.text);
-    BOOST_TEST(has(ranks.text, "--np"), ranks.text);
-    BOOST_TEST(has(ranks.text, "allowed: an integer from 1 to 4096"), ranks.text);
-    const auto solver = slurm(base + " --solvers continuum,dom");
-    BOOST_TEST(solver.rc == 2, solver.text);
-    BOOST_TEST(has(solver.text, "dom"), solver.text);
-    BOOST_TEST(has(solver.text, "continuum"), solver.text);  // the allowed names
-    const auto point = slurm(base + " --solvers continuum --point U1.0,U9.9");
-    BOOST_TEST(point.rc == 2, point.text);
-    BOOST_TEST(has(point.text, "no operating point 'U9.9' (points: U1.0, U2.0)"), point.text);
-    const auto time = slurm(base + " --time 2h");
-    BOOST_TEST(time.rc == 2, time.text);
-    BOOST_TEST(has(time.text, "--time"), time.text);
-    BOOST_TEST(has(time.text, "'2h' is not a Slurm time limit (allowed: minutes"), time.text);
-    const auto partition = slurm(base + " --partition 'a b'");
-    BOOST_TEST(partition.rc == 2, partition.text);
-    BOOST_TEST(has(partition.text, "is not a partition name (allowed: letters"), partition.text);
+    refused(slurm(base + " --np 0"), {"--np", "allowed: an integer from 1 to 4096"});
+    refused(slurm(base + " --solvers continuum,dom"), {"dom", "continuum"});  // continuum: the allowed names
+    refused(slurm(base + " --solvers continuum --point U1.0,U9.9"), {"no operating point 'U9.9' (points: U1.0, U2.0)"});
+    refused(slurm(base + " --time 2h"), {"--time", "'2h' is not a Slurm time limit (allowed: minutes"});
+    refused(slurm(base + " --partition 'a b'"), {"is not a partition name (allowed: letters"});
     BOOST_TEST(!fs::exists(root / "slurm"));  // nothing written
     fs::remove_all(root);
 }
@@ -103,11 +97,7 @@ BOOST_AUTO_TEST_CASE(submit_without_sbatch_says_what_is_missing_and_what_to_do) 
     const fs::path root = scratch("no_sbatch");
     const auto o = run("PATH=/nonexistent " + std::string(GRANLUB_EXE) + " slurm " + kCase +
                        " --solvers continuum --submit --results " + root.string());
-    BOOST_TEST(o.rc == 2, o.text);
-    BOOST_TEST(has(o.text, "sbatch"), o.text);
-    BOOST_TEST(has(o.text, "was not found on PATH"), o.text);
-    BOOST_TEST(has(o.text, "apt-get install slurm-wlm"), o.text);
-    BOOST_TEST(has(o.text, "run without --submit"), o.text);
+    refused(o, {"sbatch", "was not found on PATH", "apt-get install slurm-wlm", "run without --submit"});
     BOOST_TEST(fs::exists(root / "slurm" / "submit.sh"));  // to copy to a machine that has Slurm
     fs::remove_all(root);
 }
@@ -166,8 +156,7 @@ BOOST_AUTO_TEST_CASE(a_set_of_seeds_is_one_task_per_point_and_member) {
                "dem " + case_file + " --results " + root.string() + " --point U1.0 --seeds 1,2,7 --seed 7\n");
     // a set with a repeated seed stops before anything is written, naming the flag
     const auto bad = slurm(dir.string() + " --solvers dem --seeds 1,1 --results " + (dir / "bad").string());
-    BOOST_TEST(bad.rc == 2, bad.text);
-    BOOST_TEST(has(bad.text, "--seeds"), bad.text);
+    refused(bad, {"--seeds"});
     BOOST_TEST(!fs::exists(dir / "bad" / "slurm" / "dem.sbatch"));
     fs::remove_all(dir);
 }
