@@ -90,6 +90,32 @@ void BM_point_ekt_inventory(benchmark::State& state) {
 }
 BENCHMARK(BM_point_ekt_inventory)->Unit(benchmark::kMillisecond);
 
+// rough_inventory(U, P) with the contact stress (docs/continuum-model.md §2.9) and Johnson & Jackson's constants
+// (Fr = 0.05 Pa, n = 2, m = 5, nu_min = 0.5; mu_c = 0.36, illustrative, not fitted; docs/measurements/continuum.md),
+// Fr over this point's load as `granlub continuum` divides it (case_setup.cpp, problem_for).
+Problem rough_contact(double U, double P) {
+    Problem p = rough_inventory(U, P);
+    const ContactStress jj{0.05 / P, 0.5, 0.587, 2, 5, 0.36};  // Fr/P_y, nu_min, nu_c (g0's nu_max), n, m, mu_c
+    p.closures = std::make_shared<Closures>(p.closures->with_contact(jj));
+    return p;
+}
+
+// BM_point_ekt_inventory's point with the contact stress on, at a slow dense point and a fast one of the rough
+// cases (regimes_rough U0.4_P5550, U2.8_P2250). Issue 73 item 6's target: <= 5 ms.
+void BM_point_ekt_contact(benchmark::State& state, double U, double P) {
+    const Problem p = rough_contact(U, P);
+    SolverSettings st;
+    Solution s;
+    for (auto _ : state) {
+        s = solve_fv(p, st);
+        benchmark::DoNotOptimize(s.Lambda);
+    }
+    state.counters["newton_iterations"] = s.iterations;
+    state.counters["continuation_steps"] = s.continuation_steps;
+}
+BENCHMARK_CAPTURE(BM_point_ekt_contact, U0.4_P5550, 0.4, 5550.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_point_ekt_contact, U2.8_P2250, 2.8, 2250.0)->Unit(benchmark::kMillisecond);
+
 // 100 points: U in [0.5, 3] m/s x P_y in [1, 20] kPa (log-spaced), each solved from scratch
 // with N = 200, as `granlub continuum` does.
 void BM_sweep_100(benchmark::State& state) {
@@ -153,16 +179,12 @@ void BM_cross_section_point_body_forces(benchmark::State& state) {
 }
 BENCHMARK(BM_cross_section_point_body_forces)->Unit(benchmark::kMillisecond);
 
-// The same trough with the rough cases' extended kinetic theory (BM_point_ekt_inventory's closures, U = 1.4 m/s,
-// P = 2250 Pa, the gap from the inventory) and the contact stress (docs/continuum-model.md §2.9) with Johnson &
-// Jackson's constants (Fr = 0.05 Pa, n = 2, m = 5, nu_min = 0.5; mu_c = 0.36, illustrative, not fitted); range(0) x
-// range(1) cells; range(2) = 1: with the body forces (gravity, the centripetal force of S&T's annulus; §2.9a).
+// The same trough with rough_contact's closures (the rough cases' extended kinetic theory and the contact stress
+// with Johnson & Jackson's constants) at U = 1.4 m/s, P = 2250 Pa, the gap from the inventory; range(0) x range(1)
+// cells; range(2) = 1: with the body forces (gravity, the centripetal force of S&T's annulus; §2.9a).
 void BM_cross_section_point_contact(benchmark::State& state) {
     CrossSectionProblem p = sawyer_trough();
-    const Problem ekt = rough_inventory(1.4, 2250);
-    const ContactStress jj{0.05 / 2250, 0.5, 0.587, 2, 5, 0.36};  // Fr/P_y, nu_min, nu_c, n, m, mu_c
-    p.gap = ekt;
-    p.gap.closures = std::make_shared<Closures>(ekt.closures->with_contact(jj));
+    p.gap = rough_contact(1.4, 2250);
     p.outer = p.inner = p.gap.bottom;
     p.gap.inventory = 0.595 * 4e-3 / 0.787e-3;  // grains per length / (d W): the 1-D inventory over the width
     if (state.range(2) == 1) {
