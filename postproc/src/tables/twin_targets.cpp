@@ -306,7 +306,8 @@ std::string closures_text(const Collection& col, const std::string& model) {
         for (const auto& [key, label] : {std::pair{"closures", "closures"}, std::pair{"g0", "g0"},
                                          std::pair{"correlation_length", "correlation length"},
                                          std::pair{"contact_stress", "contact stress"},
-                                         std::pair{"wall_model", "wall model"}}) {
+                                         std::pair{"wall_model", "wall model"},
+                                         std::pair{"wall_friction_restitution", "wall friction restitution"}}) {
             if (!run.contains(key)) continue;
             const auto& v = run[key];
             if (v.is_string()) parts.push_back(fmt::format("{} = {}", label, v.get<std::string>()));
