@@ -480,7 +480,7 @@ Table twin_count_table(const TwinTargets& t) {
                              ""},
                             {m.overall ? "met" : "missed", m.overall ? "ok" : "failed"}});
     };
-    row(fmt::format("continuum as run (today's set: {})", t.closures), t.continuum);
+    row(fmt::format("continuum as run ({})", t.closures), t.continuum);
     row(fmt::format("constant μ (floor {}, top {}): μ targets only", num(t.constant_floor, 3), num(t.constant_top, 3)),
         t.constant);
     return tab;
