@@ -98,9 +98,13 @@ Settings resolve_settings(const Case& c) {
     lp.alpha = sec.real("viscosity_alpha");
     lp.dufour = sec.boolean("dufour");
     const std::string fr = sec.string("friction_restitution");
-    if (fr == "jenkins_zhang") lp.dissipation_restitution = closures::e_eff_jenkins_zhang(lp.restitution, c.grains.friction);
-    if (fr == "chialvo_sundaresan")
-        lp.dissipation_restitution = closures::e_eff_chialvo_sundaresan(lp.restitution, c.grains.friction);
+    if (fr != "none") lp.dissipation_restitution = closures::e_eff(fr, lp.restitution, c.grains.friction);
+    s.friction_restitution_name = fr;
+    s.wall_friction_restitution = sec.string("wall_friction_restitution") == "as_grains";
+    if (s.wall_friction_restitution && fr == "none")
+        sec.fail("wall_friction_restitution", "\"as_grains\" applies the grains' friction_restitution to the walls, and "
+                                              "friction_restitution = \"none\" (allowed: \"none\", or \"as_grains\" "
+                                              "with friction_restitution = \"jenkins_zhang\" or \"chialvo_sundaresan\")");
     if (fr != "none" && !(lp.dissipation_restitution >= 0 && lp.dissipation_restitution < 1))
         sec.fail("friction_restitution", fmt::format("{} gives e_eff = {:.4f} for e_p = {} and [grains] friction = {}; "
                                                      "it must lie in [0, 1)",
@@ -245,6 +249,10 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
         WallBC bc;
         bc.family = s.family;
         bc.params.restitution = w.restitution;
+        // [ASSUMPTION] a wall's impacts lose energy to its friction as the grains' do: the grains' e_eff formula
+        // at the wall's restitution and friction, in the dissipation only (as in the bulk)
+        if (s.wall_friction_restitution)
+            bc.params.dissipation_restitution = closures::e_eff(s.friction_restitution_name, w.restitution, w.friction);
         const double r = wall_roughness(c, s, p, w, side);
         bc.params.r5 = roughness_factor(sec, "r5", side, r);
         // Johnson & Jackson's dissipation carries no specularity: with the slip work whole it is theirs (R6 = 1).
@@ -291,6 +299,7 @@ void record_run(Summary& m, const Settings& s, const RunFacts& f) {
     m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
     m.run["g0"] = s.g0_name;
     m.run["wall_model"] = s.wall_name;
+    if (s.wall_friction_restitution) m.run["wall_friction_restitution"] = "as_grains";  // absent: none, as before
     if (s.contact.active())
         m.run["contact_stress"] = {{"model", "johnson_jackson"}, {"coefficient_Pa", s.contact.coefficient},
                                    {"onset_fraction", s.contact.onset}, {"jamming_fraction", s.contact.jamming},

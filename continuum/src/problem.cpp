@@ -10,7 +10,8 @@ namespace granlub::continuum {
 bool Problem::symmetric() const {
     const auto& a = bottom.params;
     const auto& b = top.params;
-    return bottom.family == top.family && a.restitution == b.restitution && a.r5 == b.r5 && a.r6 == b.r6 &&
+    return bottom.family == top.family && a.restitution == b.restitution &&
+           a.dissipation_e() == b.dissipation_e() && a.r5 == b.r5 && a.r6 == b.r6 &&
            a.r7 == b.r7 && a.r8 == b.r8 && a.slip_dissipation == b.slip_dissipation && a.energy == b.energy;
 }
 

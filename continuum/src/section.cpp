@@ -27,6 +27,10 @@ BoundKeys<Settings> declare() {
     s.choice("friction_restitution", "none", {"none", "jenkins_zhang", "chialvo_sundaresan"},
              "grain friction ([grains] friction) through an effective restitution in the dissipation: "
              "Jenkins & Zhang 2002 or Chialvo & Sundaresan 2013; none = frictionless");
+    s.choice("wall_friction_restitution", "none", {"none", "as_grains"},
+             "the walls' friction ([walls] friction) in their collisional dissipation: as_grains = friction_restitution's "
+             "e_eff at the wall's restitution and friction (an assumption: a wall's impacts lose energy to friction as "
+             "the grains' do); none = the wall's restitution as declared");
     s.choice("correlation_length", "none", {"none", "jenkins2007", "jenkins_berzi"},
              "correlation length L dividing the dissipation (extended kinetic theory): Jenkins 2007, or "
              "jenkins_berzi (Jenkins & Berzi 2010, at its homogeneous-shear value, constant correlation_constant); "

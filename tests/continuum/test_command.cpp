@@ -190,6 +190,37 @@ BOOST_AUTO_TEST_CASE(per_wall_roughness_factors_override_the_case_roughness) {
     BOOST_TEST(std::abs(r.summary.value("shear_stress_top") / r.summary.value("shear_stress_bottom") - 1) < 1e-9);
 }
 
+// [continuum] wall_friction_restitution = "as_grains": the wall's collisional dissipation takes the grains' e_eff
+// formula at the wall's own restitution and friction (here 0.8 and 0.3, unlike the grains' 0.9 and 0.5), its traction
+// keeps e_w; the wall then removes more of the slip work, so the flow is cooler and slips less. "none" (the default)
+// leaves the wall as declared; "as_grains" without a friction_restitution is refused.
+BOOST_AUTO_TEST_CASE(wall_friction_restitution_takes_the_walls_friction_into_their_dissipation) {
+    std::string base = kCase;
+    base.replace(base.find("restitution = 0.9\n[walls]"), 17, "restitution = 0.9\nfriction = 0.5");
+    base.replace(base.find("[walls]\nrestitution = 0.9"), 25, "[walls]\nrestitution = 0.8\nfriction = 0.3");
+    const std::string fr = "[continuum]\nfriction_restitution = \"chialvo_sundaresan\"\n";
+    const Case off = parse(fr, base), on = parse(fr + "wall_friction_restitution = \"as_grains\"\n", base);
+    const auto so = continuum::resolve_settings(off), sn = continuum::resolve_settings(on);
+    const auto po = continuum::problem_for(off, so, off.points[0]), pn = continuum::problem_for(on, sn, on.points[0]);
+    BOOST_TEST(po.bottom.params.dissipation_e() == 0.8);
+    for (const auto* w : {&pn.bottom.params, &pn.top.params}) {
+        BOOST_TEST(w->restitution == 0.8);  // the traction's e_w
+        BOOST_TEST(w->dissipation_e() == 0.8 - 1.5 * 0.3 * std::exp(-0.9), boost::test_tools::tolerance(1e-15));
+    }
+    const auto a = continuum::solve_point(off, off.points[0], so).summary;
+    const auto b = continuum::solve_point(on, on.points[0], sn).summary;
+    BOOST_TEST(b.value("temperature_bottom") < a.value("temperature_bottom"));
+    BOOST_TEST(b.value("slip_bottom") < a.value("slip_bottom"));
+    std::string e;
+    try {
+        continuum::resolve_settings(parse("[continuum]\nwall_friction_restitution = \"as_grains\"\n"));
+    } catch (const CaseError& x) {
+        e = x.what();
+    }
+    BOOST_TEST(contains(e, "wall_friction_restitution"), e);
+    BOOST_TEST(contains(e, "friction_restitution = \"none\""), e);
+}
+
 BOOST_AUTO_TEST_CASE(bad_keys_are_rejected_with_the_key_and_what_is_allowed) {
     std::string e = case_error("[continuum]\ng0 = \"bogus\"\n");
     BOOST_TEST(contains(e, "g0"));

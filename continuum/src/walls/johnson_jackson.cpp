@@ -19,9 +19,9 @@ class JohnsonJackson final : public WallFamily {
 public:
     WallCoefficients coefficients(const ClosureState<D1>& s, const WallParams& w, double numax) const override {
         const double a = std::numbers::pi * std::sqrt(3.0) / (6.0 * numax);
-        const double ew = w.restitution;
         const D1 ng = s.nu * s.g;
-        return {a * ng / s.fmu, 1.5 * a * (1.0 - ew * ew) * ng / s.G, w.slip_dissipation * a * ng * s.fp / s.G,
+        const double ed = w.dissipation_e();
+        return {a * ng / s.fmu, 1.5 * a * (1.0 - ed * ed) * ng / s.G, w.slip_dissipation * a * ng * s.fp / s.G,
                 s.fmu * s.fp / s.G};
     }
     bool dissipation_scales_with_roughness() const override { return false; }

@@ -306,7 +306,8 @@ std::string closures_text(const Collection& col, const std::string& model) {
         for (const auto& [key, label] : {std::pair{"closures", "closures"}, std::pair{"g0", "g0"},
                                          std::pair{"correlation_length", "correlation length"},
                                          std::pair{"contact_stress", "contact stress"},
-                                         std::pair{"wall_model", "wall model"}}) {
+                                         std::pair{"wall_model", "wall model"},
+                                         std::pair{"wall_friction_restitution", "wall friction restitution"}}) {
             if (!run.contains(key)) continue;
             const auto& v = run[key];
             if (v.is_string()) parts.push_back(fmt::format("{} = {}", label, v.get<std::string>()));
@@ -479,7 +480,7 @@ Table twin_count_table(const TwinTargets& t) {
                              ""},
                             {m.overall ? "met" : "missed", m.overall ? "ok" : "failed"}});
     };
-    row(fmt::format("continuum as run (today's set: {})", t.closures), t.continuum);
+    row(fmt::format("continuum as run ({})", t.closures), t.continuum);
     row(fmt::format("constant μ (floor {}, top {}): μ targets only", num(t.constant_floor, 3), num(t.constant_top, 3)),
         t.constant);
     return tab;

@@ -25,6 +25,8 @@ struct Settings {
     std::shared_ptr<const Closures> closures;
     std::shared_ptr<const WallFamily> family;
     double slip_dissipation = 0;  // f_t
+    std::string friction_restitution_name = "none";  // [continuum] friction_restitution
+    bool wall_friction_restitution = false;          // [continuum] wall_friction_restitution = "as_grains"
     // [continuum] wall_energy resolved: the convention and where it came from (the key, or the closure family)
     WallEnergy wall_energy = WallEnergy::GklR8;
     std::string wall_energy_source;

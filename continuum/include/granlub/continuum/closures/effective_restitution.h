@@ -16,6 +16,7 @@
 #pragma once
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace granlub::continuum::closures {
 
@@ -33,5 +34,12 @@ inline double e_eff_jenkins_zhang(double e, double mu_p) {
 }
 
 inline double e_eff_chialvo_sundaresan(double e, double mu_p) { return e - 1.5 * mu_p * std::exp(-3.0 * mu_p); }
+
+// [continuum] friction_restitution by name: "none" gives e back.
+inline double e_eff(const std::string& name, double e, double mu) {
+    if (name == "jenkins_zhang") return e_eff_jenkins_zhang(e, mu);
+    if (name == "chialvo_sundaresan") return e_eff_chialvo_sundaresan(e, mu);
+    return e;
+}
 
 }  // namespace granlub::continuum::closures
