@@ -80,7 +80,7 @@ int run_fit(const Case& c, const FitCommand& o) {
     if (frees_a_wall_key(o.free) && table.missing_wall_columns.empty()) {
         const std::filesystem::path path = bulk_case_path(o, table);
         bulk = bulk_case_for(load_case(path, *c.schema), c);
-        fmt::print("wall constants fitted on the walls of the bulk case {} ({}), solved with this case's [continuum]\n",
+        fmt::print("the wall constants' model: the bulk case {} ({}) solved in 1-D with this case's [continuum]\n",
                    bulk->name, path.string());
         fo.bulk = &*bulk;
     }

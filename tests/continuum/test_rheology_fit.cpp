@@ -384,44 +384,15 @@ namespace {
 // cases/bulk_shear's cell (bumps of the grains' size, periodic width, no gravity, the load on the top) at two speeds
 // and its two loads, with the rough cases' kinetic closures, the gap under the load, the wall at the bumps' tops;
 // f_t = 0.2 is the fit's start.
-const std::string kBulk = R"(
-[case]
-name = "bulk_test"
-[grains]
-diameter = 0.787e-3
-density = 2550.0
-restitution = 0.9
-friction = 0.5
-[walls]
-restitution = 0.9
-friction = 0.5
-roughness = 0.5
-surface = "bumps"
-[cell]
-gap = 24.0e-3
-length = 15.74e-3
-width = 0.0
-max_solid_fraction = 0.65
-[particles]
-periodic_depth = 7.87e-3
-[operating]
-speed = [3.0, 9.0]
-control = "load"
-normal_stress = [2250.0, 5550.0]
-solid_fraction = 0.57
-[body_forces]
-gravity = 0.0
-[continuum]
-closures = "garzo_dufty"
-g0 = "chialvo_sundaresan"
-max_solid_fraction = 0.587
-friction_restitution = "chialvo_sundaresan"
-correlation_length = "jenkins_berzi"
-correlation_constant = 0.44
-gap = "inventory"
-wall_plane = "bump_tops"
-slip_dissipation = 0.2
-)";
+const std::string kBulk = with(kinetic_only(kCase),
+                               {{"roughness = 0.5\n", "roughness = 0.5\nfriction = 0.5\nsurface = \"bumps\"\n"},
+                                {"length = 15.74e-3\n", "length = 15.74e-3\nwidth = 0.0\n"},
+                                {"[operating]", "[particles]\nperiodic_depth = 7.87e-3\n[operating]"},
+                                {"speed = 1.0", "speed = [3.0, 9.0]"},
+                                {"normal_stress = [2250.0, 5550.0]",
+                                 "normal_stress = [2250.0, 5550.0]\nsolid_fraction = 0.57\n[body_forces]\ngravity = 0.0"},
+                                {"correlation_constant = 0.44", "correlation_constant = 0.44\ngap = \"inventory\"\n"
+                                                                "wall_plane = \"bump_tops\"\nslip_dissipation = 0.2"}});
 const std::string kWallTruth = with(kBulk, {{"slip_dissipation = 0.2", "slip_dissipation = 0.5"}});
 constexpr double kWallRelErr = 0.01;
 
