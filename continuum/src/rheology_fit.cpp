@@ -266,10 +266,11 @@ void check_rows(const std::vector<BulkRow>& answers, const std::vector<std::stri
     if (answers.size() < need)
         throw CaseError(fmt::format(
             "{}: {} answer row(s) (status = steady and core_dt_check = converged); the fit of {} free constant(s) ({}) "
-            "needs at least {}: one answer per free constant, and two at least (one row fixes mu and nu at a single I, "
-            "not their course with I); allowed: a table with at least {} answers{}",
-            source, answers.size(), free.size(), fmt::join(free, ", "), need, need,
-            answers.size() >= 2 ? fmt::format(", or at most {} constants with --free", answers.size()) : ""));
+            "needs at least {}: one answer per free constant{}; allowed: a table with at least {} answers{}",
+            source, answers.size(), free.size(), fmt::join(free, ", "), need,
+            core ? ", and two at least (one row fixes mu and nu at a single I, not their course with I)" : "", need,
+            answers.size() >= (core ? 2u : 1u) ? fmt::format(", or at most {} constants with --free", answers.size())
+                                               : ""));
     for (const BulkRow& r : answers) {
         if (!core) break;  // the core's errors weight nothing
         const auto positive = [&](const char* column, double e) {
