@@ -6,6 +6,7 @@
 #include <exception>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 #include <gsl/gsl_blas.h>
@@ -34,7 +35,8 @@ constexpr Fittable kFittable[] = {
     {"contact_exponent_jamming", "contact_stress = \"johnson_jackson\""},
     {"contact_friction", "contact_stress = \"johnson_jackson\""},
     {"max_solid_fraction", ""},
-    {"slip_dissipation", ""},  // a wall key (wall_fit.h): fitted on the table's walls' columns
+    {"slip_dissipation", ""},  // wall keys (wall_fit.h): fitted on the table's walls' columns
+    {"r5", ""},
 };
 
 bool in_branch(const Settings& s, const std::string& key) {
@@ -49,10 +51,11 @@ struct FitTrial {
     double numax = 0;
     ContactStress contact;  // coefficient Fr in Pa, as Settings holds it
     double slip_dissipation = 0;  // f_t
+    std::optional<double> r5;     // R5 at both walls, when free (else each wall's as the case gives it)
 };
 
 FitTrial case_trial(const Settings& s) {
-    return {s.closures->params(), s.closures->numax(), s.contact, s.slip_dissipation};
+    return {s.closures->params(), s.closures->numax(), s.contact, s.slip_dissipation, std::nullopt};
 }
 
 double& constant(FitTrial& t, const std::string& key) {
@@ -64,6 +67,7 @@ double& constant(FitTrial& t, const std::string& key) {
     if (key == "contact_friction") return t.contact.friction;
     if (key == "max_solid_fraction") return t.numax;
     if (key == "slip_dissipation") return t.slip_dissipation;
+    if (key == "r5") return t.r5 ? *t.r5 : t.r5.emplace(0.0);  // engaged: free
     throw Error(fmt::format("internal: no fittable constant '{}'", key));
 }
 
@@ -96,6 +100,7 @@ Settings trial_settings(const Settings& s, const FitTrial& t) {
     x.contact = t.contact;
     if (x.contact.active()) x.contact.jamming = t.numax;
     x.slip_dissipation = t.slip_dissipation;
+    x.r5_fit = t.r5;
     return x;
 }
 
@@ -231,6 +236,7 @@ std::vector<std::string> check_free(const Settings& s, const FitOptions& o) {
         std::vector<std::string> a = allowed;
         a.push_back("max_solid_fraction");
         a.push_back("slip_dissipation");
+        a.push_back("r5");
         return fmt::format("{}", fmt::join(a, ", "));
     };
     if (free.empty())
@@ -326,12 +332,14 @@ FitResult fit_bulk_rheology(const Settings& s, const std::vector<BulkRow>& answe
         prob.bulk = o.bulk;
         prob.points = detail::wall_points(s, *o.bulk, answers, wall_keys, source);
     }
+    const bool r5 = std::find(free.begin(), free.end(), "r5") != free.end();
     FitResult res;
     res.temperature = o.temperature;
     res.core = prob.core;
     res.walls = prob.walls;
     // The start: the case's constants, each inside its key's range.
     FitTrial start = case_trial(s);
+    if (r5 && !prob.points.empty()) start.r5 = detail::case_r5(*o.bulk, s, *prob.points.front());
     const std::size_t p = free.size();
     std::vector<double> theta0(p);
     for (const std::string& k : free) {

@@ -11,7 +11,7 @@
 
 namespace granlub::continuum::detail {
 
-bool is_wall_key(const std::string& key) { return key == "slip_dissipation"; }
+bool is_wall_key(const std::string& key) { return key == "slip_dissipation" || key == "r5"; }
 
 void check_wall_columns(const std::vector<std::string>& missing_columns, const std::vector<std::string>& wall_keys,
                         const std::string& source) {
@@ -61,7 +61,8 @@ std::vector<const OperatingPoint*> wall_points(const Settings& s, const Case& bu
         points.push_back(&*it);
     }
     // f_t enters the energy condition as R7 b7 (wall_condition.h): with R7 = 0 at both walls no residual feels it
-    if (!points.empty()) {
+    const bool ft = std::find(wall_keys.begin(), wall_keys.end(), "slip_dissipation") != wall_keys.end();
+    if (!points.empty() && ft) {
         const Problem q = problem_for(bulk, s, *points.front());
         if (q.bottom.params.r7 == 0 && q.top.params.r7 == 0)
             throw CaseError(fmt::format("continuum-fit --free {}: R7 = 0 at both walls of the bulk case ([continuum] "
@@ -69,7 +70,24 @@ std::vector<const OperatingPoint*> wall_points(const Settings& s, const Case& bu
                                         "would change nothing (allowed: R7 > 0 at a wall)",
                                         keys));
     }
+    // one R5 for both walls: a case that sets them apart has no one value to start from or to write back
+    const Section& sec = bulk.section("continuum");
+    if (std::find(wall_keys.begin(), wall_keys.end(), "r5") != wall_keys.end())
+        for (const char* k : {"r5_bottom", "r5_top"})
+            if (sec.has(k))
+                throw CaseError(fmt::format("continuum-fit --free r5: the case sets {} (the fit's R5 is one value at "
+                                            "both walls, written back as r5); allowed: remove r5_bottom, r5_top",
+                                            k));
     return points;
+}
+
+double case_r5(const Case& bulk, const Settings& s, const OperatingPoint& p) {
+    const Problem q = problem_for(bulk, s, p);
+    if (q.bottom.params.r5 != q.top.params.r5)
+        throw CaseError(fmt::format("continuum-fit --free r5: the bulk case's walls have R5 = {} and {} at point {} "
+                                    "(the fit's R5 is one value at both walls); allowed: walls of one roughness",
+                                    q.bottom.params.r5, q.top.params.r5, p.id));
+    return q.bottom.params.r5;
 }
 
 WallLayers wall_model(const Case& bulk, const Settings& s, const OperatingPoint& p) {

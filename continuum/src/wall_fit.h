@@ -24,9 +24,13 @@ void check_wall_columns(const std::vector<std::string>& missing_columns, const s
 // The bulk case's point of each answer (by its id, with the table's U and P): throws CaseError for an answer whose
 // point the bulk case lacks or holds at another U or P, an answer
 // whose wall values cannot weight a fit, a case whose walls do not feel the key (R7 = 0 at both walls for
-// slip_dissipation), and a cross-section case (its walls are not the 1-D solve's).
+// slip_dissipation), a case that sets r5_bottom or r5_top (for r5), and a cross-section case (its walls are not the 1-D solve's).
 std::vector<const OperatingPoint*> wall_points(const Settings& s, const Case& bulk, const std::vector<BulkRow>& answers,
                                                const std::vector<std::string>& wall_keys, const std::string& source);
+
+// The R5 the case gives both walls of the bulk case at point p (the fit's start for r5); throws CaseError when the
+// walls' differ.
+double case_r5(const Case& bulk, const Settings& s, const OperatingPoint& p);
 
 // The continuum's slips over U and near-wall T over U^2 of the bulk case at one point with the settings `s` (errors
 // 0); throws SolverError when the point does not solve.

@@ -333,8 +333,8 @@ BOOST_AUTO_TEST_CASE(a_free_key_outside_the_cases_branches_is_refused_naming_the
     const std::string kinetic = kinetic_only(kCase);
     BOOST_TEST(case_error([&] { fit(kinetic, synthetic(kTruth, 0), {"contact_friction"}); }) ==
                "continuum-fit --free contact_friction: a constant of contact_stress = \"johnson_jackson\", which this "
-               "case does not choose (allowed in this case: correlation_constant, max_solid_fraction, slip_dissipation; or "
-               "choose the branch in [continuum] and set its constants as the fit's start)");
+               "case does not choose (allowed in this case: correlation_constant, max_solid_fraction, slip_dissipation, r5; "
+               "or choose the branch in [continuum] and set its constants as the fit's start)");
     BOOST_TEST(case_error([&] { fit(kCase, synthetic(kTruth, 0), {"viscosity_alpha"}); })
                    .starts_with("continuum-fit --free viscosity_alpha: not a constant a fit can free (allowed in this "
                                 "case: correlation_constant, contact_coefficient,"));
@@ -383,7 +383,7 @@ namespace {
 
 // cases/bulk_shear's cell (bumps of the grains' size, periodic width, no gravity, the load on the top) at two speeds
 // and its two loads, with the rough cases' kinetic closures, the gap under the load, the wall at the bumps' tops;
-// f_t = 0.2 is the fit's start.
+// f_t = 0.2 is the fit's start; 100 cells (the least allowed) keep the tests fast.
 const std::string kBulk = with(kinetic_only(kCase),
                                {{"roughness = 0.5\n", "roughness = 0.5\nfriction = 0.5\nsurface = \"bumps\"\n"},
                                 {"length = 15.74e-3\n", "length = 15.74e-3\nwidth = 0.0\n"},
@@ -392,7 +392,7 @@ const std::string kBulk = with(kinetic_only(kCase),
                                 {"normal_stress = [2250.0, 5550.0]",
                                  "normal_stress = [2250.0, 5550.0]\nsolid_fraction = 0.57\n[body_forces]\ngravity = 0.0"},
                                 {"correlation_constant = 0.44", "correlation_constant = 0.44\ngap = \"inventory\"\n"
-                                                                "wall_plane = \"bump_tops\"\nslip_dissipation = 0.2"}});
+                                                                "wall_plane = \"bump_tops\"\nslip_dissipation = 0.2\ncells = 100"}});
 const std::string kWallTruth = with(kBulk, {{"slip_dissipation = 0.2", "slip_dissipation = 0.5"}});
 constexpr double kWallRelErr = 0.01;
 
@@ -455,6 +455,23 @@ BOOST_AUTO_TEST_CASE(a_wall_fit_gives_back_the_slip_dissipation_of_the_continuum
     const FitResult z = wall_fit(zero, wall_table(kWallTruth), {"slip_dissipation"}, &bulk);
     BOOST_TEST(z.constants[0].moved_inside);
     BOOST_TEST(std::abs(z.constants[0].value - 0.5) < 1e-3);
+}
+
+// R5 (one value at both walls) with f_t: from the continuum's walls at R5 = 0.4, f_t = 0.5, started at the walls'
+// roughness 0.5 and f_t = 0.2; a case that sets the walls' R5 apart is refused.
+BOOST_AUTO_TEST_CASE(a_wall_fit_gives_back_r5_and_the_slip_dissipation) {
+    const Case fitted = parse(kBulk), bulk = bulk_case_for(parse(kBulk), fitted);
+    const std::string truth = with(kWallTruth, {{"slip_dissipation = 0.5", "slip_dissipation = 0.5\nr5 = 0.4"}});
+    const FitResult r = wall_fit(kBulk, wall_table(truth), {"r5", "slip_dissipation"}, &bulk);
+    BOOST_TEST_MESSAGE(fit_report(r));
+    BOOST_TEST(r.constants[0].start == 0.5);
+    BOOST_TEST(std::abs(r.constants[0].value - 0.4) < 1e-3);
+    BOOST_TEST(std::abs(r.constants[1].value - 0.5) < 1e-3);
+    BOOST_TEST(fit_fragment(r, {}).find("\nr5 = 0.4") != std::string::npos, fit_fragment(r, {}));
+    const std::string apart = with(kBulk, {{"slip_dissipation = 0.2", "slip_dissipation = 0.2\nr5_top = 0.3"}});
+    const Case fitted_apart = parse(apart), bulk_apart = bulk_case_for(parse(kBulk), fitted_apart);
+    BOOST_TEST(case_error([&] { wall_fit(apart, wall_table(truth), {"r5"}, &bulk_apart); })
+                   .starts_with("continuum-fit --free r5: the case sets r5_top"));
 }
 
 // Jointly with a closure constant: nu_max and f_t from one table, the core's rows and the walls' together.

@@ -18,7 +18,8 @@ namespace granlub::continuum {
 
 // The [continuum] keys a fit may free: correlation_constant (correlation_length = "jenkins_berzi"), the five
 // contact_* constants (contact_stress = "johnson_jackson") and max_solid_fraction (g0's nu_max, also the contact
-// stress's nu_c), and the wall constant slip_dissipation (f_t, fitted on the walls' columns).
+// stress's nu_c), and the wall constants slip_dissipation (f_t) and r5 (R5 at both walls), fitted on the walls'
+// columns.
 const std::vector<std::string>& fittable_keys();
 // The default free set of a case: the constants of the branches it chooses (not max_solid_fraction).
 std::vector<std::string> default_free_keys(const Settings& s);
