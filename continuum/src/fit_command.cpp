@@ -82,6 +82,7 @@ int run_fit(const Case& c, const FitCommand& o) {
         bulk = bulk_case_for(load_case(path, *c.schema), c);
         fmt::print("the wall constants' model: the bulk case {} ({}) solved in 1-D with this case's [continuum]\n",
                    bulk->name, path.string());
+        std::fflush(stdout);  // before a refusal on stderr
         fo.bulk = &*bulk;
     }
     const FitResult r = fit_bulk_rheology(s, answers, fo, o.table.string());
