@@ -339,9 +339,15 @@ int main(int argc, char** argv) {
                             "the [continuum] constants to fit, comma-separated, started from the case's values "
                             "(default: every constant of the branches the case chooses: correlation_constant with "
                             "correlation_length = \"jenkins_berzi\", the contact_* constants with contact_stress = "
-                            "\"johnson_jackson\"; max_solid_fraction may be added)")
+                            "\"johnson_jackson\"; max_solid_fraction may be added; slip_dissipation fits the wall "
+                            "constant f_t on the table's walls' columns, see --bulk-case)")
             ->type_name("KEYS")
             ->delimiter(',');
+        cmd.fit->add_option("--bulk-case", a.fit.bulk_case,
+                            "with slip_dissipation in --free: the bulk case whose walls the table measured, solved in "
+                            "1-D with CASE's [continuum] (default: the case the table's '# case NAME (PATH)' line "
+                            "names, PATH relative to the working directory)")
+            ->type_name("DIR|FILE");
         cmd.fit->add_flag("--temperature", a.fit.temperature,
                           "fit T/(d gdot)^2 as well as mu and nu (default: off, T printed beside the fit)");
         cmd.fit->add_option("--out", a.out, "the TOML fragment with the fitted constants (default: CASE/continuum_fit.toml)")

@@ -48,7 +48,7 @@ void check_input(const SolverModule& m, const Case& c, const RunOptions& o) {
 
 int continuum_fit(const Case& c, const ContinuumFitArgs& a) {
 #ifdef GRANLUB_HAVE_CONTINUUM
-    return continuum::run_fit(c, {a.table, a.out, a.free, a.temperature});
+    return continuum::run_fit(c, {a.table, a.out, a.free, a.temperature, a.bulk_case});
 #else
     (void)c, (void)a;
     throw Error("granlub was built without the continuum module: no continuum-fit");

@@ -34,7 +34,7 @@ bool have_compare();
 // `granlub continuum-fit CASE --table FILE` if the continuum is compiled in (continuum/command.h run_fit);
 // otherwise throws.
 struct ContinuumFitArgs {
-    std::string table, out;
+    std::string table, out, bulk_case;
     std::vector<std::string> free;
     bool temperature = false;
 };

@@ -254,7 +254,7 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
         if (s.wall_friction_restitution)
             bc.params.dissipation_restitution = closures::e_eff(s.friction_restitution_name, w.restitution, w.friction);
         const double r = wall_roughness(c, s, p, w, side);
-        bc.params.r5 = roughness_factor(sec, "r5", side, r);
+        bc.params.r5 = s.r5_fit ? *s.r5_fit : roughness_factor(sec, "r5", side, r);
         // Johnson & Jackson's dissipation carries no specularity: with the slip work whole it is theirs (R6 = 1).
         const bool r6_is_r = s.wall_energy == WallEnergy::GklR8 || s.family->dissipation_scales_with_roughness();
         bc.params.r6 = roughness_factor(sec, "r6", side, r6_is_r ? r : 1.0);

@@ -6,14 +6,17 @@
 #include <exception>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_multifit_nlinear.h>
 
+#include "granlub/continuum/command.h"
 #include "granlub/error.h"
 #include "gsl_quiet.h"
+#include "wall_fit.h"
 
 namespace granlub::continuum {
 
@@ -32,6 +35,8 @@ constexpr Fittable kFittable[] = {
     {"contact_exponent_jamming", "contact_stress = \"johnson_jackson\""},
     {"contact_friction", "contact_stress = \"johnson_jackson\""},
     {"max_solid_fraction", ""},
+    {"slip_dissipation", ""},  // wall keys (wall_fit.h): fitted on the table's walls' columns
+    {"r5", ""},
 };
 
 bool in_branch(const Settings& s, const std::string& key) {
@@ -45,9 +50,13 @@ struct FitTrial {
     ClosureParams params;
     double numax = 0;
     ContactStress contact;  // coefficient Fr in Pa, as Settings holds it
+    double slip_dissipation = 0;  // f_t
+    std::optional<double> r5;     // R5 at both walls, when free (else each wall's as the case gives it)
 };
 
-FitTrial case_trial(const Settings& s) { return {s.closures->params(), s.closures->numax(), s.contact}; }
+FitTrial case_trial(const Settings& s) {
+    return {s.closures->params(), s.closures->numax(), s.contact, s.slip_dissipation, std::nullopt};
+}
 
 double& constant(FitTrial& t, const std::string& key) {
     if (key == "correlation_constant") return t.params.correlation_constant;
@@ -57,6 +66,8 @@ double& constant(FitTrial& t, const std::string& key) {
     if (key == "contact_exponent_jamming") return t.contact.m;
     if (key == "contact_friction") return t.contact.friction;
     if (key == "max_solid_fraction") return t.numax;
+    if (key == "slip_dissipation") return t.slip_dissipation;
+    if (key == "r5") return t.r5 ? *t.r5 : t.r5.emplace(0.0);  // engaged: free
     throw Error(fmt::format("internal: no fittable constant '{}'", key));
 }
 
@@ -64,17 +75,33 @@ double& constant(FitTrial& t, const std::string& key) {
 // gives it each point's load (§2.9); its nu_c is g0's nu_max. The row's P is the core's measured pressure
 // (pressure_Pa), against which its I is defined [ASSUMPTION: the load, load_Pa, differs from it by the walls'
 // normal-stress imbalance, a percent or less in the steady rows].
-Closures closures_at(const Settings& s, const FitTrial& t, double P) {
+Closures trial_closures(const Settings& s, const FitTrial& t) {
     const std::shared_ptr<const Closures>& base = s.closures;
     std::shared_ptr<const RadialDistribution> g0 =
         t.numax == base->numax() ? std::shared_ptr<const RadialDistribution>(base, &base->g0())
                                  : std::shared_ptr<const RadialDistribution>(make_g0(s.g0_name, t.numax));
-    const Closures c(t.params, std::move(g0), std::shared_ptr<const ClosureFamily>(base, &base->family()));
+    return Closures(t.params, std::move(g0), std::shared_ptr<const ClosureFamily>(base, &base->family()));
+}
+
+Closures closures_at(const Settings& s, const FitTrial& t, double P) {
+    const Closures c = trial_closures(s, t);
     if (!t.contact.active()) return c;
     ContactStress cs = t.contact;
     cs.jamming = t.numax;
     cs.coefficient /= P;
     return c.with_contact(cs);
+}
+
+// The case's Settings with a trial's constants, as the 1-D solve takes them (problem_for scales the contact stress
+// by each point's load, so Fr stays in Pa here).
+Settings trial_settings(const Settings& s, const FitTrial& t) {
+    Settings x = s;
+    x.closures = std::make_shared<Closures>(trial_closures(s, t));
+    x.contact = t.contact;
+    if (x.contact.active()) x.contact.jamming = t.numax;
+    x.slip_dissipation = t.slip_dissipation;
+    x.r5_fit = t.r5;
+    return x;
 }
 
 // Each free constant is fitted as an unbounded theta mapped into the key's declared range (section.cpp): a
@@ -111,9 +138,14 @@ struct FitProblem {
     const std::vector<BulkRow>* rows = nullptr;
     std::vector<ConstantMap> maps;
     bool temperature = false;
+    bool core = true;    // the core's mu, nu (T) are residuals: a closure constant is free
+    bool walls = false;  // the walls' slips and T are residuals: a wall key is free
+    const Case* bulk = nullptr;                  // with walls: the bulk case (FitOptions::bulk)
+    std::vector<const OperatingPoint*> points;   // with walls: each row's point of it
     std::exception_ptr failure;  // an unexpected error inside GSL's callback, rethrown after
 
-    std::size_t per_row() const { return temperature ? 3 : 2; }
+    std::size_t core_per_row() const { return core ? (temperature ? 3 : 2) : 0; }
+    std::size_t per_row() const { return core_per_row() + (walls ? detail::kWallResiduals : 0); }
     // The trial of theta; nu_c (max_solid_fraction) first, as the onset's range ends there.
     FitTrial trial(const double* theta) const {
         FitTrial t = case_trial(*s);
@@ -129,6 +161,10 @@ struct FitProblem {
     // The homogeneous shear of one row; throws SolverError when the closures do not reach its I.
     SimpleShear model(const FitTrial& t, const BulkRow& r) const {
         return simple_shear_at_inertial(closures_at(*s, t, r.pressure.value), r.inertial.value);
+    }
+    // The bulk case's 1-D solve at row i's point; throws SolverError when it does not solve.
+    WallLayers wall_model(const FitTrial& t, std::size_t i) const {
+        return detail::wall_model(*bulk, trial_settings(*s, t), *points[i]);
     }
 };
 
@@ -146,13 +182,21 @@ int gsl_residuals(const gsl_vector* theta, void* params, gsl_vector* f) {
         std::vector<double> th(theta->size);
         for (std::size_t k = 0; k < th.size(); ++k) th[k] = gsl_vector_get(theta, k);
         const FitTrial t = p.trial(th.data());
+        const Settings x = trial_settings(*p.s, t);
         for (std::size_t i = 0; i < p.rows->size(); ++i) {
-            double fi[3] = {kUnreachable, kUnreachable, kUnreachable};
-            try {
-                fit_residuals(p.model(t, (*p.rows)[i]), (*p.rows)[i], p.temperature, fi);
-            } catch (const SolverError&) {
-                std::fill(fi, fi + 3, kUnreachable);
-            }
+            double fi[3 + detail::kWallResiduals];
+            std::fill(std::begin(fi), std::end(fi), kUnreachable);
+            if (p.core) try {
+                    fit_residuals(p.model(t, (*p.rows)[i]), (*p.rows)[i], p.temperature, fi);
+                } catch (const SolverError&) {
+                    std::fill(fi, fi + 3, kUnreachable);
+                }
+            if (p.walls) try {
+                    detail::wall_residuals(detail::wall_model(*p.bulk, x, *p.points[i]), (*p.rows)[i],
+                                           fi + p.core_per_row());
+                } catch (const SolverError&) {
+                    std::fill(fi + p.core_per_row(), fi + p.per_row(), kUnreachable);
+                }
             for (std::size_t j = 0; j < p.per_row(); ++j)
                 gsl_vector_set(f, i * p.per_row() + j, std::isfinite(fi[j]) ? fi[j] : kUnreachable);
         }
@@ -163,12 +207,36 @@ int gsl_residuals(const gsl_vector* theta, void* params, gsl_vector* f) {
     }
 }
 
+// With a wall key free, the Jacobian by central differences of a fixed step in theta, kWallStep max(1, |theta|):
+// GSL's step, sqrt(eps) |theta|, moves f_t by ~1e-9 (and by nothing at theta ~ 0), below what the 1-D solve's
+// Newton tolerance resolves in the slips and T, so its slopes were noise [ASSUMPTION: 1e-4, a numerical choice;
+// the central difference's error is O(step^2)].
+constexpr double kWallStep = 1e-4;
+int gsl_wall_jacobian(const gsl_vector* theta, void* params, gsl_matrix* J) {
+    const std::size_t n = J->size1, p = J->size2;
+    const std::unique_ptr<gsl_vector, void (*)(gsl_vector*)> th(gsl_vector_alloc(p), gsl_vector_free),
+        up(gsl_vector_alloc(n), gsl_vector_free), down(gsl_vector_alloc(n), gsl_vector_free);
+    for (std::size_t j = 0; j < p; ++j) {
+        gsl_vector_memcpy(th.get(), theta);
+        const double t = gsl_vector_get(theta, j), h = kWallStep * std::max(1.0, std::abs(t));
+        gsl_vector_set(th.get(), j, t + h);
+        if (const int s = gsl_residuals(th.get(), params, up.get()); s != GSL_SUCCESS) return s;
+        gsl_vector_set(th.get(), j, t - h);
+        if (const int s = gsl_residuals(th.get(), params, down.get()); s != GSL_SUCCESS) return s;
+        for (std::size_t i = 0; i < n; ++i)
+            gsl_matrix_set(J, i, j, (gsl_vector_get(up.get(), i) - gsl_vector_get(down.get(), i)) / (2 * h));
+    }
+    return GSL_SUCCESS;
+}
+
 std::vector<std::string> check_free(const Settings& s, const FitOptions& o) {
     std::vector<std::string> free = o.free.empty() ? default_free_keys(s) : o.free;
     const std::vector<std::string> allowed = default_free_keys(s);
     const auto allowed_text = [&] {
         std::vector<std::string> a = allowed;
         a.push_back("max_solid_fraction");
+        a.push_back("slip_dissipation");
+        a.push_back("r5");
         return fmt::format("{}", fmt::join(a, ", "));
     };
     if (free.empty())
@@ -196,18 +264,21 @@ std::vector<std::string> check_free(const Settings& s, const FitOptions& o) {
 }
 
 void check_rows(const std::vector<BulkRow>& answers, const std::vector<std::string>& free, const FitOptions& o,
-                const std::string& source) {
+                bool core, const std::string& source) {
     // [ASSUMPTION] one answer per free constant, and two at least: one row fixes mu and nu at a single I, not
-    // their course with I, which is what the constants are fitted to describe
-    const std::size_t need = std::max<std::size_t>(free.size(), 2);
+    // their course with I, which is what the constants are fitted to describe. The wall constants alone: one
+    // answer (four residuals: two slips, two near-wall T) per free constant.
+    const std::size_t need = std::max<std::size_t>(free.size(), core ? 2 : 1);
     if (answers.size() < need)
         throw CaseError(fmt::format(
             "{}: {} answer row(s) (status = steady and core_dt_check = converged); the fit of {} free constant(s) ({}) "
-            "needs at least {}: one answer per free constant, and two at least (one row fixes mu and nu at a single I, "
-            "not their course with I); allowed: a table with at least {} answers{}",
-            source, answers.size(), free.size(), fmt::join(free, ", "), need, need,
-            answers.size() >= 2 ? fmt::format(", or at most {} constants with --free", answers.size()) : ""));
+            "needs at least {}: one answer per free constant{}; allowed: a table with at least {} answers{}",
+            source, answers.size(), free.size(), fmt::join(free, ", "), need,
+            core ? ", and two at least (one row fixes mu and nu at a single I, not their course with I)" : "", need,
+            answers.size() >= (core ? 2u : 1u) ? fmt::format(", or at most {} constants with --free", answers.size())
+                                               : ""));
     for (const BulkRow& r : answers) {
+        if (!core) break;  // the core's errors weight nothing
         const auto positive = [&](const char* column, double e) {
             if (!(e > 0))
                 throw CaseError(fmt::format("{}:{}: point {}: {} = {} cannot weight a fit (the residuals are in units "
@@ -242,15 +313,33 @@ FitResult fit_bulk_rheology(const Settings& s, const std::vector<BulkRow>& answe
                             const std::string& source) {
     detail::gsl_quiet();
     const std::vector<std::string> free = check_free(s, o);
-    check_rows(answers, free, o, source);
+    std::vector<std::string> wall_keys;
+    for (const std::string& k : free)
+        if (detail::is_wall_key(k)) wall_keys.push_back(k);
     FitProblem prob;
     prob.s = &s;
     prob.rows = &answers;
     prob.temperature = o.temperature;
+    prob.core = wall_keys.size() < free.size();
+    prob.walls = !wall_keys.empty();
+    check_rows(answers, free, o, prob.core, source);
+    if (prob.walls) {
+        detail::check_wall_columns(o.missing_wall_columns, wall_keys, source);
+        if (!o.bulk)
+            throw CaseError(fmt::format("continuum-fit --free {}: a wall constant is fitted on the bulk case's walls, "
+                                        "and no bulk case was given (allowed: --bulk-case DIR)",
+                                        fmt::join(wall_keys, ", ")));
+        prob.bulk = o.bulk;
+        prob.points = detail::wall_points(s, *o.bulk, answers, wall_keys, source);
+    }
+    const bool r5 = std::find(free.begin(), free.end(), "r5") != free.end();
     FitResult res;
     res.temperature = o.temperature;
+    res.core = prob.core;
+    res.walls = prob.walls;
     // The start: the case's constants, each inside its key's range.
     FitTrial start = case_trial(s);
+    if (r5 && !prob.points.empty()) start.r5 = detail::case_r5(*o.bulk, s, *prob.points.front());
     const std::size_t p = free.size();
     std::vector<double> theta0(p);
     for (const std::string& k : free) {
@@ -274,6 +363,10 @@ FitResult fit_bulk_rheology(const Settings& s, const std::vector<BulkRow>& answe
             const double inside = std::isinf(h) ? 1e-3 * std::max(std::abs(v), 1.0) : 1e-3 * (h - m.lo);
             if (v - m.lo < inside) v = m.lo + inside, c.moved_inside = true;
             if (!std::isinf(h) && h - v < inside) v = h - inside, c.moved_inside = true;
+            // [ASSUMPTION] a wall key (f_t, default 0) on its edge starts mid-range instead: 1e-3 inside, the map's
+            // slope makes the finite-difference step in f_t ~1e-10, below what the 1-D solve resolves
+            if (c.moved_inside && detail::is_wall_key(c.key) && !std::isinf(h)) v = 0.5 * (m.lo + h);
+            c.fit_start = v;
             theta0[j] = m.theta(v, top);
             res.constants.push_back(c);
         }
@@ -284,7 +377,17 @@ FitResult fit_bulk_rheology(const Settings& s, const std::vector<BulkRow>& answe
     res.constants = ordered;
     // Every answer must be reachable at the start: the row and the range the closures cover.
     const FitTrial t0 = prob.trial(theta0.data());
+    for (std::size_t i = 0; i < answers.size() && prob.walls; ++i) {
+        try {
+            prob.wall_model(t0, i);
+        } catch (const SolverError& e) {
+            throw CaseError(fmt::format("{}:{}: point {}: the bulk case {} does not solve at the start's constants ({}); "
+                                        "allowed: a start ([continuum] constants) at which it solves",
+                                        source, answers[i].line, answers[i].point, o.bulk->file.string(), e.what()));
+        }
+    }
     for (const BulkRow& r : answers) {
+        if (!prob.core) break;  // printed at the end, not fitted
         try {
             prob.model(t0, r);
         } catch (const SolverError& e) {
@@ -300,7 +403,7 @@ FitResult fit_bulk_rheology(const Settings& s, const std::vector<BulkRow>& answe
     res.dof = n - p;
     gsl_multifit_nlinear_fdf fdf{};
     fdf.f = gsl_residuals;
-    fdf.df = nullptr;  // GSL's finite-difference Jacobian
+    fdf.df = prob.walls ? gsl_wall_jacobian : nullptr;  // else GSL's finite-difference Jacobian
     fdf.fvv = nullptr;
     fdf.n = n;
     fdf.p = p;
@@ -361,29 +464,52 @@ FitResult fit_bulk_rheology(const Settings& s, const std::vector<BulkRow>& answe
             res.correlation[j][k] = var > 0 && vk > 0 ? gsl_matrix_get(cov.get(), j, k) / std::sqrt(var * vk) : 0.0;
         }
     }
-    // Every row at the fitted constants (T's residual printed when not fitted).
-    for (const BulkRow& r : answers) {
-        FitRow fr{r, prob.model(fitted, r), 0, 0, 0};
-        double f[3] = {0, 0, 0};
-        fit_residuals(fr.model, r, false, f);
-        fr.mu = f[0];
-        fr.nu = f[1];
-        fr.T = r.temperature_scaled.error > 0
-                   ? (fr.model.temperature - r.temperature_scaled.value) / r.temperature_scaled.error
-                   : std::numeric_limits<double>::quiet_NaN();
-        res.chi2 += fr.mu * fr.mu + fr.nu * fr.nu + (o.temperature ? fr.T * fr.T : 0.0);
+    // Every row at the fitted constants (T's residual printed when not fitted; the core's when no closure constant
+    // is free, NaN where the closures do not reach the row's I).
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t i = 0; i < answers.size(); ++i) {
+        const BulkRow& r = answers[i];
+        FitRow fr{r, {}, kNaN, kNaN, kNaN, {}, 0, 0, 0, 0};
+        try {
+            fr.model = prob.model(fitted, r);
+            double f[3] = {0, 0, 0};
+            fit_residuals(fr.model, r, false, f);
+            fr.mu = f[0];
+            fr.nu = f[1];
+            fr.T = r.temperature_scaled.error > 0
+                       ? (fr.model.temperature - r.temperature_scaled.value) / r.temperature_scaled.error
+                       : kNaN;
+        } catch (const SolverError&) {
+            if (prob.core) throw;
+        }
+        if (prob.core) res.chi2 += fr.mu * fr.mu + fr.nu * fr.nu + (o.temperature ? fr.T * fr.T : 0.0);
+        if (prob.walls) {
+            fr.walls = prob.wall_model(fitted, i);
+            double f[detail::kWallResiduals];
+            detail::wall_residuals(fr.walls, r, f);
+            fr.slip_bottom = f[0], fr.slip_top = f[1], fr.T_bottom = f[2], fr.T_top = f[3];
+            for (double x : f) res.chi2 += x * x;
+        }
         res.rows.push_back(fr);
     }
     res.p_value = res.dof > 0 ? gsl_cdf_chisq_Q(res.chi2, static_cast<double>(res.dof)) : 1.0;
     return res;
 }
 
+Case bulk_case_for(const Case& bulk, const Case& fitted) {
+    Case b = bulk;
+    b.sections.insert_or_assign(std::string(kSolver.name), fitted.section(kSolver.name));
+    return b;
+}
+
 std::string fit_report(const FitResult& r) {
     std::string out;
     const double scale = r.dof > 0 ? std::sqrt(r.chi2 / static_cast<double>(r.dof)) : 1.0;
+    const std::string core = r.temperature ? "mu, nu and T/(d gdot)^2" : "mu and nu";
+    const std::string walls = "the walls' slips and near-wall T (the bulk case's 1-D solve)";
     out += fmt::format("fitted on {} of {} answer row(s) (residuals {} - constants {} = {} degrees of freedom), "
                        "{} iteration(s): {}\n\n",
-                       r.temperature ? "mu, nu and T/(d gdot)^2" : "mu and nu", r.rows.size(), r.residuals,
+                       r.core && r.walls ? core + " and " + walls : r.core ? core : walls, r.rows.size(), r.residuals,
                        r.constants.size(), r.dof, r.iterations, r.stop);
     out += fmt::format("{:<26} {:>12} {:>12} {:>12} {:>16}  range\n", "constant", "start", "fitted", "std. error",
                        "x sqrt(chi2/dof)");
@@ -391,7 +517,7 @@ std::string fit_report(const FitResult& r) {
         const std::string err = c.determined ? fmt::format("{:.4g}", c.error) : "undetermined";
         const std::string scaled = c.determined ? fmt::format("{:.4g}", c.error * std::max(scale, 1.0)) : "";
         out += fmt::format("{:<26} {:>12.6g} {:>12.6g} {:>12} {:>16}  [{:g}, {:g}]{}\n", c.key, c.start, c.value, err,
-                           scaled, c.low, c.high, c.moved_inside ? " (started just inside: the case's value is on its edge)" : "");
+                           scaled, c.low, c.high, c.moved_inside ? fmt::format(" (the case's value is on its edge: started at {:g})", c.fit_start) : "");
     }
     for (const FitConstant& c : r.constants)
         if (!c.determined)
@@ -421,7 +547,19 @@ std::string fit_report(const FitResult& r) {
                            fmt::format("{:.4f} ± {:.4f}", b.friction.value, b.friction.error), f.model.stress_ratio, f.mu,
                            fmt::format("{:.4f} ± {:.4f}", b.solid_fraction.value, b.solid_fraction.error), f.model.nu,
                            f.nu, fmt::format("{:.3f} ± {:.3f}", b.temperature_scaled.value, b.temperature_scaled.error),
-                           f.model.temperature, f.T, r.temperature ? "" : " (T not fitted)");
+                           f.model.temperature, f.T, !r.core ? " (not fitted)" : r.temperature ? "" : " (T not fitted)");
+    }
+    if (r.walls) {
+        out += fmt::format("\n{:<14} {:>17} {:>8} {:>7} {:>17} {:>8} {:>7} {:>17} {:>8} {:>7} {:>17} {:>8} {:>7}\n",
+                           "point", "slip_b/U table", "fit", "d/err", "slip_t/U table", "fit", "d/err", "T_b/U2 table",
+                           "fit", "d/err", "T_t/U2 table", "fit", "d/err");
+        const auto cell = [](const Measured& m) { return fmt::format("{:.4g} ± {:.2g}", m.value, m.error); };
+        for (const FitRow& f : r.rows)
+            out += fmt::format("{:<14} {:>17} {:>8.4g} {:>+7.2f} {:>17} {:>8.4g} {:>+7.2f} {:>17} {:>8.4g} {:>+7.2f} "
+                               "{:>17} {:>8.4g} {:>+7.2f}\n",
+                               f.row.point, cell(f.row.slip_bottom), f.walls.slip_bottom.value, f.slip_bottom,
+                               cell(f.row.slip_top), f.walls.slip_top.value, f.slip_top, cell(f.row.T_wall_bottom),
+                               f.walls.T_bottom.value, f.T_bottom, cell(f.row.T_wall_top), f.walls.T_top.value, f.T_top);
     }
     out += fmt::format("\nchi2 = {:.4g} for {} degrees of freedom: chi2/dof = {:.4g}, P(chi2 >= {:.4g}) = {:.3g}\n",
                        r.chi2, r.dof, r.dof ? r.chi2 / static_cast<double>(r.dof) : 0.0, r.chi2, r.p_value);

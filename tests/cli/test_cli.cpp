@@ -300,7 +300,8 @@ BOOST_AUTO_TEST_CASE(check_warns_of_points_a_solver_cannot_run) {
 }
 
 // `granlub continuum-fit CASE --table FILE`: the fit through the command on a two-answer table (the rough case's c
-// only), the fragment written to --out; one answer is refused as bad input (exit 2), saying how many are needed.
+// only), the fragment written to --out; one answer is refused as bad input (exit 2), saying how many are needed, and
+// so is the wall constant on a table without the walls' columns.
 BOOST_AUTO_TEST_CASE(continuum_fit_route) {
     if (!built("continuum-fit")) return;
     const fs::path dir = fs::temp_directory_path() / "granlub_test_cli_fit";
@@ -327,6 +328,11 @@ BOOST_AUTO_TEST_CASE(continuum_fit_route) {
     const auto one = run(base + (dir / "one.csv").string());
     BOOST_TEST(one.rc == 2, one.text);
     BOOST_TEST(one.text.find("needs at least 2") != std::string::npos, one.text);
+    BOOST_TEST(!fs::exists(dir / "fit.toml"));
+    // the wall constant on a table without the walls' columns: bad input, the columns named
+    const auto walls = run(base + (dir / "two.csv").string() + " --free slip_dissipation");
+    BOOST_TEST(walls.rc == 2, walls.text);
+    BOOST_TEST(walls.text.find("no column(s) slip_bottom_over_U, slip_bottom_err") != std::string::npos, walls.text);
     BOOST_TEST(!fs::exists(dir / "fit.toml"));
     fs::remove_all(dir);
 }

@@ -16,11 +16,13 @@
 #include <boost/test/unit_test.hpp>
 
 #include "granlub/case/case.h"
+#include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/case_setup.h"
 #include "granlub/continuum/command.h"
 #include "granlub/continuum/rheology_fit.h"
 #include "granlub/continuum/simple_shear.h"
 #include "granlub/error.h"
+#include "granlub/particles/bulk_rheology.h"
 #include "granlub/results/file_io.h"
 #include "temp_dir.h"
 
@@ -161,7 +163,7 @@ std::string table_text(const std::vector<Row>& rows, const std::string& format =
 FitResult fit(const std::string& case_text, const std::vector<Row>& rows, std::vector<std::string> free = kFree,
               bool temperature = false) {
     const BulkRows t = parse_bulk_table(table_text(rows), "synthetic.csv");
-    return fit_bulk_rheology(resolve_settings(parse(case_text)), t.answers(), {std::move(free), temperature},
+    return fit_bulk_rheology(resolve_settings(parse(case_text)), t.answers(), {std::move(free), temperature, nullptr, {}},
                              "synthetic.csv");
 }
 
@@ -280,7 +282,7 @@ BOOST_AUTO_TEST_CASE(the_same_table_gives_the_same_bytes) {
     TempDir tmp("fit");
     write_file_atomic(tmp.path / "t.csv", table_text(synthetic(kTruth, 1)));
     const Case c = parse(kStart);
-    FitCommand o{tmp.path / "t.csv", tmp.path / "a.toml", kFree, false};
+    FitCommand o{tmp.path / "t.csv", tmp.path / "a.toml", kFree, false, {}};
     BOOST_TEST(run_fit(c, o) == 0);
     o.out = tmp.path / "b.toml";
     BOOST_TEST(run_fit(c, o) == 0);
@@ -331,8 +333,8 @@ BOOST_AUTO_TEST_CASE(a_free_key_outside_the_cases_branches_is_refused_naming_the
     const std::string kinetic = kinetic_only(kCase);
     BOOST_TEST(case_error([&] { fit(kinetic, synthetic(kTruth, 0), {"contact_friction"}); }) ==
                "continuum-fit --free contact_friction: a constant of contact_stress = \"johnson_jackson\", which this "
-               "case does not choose (allowed in this case: correlation_constant, max_solid_fraction; or choose the "
-               "branch in [continuum] and set its constants as the fit's start)");
+               "case does not choose (allowed in this case: correlation_constant, max_solid_fraction, slip_dissipation, r5; "
+               "or choose the branch in [continuum] and set its constants as the fit's start)");
     BOOST_TEST(case_error([&] { fit(kCase, synthetic(kTruth, 0), {"viscosity_alpha"}); })
                    .starts_with("continuum-fit --free viscosity_alpha: not a constant a fit can free (allowed in this "
                                 "case: correlation_constant, contact_coefficient,"));
@@ -354,7 +356,7 @@ BOOST_AUTO_TEST_CASE(a_zero_error_cannot_weight_the_fit) {
     t.replace(t.find(needle), needle.size(), ",0,");
     const BulkRows rows = parse_bulk_table(t, "z.csv");
     BOOST_TEST(case_error([&] {
-                   fit_bulk_rheology(resolve_settings(parse(kCase)), rows.answers(), {kFree, false}, "z.csv");
+                   fit_bulk_rheology(resolve_settings(parse(kCase)), rows.answers(), {kFree, false, nullptr, {}}, "z.csv");
                }).starts_with("z.csv:4: point I0.001_P2250: mu_err = 0 cannot weight a fit"));
 }
 
@@ -363,14 +365,166 @@ BOOST_AUTO_TEST_CASE(the_command_refuses_other_tables_naming_them) {
     TempDir tmp("fit");
     const Case c = parse(kCase);
     write_file_atomic(tmp.path / "v2.csv", table_text(synthetic(kTruth, 0), "granlub-bulk-rheology 2"));
-    BOOST_TEST(case_error([&] { run_fit(c, {tmp.path / "v2.csv", tmp.path / "o.toml", kFree, false}); })
+    BOOST_TEST(case_error([&] { run_fit(c, {tmp.path / "v2.csv", tmp.path / "o.toml", kFree, false, {}}); })
                    .find("v2.csv:1: a table of format 'granlub-bulk-rheology 2'") != std::string::npos);
     std::string t = table_text(synthetic(kTruth, 0));
     t.replace(t.find(",nu_err,"), 8, ",nu_stderr,");
     write_file_atomic(tmp.path / "cols.csv", t);
-    BOOST_TEST(case_error([&] { run_fit(c, {tmp.path / "cols.csv", tmp.path / "o.toml", kFree, false}); })
+    BOOST_TEST(case_error([&] { run_fit(c, {tmp.path / "cols.csv", tmp.path / "o.toml", kFree, false, {}}); })
                    .find("cols.csv: no column 'nu_err'") != std::string::npos);
     BOOST_TEST(!fs::exists(tmp.path / "o.toml"));
-    BOOST_TEST(case_error([&] { run_fit(c, {tmp.path / "none.csv", tmp.path / "o.toml", kFree, false}); })
+    BOOST_TEST(case_error([&] { run_fit(c, {tmp.path / "none.csv", tmp.path / "o.toml", kFree, false, {}}); })
                    .find("none.csv: cannot be read") != std::string::npos);
+}
+
+// ---- The wall constant slip_dissipation (f_t), fitted on the walls' columns against the bulk case's 1-D solve ----
+
+namespace {
+
+// cases/bulk_shear's cell (bumps of the grains' size, periodic width, no gravity, the load on the top) at two speeds
+// and its two loads, with the rough cases' kinetic closures, the gap under the load, the wall at the bumps' tops;
+// f_t = 0.2 is the fit's start; 100 cells (the least allowed) keep the tests fast.
+const std::string kBulk = with(kinetic_only(kCase),
+                               {{"roughness = 0.5\n", "roughness = 0.5\nfriction = 0.5\nsurface = \"bumps\"\n"},
+                                {"length = 15.74e-3\n", "length = 15.74e-3\nwidth = 0.0\n"},
+                                {"[operating]", "[particles]\nperiodic_depth = 7.87e-3\n[operating]"},
+                                {"speed = 1.0", "speed = [3.0, 9.0]"},
+                                {"normal_stress = [2250.0, 5550.0]",
+                                 "normal_stress = [2250.0, 5550.0]\nsolid_fraction = 0.57\n[body_forces]\ngravity = 0.0"},
+                                {"correlation_constant = 0.44", "correlation_constant = 0.44\ngap = \"inventory\"\n"
+                                                                "wall_plane = \"bump_tops\"\nslip_dissipation = 0.2\ncells = 100"}});
+const std::string kWallTruth = with(kBulk, {{"slip_dissipation = 0.2", "slip_dissipation = 0.5"}});
+constexpr double kWallRelErr = 0.01;
+
+// The table made by the continuum itself from `truth`: per point of the bulk case its 1-D solve, read as the
+// reducer reads the DEM (the slips over U; T/U^2 within 2 d of the bump tops, near_wall_temperature), errors 1 %;
+// the core's columns the closures' homogeneous shear at the solve's mid-gap I.
+std::string wall_table(const std::string& truth, const std::string& bulk_file = "bulk.toml") {
+    const Case c = parse(truth);
+    const Settings s = resolve_settings(c);
+    std::string t = fmt::format("# format granlub-bulk-rheology 1\n# case bulk_test ({})\n", bulk_file);
+    t += "point,speed_m_s,load_Pa,status,core_dt_check,pressure_Pa,pressure_err,I,I_err,mu,mu_err,nu,nu_err,T_scaled,"
+         "T_scaled_err";
+    for (const char* w : kWallColumns) t += fmt::format(",{}", w);
+    t += "\n";
+    for (const OperatingPoint& p : c.points) {
+        const PointResult r = solve_point(c, p, s);
+        const auto& o = r.summary.outputs;
+        const NearWallTemperature nw = near_wall_temperature(r.profile, o.at("gap").value, c.grains.diameter,
+                                                             bump_protrusion(c, p.bottom), bump_protrusion(c, p.top),
+                                                             BandMean::Interpolated);
+        const double I = o.at("inertial_number").value;
+        const SimpleShear h = simple_shear_at_inertial(*s.closures, I);
+        t += fmt::format("{},{},{},steady,converged,{},{},{:.9g},{:.9g},{:.9g},{},{:.9g},{},{:.9g},{:.9g}", p.id, p.speed,
+                         p.normal_stress, p.normal_stress, 0.01 * p.normal_stress, I, 0.01 * I, h.stress_ratio, kMuErr,
+                         h.nu, kNuErr, h.temperature, kTRelErr * h.temperature);
+        for (double v : {o.at("slip_bottom").value / p.speed, o.at("slip_top").value / p.speed, nw.bottom.value,
+                         nw.top.value})
+            t += fmt::format(",{:.12g},{:.12g}", v, kWallRelErr * v);
+        t += "\n";
+    }
+    return t;
+}
+
+FitResult wall_fit(const std::string& case_text, const std::string& table, std::vector<std::string> free,
+                   const Case* bulk) {
+    const BulkRows t = parse_bulk_table(table, "walls.csv");
+    FitOptions o{std::move(free), false, bulk, t.missing_wall_columns};
+    return fit_bulk_rheology(resolve_settings(parse(case_text)), t.answers(), o, "walls.csv");
+}
+
+}  // namespace
+
+// From the continuum's own walls at f_t = 0.5 the fit started at 0.2 gives back 0.5 (chi2 ~ 0): the slips and the
+// near-wall T depend on f_t, and the fit's model is the solve the table was made with, through Settings and trial.
+BOOST_AUTO_TEST_CASE(a_wall_fit_gives_back_the_slip_dissipation_of_the_continuums_own_walls) {
+    const Case fitted = parse(kBulk), bulk = bulk_case_for(parse(kBulk), fitted);
+    const FitResult r = wall_fit(kBulk, wall_table(kWallTruth), {"slip_dissipation"}, &bulk);
+    BOOST_TEST_MESSAGE(fit_report(r));
+    BOOST_TEST(r.walls);
+    BOOST_TEST(!r.core);
+    BOOST_TEST(r.constants[0].start == 0.2);
+    BOOST_TEST(std::abs(r.constants[0].value - 0.5) < 1e-3);
+    BOOST_TEST(r.constants[0].error > 0.0);
+    BOOST_TEST(r.chi2 < 1e-4);
+    BOOST_TEST(r.dof == 4u * 4u - 1u);
+    BOOST_TEST(fit_report(r).find("slip_b/U table") != std::string::npos);
+    BOOST_TEST(fit_fragment(r, {}).find("slip_dissipation = 0.5") != std::string::npos, fit_fragment(r, {}));
+    // the case's default f_t = 0 (on its range's edge) starts mid-range and gets there too
+    const std::string zero = with(kBulk, {{"slip_dissipation = 0.2", ""}});
+    const FitResult z = wall_fit(zero, wall_table(kWallTruth), {"slip_dissipation"}, &bulk);
+    BOOST_TEST(z.constants[0].moved_inside);
+    BOOST_TEST(std::abs(z.constants[0].value - 0.5) < 1e-3);
+}
+
+// R5 (one value at both walls) with f_t: from the continuum's walls at R5 = 0.4, f_t = 0.5, started at the walls'
+// roughness 0.5 and f_t = 0.2; a case that sets the walls' R5 apart is refused.
+BOOST_AUTO_TEST_CASE(a_wall_fit_gives_back_r5_and_the_slip_dissipation) {
+    const Case fitted = parse(kBulk), bulk = bulk_case_for(parse(kBulk), fitted);
+    const std::string truth = with(kWallTruth, {{"slip_dissipation = 0.5", "slip_dissipation = 0.5\nr5 = 0.4"}});
+    const FitResult r = wall_fit(kBulk, wall_table(truth), {"r5", "slip_dissipation"}, &bulk);
+    BOOST_TEST_MESSAGE(fit_report(r));
+    BOOST_TEST(r.constants[0].start == 0.5);
+    BOOST_TEST(std::abs(r.constants[0].value - 0.4) < 1e-3);
+    BOOST_TEST(std::abs(r.constants[1].value - 0.5) < 1e-3);
+    BOOST_TEST(fit_fragment(r, {}).find("\nr5 = 0.4") != std::string::npos, fit_fragment(r, {}));
+    const std::string apart = with(kBulk, {{"slip_dissipation = 0.2", "slip_dissipation = 0.2\nr5_top = 0.3"}});
+    const Case fitted_apart = parse(apart), bulk_apart = bulk_case_for(parse(kBulk), fitted_apart);
+    BOOST_TEST(case_error([&] { wall_fit(apart, wall_table(truth), {"r5"}, &bulk_apart); })
+                   .starts_with("continuum-fit --free r5: the case sets r5_top"));
+}
+
+// Jointly with a closure constant: nu_max and f_t from one table, the core's rows and the walls' together.
+BOOST_AUTO_TEST_CASE(a_joint_fit_gives_back_a_closure_constant_and_the_slip_dissipation) {
+    const std::string start = with(kBulk, {{"max_solid_fraction = 0.587", "max_solid_fraction = 0.6"}});
+    const Case fitted = parse(start), bulk = bulk_case_for(parse(kBulk), fitted);
+    const FitResult r = wall_fit(start, wall_table(kWallTruth), {"max_solid_fraction", "slip_dissipation"}, &bulk);
+    BOOST_TEST_MESSAGE(fit_report(r));
+    BOOST_TEST(r.core);
+    BOOST_TEST(r.walls);
+    BOOST_TEST(r.constants[0].value == 0.587, boost::test_tools::tolerance(1e-4));
+    BOOST_TEST(std::abs(r.constants[1].value - 0.5) < 1e-3);
+    BOOST_TEST(r.dof == 4u * (2u + 4u) - 2u);
+}
+
+// The command takes the bulk case from the table's provenance line and writes f_t into the fragment.
+BOOST_AUTO_TEST_CASE(the_command_fits_the_walls_of_the_bulk_case_the_table_names) {
+    TempDir tmp("wallfit");
+    write_file_atomic(tmp.path / "bulk.toml", kBulk);
+    write_file_atomic(tmp.path / "t.csv", wall_table(kWallTruth, (tmp.path / "bulk.toml").string()));
+    const Case c = parse(kBulk);
+    BOOST_TEST(run_fit(c, {tmp.path / "t.csv", tmp.path / "a.toml", {"slip_dissipation"}, false, {}}) == 0);
+    const std::string a = read_file(tmp.path / "a.toml");
+    BOOST_TEST(a.find("[continuum]\nslip_dissipation = 0.5") != std::string::npos, a);
+    BOOST_TEST(a.find("the walls' slips and near-wall T of the bulk case") != std::string::npos, a);
+    // --bulk-case naming a case without the table's points
+    write_file_atomic(tmp.path / "other.toml", with(kBulk, {{"speed = [3.0, 9.0]", "speed = [1.0]"}}));
+    BOOST_TEST(case_error([&] {
+                   run_fit(c, {tmp.path / "t.csv", tmp.path / "b.toml", {"slip_dissipation"}, false,
+                               tmp.path / "other.toml"});
+               }).find("point U3.0_P2250: the bulk case") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_wall_fit_is_refused_where_it_would_mean_nothing) {
+    const Case fitted = parse(kBulk), bulk = bulk_case_for(parse(kBulk), fitted);
+    // a table written before the walls' columns: named
+    BOOST_TEST(case_error([&] { wall_fit(kBulk, table_text(synthetic(kTruth, 0)), {"slip_dissipation"}, &bulk); })
+                   .starts_with("walls.csv: no column(s) slip_bottom_over_U, slip_bottom_err, slip_top_over_U, "
+                                "slip_top_err, T_wall_bottom_over_U2, T_wall_bottom_err, T_wall_top_over_U2, "
+                                "T_wall_top_err: --free slip_dissipation fits the walls' slips and near-wall T"));
+    // no bulk case
+    BOOST_TEST(case_error([&] { wall_fit(kBulk, wall_table(kWallTruth), {"slip_dissipation"}, nullptr); })
+                   .find("no bulk case was given (allowed: --bulk-case DIR)") != std::string::npos);
+    // R7 = 0 at both walls: f_t acts on nothing
+    const std::string r7 = with(kBulk, {{"slip_dissipation = 0.2", "slip_dissipation = 0.2\nr7 = 0.0"}});
+    const Case fitted7 = parse(r7), bulk7 = bulk_case_for(parse(kBulk), fitted7);
+    BOOST_TEST(case_error([&] { wall_fit(r7, wall_table(kWallTruth), {"slip_dissipation"}, &bulk7); })
+                   .find("R7 = 0 at both walls of the bulk case") != std::string::npos);
+    // an answer whose wall error is zero cannot weight the fit
+    std::string t = wall_table(kWallTruth);
+    const auto row = t.find("U3.0_P2250");
+    const auto cell = t.rfind(',', t.find('\n', row));  // T_wall_top_err of that row
+    t.replace(cell + 1, t.find('\n', row) - cell - 1, "0");
+    BOOST_TEST(case_error([&] { wall_fit(kBulk, t, {"slip_dissipation"}, &bulk); })
+                   .find("point U3.0_P2250: T_wall_top = ") != std::string::npos);
 }

@@ -1,6 +1,7 @@
 // The core's rheology of a wide plane-shear cell (bulk_rheology.h).
 #include "granlub/particles/bulk_rheology.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -88,7 +89,56 @@ double half_slope(const CoreStations& c, std::size_t lo, std::size_t hi) {
     return fit_line(part(c.y), part(c.u), part(c.ue)).slope;
 }
 
+// the value at x of the straight lines through the points (x_i, v_i), x ascending; held beyond the ends
+double line_at(const std::vector<double>& x, const std::vector<double>& v, double at) {
+    if (at <= x.front()) return v.front();
+    if (at >= x.back()) return v.back();
+    const std::size_t k = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin());
+    const double w = (at - x[k - 1]) / (x[k] - x[k - 1]);
+    return v[k - 1] + w * (v[k] - v[k - 1]);
+}
+
+// the mean over [from, to] of the straight lines through the points (exact: trapezoids between the breakpoints)
+double line_mean(const std::vector<double>& x, const std::vector<double>& v, double from, double to) {
+    std::vector<double> at = {from};
+    for (double xi : x)
+        if (xi > from && xi < to) at.push_back(xi);
+    at.push_back(to);
+    double sum = 0;
+    for (std::size_t k = 1; k < at.size(); ++k)
+        sum += 0.5 * (line_at(x, v, at[k - 1]) + line_at(x, v, at[k])) * (at[k] - at[k - 1]);
+    return sum / (to - from);
+}
+
+// mean of the values over [from, to] in y/H, and of their errors (0 without an error column)
+Measured band_mean(const Profile& p, const char* column, double from, double to, BandMean how, std::size_t& n) {
+    const auto& y = p.column("y_over_H");
+    const auto& v = p.column(column);
+    const std::string err = std::string(column) + "_stderr";
+    const std::vector<double> no_error(y.size(), 0.0);
+    const std::vector<double>& e = p.has(err) ? p.column(err) : no_error;
+    std::vector<double> vs, es;
+    for (std::size_t i = 0; i < y.size(); ++i)
+        if (y[i] >= from && y[i] <= to) vs.push_back(v[i]), es.push_back(e[i]);
+    n = vs.size();
+    if (vs.empty())
+        throw Error(fmt::format("near-wall {}: no profile station lies in y/H [{:.4f}, {:.4f}]: raise [dem] stations",
+                                column, from, to));
+    if (how == BandMean::Interpolated) return {line_mean(y, v, from, to), line_mean(y, e, from, to)};
+    return station_mean(vs, es);
+}
+
 }  // namespace
+
+NearWallTemperature near_wall_temperature(const Profile& p, double gap, double diameter, double protrusion_bottom,
+                                          double protrusion_top, BandMean how) {
+    NearWallTemperature t;
+    const double band = kNearWallBand * diameter / gap;
+    const double floor = protrusion_bottom / gap, top = 1.0 - protrusion_top / gap;
+    t.bottom = band_mean(p, "temperature_over_U2", floor, floor + band, how, t.stations_bottom);
+    t.top = band_mean(p, "temperature_over_U2", top - band, top, how, t.stations_top);
+    return t;
+}
 
 CoreRheology core_rheology(const CoreRun& run, double diameter, double density) {
     if (!run.profile) throw Error("core rheology: no profile");
@@ -128,6 +178,12 @@ CoreRheology core_rheology(const CoreRun& run, double diameter, double density) 
     r.temperature_scaled = {Ts, Ts * std::hypot(T.error / T.value, 2.0 * r.shear_rate.error / r.shear_rate.value)};
     r.coordination_core = run.z_core.has_value();
     r.coordination = run.z_core ? run.z_core : run.z_bulk;
+    if (run.slip_bottom && run.slip_top) {
+        const NearWallTemperature nw =
+            near_wall_temperature(*run.profile, run.gap, diameter, run.protrusion_bottom, run.protrusion_top);
+        const auto over_U = [&](const Measured& m) { return Measured{m.value / run.speed, m.error / run.speed}; };
+        r.walls = WallLayers{over_U(*run.slip_bottom), over_U(*run.slip_top), nw.bottom, nw.top};
+    }
     return r;
 }
 

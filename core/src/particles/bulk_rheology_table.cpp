@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "granlub/case/wall_bumps.h"
 #include "granlub/error.h"
 #include "granlub/particles/bulk_rheology.h"
 #include "granlub/results/results.h"
@@ -41,9 +42,15 @@ std::optional<Measured> flow_number(const nlohmann::json& fr, const std::string&
     return Measured{fr.at(name).get<double>(), fr.contains(e) && fr.at(e).is_number() ? fr.at(e).get<double>() : 0.0};
 }
 
+// the bumps' protrusion at each wall of a point (bump_protrusion, wall_bumps.h: the continuum's too)
+struct Protrusion {
+    double bottom = 0, top = 0;
+};
+
 CoreRun core_run(const Profile& profile, double U, const std::map<std::string, Scalar>& outs,
-                 const nlohmann::json& flow_regime, double case_gap, const std::string& source) {
+                 const nlohmann::json& flow_regime, double case_gap, const Protrusion& bumps, const std::string& source) {
     CoreRun r;
+    r.protrusion_bottom = bumps.bottom, r.protrusion_top = bumps.top;
     r.profile = &profile;
     r.speed = U;
     r.gap = outs.count("gap") ? outs.at("gap").value : case_gap;  // under load the mean plate gap
@@ -53,6 +60,8 @@ CoreRun core_run(const Profile& profile, double U, const std::map<std::string, S
     r.shear_top = output(outs, "shear_stress_top", source);
     r.z_core = flow_number(flow_regime, "coordination_number_core");
     r.z_bulk = flow_number(flow_regime, "coordination_number");
+    if (outs.count("slip_bottom") && outs.count("slip_top"))
+        r.slip_bottom = output(outs, "slip_bottom", source), r.slip_top = output(outs, "slip_top", source);
     return r;
 }
 
@@ -104,7 +113,9 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
         const std::string src = (dir / "summary.json").string();
         const nlohmann::json no_record = nlohmann::json::object();
         const auto& fr = s.run.contains("flow_regime") ? s.run.at("flow_regime") : no_record;
-        const CoreRheology a = core_rheology(core_run(*res.profile, p.speed, s.outputs, fr, c.cell.gap, src), d, rho);
+        const Protrusion bumps{bump_protrusion(c, p.bottom), bump_protrusion(c, p.top)};
+        const CoreRheology a =
+            core_rheology(core_run(*res.profile, p.speed, s.outputs, fr, c.cell.gap, bumps, src), d, rho);
         // the run the answer was checked against, reduced the same way
         std::optional<CoreRheology> b;
         double check_dt = 0;
@@ -113,7 +124,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
             if (!chk.run) throw Error(fmt::format("{}: run.dt_refinement names no check run", src));
             const Profile cp = read_profile(dir / (chk.second_halving ? kDtHalfProfile : kDtCheckProfile));
             const auto& cfr = chk.run->contains("flow_regime") ? chk.run->at("flow_regime") : no_record;
-            b = core_rheology(core_run(cp, p.speed, record_outputs(*chk.run), cfr, c.cell.gap, src), d, rho);
+            b = core_rheology(core_run(cp, p.speed, record_outputs(*chk.run), cfr, c.cell.gap, bumps, src), d, rho);
             check_dt = chk.run->at("time_step_s").get<double>();
         }
         const auto change = [&](auto field) -> std::optional<double> {
@@ -141,6 +152,11 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
                 ? num(a.coordination->value - b->coordination->value)
                 : std::string(),
             a.coordination ? (a.coordination_core ? "core" : "bulk") : "none"};
+        if (a.walls)  // kWallColumns' order
+            for (const Measured& m : {a.walls->slip_bottom, a.walls->slip_top, a.walls->T_bottom, a.walls->T_top})
+                v.push_back(num(m.value)), v.push_back(num(m.error));
+        else
+            v.insert(v.end(), std::size(kWallColumns), std::string());
         rows += fmt::format("{}\n", fmt::join(v, ","));
         ++t.rows;
     }
@@ -149,7 +165,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
     head += fmt::format("# from {}; columns, units and method: cases/bulk_shear/README.md\n",
                         (results_root / solver).string());
     for (const auto& n : t.notes) head += "# " + n + "\n";
-    t.csv = head + fmt::format("{}\n", fmt::join(kColumns, ",")) + rows;
+    t.csv = head + fmt::format("{},{}\n", fmt::join(kColumns, ","), fmt::join(kWallColumns, ",")) + rows;
     return t;
 }
 

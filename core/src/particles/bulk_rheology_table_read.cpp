@@ -129,6 +129,9 @@ BulkRows parse_bulk_table(std::string_view text, const std::string& source) {
     const auto measured = [&](const char* name, const char* err, std::size_t i) {
         return Measured{num(name, i), num(err, i)};
     };
+    for (const char* w : kWallColumns)
+        if (!t.has(w)) out.missing_wall_columns.emplace_back(w);
+    const bool walls = out.missing_wall_columns.empty();
     for (std::size_t i = 0; i < t.rows(); ++i) {
         BulkRow r;
         r.point = t.text("point")[i];
@@ -141,6 +144,13 @@ BulkRows parse_bulk_table(std::string_view text, const std::string& source) {
         r.friction = measured("mu", "mu_err", i);
         r.solid_fraction = measured("nu", "nu_err", i);
         r.temperature_scaled = measured("T_scaled", "T_scaled_err", i);
+        if (t.has("speed_m_s")) r.speed = num("speed_m_s", i);
+        if (walls) {
+            r.slip_bottom = measured("slip_bottom_over_U", "slip_bottom_err", i);
+            r.slip_top = measured("slip_top_over_U", "slip_top_err", i);
+            r.T_wall_bottom = measured("T_wall_bottom_over_U2", "T_wall_bottom_err", i);
+            r.T_wall_top = measured("T_wall_top_over_U2", "T_wall_top_err", i);
+        }
         if (is_answer(r)) check_answer(r, source);
         out.rows.push_back(std::move(r));
     }

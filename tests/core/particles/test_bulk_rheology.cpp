@@ -209,6 +209,9 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
         BOOST_TEST(back.rows[0].core_dt_check == m.at("core_dt_check"));
         BOOST_TEST(back.rows[0].friction.value == std::stod(m.at("mu")));
         BOOST_TEST(back.rows[0].solid_fraction.error == std::stod(m.at("nu_err")));
+        BOOST_TEST(back.missing_wall_columns.empty());
+        BOOST_TEST(back.rows[0].slip_top.value == std::stod(m.at("slip_top_over_U")));
+        BOOST_TEST(back.rows[0].T_wall_bottom.error == std::stod(m.at("T_wall_bottom_err")));
         return m;
     };
     write(0.001);
@@ -227,10 +230,84 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
     BOOST_TEST(std::stod(m.at("Z_dt_change")) == -0.2, tt::tolerance(1e-4));
     BOOST_TEST(m.at("Z_source") == "core");
     BOOST_TEST(m.at("grains") == "1234");
+    BOOST_TEST(std::stod(m.at("slip_bottom_over_U")) == 0.1, tt::tolerance(1e-5));  // 0.1 m/s at U = 1 m/s
+    BOOST_TEST(std::stod(m.at("slip_bottom_err")) == 0.0);
+    BOOST_TEST(std::stod(m.at("T_wall_top_over_U2")) == 4e-4, tt::tolerance(1e-5));  // T/U^2 is 4e-4 everywhere
+    BOOST_TEST(std::stod(m.at("T_wall_top_err")) == 1e-6, tt::tolerance(1e-5));
     write(0.006);  // the check moved nu-bar by more than the rule's 0.005: a labelled row, not an answer
     m = row();
     BOOST_TEST(m.at("status") == "dt-unconverged");
     BOOST_TEST(m.at("dt_check") == "unconverged");
+}
+
+// The walls' layers: the mean T/U^2 over the stations within 2 d of each wall's bump tops (d_w/2 inside the planes),
+// and the slips over U, from a profile whose T steps at known heights: a station outside a band would change the mean.
+BOOST_AUTO_TEST_CASE(the_walls_layers_are_the_stations_within_two_diameters_of_the_bump_tops) {
+    // H = 24 mm = 30.5 d, bumps of diameter d: the floor's band y/H in [0.5 d, 2.5 d]/H = [0.0164, 0.0820], the
+    // top's [0.9180, 0.9836]; T/U^2 = 1e-3 (floor's band), 2e-3 (top's band), 5e-4 elsewhere, with errors 1e-5 /
+    // 3e-5 / 0
+    const double dw = kD, lo = 0.5 * dw / kH, hi = 2.5 * dw / kH;
+    Profile p = synthetic(61, [](double y) { return 0.9 - 0.8 * y; }, 0.58, 5e-4);
+    auto& y = p.columns[0];
+    std::vector<double> T(y.size(), 5e-4), Te(y.size(), 0.0);
+    std::size_t nb = 0, nt = 0;
+    for (std::size_t k = 0; k < y.size(); ++k) {
+        if (y[k] >= lo && y[k] <= hi) T[k] = 1e-3, Te[k] = 1e-5, ++nb;
+        if (y[k] >= 1 - hi && y[k] <= 1 - lo) T[k] = 2e-3, Te[k] = 3e-5, ++nt;
+    }
+    BOOST_REQUIRE(nb == 4u);  // stations 1..4 of 61 (centres 0.0246 .. 0.0738)
+    BOOST_REQUIRE(nt == 4u);
+    Profile q;
+    q.add("y_over_H", y).add("temperature_over_U2", T).add("temperature_over_U2_stderr", Te);
+    const NearWallTemperature w = near_wall_temperature(q, kH, kD, 0.5 * dw, 0.5 * dw);
+    BOOST_TEST(w.stations_bottom == 4u);
+    BOOST_TEST(w.stations_top == 4u);
+    BOOST_TEST(w.bottom.value == 1e-3, tt::tolerance(1e-12));
+    BOOST_TEST(w.bottom.error == 1e-5, tt::tolerance(1e-12));
+    BOOST_TEST(w.top.value == 2e-3, tt::tolerance(1e-12));
+    BOOST_TEST(w.top.error == 3e-5, tt::tolerance(1e-12));
+    // plane walls (no protrusion): the floor's band starts at its plane, [0, 2 d]/H = [0, 0.0656]: stations 0..3,
+    // station 0 (T/U^2 5e-4) in, station 4 (0.0738) out
+    const NearWallTemperature plane = near_wall_temperature(q, kH, kD, 0, 0);
+    BOOST_TEST(plane.stations_bottom == 4u);
+    BOOST_TEST(plane.bottom.value == (5e-4 + 3 * 1e-3) / 4, tt::tolerance(1e-12));
+    // a profile without an error column (the continuum's): errors 0
+    Profile r;
+    r.add("y_over_H", y).add("temperature_over_U2", T);
+    BOOST_TEST(near_wall_temperature(r, kH, kD, 0.5 * dw, 0.5 * dw).top.error == 0.0);
+    // a continuum's nodes: the band's mean of the lines between them. T/U^2 = a + b y/H is linear: the mean is its
+    // value at the band's middle, wherever the nodes lie (here 2 in each band)
+    const std::vector<double> yn = {0, 0.03, 0.06, 0.1, 0.3, 0.5, 0.7, 0.9, 0.94, 0.97, 1.0};
+    std::vector<double> Tn;
+    for (double v : yn) Tn.push_back(1e-3 + 2e-3 * v);
+    Profile lin;
+    lin.add("y_over_H", yn).add("temperature_over_U2", Tn);
+    const NearWallTemperature li = near_wall_temperature(lin, kH, kD, 0.5 * dw, 0.5 * dw, BandMean::Interpolated);
+    BOOST_TEST(li.bottom.value == 1e-3 + 2e-3 * 0.5 * (lo + hi), tt::tolerance(1e-12));
+    BOOST_TEST(li.bottom.error == 0.0);
+    BOOST_TEST(li.top.value == 1e-3 + 2e-3 * (1 - 0.5 * (lo + hi)), tt::tolerance(1e-12));
+    // the stations' mean of the same nodes is not that (it is the mean of the two nodes inside)
+    BOOST_TEST(std::abs(near_wall_temperature(lin, kH, kD, 0.5 * dw, 0.5 * dw).bottom.value - li.bottom.value) > 1e-6);
+    // too coarse a profile for the band: named
+    Profile coarse;
+    coarse.add("y_over_H", {0.25, 0.75}).add("temperature_over_U2", {1e-3, 1e-3});
+    BOOST_CHECK_EXCEPTION(near_wall_temperature(coarse, kH, kD, 0.5 * dw, 0.5 * dw), Error, [](const Error& e) {
+        return std::string(e.what()).find("no profile station lies in y/H [0.0164, 0.0820]") != std::string::npos;
+    });
+    // the reduction: with both slips recorded it gives the layers, over U; without, none
+    p.columns[5] = T, p.columns[6] = Te;  // temperature_over_U2 and its stderr (synthetic()'s column order)
+    CoreRun run = run_of(p);
+    run.protrusion_bottom = run.protrusion_top = 0.5 * dw;
+    BOOST_TEST(!core_rheology(run, kD, kRho).walls.has_value());
+    run.slip_bottom = Measured{0.3, 0.006};
+    run.slip_top = Measured{0.6, 0.003};
+    const CoreRheology c = core_rheology(run, kD, kRho);
+    BOOST_REQUIRE(c.walls.has_value());
+    BOOST_TEST(c.walls->slip_bottom.value == 0.1, tt::tolerance(1e-12));  // 0.3 / U = 3 m/s
+    BOOST_TEST(c.walls->slip_bottom.error == 0.002, tt::tolerance(1e-12));
+    BOOST_TEST(c.walls->slip_top.value == 0.2, tt::tolerance(1e-12));
+    BOOST_TEST(c.walls->T_bottom.value == 1e-3, tt::tolerance(1e-12));
+    BOOST_TEST(c.walls->T_top.error == 3e-5, tt::tolerance(1e-12));
 }
 
 // The core's Delta-t rule: nu by 0.005; mu and I by 7 %, unless within 2 combined standard errors.

@@ -83,6 +83,30 @@ BOOST_AUTO_TEST_CASE(rows_their_values_and_the_answers_by_the_reading_rule) {
     BOOST_TEST(t.rows[2].friction.value == 0.34);
 }
 
+// A table written before the walls' columns reads as before: its wall values NaN, the columns named as missing (the
+// wall fit refuses naming them); with them, every row carries its walls.
+BOOST_AUTO_TEST_CASE(a_table_without_the_walls_columns_reads_and_names_them) {
+    const BulkRows old = parse_bulk_table(kTop + kHeader + kAnswer, "b.csv");
+    BOOST_TEST(old.missing_wall_columns.size() == std::size(kWallColumns));
+    BOOST_TEST(old.missing_wall_columns.front() == "slip_bottom_over_U");
+    BOOST_TEST(std::isnan(old.rows[0].slip_bottom.value));
+    BOOST_TEST(std::isnan(old.rows[0].T_wall_top.error));
+    BOOST_TEST(old.rows[0].speed == 9.0);
+    const auto walls = [](std::string row, const std::string& cells) { return row.insert(row.size() - 1, cells); };
+    const std::string header = walls(kHeader, ",slip_bottom_over_U,slip_bottom_err,slip_top_over_U,slip_top_err,"
+                                              "T_wall_bottom_over_U2,T_wall_bottom_err,T_wall_top_over_U2,T_wall_top_err");
+    const BulkRows t = parse_bulk_table(
+        kTop + header + walls(kAnswer, ",0.122,0.0011,0.111,0.0006,0.00137,2.8e-05,0.00116,1.8e-05") +
+            walls(kTransientUnchecked, ",,,,,,,,"),
+        "b.csv");
+    BOOST_TEST(t.missing_wall_columns.empty());
+    BOOST_TEST(t.rows[0].slip_bottom.value == 0.122);
+    BOOST_TEST(t.rows[0].slip_top.error == 0.0006);
+    BOOST_TEST(t.rows[0].T_wall_bottom.value == 0.00137);
+    BOOST_TEST(t.rows[0].T_wall_top.error == 1.8e-05);
+    BOOST_TEST(std::isnan(t.rows[1].slip_bottom.value));  // empty cells: not available
+}
+
 BOOST_AUTO_TEST_CASE(the_shipped_table_reads_and_its_answers_follow_the_rule) {
     const BulkRows t = read_bulk_table(GRANLUB_SOURCE_DIR "/cases/bulk_shear/bulk_rheology.csv");
     BOOST_TEST(!t.rows.empty());

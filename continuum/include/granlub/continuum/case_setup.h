@@ -2,6 +2,7 @@
 // solution back to the result files (dimensional SI in summary.json, dimensionless profile.csv).
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "granlub/case/bound_keys.h"
@@ -25,6 +26,9 @@ struct Settings {
     std::shared_ptr<const Closures> closures;
     std::shared_ptr<const WallFamily> family;
     double slip_dissipation = 0;  // f_t
+    // continuum-fit's trial R5 at both walls (rheology_fit.h, --free r5); never read from a case: unset, R5 is
+    // [continuum] r5_<side>, r5 or the wall's roughness
+    std::optional<double> r5_fit;
     std::string friction_restitution_name = "none";  // [continuum] friction_restitution
     bool wall_friction_restitution = false;          // [continuum] wall_friction_restitution = "as_grains"
     // [continuum] wall_energy resolved: the convention and where it came from (the key, or the closure family)

@@ -28,6 +28,9 @@ struct FitCommand {
     std::filesystem::path out;        // empty: CASE/continuum_fit.toml
     std::vector<std::string> free;    // empty: the constants of the branches the case chooses
     bool temperature = false;         // fit T/(d gamma_dot)^2 too
+    // with a wall key free (slip_dissipation): the bulk case whose walls the table measured; empty: the case the
+    // table's provenance line names (`# case NAME (PATH), ...`), PATH relative to the working directory
+    std::filesystem::path bulk_case;
 };
 inline constexpr const char* kFitFile = "continuum_fit.toml";
 int run_fit(const Case& c, const FitCommand& o);

@@ -21,6 +21,11 @@ namespace granlub {
 
 inline constexpr double kCoreFrom = 1.0 / 3.0;  // y/H
 inline constexpr double kCoreTo = 2.0 / 3.0;
+// The walls' layers, where the continuum's wall constants are calibrated (continuum-fit --free slip_dissipation):
+// the stations within kNearWallBand grain diameters of each wall's bump tops (d_w/2 inside its plane, as
+// bump_protrusion gives it) [ASSUMPTION: our choice; two diameters hold the layer T falls across toward a bumpy
+// wall in the DEM, and four to five profile stations].
+inline constexpr double kNearWallBand = 2.0;  // grain diameters
 
 // A value with its standard error (0 when not known).
 struct Measured {
@@ -48,6 +53,31 @@ struct CoreRun {
     Measured normal_bottom, normal_top, shear_bottom, shear_top;  // Pa
     std::optional<Measured> z_core;  // the core's coordination number (flow_regime), when recorded
     std::optional<Measured> z_bulk;  // every grain's
+    std::optional<Measured> slip_bottom, slip_top;  // m/s, the summary's slips (results.h), when recorded
+    double protrusion_bottom = 0, protrusion_top = 0;  // m, how far each wall's bumps reach into the gap
+};
+
+// The mean of profile.csv's temperature_over_U2 over the stations whose y/H lies within kNearWallBand diameters
+// above the floor's bump tops and below the top's, on the profile's one y/H scale (kProfileYDefinition: y from
+// the floor's plane, H = gap between the planes). Errors: the mean of the stations' temperature_over_U2_stderr (the
+// fully correlated bound, as the core's means), 0 when the profile has no such column (the continuum's).
+// A particle profile's stations are slabs (each already a mean over its height): the mean of those whose centres lie
+// in the band. A continuum's are the nodes of a solution: the band's mean of the straight lines between them
+// (BandMean::Interpolated), which moves continuously as the solved gap moves the nodes across the band's edges (a
+// fit's finite differences need that; the stations' mean jumps when a node enters the band).
+// Throws Error when a band holds no station.
+enum class BandMean { Stations, Interpolated };
+struct NearWallTemperature {
+    Measured bottom, top;  // T/U^2
+    std::size_t stations_bottom = 0, stations_top = 0;
+};
+NearWallTemperature near_wall_temperature(const Profile& p, double gap, double diameter, double protrusion_bottom,
+                                          double protrusion_top, BandMean how = BandMean::Stations);
+
+// What the walls' layers give the wall constants' fit: the slips over U and the near-wall T over U^2.
+struct WallLayers {
+    Measured slip_bottom, slip_top;  // slip/U, errors from the summary's stderr
+    Measured T_bottom, T_top;        // near_wall_temperature
 };
 
 // The core's rheology. Errors: of a mean over the core's stations, the mean of their standard errors
@@ -68,6 +98,7 @@ struct CoreRheology {
     Measured temperature_scaled;      // T / (d gamma_dot)^2
     std::optional<Measured> coordination;  // Z: the core's, else every grain's; none when not recorded
     bool coordination_core = false;        // whether Z is the core's
+    std::optional<WallLayers> walls;       // when the run recorded both slips
 };
 
 // The time-step rule of the particle pipeline (granlub/results/run_status.h), which judges a point by

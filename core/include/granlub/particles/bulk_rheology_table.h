@@ -4,6 +4,7 @@
 // comment lines) is documented in cases/bulk_shear/README.md, and kBulkTableFormat names it.
 // Its one reader is read_bulk_table (below): what a fit takes from it, and which rows are answers.
 #pragma once
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -17,6 +18,11 @@ namespace granlub {
 
 inline constexpr const char* kBulkTableFormat = "granlub-bulk-rheology 1";
 inline constexpr const char* kBulkTableFile = "bulk_rheology.csv";
+// The walls' columns (WallLayers, bulk_rheology.h), written after the core's; a table written before them has
+// none, and reads the same (its rows' wall values NaN, BulkRows::missing_wall_columns naming them).
+inline constexpr const char* kWallColumns[] = {"slip_bottom_over_U",    "slip_bottom_err",    "slip_top_over_U",
+                                               "slip_top_err",          "T_wall_bottom_over_U2", "T_wall_bottom_err",
+                                               "T_wall_top_over_U2",    "T_wall_top_err"};
 
 struct BulkTable {
     std::string csv;                 // comment lines (format, provenance), header, rows
@@ -36,11 +42,14 @@ struct BulkRow {
     std::string point, status, core_dt_check;
     std::size_t line = 0;         // the row's line in its file, for messages
     double load = 0;              // load_Pa: the imposed normal stress, Pa
+    double speed = NAN;           // speed_m_s: U, m/s (NaN when the table has no such column)
     Measured pressure;            // pressure_Pa, pressure_err: the core's P, Pa
     Measured inertial;            // I, I_err
     Measured friction;            // mu, mu_err
     Measured solid_fraction;      // nu, nu_err
     Measured temperature_scaled;  // T_scaled, T_scaled_err: T/(d gamma_dot)^2
+    // kWallColumns: slip/U at each wall and T/U^2 next to each wall's bump tops; NaN when the table lacks them
+    Measured slip_bottom{NAN, NAN}, slip_top{NAN, NAN}, T_wall_bottom{NAN, NAN}, T_wall_top{NAN, NAN};
 };
 
 // The reading rule (cases/bulk_shear/README.md, "The table"): a row is an answer when its status is `steady`
@@ -51,6 +60,7 @@ struct BulkRows {
     std::string source;                   // the file, as messages name it
     std::vector<std::string> provenance;  // the comment lines after the format line, without '# '
     std::vector<BulkRow> rows;            // every row, in the file's order
+    std::vector<std::string> missing_wall_columns;  // the kWallColumns the table lacks (a table written before them)
     std::vector<BulkRow> answers() const;  // the rows is_answer() takes
 };
 
