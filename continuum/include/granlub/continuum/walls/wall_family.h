@@ -23,13 +23,14 @@ enum class WallEnergy { GklR8, SlipWork };
 // fraction f_t of the R7 term and the energy convention (R8 is read only with GklR8).
 struct WallParams {
     double restitution = 0.9;
-    // e_w in the collisional dissipation (b6) only: < 0 = restitution; with [continuum] wall_friction_restitution
-    // = "as_grains" the wall's friction through the grains' effective restitution (case_setup.cpp)
-    double dissipation_restitution = -1.0;
-    double dissipation_e() const { return dissipation_restitution < 0 ? restitution : dissipation_restitution; }
     double r5 = 0.5, r6 = 0.5, r7 = 0.5, r8 = 0.5;
     double slip_dissipation = 0.0;  // f_t
     WallEnergy energy = WallEnergy::GklR8;
+    // e_w in the collisional dissipation (b6) only: < 0 = restitution; with [continuum] wall_friction_restitution
+    // = "as_grains" the wall's friction through the grains' effective restitution (case_setup.cpp). Last, so that
+    // the positional initialisations above keep their meaning.
+    double dissipation_restitution = -1.0;
+    double dissipation_e() const { return dissipation_restitution < 0 ? restitution : dissipation_restitution; }
 };
 
 struct WallCoefficients {
