@@ -99,12 +99,25 @@ Settings resolve_settings(const Case& c) {
     lp.dufour = sec.boolean("dufour");
     const std::string fr = sec.string("friction_restitution");
     if (fr != "none") lp.dissipation_restitution = closures::e_eff(fr, lp.restitution, c.grains.friction);
-    s.friction_restitution_name = fr;
-    s.wall_friction_restitution = sec.string("wall_friction_restitution") == "as_grains";
-    if (s.wall_friction_restitution && fr == "none")
-        sec.fail("wall_friction_restitution", "\"as_grains\" applies the grains' friction_restitution to the walls, and "
-                                              "friction_restitution = \"none\" (allowed: \"none\", or \"as_grains\" "
-                                              "with friction_restitution = \"jenkins_zhang\" or \"chialvo_sundaresan\")");
+    if (sec.string("wall_friction_restitution") == "as_grains") {
+        if (fr == "none")
+            sec.fail("wall_friction_restitution",
+                     "\"as_grains\" applies the grains' friction_restitution to the walls, and friction_restitution = "
+                     "\"none\" (allowed: \"none\", or \"as_grains\" with friction_restitution = \"jenkins_zhang\" or "
+                     "\"chialvo_sundaresan\")");
+        s.wall_e_eff = fr;
+        // every wall of every point, as the grains' e_eff below: outside [0, 1) it is no restitution
+        for (const OperatingPoint& p : c.points)
+            for (const auto& [w, side] : {std::pair{&p.bottom, "bottom"}, std::pair{&p.top, "top"}}) {
+                const double e = closures::e_eff(fr, w->restitution, w->friction);
+                if (!(e >= 0 && e < 1))
+                    sec.fail("wall_friction_restitution",
+                             fmt::format("as_grains gives the {} wall of point {} e_eff = {:.4f} for its restitution {} "
+                                         "and friction {}; it must lie in [0, 1) (allowed: \"none\", or walls whose "
+                                         "e_eff does)",
+                                         side, p.id, e, w->restitution, w->friction));
+            }
+    }
     if (fr != "none" && !(lp.dissipation_restitution >= 0 && lp.dissipation_restitution < 1))
         sec.fail("friction_restitution", fmt::format("{} gives e_eff = {:.4f} for e_p = {} and [grains] friction = {}; "
                                                      "it must lie in [0, 1)",
@@ -251,8 +264,7 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
         bc.params.restitution = w.restitution;
         // [ASSUMPTION] a wall's impacts lose energy to its friction as the grains' do: the grains' e_eff formula
         // at the wall's restitution and friction, in the dissipation only (as in the bulk)
-        if (s.wall_friction_restitution)
-            bc.params.dissipation_restitution = closures::e_eff(s.friction_restitution_name, w.restitution, w.friction);
+        if (s.wall_e_eff != "none") bc.params.dissipation_restitution = closures::e_eff(s.wall_e_eff, w.restitution, w.friction);
         const double r = wall_roughness(c, s, p, w, side);
         bc.params.r5 = s.r5_fit ? *s.r5_fit : roughness_factor(sec, "r5", side, r);
         // Johnson & Jackson's dissipation carries no specularity: with the slip work whole it is theirs (R6 = 1).
@@ -299,7 +311,7 @@ void record_run(Summary& m, const Settings& s, const RunFacts& f) {
     m.run["method"] = s.method == Method::Shooting ? "shooting" : "fv";
     m.run["g0"] = s.g0_name;
     m.run["wall_model"] = s.wall_name;
-    if (s.wall_friction_restitution) m.run["wall_friction_restitution"] = "as_grains";  // absent: none, as before
+    if (s.wall_e_eff != "none") m.run["wall_friction_restitution"] = "as_grains";  // absent: none, as before
     if (s.contact.active())
         m.run["contact_stress"] = {{"model", "johnson_jackson"}, {"coefficient_Pa", s.contact.coefficient},
                                    {"onset_fraction", s.contact.onset}, {"jamming_fraction", s.contact.jamming},

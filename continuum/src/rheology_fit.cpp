@@ -182,7 +182,7 @@ int gsl_residuals(const gsl_vector* theta, void* params, gsl_vector* f) {
         std::vector<double> th(theta->size);
         for (std::size_t k = 0; k < th.size(); ++k) th[k] = gsl_vector_get(theta, k);
         const FitTrial t = p.trial(th.data());
-        const Settings x = trial_settings(*p.s, t);
+        const std::optional<Settings> x = p.walls ? std::optional(trial_settings(*p.s, t)) : std::nullopt;
         for (std::size_t i = 0; i < p.rows->size(); ++i) {
             double fi[3 + detail::kWallResiduals];
             std::fill(std::begin(fi), std::end(fi), kUnreachable);
@@ -192,7 +192,7 @@ int gsl_residuals(const gsl_vector* theta, void* params, gsl_vector* f) {
                     std::fill(fi, fi + 3, kUnreachable);
                 }
             if (p.walls) try {
-                    detail::wall_residuals(detail::wall_model(*p.bulk, x, *p.points[i]), (*p.rows)[i],
+                    detail::wall_residuals(detail::wall_model(*p.bulk, *x, *p.points[i]), (*p.rows)[i],
                                            fi + p.core_per_row());
                 } catch (const SolverError&) {
                     std::fill(fi + p.core_per_row(), fi + p.per_row(), kUnreachable);

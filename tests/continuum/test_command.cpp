@@ -219,6 +219,18 @@ BOOST_AUTO_TEST_CASE(wall_friction_restitution_takes_the_walls_friction_into_the
     }
     BOOST_TEST(contains(e, "wall_friction_restitution"), e);
     BOOST_TEST(contains(e, "friction_restitution = \"none\""), e);
+    // a wall whose e_eff falls below 0 (e_w = 0.05, mu_w = 0.3: -0.133) is refused, naming the wall and point
+    std::string low = base;
+    low.replace(low.find("[walls]\nrestitution = 0.8"), 25, "[walls]\nrestitution = 0.05");
+    e.clear();
+    try {
+        continuum::resolve_settings(parse(fr + "wall_friction_restitution = \"as_grains\"\n", low));
+    } catch (const CaseError& x) {
+        e = x.what();
+    }
+    BOOST_TEST(contains(e, "wall_friction_restitution"), e);
+    BOOST_TEST(contains(e, "bottom wall of point"), e);
+    BOOST_TEST(contains(e, "[0, 1)"), e);
 }
 
 BOOST_AUTO_TEST_CASE(bad_keys_are_rejected_with_the_key_and_what_is_allowed) {

@@ -29,8 +29,9 @@ struct Settings {
     // continuum-fit's trial R5 at both walls (rheology_fit.h, --free r5); never read from a case: unset, R5 is
     // [continuum] r5_<side>, r5 or the wall's roughness
     std::optional<double> r5_fit;
-    std::string friction_restitution_name = "none";  // [continuum] friction_restitution
-    bool wall_friction_restitution = false;          // [continuum] wall_friction_restitution = "as_grains"
+    // the e_eff formula the walls' dissipation takes ([continuum] wall_friction_restitution = "as_grains": the
+    // grains' friction_restitution); "none": the walls' restitution as declared
+    std::string wall_e_eff = "none";
     // [continuum] wall_energy resolved: the convention and where it came from (the key, or the closure family)
     WallEnergy wall_energy = WallEnergy::GklR8;
     std::string wall_energy_source;
