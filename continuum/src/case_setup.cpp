@@ -8,6 +8,7 @@
 
 #include "granlub/case/particle_box.h"
 #include "granlub/case/wall_bumps.h"
+#include "granlub/continuum/walls/flat_wall.h"
 #include "granlub/continuum/closures/effective_restitution.h"
 #include "granlub/continuum/command.h"
 #include "granlub/continuum/cross_section_setup.h"
@@ -169,10 +170,23 @@ Settings resolve_settings(const Case& c) {
     if (s.wall_at_bump_tops && c.bottom.surface != WallSurface::Bumps && c.top.surface != WallSurface::Bumps)
         sec.fail("wall_plane", "wall_plane = \"bump_tops\" needs bumps on the walls ([walls] surface = \"bumps\"); "
                                "with plane walls allowed: \"bump_centres\"");
-    s.roughness_from_bumps = sec.string("wall_roughness") == "bumps";
-    if (s.roughness_from_bumps && c.bottom.surface != WallSurface::Bumps && c.top.surface != WallSurface::Bumps)
+    const std::string roughness = sec.string("wall_roughness");
+    s.roughness_from_bumps = roughness == "bumps" || roughness == "built";
+    s.plane_walls_from_impact = roughness == "built";
+    if (roughness == "bumps" && c.bottom.surface != WallSurface::Bumps && c.top.surface != WallSurface::Bumps)
         sec.fail("wall_roughness", "wall_roughness = \"bumps\" needs bumps on the walls ([walls] surface = \"bumps\"); "
-                                   "with plane walls allowed: \"declared\"");
+                                   "with plane walls allowed: \"declared\", \"built\"");
+    // The impact law gives family K's factors with the whole slip work returned (walls/flat_wall.h).
+    if (s.plane_walls_from_impact && s.wall_name != "kinetic")
+        sec.fail("wall_roughness", fmt::format("wall_roughness = \"built\" gives a plane wall family K's factors "
+                                               "(Walton's impact law); wall_model = \"{}\" has other terms (allowed "
+                                               "with it: \"declared\", \"bumps\"; or wall_model = \"kinetic\")",
+                                               s.wall_name));
+    if (s.plane_walls_from_impact && s.wall_energy != WallEnergy::SlipWork)
+        sec.fail("wall_roughness", fmt::format("wall_roughness = \"built\": a plane wall's flux into the flow is "
+                                               "slip work minus its impacts' dissipation, but the slip work is "
+                                               "weighted by R8 here ({}); allowed: wall_energy = \"slip_work\"",
+                                               s.wall_energy_source));
     resolve_cross_section_settings(c, s);
     return s;
 }
@@ -233,12 +247,39 @@ std::vector<double> profile_y_over_H(const std::vector<double>& eta, double floo
     return y;
 }
 
+nlohmann::json wall_roughness_record(const Case& c, const Settings& s, const OperatingPoint& p) {
+    nlohmann::json r = {{"source", s.plane_walls_from_impact ? "built" : s.roughness_from_bumps ? "bumps" : "declared"},
+                        {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
+                        {"top", wall_roughness(c, s, p, p.top, "top")}};
+    if (s.plane_walls_from_impact) {
+        const FlatWallFactors f = flat_wall_from_impact_law(p.bottom.restitution);
+        r["plane_walls"] = {{"law", "Walton's impact law, every impact sticking, the grains' spin left out "
+                                    "(docs/continuum-model.md 4.3b)"},
+                            {"beta0", kFlatWallBeta0}, {"r5", f.r5}, {"r6_at_floor_restitution", f.r6},
+                            {"slip_dissipation", f.slip_dissipation}};
+    }
+    return r;
+}
+
 double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side) {
+    if (s.plane_walls_from_impact && w.surface != WallSurface::Bumps)
+        return flat_wall_from_impact_law(w.restitution).r5;  // R5 of its impact law
     if (!s.roughness_from_bumps) return w.roughness;
     // sin(theta) = l/(d_w + d) of the layer the particle solvers build (Jenkins & Richman 1986; wall_bumps.h):
     // the bumps' diameter and spacing give the continuum's R, where the declared R only asked for them.
     const std::optional<BumpLayer> b = wall_bumps(c, p, w, side, particle_box(c));
     return b ? b->roughness : w.roughness;
+}
+
+WallParams plane_wall_params(const Settings& s, const Wall& w) {
+    // Walton's impact law (walls/flat_wall.h) already holds the wall's friction: no e_eff on top of it.
+    const FlatWallFactors f = flat_wall_from_impact_law(w.restitution);
+    WallParams params;
+    params.restitution = w.restitution;
+    params.r5 = f.r5, params.r6 = f.r6, params.r7 = f.r7, params.r8 = f.r8;
+    params.slip_dissipation = f.slip_dissipation;
+    params.energy = s.wall_energy;
+    return params;
 }
 
 Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
@@ -261,18 +302,27 @@ Problem problem_for(const Case& c, const Settings& s, const OperatingPoint& p) {
     const auto wall = [&](const Wall& w, const char* side) {
         WallBC bc;
         bc.family = s.family;
-        bc.params.restitution = w.restitution;
-        // [ASSUMPTION] a wall's impacts lose energy to its friction as the grains' do: the grains' e_eff formula
-        // at the wall's restitution and friction, in the dissipation only (as in the bulk)
-        if (s.wall_e_eff != "none") bc.params.dissipation_restitution = closures::e_eff(s.wall_e_eff, w.restitution, w.friction);
-        const double r = wall_roughness(c, s, p, w, side);
-        bc.params.r5 = s.r5_fit ? *s.r5_fit : roughness_factor(sec, "r5", side, r);
-        // Johnson & Jackson's dissipation carries no specularity: with the slip work whole it is theirs (R6 = 1).
-        const bool r6_is_r = s.wall_energy == WallEnergy::GklR8 || s.family->dissipation_scales_with_roughness();
-        bc.params.r6 = roughness_factor(sec, "r6", side, r6_is_r ? r : 1.0);
-        bc.params.r7 = roughness_factor(sec, "r7", side, r);
-        bc.params.r8 = roughness_factor(sec, "r8", side, r);
-        bc.params.slip_dissipation = s.slip_dissipation;
+        if (s.plane_walls_from_impact && w.surface != WallSurface::Bumps) {
+            bc.params = plane_wall_params(s, w);
+            for (auto [k, v] : {std::pair{"r5", &bc.params.r5}, {"r6", &bc.params.r6}, {"r7", &bc.params.r7},
+                                {"r8", &bc.params.r8}})
+                *v = roughness_factor(sec, k, side, *v);  // an explicit r<k> still overrides
+            if (s.r5_fit) bc.params.r5 = *s.r5_fit;
+        } else {
+            bc.params.restitution = w.restitution;
+            // [ASSUMPTION] a wall's impacts lose energy to its friction as the grains' do: the grains' e_eff formula
+            // at the wall's restitution and friction, in the dissipation only (as in the bulk)
+            if (s.wall_e_eff != "none")
+                bc.params.dissipation_restitution = closures::e_eff(s.wall_e_eff, w.restitution, w.friction);
+            const double r = wall_roughness(c, s, p, w, side);
+            bc.params.r5 = s.r5_fit ? *s.r5_fit : roughness_factor(sec, "r5", side, r);
+            // Johnson & Jackson's dissipation carries no specularity: with the slip work whole it is theirs (R6 = 1).
+            const bool r6_is_r = s.wall_energy == WallEnergy::GklR8 || s.family->dissipation_scales_with_roughness();
+            bc.params.r6 = roughness_factor(sec, "r6", side, r6_is_r ? r : 1.0);
+            bc.params.r7 = roughness_factor(sec, "r7", side, r);
+            bc.params.r8 = roughness_factor(sec, "r8", side, r);
+            bc.params.slip_dissipation = s.slip_dissipation;
+        }
         bc.params.energy = s.wall_energy;
         if (!(bc.params.r5 > 0))
             throw SolverError(fmt::format(
@@ -391,9 +441,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p, const Settings& 
     m.set("stress_ratio", o.tau_bottom, "").set("pi_number", sol.Pi, "");
     m.set("inertial_number", inertial, "");
     if (s.gap_from_inventory) m.set("gap", gap, "m");
-    m.run["wall_roughness"] = {{"source", s.roughness_from_bumps ? "bumps" : "declared"},
-                               {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
-                               {"top", wall_roughness(c, s, p, p.top, "top")}};
+    m.run["wall_roughness"] = wall_roughness_record(c, s, p);
     m.run["lubrication"] = lubrication_record(inertial, sol.nu[ic]);  // I and nu at the same node, mid-gap
     m.run["homogeneous_shear"] = homogeneous_record(*q.closures, inertial, o.tau_top);  // with the contact stress
     const EnergyBudget eb = energy_budget(q, sol);

@@ -67,9 +67,12 @@ CrossSectionProblem cross_section_problem_for(const Case& c, const Settings& s, 
     // plane = smooth frictional planes in the particle solvers, which GKL's roughness-based families cannot tell
     // from a rough plane: the floor's restitution with the roughness as declared, as the plane floor and top of
     // cases/sawyer2001_poly take it [ASSUMPTION]. side_roughness sets R5..R8 of both.
+    // With wall_roughness = "built" plane side walls take their impact law's factors (walls/flat_wall.h).
     const bool as_bottom = c.side_walls == SideWalls::AsBottom;
     WallBC side = x.gap.bottom;
-    if (!as_bottom) {
+    if (!as_bottom && s.plane_walls_from_impact) {
+        side.params = plane_wall_params(s, p.bottom);
+    } else if (!as_bottom) {
         const double r = p.bottom.roughness;
         side.params.r5 = side.params.r6 = side.params.r7 = side.params.r8 = r;
     }
@@ -212,7 +215,9 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
     m.run["cells_y"] = s.cells_y;
     m.run["cells_z"] = s.cells_z;
     m.run["side_walls"] = {{"sides", c.side_walls == SideWalls::AsBottom ? "as_bottom" : "plane"},
-                           {"r5", q.outer.params.r5}, {"restitution", q.outer.params.restitution},
+                           {"r5", q.outer.params.r5}, {"r6", q.outer.params.r6},
+                           {"slip_dissipation", q.outer.params.slip_dissipation},
+                           {"restitution", q.outer.params.restitution},
                            {"width_m", Wc}};
     const double PU = P * U * Hc;  // per unit length: the dimensionless budget is over P U H_c
     nlohmann::json walls = nlohmann::json::object();

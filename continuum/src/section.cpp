@@ -47,9 +47,12 @@ BoundKeys<Settings> declare() {
              "where the continuum meets a bumpy wall ([walls] surface = bumps): the plane through the bumps' "
              "centres, or their tops (the room the bumps leave); gap, mean nu and profile.csv's y/H are reported "
              "between the centres' planes either way");
-    s.choice("wall_roughness", "declared", {"declared", "bumps"},
-             "R5..R8 of a bumpy wall ([walls] surface = bumps): the declared roughness, or sin(theta) = l/(d_w + d) of the "
-             "bumps the particle solvers build from it (their diameter and spacing, whole bumps in the periodic length)");
+    s.choice("wall_roughness", "declared", {"declared", "bumps", "built"},
+             "R5..R8 of the walls: declared = the declared roughness; bumps = on a bumpy wall ([walls] surface = bumps) "
+             "sin(theta) = l/(d_w + d) of the bumps the particle solvers build from it (their diameter and spacing, "
+             "whole bumps in the periodic length); built = that on bumpy walls and, on plane walls (side walls too), "
+             "the factors of their impact law (Walton's, every impact sticking, the grains' spin left out: R5 = R7 = "
+             "2/7, R6 = 1 + (2/7)/(1 - e_w^2), f_t = 1/2; wall_model = kinetic, the slip work returned whole)");
     k.real_optional("ordering_fraction", &Settings::ordering_fraction, Range::closed(0.3, 0.75), "",
                     "crystallization criterion: a solution whose largest nu exceeds it is labelled ordered, not "
                     "drawn as a number; default: no criterion");

@@ -20,7 +20,8 @@ struct Settings {
     std::string g0_name, wall_name, closures_name, correlation_length_name;
     bool gap_from_inventory = false;  // [continuum] gap = "inventory"
     bool wall_at_bump_tops = false;   // [continuum] wall_plane = "bump_tops"
-    bool roughness_from_bumps = false;  // [continuum] wall_roughness = "bumps"
+    bool roughness_from_bumps = false;  // [continuum] wall_roughness = "bumps" or "built"
+    bool plane_walls_from_impact = false;  // [continuum] wall_roughness = "built": plane walls from their impact law
     double ordering_fraction = 0;     // crystallization criterion; 0 = none
     SolverSettings solver;
     std::shared_ptr<const Closures> closures;
@@ -48,9 +49,15 @@ struct Settings {
 const BoundKeys<Settings>& continuum_keys();
 // Throws CaseError naming the key for values the section spec cannot check alone.
 Settings resolve_settings(const Case& c);
-// The roughness R of one wall of a point for R5..R8: the declared one, or with wall_roughness = "bumps" on a
-// bumpy wall sin(theta) = l/(d_w + d) of the bump layer the particle solvers build (wall_bumps.h).
+// The roughness R of one wall of a point for R5..R8: the declared one, or with wall_roughness = "bumps" (or
+// "built") on a bumpy wall sin(theta) = l/(d_w + d) of the bump layer the particle solvers build (wall_bumps.h).
+// A plane wall under "built" takes R5..R8 from its impact law instead (walls/flat_wall.h; plane_wall_params).
 double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side);
+// A plane wall's parameters from its impact law (wall_roughness = "built"; walls/flat_wall.h), before any
+// explicit r<k> key: R5..R8 and f_t of the law, its restitution, no e_eff (the law holds the friction).
+WallParams plane_wall_params(const Settings& s, const Wall& w);
+// run.wall_roughness of a summary: where R5..R8 came from and each wall's R (R5 for a plane under "built").
+nlohmann::json wall_roughness_record(const Case& c, const Settings& s, const OperatingPoint& p);
 // The continuum's nodes, at eta = 0..1 across its own domain of height H_c whose floor lies `floor_offset`
 // above the floor's wall plane (the bumps' protrusion with wall_plane = "bump_tops", else 0), as y/H on the
 // one scale of every profile.csv (kProfileYDefinition, granlub/results/results.h): y from the floor's wall
