@@ -307,11 +307,17 @@ std::string closures_text(const Collection& col, const std::string& model) {
                                          std::pair{"correlation_length", "correlation length"},
                                          std::pair{"contact_stress", "contact stress"},
                                          std::pair{"wall_model", "wall model"},
-                                         std::pair{"wall_friction_restitution", "wall friction restitution"}}) {
+                                         std::pair{"wall_friction_restitution", "wall friction restitution"},
+                                         std::pair{"wall_roughness", "wall roughness"}}) {
             if (!run.contains(key)) continue;
             const auto& v = run[key];
             if (v.is_string()) parts.push_back(fmt::format("{} = {}", label, v.get<std::string>()));
-            else if (v.is_object() && v.contains("model")) parts.push_back(fmt::format("{} = {}", label, v["model"].get<std::string>()));
+            else if (v.is_object())  // a record: named by its model, or (wall_roughness) by where R came from
+                for (const char* name : {"model", "source"})
+                    if (v.contains(name) && v[name].is_string()) {
+                        parts.push_back(fmt::format("{} = {}", label, v[name].get<std::string>()));
+                        break;
+                    }
         }
         if (!parts.empty()) return list_text(parts);
     }
