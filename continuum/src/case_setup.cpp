@@ -176,6 +176,10 @@ Settings resolve_settings(const Case& c) {
     if (roughness == "bumps" && c.bottom.surface != WallSurface::Bumps && c.top.surface != WallSurface::Bumps)
         sec.fail("wall_roughness", "wall_roughness = \"bumps\" needs bumps on the walls ([walls] surface = \"bumps\"); "
                                    "with plane walls allowed: \"declared\", \"built\"");
+    s.flat_wall_contact_slip = sec.string("flat_wall_spin") == "none" ? 1.0 : kFlatWallTorqueBalanceShare;
+    if (!s.plane_walls_from_impact && !sec.is_default("flat_wall_spin"))
+        sec.fail("flat_wall_spin", "flat_wall_spin is the spin of the grains beside a plane wall whose factors come "
+                                   "from its impact law; allowed with wall_roughness = \"built\" only");
     // The impact law gives family K's factors with the whole slip work returned (walls/flat_wall.h).
     if (s.plane_walls_from_impact && s.wall_name != "kinetic")
         sec.fail("wall_roughness", fmt::format("wall_roughness = \"built\" gives a plane wall family K's factors "
@@ -252,9 +256,9 @@ nlohmann::json wall_roughness_record(const Case& c, const Settings& s, const Ope
                         {"bottom", wall_roughness(c, s, p, p.bottom, "bottom")},
                         {"top", wall_roughness(c, s, p, p.top, "top")}};
     if (s.plane_walls_from_impact) {
-        const FlatWallFactors f = flat_wall_from_impact_law(p.bottom.restitution);
-        r["plane_walls"] = {{"law", "Walton's impact law, every impact sticking, the grains' spin left out "
-                                    "(docs/continuum-model.md 4.3b)"},
+        const FlatWallFactors f = flat_wall_from_impact_law(p.bottom.restitution, s.flat_wall_contact_slip);
+        r["plane_walls"] = {{"law", "Walton's impact law, every impact sticking (docs/continuum-model.md 4.3b)"},
+                            {"contact_slip_share", s.flat_wall_contact_slip},
                             {"beta0", kFlatWallBeta0}, {"r5", f.r5}, {"r6_at_floor_restitution", f.r6},
                             {"slip_dissipation", f.slip_dissipation}};
     }
@@ -263,7 +267,7 @@ nlohmann::json wall_roughness_record(const Case& c, const Settings& s, const Ope
 
 double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side) {
     if (s.plane_walls_from_impact && w.surface != WallSurface::Bumps)
-        return flat_wall_from_impact_law(w.restitution).r5;  // R5 of its impact law
+        return flat_wall_from_impact_law(w.restitution, s.flat_wall_contact_slip).r5;  // R5 of its impact law
     if (!s.roughness_from_bumps) return w.roughness;
     // sin(theta) = l/(d_w + d) of the layer the particle solvers build (Jenkins & Richman 1986; wall_bumps.h):
     // the bumps' diameter and spacing give the continuum's R, where the declared R only asked for them.
@@ -273,7 +277,7 @@ double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p,
 
 WallParams plane_wall_params(const Settings& s, const Wall& w) {
     // Walton's impact law (walls/flat_wall.h) already holds the wall's friction: no e_eff on top of it.
-    const FlatWallFactors f = flat_wall_from_impact_law(w.restitution);
+    const FlatWallFactors f = flat_wall_from_impact_law(w.restitution, s.flat_wall_contact_slip);
     WallParams params;
     params.restitution = w.restitution;
     params.r5 = f.r5, params.r6 = f.r6, params.r7 = f.r7, params.r8 = f.r8;

@@ -53,6 +53,10 @@ BoundKeys<Settings> declare() {
              "whole bumps in the periodic length); built = that on bumpy walls and, on plane walls (side walls too), "
              "the factors of their impact law (Walton's, every impact sticking, the grains' spin left out: R5 = R7 = "
              "2/7, R6 = 1 + (2/7)/(1 - e_w^2), f_t = 1/2; wall_model = kinetic, the slip work returned whole)");
+    s.choice("flat_wall_spin", "torque_balance", {"torque_balance", "none"},
+             "wall_roughness = built, plane walls: the spin of the grains beside them; torque_balance = their contact "
+             "points slip at half the grains' slip (the torques of the wall's and the upper grains' impacts balance: "
+             "an assumption), none = no spin (the grains' slip in the impact law)");
     k.real_optional("ordering_fraction", &Settings::ordering_fraction, Range::closed(0.3, 0.75), "",
                     "crystallization criterion: a solution whose largest nu exceeds it is labelled ordered, not "
                     "drawn as a number; default: no criterion");

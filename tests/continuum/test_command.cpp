@@ -455,10 +455,11 @@ BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
     }
 }
 
-// wall_roughness = "built" on plane walls: Walton's impact law in its stick limit (walls/flat_wall.h). The
-// solution's wall traction and wall dissipation are the law's, computed here from the solution's own slip and T
-// at each wall: S = (2/7) sqrt(2/pi) P u_s/((1 + e_w) sqrt T) and D = sqrt(2/pi) P/((1 + e_w) sqrt T)
-// [(1 - e_w^2) T + (1/7)(u_s^2 + 2T)]; e_eff is not added (the law holds the friction); plane side walls of
+// wall_roughness = "built" on plane walls: Walton's impact law in its stick limit (walls/flat_wall.h), the
+// contact points slipping at a share phi of the grains' slip u_s (flat_wall_spin: torque_balance 1/2, none 1). The
+// solution's wall traction and wall dissipation are the law's, computed here from the solution's own slip and T at
+// each wall: S = (2/7) sqrt(2/pi) P phi u_s/((1 + e_w) sqrt T) and D = sqrt(2/pi) P/((1 + e_w) sqrt T)
+// [(1 - e_w^2) T + (1/7)((phi u_s)^2 + 2T)]; e_eff is not added (the law holds the friction); plane side walls of
 // the cross-section take the law too; it refuses the walls' families and conventions it does not fit.
 BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     const std::string keys = "[continuum]\nclosures = \"garzo_dufty\"\nwall_roughness = \"built\"\n"
@@ -467,39 +468,43 @@ BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     std::string frictional(kCase);
     frictional.replace(frictional.find("[walls]\n"), 8, "[walls]\nfriction = 0.5\n");
     frictional.replace(frictional.find("[grains]\n"), 9, "[grains]\nfriction = 0.5\n");
-    const Case c = parse(keys, frictional);
-    const continuum::Settings s = continuum::resolve_settings(c);
-    const OperatingPoint& p = c.points.front();
-    const continuum::Problem q = continuum::problem_for(c, s, p);
-    const double e = 0.9;
-    for (const auto* w : {&q.bottom.params, &q.top.params}) {
-        BOOST_TEST(w->r5 == 2.0 / 7.0);
-        BOOST_TEST(w->r7 == 2.0 / 7.0);
-        BOOST_CHECK_CLOSE_FRACTION(w->r6, 1.0 + (2.0 / 7.0) / (1.0 - e * e), 1e-14);
-        BOOST_TEST(w->slip_dissipation == 0.5);
-        BOOST_TEST(w->dissipation_e() == e);  // no e_eff on top of the law
+    const double e = 0.9, P = 5.5e3, c0 = std::sqrt(2.0 / std::numbers::pi);
+    double tau_spin = 0, tau_none = 0;
+    for (const auto& [spin, phi] : {std::pair{"", 0.5}, {"flat_wall_spin = \"none\"\n", 1.0}}) {
+        const Case c = parse(keys + spin, frictional);
+        const continuum::Settings s = continuum::resolve_settings(c);
+        const continuum::Problem q = continuum::problem_for(c, s, c.points.front());
+        for (const auto* w : {&q.bottom.params, &q.top.params}) {
+            BOOST_TEST(w->r5 == (2.0 / 7.0) * phi);
+            BOOST_TEST(w->r7 == (2.0 / 7.0) * phi);
+            BOOST_CHECK_CLOSE_FRACTION(w->r6, 1.0 + (2.0 / 7.0) / (1.0 - e * e), 1e-14);
+            BOOST_TEST(w->slip_dissipation == 0.5 * phi);
+            BOOST_TEST(w->dissipation_e() == e);  // no e_eff on top of the law
+        }
+        TempDir tmp;
+        BOOST_TEST(continuum::run(c, into(tmp, "U1.4")) == 0);
+        const Summary m = read_summary(tmp.path / "continuum" / "U1.4" / "summary.json");
+        BOOST_TEST(m.run.at("wall_roughness").at("source") == "built");
+        BOOST_TEST(m.run.at("wall_roughness").at("plane_walls").at("contact_slip_share").get<double>() == phi);
+        double sink = 0;
+        for (const char* side : {"bottom", "top"}) {
+            const double us = m.value(std::string("slip_") + side), T = m.value(std::string("temperature_") + side);
+            const double tau = std::abs(m.value(std::string("shear_stress_") + side)), g = phi * us;
+            BOOST_CHECK_CLOSE_FRACTION(tau, (2.0 / 7.0) * c0 * P * g / ((1 + e) * std::sqrt(T)), 1e-6);
+            sink += c0 * P / ((1 + e) * std::sqrt(T)) * ((1 - e * e) * T + (g * g + 2 * T) / 7.0);
+        }
+        BOOST_CHECK_CLOSE_FRACTION(m.run.at("energy_budget").at("wall_collisional_W_m2").get<double>(), sink, 1e-6);
+        BOOST_TEST(m.run.at("energy_budget").at("wall_unreturned_slip_work_W_m2").get<double>() == 0.0);
+        (phi < 1 ? tau_spin : tau_none) = std::abs(m.value("shear_stress_top"));
     }
-    TempDir tmp;
-    BOOST_TEST(continuum::run(c, into(tmp, "U1.4")) == 0);
-    const Summary m = read_summary(tmp.path / "continuum" / "U1.4" / "summary.json");
-    BOOST_TEST(m.run.at("wall_roughness").at("source") == "built");
-    const double P = 5.5e3, c0 = std::sqrt(2.0 / std::numbers::pi);
-    double sink = 0;
-    for (const char* side : {"bottom", "top"}) {
-        const double us = m.value(std::string("slip_") + side), T = m.value(std::string("temperature_") + side);
-        const double tau = m.value(std::string("shear_stress_") + side);
-        BOOST_CHECK_CLOSE_FRACTION(std::abs(tau), (2.0 / 7.0) * c0 * P * us / ((1 + e) * std::sqrt(T)), 1e-6);
-        sink += c0 * P / ((1 + e) * std::sqrt(T)) * ((1 - e * e) * T + (us * us + 2 * T) / 7.0);
-    }
-    BOOST_CHECK_CLOSE_FRACTION(m.run.at("energy_budget").at("wall_collisional_W_m2").get<double>(), sink, 1e-6);
-    BOOST_TEST(m.run.at("energy_budget").at("wall_unreturned_slip_work_W_m2").get<double>() == 0.0);
+    BOOST_TEST(tau_spin < 0.9 * tau_none);  // rolling grains grip less
 
     std::string trough(frictional);
     trough.replace(trough.find("length = 30.0e-3"), 16, "length = 30.0e-3\nwidth = 19.0e-3");
     const Case x = parse(keys + "geometry = \"cross_section\"\n", trough);
     const auto xq = continuum::cross_section_problem_for(x, continuum::resolve_settings(x), x.points.front());
-    BOOST_TEST(xq.outer.params.r5 == 2.0 / 7.0);
-    BOOST_TEST(xq.inner.params.slip_dissipation == 0.5);
+    BOOST_TEST(xq.outer.params.r5 == 1.0 / 7.0);
+    BOOST_TEST(xq.inner.params.slip_dissipation == 0.25);
 
     std::string err = settings_error("[continuum]\nwall_roughness = \"built\"\n");  // lun84: the R8 convention
     BOOST_TEST(contains(err, "wall_roughness"), err);
@@ -507,6 +512,9 @@ BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     err = settings_error(keys + "wall_model = \"johnson_jackson\"\n", frictional);
     BOOST_TEST(contains(err, "wall_roughness"), err);
     BOOST_TEST(contains(err, "kinetic"), err);
+    err = settings_error("[continuum]\nflat_wall_spin = \"none\"\n");
+    BOOST_TEST(contains(err, "flat_wall_spin"), err);
+    BOOST_TEST(contains(err, "built"), err);
 }
 
 // gap = "inventory": the gap under the load from the grains the particle solvers insert, with the gap

@@ -22,6 +22,7 @@ struct Settings {
     bool wall_at_bump_tops = false;   // [continuum] wall_plane = "bump_tops"
     bool roughness_from_bumps = false;  // [continuum] wall_roughness = "bumps" or "built"
     bool plane_walls_from_impact = false;  // [continuum] wall_roughness = "built": plane walls from their impact law
+    double flat_wall_contact_slip = 0.5;   // [continuum] flat_wall_spin: torque_balance 1/2, none 1 (walls/flat_wall.h)
     double ordering_fraction = 0;     // crystallization criterion; 0 = none
     SolverSettings solver;
     std::shared_ptr<const Closures> closures;

@@ -15,9 +15,16 @@
 //     its slip part (1 - beta0)/2 of the slip work S u_s: R7 = R5 with f_t = (1 - beta0)/2,
 // which is family K's structure (kinetic.cpp) with these factors and the flux into the flow slip work minus D
 // (wall_energy = "slip_work"; R8 weighs nothing there and is set to R5 for the record).
-// What it leaves out, measured (docs/measurements/continuum.md, "Flat frictional walls"): impacts that slide
-// (the cap mu_w J_n, reached where |g| > (7/2) mu_w (1 + e_w) c_n / (1 + beta0)), and the spin of the grains
-// beside the wall, which in the particle runs takes up about half of their slip.
+// The grains' spin ([continuum] flat_wall_spin) [ASSUMPTION, ours]: a grain beside the wall is struck by the wall
+// below and by the grains above; in a steady state the torques of the two sides' tangential impulses balance.
+// Both sides carry the same normal stress and follow the same sticking law (J_t/J_n = (2/7)(1 + beta0) g /
+// ((1 + e) c_n) whatever the pair's masses), so with the grains above at rest relative to it the two contact
+// points slip alike: the wall contact slips at a share phi = 1/2 of the grain's slip u_s ("torque_balance"; the
+// particle runs measure 0.43-0.47). Then g = phi u_s in the law: R5 = R7 = (2/7)(1 + beta0) phi and the wall's
+// share of the slip work dissipated f_t = (1 - beta0) phi / 2 (the upper contacts' loss is the bulk's); the
+// T-part of D (R6) does not depend on it. phi = 1 ("none") is the spin-free law above.
+// What it leaves out (docs/measurements/continuum.md, "Flat frictional walls"): impacts that slide (the cap
+// mu_w J_n, reached where |g| > (7/2) mu_w (1 + e_w) c_n / (1 + beta0)).
 #pragma once
 
 namespace granlub::continuum {
@@ -26,14 +33,18 @@ namespace granlub::continuum {
 // the stick limit; YADE's viscel e_t = 0.01 is near it) [ASSUMPTION: the case's particle settings are not read].
 inline constexpr double kFlatWallBeta0 = 0.0;
 
+// The share of the grains' slip at which their contact points slip on the wall: "torque_balance" (1/2) or "none"
+// (1: no spin).
+inline constexpr double kFlatWallTorqueBalanceShare = 0.5;
+
 struct FlatWallFactors {
     double r5, r6, r7, r8, slip_dissipation;
 };
 
-inline FlatWallFactors flat_wall_from_impact_law(double e_w, double beta0 = kFlatWallBeta0) {
-    const double r5 = (2.0 / 7.0) * (1.0 + beta0);
+inline FlatWallFactors flat_wall_from_impact_law(double e_w, double contact_slip_share, double beta0 = kFlatWallBeta0) {
+    const double r5 = (2.0 / 7.0) * (1.0 + beta0) * contact_slip_share;
     const double r6 = 1.0 + (2.0 / 7.0) * (1.0 - beta0 * beta0) / (1.0 - e_w * e_w);
-    return {r5, r6, r5, r5, 0.5 * (1.0 - beta0)};
+    return {r5, r6, r5, r5, 0.5 * (1.0 - beta0) * contact_slip_share};
 }
 
 }  // namespace granlub::continuum
