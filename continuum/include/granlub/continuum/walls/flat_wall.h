@@ -18,9 +18,12 @@
 // The grains' spin ([continuum] flat_wall_spin) [ASSUMPTION, ours]: a grain beside the wall is struck by the wall
 // below and by the grains above; in a steady state the torques of the two sides' tangential impulses balance.
 // Both sides carry the same normal stress and follow the same sticking law (J_t/J_n = (2/7)(1 + beta0) g /
-// ((1 + e) c_n) whatever the pair's masses), so with the grains above at rest relative to it the two contact
-// points slip alike: the wall contact slips at a share phi = 1/2 of the grain's slip u_s ("torque_balance"; the
-// particle runs measure 0.43-0.47). Then g = phi u_s in the law: R5 = R7 = (2/7)(1 + beta0) phi and the wall's
+// ((1 + e) c_n) whatever the pair's masses), so with the grains above at rest relative to it and the same impact
+// speeds c_n on both sides the two contact points slip alike: the wall contact slips at a share phi = 1/2 of the
+// grain's slip u_s ("torque_balance"). Weighting the upper impacts by the grains' relative normal speed (sqrt 2
+// the wall's) would give phi = 1/(1 + sqrt 2) = 0.41; we take the simpler 1/2. The particle runs measure
+// 0.43-0.47 (on the poly twin, docs/measurements/continuum.md: a check, not a fit). Then g = phi u_s in the law:
+// R5 = R7 = (2/7)(1 + beta0) phi and the wall's
 // share of the slip work dissipated f_t = (1 - beta0) phi / 2 (the upper contacts' loss is the bulk's); the
 // T-part of D (R6) does not depend on it. phi = 1 ("none") is the spin-free law above.
 // What it leaves out (docs/measurements/continuum.md, "Flat frictional walls"): impacts that slide (the cap
