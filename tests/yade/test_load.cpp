@@ -167,6 +167,13 @@ BOOST_AUTO_TEST_CASE(rough_walls_and_a_size_spread, *boost::unit_test::precondit
     BOOST_TEST(mu > mu_smooth, mu << " vs " << mu_smooth);
     // the grains' own sizes went in: the initial file's radii differ
     BOOST_TEST(s.run.at("order").at("q6").is_number());
+    // the wall layer (wall_layer.h) from the driver's final state: the bumps placed where the floor
+    // carried them by its time meet the grains without overlapping them (else not measured)
+    for (const char* side : {"bottom", "top"}) {
+        const auto& l = s.run.at("wall_layer").at(side);
+        BOOST_TEST(!l.contains("not_measured"), side << ": " << l.dump());
+        BOOST_TEST(l.at("bump_contacts").get<std::size_t>() > 0u, side);
+    }
 }
 
 // A weight plate on a rough top (issue 50): the plate and its bumps one rigid body under the load,

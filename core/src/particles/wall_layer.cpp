@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "granlub/statistics/block_average.h"
+
 namespace granlub {
 
 namespace {
@@ -22,22 +24,6 @@ Vec cross(const Vec& a, const Vec& b) {
 
 // d to its nearest periodic image (period 0: not periodic)
 double nearest_image(double d, double period) { return period > 0 ? d - period * std::round(d / period) : d; }
-
-struct MeanError {
-    double mean = 0, stderr_ = 0;
-};
-// over independent samples (wall_layer.h: the contacts); no error for fewer than 2
-MeanError mean_error(const std::vector<double>& v) {
-    MeanError m;
-    if (v.empty()) return m;
-    const auto n = static_cast<double>(v.size());
-    for (double x : v) m.mean += x / n;
-    if (v.size() < 2) return m;
-    double ss = 0;
-    for (double x : v) ss += (x - m.mean) * (x - m.mean);
-    m.stderr_ = std::sqrt(ss / (n - 1) / n);
-    return m;
-}
 
 // The contacts' samples of one wall, over U (wall_layer.h's definitions).
 struct Samples {
@@ -88,8 +74,9 @@ WallLayer wall_layer(const ParticleSet& p, const ParticleBox& box, const WallLay
     }
     r.contacts = s.slip.size();
     if (r.contacts == 0) return r;
-    const MeanError slip = mean_error(s.slip), tangential = mean_error(s.tangential), rolling = mean_error(s.rolling),
-                    cs = mean_error(s.contact);
+    // the contacts as independent samples (wall_layer.h)
+    const BlockEstimate slip = mean_and_stderr(s.slip), tangential = mean_and_stderr(s.tangential),
+                        rolling = mean_and_stderr(s.rolling), cs = mean_and_stderr(s.contact);
     r.slip = slip.mean, r.slip_stderr = slip.stderr_;
     r.tangential_slip = tangential.mean, r.tangential_slip_stderr = tangential.stderr_;
     r.rolling = rolling.mean, r.rolling_stderr = rolling.stderr_;
