@@ -109,6 +109,13 @@ BOOST_AUTO_TEST_CASE(rough_walls_are_built_and_carry_their_share) {
     BOOST_TEST(std::abs(top.value - 1000.0) < 3.0 * top.stderr_.value_or(0) + 10.0, top.value);
     // the grains sit above the bumps' halves: slip is taken clear of them, not in the empty slab
     BOOST_TEST(r.out("slip_bottom") < 0.9);
+    // the wall layer (wall_layer.h): the bumps placed where the floor carried them by the final
+    // state's time meet the grains without overlapping them (else not measured)
+    for (const char* side : {"bottom", "top"}) {
+        const auto& l = r.s.run.at("wall_layer").at(side);
+        BOOST_TEST(!l.contains("not_measured"), side << ": " << l.dump());
+        BOOST_TEST(l.at("bump_contacts").get<std::size_t>() > 10u, side);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_rough_wall_grips_the_bed) {
@@ -120,6 +127,15 @@ BOOST_AUTO_TEST_CASE(a_rough_wall_grips_the_bed) {
     for (const char* wall : {"bottom", "top"})
         BOOST_TEST(rough.mu(wall) > 1.5 * smooth.mu(wall), wall << ": " << rough.mu(wall) << " vs " << smooth.mu(wall));
     BOOST_TEST(rough.slip() < 0.8 * smooth.slip(), rough.slip() << " vs " << smooth.slip());
+    // the grains on a flat wall spin with the shear: part of their slip is rolled, not slid
+    // (wall_layer.h; sawyer2001_poly_periodic measured a share of 0.53-0.60, 2026-12-06)
+    for (const char* wall : {"bottom", "top"}) {
+        const auto& l = smooth.s.run.at("wall_layer").at(wall);
+        BOOST_TEST_MESSAGE(wall << " wall layer: " << l.dump());
+        BOOST_TEST(l.at("grains").get<std::size_t>() > 10u, wall);
+        BOOST_TEST(l.at("rolling_over_U").get<double>() > 0.0, wall);
+        BOOST_TEST(l.at("contact_slip_over_U").get<double>() < l.at("slip_over_U").get<double>(), wall);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_size_spread_breaks_the_crystal) {

@@ -14,6 +14,7 @@
 #include "granlub/error.h"
 #include "granlub/statistics/flow_regime.h"
 #include "granlub/particles/packing_order.h"
+#include "granlub/particles/wall_layer.h"
 
 namespace granlub {
 
@@ -130,6 +131,8 @@ nlohmann::json flow_regime_record(const ParticlePipeline& in, const ParticleReco
 
 // How far a wall's bumps reach from its plane (0 for a plane).
 double protrusion(const std::optional<BumpLayer>* b) { return b && *b ? 0.5 * (*b)->diameter : 0.0; }
+// A wall's bumps, or null for a plane.
+const BumpLayer* bumps_of(const std::optional<BumpLayer>* b) { return b && *b ? &**b : nullptr; }
 
 // run.order and the outputs "layering" and "q6" (packing_order.h): layering from the profile,
 // q6 over the steady snapshots when their positions are recorded.
@@ -241,6 +244,8 @@ ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const Partic
                         {"slip_measured", "wall speed minus the mean velocity of the station next to the wall's "
                                           "plane; on a rough wall, of the first station whose centre is clear of "
                                           "its bumps (half a bump diameter from the plane through their centres)"}};
+    out.run["wall_layer"] = wall_layer_record(rec.final_state, in.box, in.p.speed, bumps_of(in.bumps_bottom),
+                                              bumps_of(in.bumps_top), in.annulus != nullptr);
     return out;
 }
 

@@ -162,12 +162,12 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
         run_piece(paths, c, p, piece, start, from, dir, init.particles.size(),
                   index > 0 ? kContinuedOverlap : kStartOverlap);
         r = reduce_point(c, p, piece, init.box, init.particles.radius, dir, base);
-        const ParticleState end = read_particle_state(dir / "final_raw.csv");
+        const ParticleState end = read_particle_state(dir / kFinalRawFile);
         end_gap = end.gap;
         write_particle_state(dir / kFinalStateFile, end,
                              {fmt::format("final state of granlub yade, case {} point {}", c.name, p.id),
                               "grains after the run, with spins; gap = top wall"});
-        fs::remove(dir / "final_raw.csv");
+        fs::remove(dir / kFinalRawFile);
         wall_s += r.summary.run.value("yade_wall_clock_s", 0.0);
         return PieceRun{r.summary.run.value("steady_state_detected", false),
                         static_cast<double>(piece.steps) * piece.time_step};

@@ -116,6 +116,8 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     rec.snapshots = {(dir / "samples.bin").string(), [&](const SnapshotVisitor& each) {
                          return read_samples(dir / "samples.bin", n, snapshots, snapshot_dt, radius, box, each);
                      }};
+    // the grains with their spins at the end (run.wall_layer), as the driver left them
+    if (fs::exists(dir / kFinalRawFile)) rec.final_state = read_particle_state(dir / kFinalRawFile);
     // contact persistence after the run (flow_regime.h), as granlub dem measures it
     const auto persistence_snapshots = ds.value("persistence_snapshots", std::size_t{0});
     const double persistence_dt = dt * static_cast<double>(s.persistence_every);

@@ -1,6 +1,6 @@
 // The one particle pipeline (particle_pipeline.h) on a hand-made run: what it writes beside the
 // result, the contact measures it takes when positions are recorded (and says so when they are
-// not), and its errors naming the engine's file.
+// not), the wall layer from the final state, and its errors naming the engine's file.
 #include <filesystem>
 #include <string>
 
@@ -10,6 +10,7 @@
 
 #include "granlub/error.h"
 #include "granlub/particles/particle_pipeline.h"
+#include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
 #include "granlub/results/table.h"
 
@@ -121,6 +122,24 @@ BOOST_AUTO_TEST_CASE(contacts_are_measured_when_positions_are_recorded) {
     BOOST_TEST(none.at("coordination_number").is_null());
     BOOST_TEST(none.contains("contacts_not_measured"));
     BOOST_TEST(!none.at("enduring_contacts").get<bool>());
+}
+
+BOOST_AUTO_TEST_CASE(the_wall_layer_is_measured_from_the_final_state_and_kept_in_the_summary) {
+    ParticleRecord rec{.forces = steady_forces(), .snapshots = pair_of_grains(10)};
+    BOOST_TEST(run_particle_pipeline(pipeline(false), rec, dir).run.at("wall_layer").contains("not_measured"));
+    ParticleState end;  // a grain of radius 0.1 m on the floor (U = 2 m/s) at 1.4 m/s, half its lag rolled back
+    end.gap = 1.0, end.time = 0.4;
+    end.particles.push_back(0.5, 0.1, 0, 1.4, 0, 0, 0.1);
+    end.particles.wx = {0.0}, end.particles.wy = {0.0}, end.particles.wz = {3.0};
+    rec.final_state = end;
+    Summary s;
+    s.solver = "dem", s.case_name = c.name, s.point = p.id;
+    ParticleReduction r = run_particle_pipeline(pipeline(false), rec, dir);
+    s.outputs = r.outputs, s.run = r.run;
+    const nlohmann::json bottom = summary_from_json(summary_json(s), "test").run.at("wall_layer").at("bottom");
+    BOOST_TEST(bottom.at("grains").get<std::size_t>() == 1u);
+    BOOST_TEST(std::abs(bottom.at("slip_over_U").get<double>() - 0.3) < 1e-12);
+    BOOST_TEST(std::abs(bottom.at("rolling_share").get<double>() - 0.5) < 1e-12);
 }
 
 BOOST_AUTO_TEST_CASE(errors_name_the_engines_file) {

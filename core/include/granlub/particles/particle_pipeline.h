@@ -7,7 +7,8 @@
 //   -> coarse-graining across the gap and over the cross-section (coarse_grain.h, cross_section.h),
 //      and the contact measures of the steady snapshots (contacts.h)
 //   -> the shared reduction (reduce_particles) -> section.csv and width_profile.csv
-//   -> the flow-regime record (flow_regime.h) in run.flow_regime.
+//   -> the flow-regime record (flow_regime.h) in run.flow_regime
+//   -> from the final state, the wall layer's kinematics (wall_layer.h) in run.wall_layer.
 // A feature of the particle results (a grain or wall property, a measure) is added here, not in
 // the engines.
 #pragma once
@@ -44,6 +45,7 @@ struct ParticleRecord {
     std::optional<PlateSeries> plate = {};   // control = load
     SnapshotReader snapshots = {};       // over the run
     SnapshotReader persistence = {};     // after the run, persistence_every steps apart; empty: none
+    std::optional<ParticleState> final_state = {};  // the grains (with spins) at the end: run.wall_layer
 };
 
 struct ParticlePipeline {
@@ -71,7 +73,8 @@ struct ParticlePipeline {
 
 // Runs the pipeline on the files in `dir`, writes gap.csv (under load), section.csv and
 // width_profile.csv there, and returns the point's profile, outputs and run facts (with
-// run.flow_regime, run.order, run.walls, and for the ring run.geometry and the torque balance).
+// run.flow_regime, run.order, run.walls, run.wall_layer, and for the ring run.geometry and the
+// torque balance).
 // Throws SolverError.
 ParticleReduction run_particle_pipeline(const ParticlePipeline& in, const ParticleRecord& rec,
                                         const std::filesystem::path& dir);

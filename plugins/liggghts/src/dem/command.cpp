@@ -42,9 +42,8 @@ InsertionOptions insertion(const Case& c, const Settings& s) {
     return ins;
 }
 
-// The deck's final dump (and plate position) as a particle state file (core particles.h).
-void write_final_state(const Case& c, const OperatingPoint& p, const Settings& s, const fs::path& dir,
-                       const std::string& prov) {
+// The deck's final dump (and plate position): the grains with their spins at the end.
+ParticleState read_final_state(const Settings& s, const fs::path& dir) {
     ParticleState st;
     double step = 0;
     const std::size_t n = for_each_snapshot(
@@ -52,6 +51,12 @@ void write_final_state(const Case& c, const OperatingPoint& p, const Settings& s
     if (n != 1) throw SolverError(fmt::format("{}: {} snapshots, expected the final one", (dir / kFinalDump).string(), n));
     st.gap = s.load ? read_final_plate(dir / kFinalPlateFile) : s.box.gap;
     st.time = step * s.time_step;
+    return st;
+}
+
+// The final state as a particle state file (core particles.h), in place of the deck's dumps.
+void write_final_state(const Case& c, const OperatingPoint& p, const ParticleState& st, const fs::path& dir,
+                       const std::string& prov) {
     write_particle_state(dir / kFinalState, st,
                          {fmt::format("final state of granlub dem, case {} point {} ({})", c.name, p.id, prov),
                           "grains after the run (and the contact-persistence steps), with spins; gap = top wall"});
@@ -114,6 +119,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     };
     rec.snapshots = dump(kSnapshots);
     rec.persistence = dump(kContactsFile);
+    rec.final_state = read_final_state(s, dir);
     ParticlePipeline pl{.c = c,
                         .p = p,
                         .box = s.box,
@@ -136,7 +142,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     r.out.run["flow_regime"]["persistence_extra_steps"] = s.persistence_run_steps();
     for (const char* f : {kSnapshots, kContactsFile}) fs::remove(dir / f);  // large; the deck regenerates them
     if (s.vtk) write_pvd(dir, s.time_step);
-    write_final_state(c, p, s, dir, prov);
+    write_final_state(c, p, *rec.final_state, dir, prov);
     return r;
 }
 

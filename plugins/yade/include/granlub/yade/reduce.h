@@ -9,6 +9,9 @@
 //                        grains in the order of the initial file (deleted once coarse-grained)
 //   plate.csv            control = load: plate position (m) after each servo window; reduced
 //                        to gap.csv and run.load_control as `granlub dem` (granlub/particles/load_control.h)
+//   final_raw.csv        the grains with their spins at the end (core particles.h's state format):
+//                        run.wall_layer (granlub/particles/wall_layer.h); the command makes it the
+//                        point's final_state.csv
 #pragma once
 #include <filesystem>
 #include <vector>
@@ -20,6 +23,8 @@
 #include "granlub/yade/settings.h"
 
 namespace granlub::yade {
+
+inline constexpr const char* kFinalRawFile = "final_raw.csv";
 
 // wallforce.csv: the forces of the grains on the walls, as the shared reduction takes them (the
 // side-wall columns are always there; reduce_point drops them for a box periodic across z).
