@@ -174,18 +174,12 @@ BOOST_AUTO_TEST_CASE(rough_walls_and_a_size_spread, *boost::unit_test::precondit
     BOOST_TEST(top_layer.at("bump_contacts").get<std::size_t>() > 0u);
 }
 
-// Found 2026-12-06 by the wall layer's check (wall_layer.h): at the end of the rough run above
-// about 30 of its 283 grains rest on the floor's plane (centre a radius above it), where bumps of
-// the grains' size touching in rows leave no room at any phase along the flow; placed where the
-// floor carried them by the state's time (or at any other phase), the floor's bumps overlap the
-// grains by up to a radius. The still top's bumps hold the grains, and granlub dem's moving floor
-// bumps hold every grain (cases' rough results: no grain on the plane). The same run stopped at
-// 0.036 s (U t = 0.072 m, before the driver's housekeeping shifts the floor's bumps back by 10
-// periods, at U t = 10 L = 0.079 m) has no grain on the plane and its floor measured (bumps where
-// U t puts them, overlaps 0.001 a): the shift, not the moving bumps, lets the grains through
-// (YADE's interactions keep their periodic cell offsets, our reading). Expected to fail until fixed.
-BOOST_AUTO_TEST_CASE(the_moving_floors_bumps_hold_the_grains,
-                     *boost::unit_test::precondition(YadeInstalled()) * boost::unit_test::expected_failures(1)) {
+// The moving floor's bumps hold the grains over a run longer than the driver's housekeeping period (U t = 0.16 m
+// here, past 10 periods of the 7.9 mm cell): the wall layer's check finds every floor grain on a bump, none on
+// the plane between them (wall_layer.h). Found 2026-12-06 failing: the housekeeping moved the floor's bumps back
+// by 10 periods, their interactions kept the old periodic offsets, and about 30 of 283 grains fell through to
+// the plane; the bumps now travel unwrapped.
+BOOST_AUTO_TEST_CASE(the_moving_floors_bumps_hold_the_grains, *boost::unit_test::precondition(YadeInstalled())) {
     const auto& [code, dir] = rough_run();
     BOOST_TEST_REQUIRE(code == 0);
     const Summary s = read_summary(dir / "summary.json");
