@@ -22,7 +22,7 @@
 // speeds c_n on both sides the two contact points slip alike: the wall contact slips at a share phi = 1/2 of the
 // grain's slip u_s ("torque_balance"). Weighting the upper impacts by the grains' relative normal speed (sqrt 2
 // the wall's) would give phi = 1/(1 + sqrt 2) = 0.41; we take the simpler 1/2. The particle runs measure
-// 0.43-0.47 (on the poly twin, docs/measurements/continuum.md: a check, not a fit). Then g = phi u_s in the law:
+// 0.40-0.47 (on the poly twin, docs/measurements/continuum.md: a check, not a fit). Then g = phi u_s in the law:
 // R5 = R7 = (2/7)(1 + beta0) phi and the wall's
 // share of the slip work dissipated f_t = (1 - beta0) phi / 2 (the upper contacts' loss is the bulk's); the
 // T-part of D (R6) does not depend on it. phi = 1 ("none") is the spin-free law above.
