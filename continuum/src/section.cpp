@@ -51,8 +51,14 @@ BoundKeys<Settings> declare() {
              "R5..R8 of the walls: declared = the declared roughness; bumps = on a bumpy wall ([walls] surface = bumps) "
              "sin(theta) = l/(d_w + d) of the bumps the particle solvers build from it (their diameter and spacing, "
              "whole bumps in the periodic length); built = that on bumpy walls and, on plane walls (side walls too), "
-             "the factors of their impact law (Walton's, every impact sticking, the grains' spin left out: R5 = R7 = "
-             "2/7, R6 = 1 + (2/7)/(1 - e_w^2), f_t = 1/2; wall_model = kinetic, the slip work returned whole)");
+             "the factors of their impact law (Walton's, the grains' spin left out; in its stick limit R5 = R7 = 2/7, "
+             "R6 = 1 + (2/7)/(1 - e_w^2), f_t = 1/2; whether impacts slide: flat_wall_impacts; wall_model = kinetic, "
+             "the slip work returned whole)");
+    s.choice("flat_wall_impacts", "stick_and_slide", {"stick_and_slide", "stick"},
+             "plane walls under wall_roughness = built: stick_and_slide = Walton's law whole, an impact sliding where "
+             "its tangential impulse would exceed [walls] friction x its normal one (friction > 0 needed): traction "
+             "and dissipation fall below the stick limit's as the slip grows against sqrt(T) (Jenkins 1992); stick = "
+             "every impact sticking (infinite friction): traction linear in the slip");
     k.real_optional("ordering_fraction", &Settings::ordering_fraction, Range::closed(0.3, 0.75), "",
                     "crystallization criterion: a solution whose largest nu exceeds it is labelled ordered, not "
                     "drawn as a number; default: no criterion");
