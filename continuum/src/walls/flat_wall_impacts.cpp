@@ -192,13 +192,13 @@ FlatWallImpacts::Factors FlatWallImpacts::factors(double xi) const {
 }
 
 std::shared_ptr<const FlatWallImpacts> flat_wall_impacts(double e_w, double mu_w, double beta0) {
+    // Kept for the process: a case has a wall law or two (friction is not swept), and its table costs more than a
+    // 1-D point's solve.
     static std::mutex mutex;
-    static std::map<std::tuple<double, double, double>, std::weak_ptr<const FlatWallImpacts>> cache;
+    static std::map<std::tuple<double, double, double>, std::shared_ptr<const FlatWallImpacts>> cache;
     const std::lock_guard<std::mutex> lock(mutex);
-    auto& slot = cache[{e_w, mu_w, beta0}];
-    if (auto law = slot.lock()) return law;
-    auto law = std::make_shared<const FlatWallImpacts>(e_w, mu_w, beta0);
-    slot = law;
+    auto& law = cache[{e_w, mu_w, beta0}];
+    if (!law) law = std::make_shared<const FlatWallImpacts>(e_w, mu_w, beta0);
     return law;
 }
 

@@ -16,8 +16,9 @@
 // which is family K's structure (kinetic.cpp) with these factors and the flux into the flow slip work minus D
 // (wall_energy = "slip_work"; R8 weighs nothing there and is set to R5 for the record).
 // What it leaves out, measured (docs/measurements/continuum.md, "Flat frictional walls"): impacts that slide
-// (the cap mu_w J_n, reached where |g| > (7/2) mu_w (1 + e_w) c_n / (1 + beta0)), and the spin of the grains
-// beside the wall, which in the particle runs takes up about half of their slip.
+// (the cap mu_w J_n, reached where |g| > (7/2) mu_w (1 + e_w) c_n / (1 + beta0): flat_wall_impacts.h, [continuum]
+// flat_wall_impacts = "stick_and_slide", scales these terms to the whole law), and the spin of the grains beside
+// the wall, which in the particle runs takes up about half of their slip.
 #pragma once
 
 namespace granlub::continuum {
