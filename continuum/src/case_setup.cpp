@@ -91,8 +91,9 @@ void resolve_flat_wall_impacts(const Case& c, const Section& sec, Settings& s) {
     s.plane_wall_impacts_slide = sec.string("flat_wall_impacts") == "stick_and_slide";
     if (!s.plane_walls_from_impact) {
         if (!sec.is_default("flat_wall_impacts"))
-            sec.fail("flat_wall_impacts", "flat_wall_impacts chooses the impact law of plane walls under wall_roughness "
-                                          "= \"built\" (allowed: remove it, or wall_roughness = \"built\")");
+            sec.fail("flat_wall_impacts", "flat_wall_impacts chooses the impact law of plane walls under "
+                                          "wall_roughness = \"built\" (allowed: remove it, or wall_roughness = "
+                                          "\"built\")");
         return;
     }
     if (!s.plane_wall_impacts_slide) return;

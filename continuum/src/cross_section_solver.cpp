@@ -407,7 +407,8 @@ private:
     WallVal wall_val(const WallBC& w, const NodeVal& n) const {
         const auto b = wall_coefficients(p_.gap, w, n.nu, n.p);
         return {{b.b5.v, b.b6.v, b.b7.v, b.b8.v, b.xi_per_slip.v},
-                {b.b5.d[0] * n.dnu, b.b6.d[0] * n.dnu, b.b7.d[0] * n.dnu, b.b8.d[0] * n.dnu, b.xi_per_slip.d[0] * n.dnu}};
+                {b.b5.d[0] * n.dnu, b.b6.d[0] * n.dnu, b.b7.d[0] * n.dnu, b.b8.d[0] * n.dnu,
+                 b.xi_per_slip.d[0] * n.dnu}};
     }
 
     template <class S, class Lift>

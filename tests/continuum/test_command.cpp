@@ -459,10 +459,10 @@ BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
 // wall_roughness = "built" on plane walls: Walton's impact law (walls/flat_wall.h, walls/flat_wall_impacts.h). The
 // solution's wall traction and wall dissipation are the law's, computed here from the solution's own slip and T at
 // each wall (xi = u_s/sqrt T): S = sigma(xi) P and D = delta(xi) P sqrt(T), in the stick limit (flat_wall_impacts =
-// "stick", or stick_and_slide at a huge friction) sigma = (2/7) sqrt(2/pi) xi/(1 + e_w) and delta = sqrt(2/pi)/(1 + e_w)
-// [(1 - e_w^2) + (xi^2 + 2)/7], with sliding (the default, friction 0.5) sigma and delta by the law's quadrature;
-// e_eff is not added (the law holds the friction); plane side walls of the cross-section take the law too; it refuses
-// the walls' families, conventions and frictions it does not fit.
+// "stick", or stick_and_slide at a huge friction) sigma = (2/7) sqrt(2/pi) xi/(1 + e_w) and delta =
+// sqrt(2/pi)/(1 + e_w) [(1 - e_w^2) + (xi^2 + 2)/7], with sliding (the default, friction 0.5) sigma and delta by
+// the law's quadrature; e_eff is not added (the law holds the friction); plane side walls of the cross-section take
+// the law too; it refuses the walls' families, conventions and frictions it does not fit.
 BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     const std::string keys = "[continuum]\nclosures = \"garzo_dufty\"\nwall_roughness = \"built\"\n"
                              "friction_restitution = \"chialvo_sundaresan\"\n"
@@ -513,7 +513,8 @@ BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
 
     // impacts that slide (the default) at friction 0.5: less traction for the same slip, so more slip
     const Case slide = parse(keys, frictional);
-    const continuum::Problem qs = continuum::problem_for(slide, continuum::resolve_settings(slide), slide.points.front());
+    const continuum::Problem qs =
+        continuum::problem_for(slide, continuum::resolve_settings(slide), slide.points.front());
     BOOST_TEST(qs.bottom.params.impacts != nullptr);
     BOOST_TEST(qs.bottom.params.impacts->friction() == 0.5);
     BOOST_TEST(qs.bottom.params.impacts == qs.top.params.impacts);

@@ -107,8 +107,9 @@ BOOST_AUTO_TEST_CASE(the_table_agrees_with_the_quadrature) {
 // The reference values of a direct midpoint sum over the same law (mu_w = 0.5, e_w = 0.9, beta0 = 0; 4 digits).
 BOOST_AUTO_TEST_CASE(reference_values) {
     const FlatWallImpacts law(0.9, 0.5, 0.0);
-    for (const auto& [xi, sigma, delta] : {std::tuple{1.0, 0.1118, 0.2526}, {2.0, 0.2148, 0.4169}, {3.0, 0.3023, 0.6770},
-                                           {4.0, 0.3710, 1.0153}, {6.0, 0.4538, 1.8509}, {8.0, 0.4860, 2.7966}}) {
+    for (const auto& [xi, sigma, delta] : {std::tuple{1.0, 0.1118, 0.2526}, {2.0, 0.2148, 0.4169},
+                                           {3.0, 0.3023, 0.6770}, {4.0, 0.3710, 1.0153},
+                                           {6.0, 0.4538, 1.8509}, {8.0, 0.4860, 2.7966}}) {
         BOOST_TEST(std::abs(law.sigma(xi) - sigma) < 1e-4, "xi " << xi << ": sigma " << law.sigma(xi));
         BOOST_TEST(std::abs(law.delta(xi) - delta) < 1e-4, "xi " << xi << ": delta " << law.delta(xi));
     }
@@ -157,8 +158,8 @@ BOOST_AUTO_TEST_CASE(wall_condition_through_xi_has_exact_derivatives) {
         const double coll = (w.r6 * L * b6 + w.r7 * L * Pi * b7 * slip * slip) * f.g;
         BOOST_CHECK_CLOSE_FRACTION(g.dnu, -(coll + Pi * b8 * slip * g.du), 1e-14);
         using D3 = Dual<3>;
-        const auto d = wall_gradients(w, D3(b5), D3(b6), D3(b7), D3(b8), D3::variable(xs, 2), D3::variable(slip, 0), D3(L),
-                                      D3::variable(Pi, 1));
+        const auto d = wall_gradients(w, D3(b5), D3(b6), D3(b7), D3(b8), D3::variable(xs, 2), D3::variable(slip, 0),
+                                      D3(L), D3::variable(Pi, 1));
         const double args[3] = {slip, Pi, xs}, eps = 1e-6;
         for (int k = 0; k < 3; ++k) {
             double a[3] = {args[0], args[1], args[2]}, b[3] = {args[0], args[1], args[2]};

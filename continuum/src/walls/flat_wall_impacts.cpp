@@ -163,7 +163,8 @@ FlatWallImpacts::Moments FlatWallImpacts::asymptote(double xi) const {
     const double c0 = std::sqrt(2.0 / kPi), x2 = xi * xi;
     const double sigma = mu_ * (1.0 - 0.5 / x2 - 0.375 / (x2 * x2));
     const double dsigma = mu_ * (1.0 / (x2 * xi) + 1.5 / (x2 * x2 * xi));
-    const double delta = (1.0 - e_) * c0 + mu_ * (xi + 0.5 / xi + 0.125 / (x2 * xi)) - 3.5 * mu_ * mu_ * (1.0 + e_) * c0;
+    const double delta =
+        (1.0 - e_) * c0 + mu_ * (xi + 0.5 / xi + 0.125 / (x2 * xi)) - 3.5 * mu_ * mu_ * (1.0 + e_) * c0;
     return {sigma / xi, (dsigma * xi - sigma) / x2, delta, sigma};  // d delta/d xi = sigma to this order
 }
 

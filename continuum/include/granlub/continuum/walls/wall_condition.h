@@ -5,15 +5,15 @@
 //   s    the signed slip u^_wall - u^ (dimensionless by U),
 //   du/dn  = -R5 Lambda b5 s                                                  (momentum)
 //   dnu/dn = -[R6 Lambda b6 + R7 Lambda Pi b7 s^2 + W Pi b8 s du/dn]           (fluctuation energy)
-// b5..b8 are the wall family's coefficients at the wall's nu (wall_family.h). A flat wall whose impacts stick and slide
-// (WallParams::impacts, walls/flat_wall_impacts.h) scales the traction by h(xi) = sigma/sigma_s and the R6, R7 terms
-// by g(xi) = delta/delta_s, at xi = u_s/sqrt(T) = |s| sqrt(Pi) xs (xs = WallCoefficients::xi_per_slip): family K's
-// terms are that wall's stick limit, h and g the exact law's share of it (its slip work follows du/dn). W is the share of the slip work the
-// condition returns to the flow (slip_work_weight): R8 in S&T's GKL form (WallEnergy::GklR8), 1 where the flux
-// into the flow is slip work minus collisional dissipation, as Johnson & Jackson 1987 and Jenkins & Richman 1986 /
-// Richman 1988 write it (WallEnergy::SlipWork; docs/continuum-model.md §4.5). On the 1-D gap's moving
-// bottom (n = +y^, u^_wall = 1) this is S&T's Eq. 13-15 as written; on the fixed top (n = -y^, u^_wall = 0)
-// it is their top-wall form with u^' = -du/dn, nu' = -dnu/dn.
+// b5..b8 are the wall family's coefficients at the wall's nu (wall_family.h). A flat wall whose impacts stick and
+// slide (WallParams::impacts, walls/flat_wall_impacts.h) scales the traction by h(xi) = sigma/sigma_s and the R6, R7
+// terms by g(xi) = delta/delta_s, at xi = u_s/sqrt(T) = |s| sqrt(Pi) xs (xs = WallCoefficients::xi_per_slip):
+// family K's terms are that wall's stick limit, h and g the exact law's share of it (its slip work follows du/dn).
+// W is the share of the slip work the condition returns to the flow (slip_work_weight): R8 in S&T's GKL form
+// (WallEnergy::GklR8), 1 where the flux into the flow is slip work minus collisional dissipation, as Johnson &
+// Jackson 1987 and Jenkins & Richman 1986 / Richman 1988 write it (WallEnergy::SlipWork; docs/continuum-model.md
+// §4.5). On the 1-D gap's moving bottom (n = +y^, u^_wall = 1) this is S&T's Eq. 13-15 as written; on the fixed
+// top (n = -y^, u^_wall = 0) it is their top-wall form with u^' = -du/dn, nu' = -dnu/dn.
 #pragma once
 #include <cmath>
 
