@@ -86,7 +86,8 @@ void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, doub
 }
 
 // [continuum] flat_wall_impacts: whether a plane wall's impacts (wall_roughness = "built") may slide, which needs
-// the wall's friction; the cross-section's plane side walls take the floor's ([walls] sides = "plane").
+// the wall's friction; the cross-section's plane side walls take the floor's ([walls] sides = "plane"). An elastic
+// plane (e_w = 1) is refused under "built": its impacts' R6 = 1 + (2/7)/(1 - e_w^2) diverges (walls/flat_wall.h).
 void resolve_flat_wall_impacts(const Case& c, const Section& sec, Settings& s) {
     s.plane_wall_impacts_slide = sec.string("flat_wall_impacts") == "stick_and_slide";
     if (!s.plane_walls_from_impact) {
@@ -96,13 +97,20 @@ void resolve_flat_wall_impacts(const Case& c, const Section& sec, Settings& s) {
                                           "\"built\")");
         return;
     }
-    if (!s.plane_wall_impacts_slide) return;
     const bool plane_sides = s.cross_section && c.side_walls == SideWalls::Plane;
     for (const auto& [w, side] : {std::pair{&c.bottom, "bottom"}, {&c.top, "top"}}) {
         const bool plane = w->surface != WallSurface::Bumps || (w == &c.bottom && plane_sides);
-        if (!plane || w->friction > 0) continue;
+        if (!plane) continue;
         const Section& ws = c.section(fmt::format("walls.{}", side));
-        (ws.has("friction") ? ws : c.section("walls"))
+        const auto wall_key = [&](const char* key) -> const Section& { return ws.has(key) ? ws : c.section("walls"); };
+        if (!(w->restitution < 1))
+            wall_key("restitution")
+                .fail("restitution", fmt::format("the {} wall is a plane whose conditions come from its impact law "
+                                                 "([continuum] wall_roughness = \"built\"), which has no elastic "
+                                                 "limit (R6 = 1 + (2/7)/(1 - e_w^2)); allowed: restitution < 1",
+                                                 side));
+        if (!s.plane_wall_impacts_slide || w->friction > 0) continue;
+        wall_key("friction")
             .fail("friction", fmt::format("the {} wall{} is a plane whose impacts stick and slide ([continuum] "
                                           "wall_roughness = \"built\", flat_wall_impacts = \"stick_and_slide\"), "
                                           "which needs its friction; allowed: friction > 0, or flat_wall_impacts = "

@@ -563,6 +563,14 @@ BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     err = settings_error("[continuum]\nflat_wall_impacts = \"stick\"\n");
     BOOST_TEST(contains(err, "flat_wall_impacts"), err);
     BOOST_TEST(contains(err, "wall_roughness = \"built\""), err);
+    // an elastic plane has no impact-law conditions (R6 diverges), sticking or sliding
+    std::string elastic(frictional);
+    elastic.replace(elastic.find("restitution = 0.9\nroughness"), 17, "restitution = 1.0");
+    for (const char* impacts : {"", "flat_wall_impacts = \"stick\"\n"}) {
+        err = settings_error(keys + impacts, elastic);
+        BOOST_TEST(contains(err, "[walls] restitution"), err);
+        BOOST_TEST(contains(err, "restitution < 1"), err);
+    }
 }
 
 // gap = "inventory": the gap under the load from the grains the particle solvers insert, with the gap
