@@ -34,7 +34,11 @@
 // 0.377/0.396/0.404 to 0.360/0.377/0.388 at 1.4/2.0/2.8 m/s (DEM 0.243/0.259/0.270), slips from 0.255-0.260 U to
 // 0.287-0.299 U (DEM 0.31 U); the troughs' plane side walls: on _rough the side share's excess over the DEM's from
 // +4.2/+3.5/+3.7 to +3.4/+2.8/+3.0 points; on _poly (plane floor and top too) tau from +37..+46 % to +30..+39 % of
-// the DEM's.
+// the DEM's. With the grains' spin (flat_wall_spin = "torque_balance": the law at the contact points' xi, half the
+// grains'; measured 2026-12-06 on commit f370f5a, against the spin's stick limit): the poly twin's mu from
+// 0.270/0.282/0.289 to 0.256/0.267/0.274 (all three within 7 % of the DEM's), its slips from 0.355-0.362 U to
+// 0.369-0.377 U (0.06 U above the DEM's: none within 0.05 U); the _rough trough 7 of 7 targets at every speed either
+// way, the _poly trough 5, 5, 5 of 7 (the stick limit 5, 5, 6), tau there from -2..+3 % to -8..-3 % of the DEM's.
 //
 // Evaluation: h and g are tabulated once per law on a grid uniform in asinh(xi) (values and exact xi-derivatives
 // from the quadrature, cubic Hermite between nodes), up to xi_max >= 20, where a (xi_max - 8) >= 8 and the
