@@ -11,6 +11,8 @@
 #include "granlub/continuum/cross_section_solver.h"
 #include "granlub/continuum/fv_solver.h"
 #include "granlub/continuum/shooting_solver.h"
+#include "granlub/continuum/walls/flat_wall.h"
+#include "granlub/continuum/walls/flat_wall_impacts.h"
 
 using namespace granlub::continuum;
 
@@ -44,6 +46,31 @@ void BM_point_fv_load(benchmark::State& state) {
     state.counters["newton_iterations"] = its;
 }
 BENCHMARK(BM_point_fv_load)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Unit(benchmark::kMillisecond);
+
+// The same point between plane walls whose impacts stick and slide (walls/flat_wall_impacts.h: family K's stick limit
+// times h(xi), g(xi) from the law's table), and the table's construction, once per wall law.
+void BM_point_fv_sliding_walls(benchmark::State& state) {
+    Problem p = sawyer(2.0, 5.5e3);
+    const FlatWallFactors f = flat_wall_from_impact_law(0.9, 1.0);
+    for (WallBC* w : {&p.bottom, &p.top}) {
+        w->params = WallParams{0.9, f.r5, f.r6, f.r7, f.r8, f.slip_dissipation, WallEnergy::SlipWork};
+        w->params.impacts = flat_wall_impacts(0.9, 0.5, kFlatWallBeta0);
+    }
+    SolverSettings st;
+    int its = 0;
+    for (auto _ : state) {
+        Solution s = solve_fv(p, st);
+        its = s.iterations;
+        benchmark::DoNotOptimize(s.nu.data());
+    }
+    state.counters["newton_iterations"] = its;
+}
+BENCHMARK(BM_point_fv_sliding_walls)->Unit(benchmark::kMillisecond);
+
+void BM_flat_wall_impacts_table(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(FlatWallImpacts(0.9, 0.5, kFlatWallBeta0).xi_max());
+}
+BENCHMARK(BM_flat_wall_impacts_table)->Unit(benchmark::kMillisecond);
 
 void BM_point_fv_fill(benchmark::State& state) {
     const Problem p = sawyer(2.0, 5.5e3, Mode::Fill);

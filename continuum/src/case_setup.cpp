@@ -9,6 +9,7 @@
 #include "granlub/case/particle_box.h"
 #include "granlub/case/wall_bumps.h"
 #include "granlub/continuum/walls/flat_wall.h"
+#include "granlub/continuum/walls/flat_wall_impacts.h"
 #include "granlub/continuum/closures/effective_restitution.h"
 #include "granlub/continuum/command.h"
 #include "granlub/continuum/cross_section_setup.h"
@@ -82,6 +83,40 @@ void resolve_contact_stress(const Case& c, const Section& sec, Settings& s, doub
         sec.fail("method", "method = \"shooting\" has no contact stress (contact_stress); allowed: \"fv\"");
     refuse_fill_control(c, sec, "contact_stress", "contact_stress needs each point's load (its pressure over P_y)",
                         "contact_stress = \"none\"");
+}
+
+// [continuum] flat_wall_impacts: whether a plane wall's impacts (wall_roughness = "built") may slide, which needs
+// the wall's friction; the cross-section's plane side walls take the floor's ([walls] sides = "plane"). An elastic
+// plane (e_w = 1) is refused under "built": its impacts' R6 = 1 + (2/7)/(1 - e_w^2) diverges (walls/flat_wall.h).
+void resolve_flat_wall_impacts(const Case& c, const Section& sec, Settings& s) {
+    s.plane_wall_impacts_slide = sec.string("flat_wall_impacts") == "stick_and_slide";
+    if (!s.plane_walls_from_impact) {
+        if (!sec.is_default("flat_wall_impacts"))
+            sec.fail("flat_wall_impacts", "flat_wall_impacts chooses the impact law of plane walls under "
+                                          "wall_roughness = \"built\" (allowed: remove it, or wall_roughness = "
+                                          "\"built\")");
+        return;
+    }
+    const bool plane_sides = s.cross_section && c.side_walls == SideWalls::Plane;
+    for (const auto& [w, side] : {std::pair{&c.bottom, "bottom"}, {&c.top, "top"}}) {
+        const bool plane = w->surface != WallSurface::Bumps || (w == &c.bottom && plane_sides);
+        if (!plane) continue;
+        const Section& ws = c.section(fmt::format("walls.{}", side));
+        const auto wall_key = [&](const char* key) -> const Section& { return ws.has(key) ? ws : c.section("walls"); };
+        if (!(w->restitution < 1))
+            wall_key("restitution")
+                .fail("restitution", fmt::format("the {} wall is a plane whose conditions come from its impact law "
+                                                 "([continuum] wall_roughness = \"built\"), which has no elastic "
+                                                 "limit (R6 = 1 + (2/7)/(1 - e_w^2)); allowed: restitution < 1",
+                                                 side));
+        if (!s.plane_wall_impacts_slide || w->friction > 0) continue;
+        wall_key("friction")
+            .fail("friction", fmt::format("the {} wall{} is a plane whose impacts stick and slide ([continuum] "
+                                          "wall_roughness = \"built\", flat_wall_impacts = \"stick_and_slide\"), "
+                                          "which needs its friction; allowed: friction > 0, or flat_wall_impacts = "
+                                          "\"stick\" (every impact sticking)",
+                                          side, w == &c.bottom && plane_sides ? " (and the side walls)" : ""));
+    }
 }
 }  // namespace
 
@@ -192,6 +227,7 @@ Settings resolve_settings(const Case& c) {
                                                "weighted by R8 here ({}); allowed: wall_energy = \"slip_work\"",
                                                s.wall_energy_source));
     resolve_cross_section_settings(c, s);
+    resolve_flat_wall_impacts(c, sec, s);
     return s;
 }
 
@@ -257,8 +293,14 @@ nlohmann::json wall_roughness_record(const Case& c, const Settings& s, const Ope
                         {"top", wall_roughness(c, s, p, p.top, "top")}};
     if (s.plane_walls_from_impact) {
         const FlatWallFactors f = flat_wall_from_impact_law(p.bottom.restitution, s.flat_wall_contact_slip);
-        r["plane_walls"] = {{"law", "Walton's impact law, every impact sticking (docs/continuum-model.md 4.3b)"},
+        r["plane_walls"] = {{"law", s.plane_wall_impacts_slide
+                                        ? "Walton's impact law, impacts sticking and sliding at the wall's friction "
+                                          "(traction and collisional terms times h(xi), g(xi) at the contact points' "
+                                          "slip) (docs/continuum-model.md 4.3b)"
+                                        : "Walton's impact law, every impact sticking (docs/continuum-model.md 4.3b)"},
                             {"contact_slip_share", s.flat_wall_contact_slip},
+                            {"impacts", s.plane_wall_impacts_slide ? "stick_and_slide" : "stick"},
+                            {"friction_bottom", p.bottom.friction}, {"friction_top", p.top.friction},
                             {"beta0", kFlatWallBeta0}, {"r5", f.r5}, {"r6_at_floor_restitution", f.r6},
                             {"slip_dissipation", f.slip_dissipation}};
     }
@@ -283,6 +325,10 @@ WallParams plane_wall_params(const Settings& s, const Wall& w) {
     params.r5 = f.r5, params.r6 = f.r6, params.r7 = f.r7, params.r8 = f.r8;
     params.slip_dissipation = f.slip_dissipation;
     params.energy = s.wall_energy;
+    if (s.plane_wall_impacts_slide) {
+        params.impacts = flat_wall_impacts(w.restitution, w.friction, kFlatWallBeta0);
+        params.contact_slip_share = s.flat_wall_contact_slip;  // the law at the contact points' slip
+    }
     return params;
 }
 

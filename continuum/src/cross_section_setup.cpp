@@ -217,6 +217,7 @@ PointResult solve_cross_section_point(const Case& c, const OperatingPoint& p, co
     m.run["side_walls"] = {{"sides", c.side_walls == SideWalls::AsBottom ? "as_bottom" : "plane"},
                            {"r5", q.outer.params.r5}, {"r6", q.outer.params.r6},
                            {"slip_dissipation", q.outer.params.slip_dissipation},
+                           {"impacts", q.outer.params.impacts ? "stick_and_slide" : "linear"},
                            {"restitution", q.outer.params.restitution},
                            {"width_m", Wc}};
     const double PU = P * U * Hc;  // per unit length: the dimensionless budget is over P U H_c

@@ -40,9 +40,9 @@ struct NodeVal {
     double Kp = 0, dKp = 0, p = 1;  // with a pressure field: p^^1/2 K_p of the grad-p heat flux, and p^
     double pc = 0, dpc = 0;         // the contact pressure over P_y (docs/continuum-model.md §2.9), 0 without one
 };
-// A wall's coefficients b5..b8 at a node, with d/ds.
+// A wall's coefficients b5..b8 and xi per slip (WallCoefficients) at a node, with d/ds.
 struct WallVal {
-    double b[4], db[4];
+    double b[5], db[5];
 };
 
 template <class S>
@@ -50,10 +50,10 @@ struct Local {
     S u[kMembers], nu[kMembers], M[kMembers], K[kMembers], Kp[kMembers], pc[kMembers];
     double p[kMembers];
     S C, Pi, L, hz;
-    S b[kCrossSectionWalls][4];  // the coefficients of the walls the node lies on
+    S b[kCrossSectionWalls][5];  // the coefficients of the walls the node lies on
     // with the contact shear: members S, N (W, E) on the centre's side wall (floor or top) carry that wall's
     // coefficients, for their z^ (y^) gradient
-    S bt[kMembers][4];
+    S bt[kMembers][5];
 };
 
 // Which faces of node (i, j)'s control volume are walls, and where it is.
@@ -76,7 +76,7 @@ void residual(const CrossSectionProblem& p, const NodeGeom& g, const Local<S>& l
         const WallBC& bc = p.wall(w);
         const S slip = w == W::Top ? S(-l.u[m]) : S(1.0 - l.u[m]);  // the top is still, the others move at U
         // the wall condition at the local pressure: Pi = rho U^2 / p (the b's are in P-scaled form)
-        auto gr = wall_gradients(bc.params, b[0], b[1], b[2], b[3], slip, l.L, l.Pi / l.p[m]);
+        auto gr = wall_gradients(bc.params, b[0], b[1], b[2], b[3], b[4], slip, l.L, l.Pi / l.p[m]);
         if (p.source) {
             const double dy = m == kS ? -hy : (m == kN ? hy : 0.0), dz = m == kW ? -value(l.hz) : (m == kE ? value(l.hz) : 0.0);
             double cu = 0, cn = 0;
@@ -406,8 +406,9 @@ private:
 
     WallVal wall_val(const WallBC& w, const NodeVal& n) const {
         const auto b = wall_coefficients(p_.gap, w, n.nu, n.p);
-        return {{b.b5.v, b.b6.v, b.b7.v, b.b8.v},
-                {b.b5.d[0] * n.dnu, b.b6.d[0] * n.dnu, b.b7.d[0] * n.dnu, b.b8.d[0] * n.dnu}};
+        return {{b.b5.v, b.b6.v, b.b7.v, b.b8.v, b.xi_per_slip.v},
+                {b.b5.d[0] * n.dnu, b.b6.d[0] * n.dnu, b.b7.d[0] * n.dnu, b.b8.d[0] * n.dnu,
+                 b.xi_per_slip.d[0] * n.dnu}};
     }
 
     template <class S, class Lift>
@@ -435,7 +436,7 @@ private:
         for (int w = 0; w < kCrossSectionWalls; ++w)
             if (g.wall[w]) {
                 const WallVal& b = walls_[static_cast<std::size_t>(idx(i, j))][w];
-                for (int q = 0; q < 4; ++q) l.b[w][q] = lift(b.b[q], 1, b.db[q]);
+                for (int q = 0; q < 5; ++q) l.b[w][q] = lift(b.b[q], 1, b.db[q]);
             }
         if (!contact_) return;
         // the tangential gradients' walls: S and N on the centre's side wall, W and E on its floor or top
@@ -443,7 +444,7 @@ private:
             const long nb = member(i, j, m);
             if (nb < 0) return;
             const WallVal& b = walls_[static_cast<std::size_t>(nb)][w];
-            for (int q = 0; q < 4; ++q) l.bt[m][q] = lift(b.b[q], 2 * m + 1, b.db[q]);
+            for (int q = 0; q < 5; ++q) l.bt[m][q] = lift(b.b[q], 2 * m + 1, b.db[q]);
         };
         for (int w : {2, 3})
             if (g.wall[w]) tangential(kS, w), tangential(kN, w);

@@ -25,13 +25,13 @@ struct Node {
     double pc, dpc;  // the contact pressure over P_y and its s-derivative (0 without a contact stress, §2.9)
 };
 struct WallNode {
-    double b5, db5, b6, db6, b7, db7, b8, db8;
+    double b5, db5, b6, db6, b7, db7, b8, db8, xs, dxs;  // xs: xi per slip (WallCoefficients)
 };
 
 // The values one node's residual needs.
 template <class S>
 struct Local {
-    S um, uc, up, nm, nc, np, Mm, Mc, Mp, Km, Kc, Kp, Cc, Pi, L, b5, b6, b7, b8;
+    S um, uc, up, nm, nc, np, Mm, Mc, Mp, Km, Kc, Kp, Cc, Pi, L, b5, b6, b7, b8, xs;
     S pcm, pcc, pcp;  // contact pressure over P_y at the three nodes (§2.9)
 };
 
@@ -61,7 +61,7 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
         Rn = (0.5 * (l.Kc + l.Kp) * (l.np - l.nc) - 0.5 * (l.Km + l.Kc) * (l.nc - l.nm)) / h - h * src;
     } else if (kind == Kind::Bottom) {
         // n = +y^, slip = 1 - u^: the wall condition's gradients are y^-gradients as they stand.
-        const auto g = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(1.0 - l.uc), L, l.Pi);
+        const auto g = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, l.xs, S(1.0 - l.uc), L, l.Pi);
         const S& du = g.du;
         const S& dn = g.dnu;
         const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
@@ -69,7 +69,7 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
         Rn = 0.5 * (l.Kc + l.Kp) * (l.np - l.nc) / h - l.Kc * dn - 0.5 * h * src;
     } else {
         // n = -y^, slip = 0 - u^: y^-gradients are minus the wall condition's.
-        const auto g = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(-l.uc), L, l.Pi);
+        const auto g = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, l.xs, S(-l.uc), L, l.Pi);
         const S du = -g.du;
         const S dn = -g.dnu;
         const S src = l.Pi * l.Mc * du * du - L2 * l.Cc;
@@ -84,10 +84,10 @@ void node_residual(Kind kind, const Local<S>& l, const WallParams* w, double h, 
         if (kind == Kind::Interior) {
             Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - face(l.pcm, l.pcc, l.um, l.uc));  // Ru is a flux difference
         } else if (kind == Kind::Bottom) {
-            const S du = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(1.0 - l.uc), L, l.Pi).du;
+            const S du = wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, l.xs, S(1.0 - l.uc), L, l.Pi).du;
             Ru = Ru + k * (face(l.pcc, l.pcp, l.uc, l.up) - cs->wall_flux(l.pcc, du, none));
         } else {
-            const S du = -wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, S(-l.uc), L, l.Pi).du;
+            const S du = -wall_gradients(*w, l.b5, l.b6, l.b7, l.b8, l.xs, S(-l.uc), L, l.Pi).du;
             Ru = Ru + k * (cs->wall_flux(l.pcc, du, none) - face(l.pcm, l.pcc, l.um, l.uc));
         }
     }
@@ -141,7 +141,7 @@ public:
             if (!jac) {
                 Local<double> l{u[im], u[i], u[ip], nodes_[im].nu, nodes_[i].nu, nodes_[ip].nu,
                                 nodes_[im].M, nodes_[i].M, nodes_[ip].M, nodes_[im].K, nodes_[i].K, nodes_[ip].K,
-                                nodes_[i].C, Pi, L, wn.b5, wn.b6, wn.b7, wn.b8,
+                                nodes_[i].C, Pi, L, wn.b5, wn.b6, wn.b7, wn.b8, wn.xs,
                                 nodes_[im].pc, nodes_[i].pc, nodes_[ip].pc};
                 double ru, rn;
                 node_residual(kind, l, w, h_, faces_, contact_, ru, rn);
@@ -158,6 +158,7 @@ public:
                             D7::lifted(L, kLam, inventory_ ? L : 0.0),
                             D7::lifted(wn.b5, kSc, wn.db5), D7::lifted(wn.b6, kSc, wn.db6),
                             D7::lifted(wn.b7, kSc, wn.db7), D7::lifted(wn.b8, kSc, wn.db8),
+                            D7::lifted(wn.xs, kSc, wn.dxs),
                             D7::lifted(a.pc, kSm, a.dpc), D7::lifted(c.pc, kSc, c.dpc), D7::lifted(b.pc, kSp, b.dpc)};
                 D7 ru, rn;
                 node_residual(kind, l, w, h_, faces_, contact_, ru, rn);
@@ -265,7 +266,7 @@ private:
     WallNode wall_node(const WallBC& w, const Node& n) const {
         const auto b = wall_coefficients(p_, w, n.nu);
         return {b.b5.v, b.b5.d[0] * n.dnu, b.b6.v, b.b6.d[0] * n.dnu,
-                b.b7.v, b.b7.d[0] * n.dnu, b.b8.v, b.b8.d[0] * n.dnu};
+                b.b7.v, b.b7.d[0] * n.dnu, b.b8.v, b.b8.d[0] * n.dnu, b.xi_per_slip.v, b.xi_per_slip.d[0] * n.dnu};
     }
 
     const Problem& p_;

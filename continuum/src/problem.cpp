@@ -12,7 +12,8 @@ bool Problem::symmetric() const {
     const auto& b = top.params;
     return bottom.family == top.family && a.restitution == b.restitution &&
            a.dissipation_e() == b.dissipation_e() && a.r5 == b.r5 && a.r6 == b.r6 &&
-           a.r7 == b.r7 && a.r8 == b.r8 && a.slip_dissipation == b.slip_dissipation && a.energy == b.energy;
+           a.r7 == b.r7 && a.r8 == b.r8 && a.slip_dissipation == b.slip_dissipation && a.energy == b.energy &&
+           a.impacts == b.impacts && a.contact_slip_share == b.contact_slip_share;
 }
 
 NodeCoefficients node_coefficients(const Closures& c, double nu, double pressure) {

@@ -51,12 +51,18 @@ BoundKeys<Settings> declare() {
              "R5..R8 of the walls: declared = the declared roughness; bumps = on a bumpy wall ([walls] surface = bumps) "
              "sin(theta) = l/(d_w + d) of the bumps the particle solvers build from it (their diameter and spacing, "
              "whole bumps in the periodic length); built = that on bumpy walls and, on plane walls (side walls too), "
-             "the factors of their impact law (Walton's, every impact sticking, the grains' spin left out: R5 = R7 = "
-             "2/7, R6 = 1 + (2/7)/(1 - e_w^2), f_t = 1/2; wall_model = kinetic, the slip work returned whole)");
+             "the factors of their impact law (Walton's; in its stick limit without spin R5 = R7 = 2/7, R6 = 1 + "
+             "(2/7)/(1 - e_w^2), f_t = 1/2; the grains' spin: flat_wall_spin; whether impacts slide: "
+             "flat_wall_impacts; wall_model = kinetic, the slip work returned whole)");
     s.choice("flat_wall_spin", "torque_balance", {"torque_balance", "none"},
              "wall_roughness = built, plane walls: the spin of the grains beside them; torque_balance = their contact "
              "points slip at half the grains' slip (the torques of the wall's and the upper grains' impacts balance: "
              "an assumption), none = no spin (the grains' slip in the impact law)");
+    s.choice("flat_wall_impacts", "stick_and_slide", {"stick_and_slide", "stick"},
+             "plane walls under wall_roughness = built: stick_and_slide = Walton's law whole, an impact sliding where "
+             "its tangential impulse would exceed [walls] friction x its normal one (friction > 0 needed): traction "
+             "and dissipation fall below the stick limit's as the contact points' slip grows against sqrt(T) "
+             "(Jenkins 1992); stick = every impact sticking (infinite friction): traction linear in the slip");
     k.real_optional("ordering_fraction", &Settings::ordering_fraction, Range::closed(0.3, 0.75), "",
                     "crystallization criterion: a solution whose largest nu exceeds it is labelled ordered, not "
                     "drawn as a number; default: no criterion");

@@ -20,6 +20,7 @@
 #include "granlub/continuum/command.h"
 #include "granlub/continuum/cross_section_setup.h"
 #include "granlub/continuum/map.h"
+#include "granlub/continuum/walls/flat_wall_impacts.h"
 #include "granlub/error.h"
 #include "granlub/results/results.h"
 #include "temp_dir.h"
@@ -455,47 +456,84 @@ BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
     }
 }
 
-// wall_roughness = "built" on plane walls: Walton's impact law in its stick limit (walls/flat_wall.h), the
+// wall_roughness = "built" on plane walls: Walton's impact law (walls/flat_wall.h, walls/flat_wall_impacts.h), the
 // contact points slipping at a share phi of the grains' slip u_s (flat_wall_spin: torque_balance 1/2, none 1). The
 // solution's wall traction and wall dissipation are the law's, computed here from the solution's own slip and T at
-// each wall: S = (2/7) sqrt(2/pi) P phi u_s/((1 + e_w) sqrt T) and D = sqrt(2/pi) P/((1 + e_w) sqrt T)
-// [(1 - e_w^2) T + (1/7)((phi u_s)^2 + 2T)]; e_eff is not added (the law holds the friction); plane side walls of
-// the cross-section take the law too; it refuses the walls' families and conventions it does not fit.
+// each wall (the contact points' xi = phi u_s/sqrt T): S = sigma(xi) P and D = delta(xi) P sqrt(T), in the stick
+// limit (flat_wall_impacts = "stick", or stick_and_slide at a huge friction) sigma = (2/7) sqrt(2/pi) xi/(1 + e_w)
+// and delta = sqrt(2/pi)/(1 + e_w) [(1 - e_w^2) + (xi^2 + 2)/7], with sliding (the default, friction 0.5) sigma and
+// delta by the law's quadrature; e_eff is not added (the law holds the friction); plane side walls of the
+// cross-section take the law too; it refuses the walls' families, conventions and frictions it does not fit.
 BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     const std::string keys = "[continuum]\nclosures = \"garzo_dufty\"\nwall_roughness = \"built\"\n"
                              "friction_restitution = \"chialvo_sundaresan\"\n"
                              "wall_friction_restitution = \"as_grains\"\n";
-    std::string frictional(kCase);
-    frictional.replace(frictional.find("[walls]\n"), 8, "[walls]\nfriction = 0.5\n");
-    frictional.replace(frictional.find("[grains]\n"), 9, "[grains]\nfriction = 0.5\n");
-    const double e = 0.9, P = 5.5e3, c0 = std::sqrt(2.0 / std::numbers::pi);
-    double tau_spin = 0, tau_none = 0;
-    for (const auto& [spin, phi] : {std::pair{"", 0.5}, {"flat_wall_spin = \"none\"\n", 1.0}}) {
-        const Case c = parse(keys + spin, frictional);
-        const continuum::Settings s = continuum::resolve_settings(c);
-        const continuum::Problem q = continuum::problem_for(c, s, c.points.front());
-        for (const auto* w : {&q.bottom.params, &q.top.params}) {
-            BOOST_TEST(w->r5 == (2.0 / 7.0) * phi);
-            BOOST_TEST(w->r7 == (2.0 / 7.0) * phi);
-            BOOST_CHECK_CLOSE_FRACTION(w->r6, 1.0 + (2.0 / 7.0) / (1.0 - e * e), 1e-14);
-            BOOST_TEST(w->slip_dissipation == 0.5 * phi);
-            BOOST_TEST(w->dissipation_e() == e);  // no e_eff on top of the law
-        }
+    const auto with_wall_friction = [](const std::string& mu) {
+        std::string c(kCase);
+        c.replace(c.find("[walls]\n"), 8, "[walls]\nfriction = " + mu + "\n");
+        c.replace(c.find("[grains]\n"), 9, "[grains]\nfriction = 0.5\n");
+        return c;
+    };
+    const std::string frictional = with_wall_friction("0.5");
+    const double P = 5.5e3, e = 0.9, c0 = std::sqrt(2.0 / std::numbers::pi);
+    // The U1.4 point's walls against sigma(xi), delta(xi) at the contact points' xi; returns the top's traction and
+    // the mean slip.
+    const auto check = [&](const Case& c, double phi, const auto& sigma, const auto& delta) {
         TempDir tmp;
         BOOST_TEST(continuum::run(c, into(tmp, "U1.4")) == 0);
         const Summary m = read_summary(tmp.path / "continuum" / "U1.4" / "summary.json");
         BOOST_TEST(m.run.at("wall_roughness").at("source") == "built");
         BOOST_TEST(m.run.at("wall_roughness").at("plane_walls").at("contact_slip_share").get<double>() == phi);
-        double sink = 0;
+        double sink = 0, slip = 0;
         for (const char* side : {"bottom", "top"}) {
             const double us = m.value(std::string("slip_") + side), T = m.value(std::string("temperature_") + side);
-            const double tau = std::abs(m.value(std::string("shear_stress_") + side)), g = phi * us;
-            BOOST_CHECK_CLOSE_FRACTION(tau, (2.0 / 7.0) * c0 * P * g / ((1 + e) * std::sqrt(T)), 1e-6);
-            sink += c0 * P / ((1 + e) * std::sqrt(T)) * ((1 - e * e) * T + (g * g + 2 * T) / 7.0);
+            const double tau = m.value(std::string("shear_stress_") + side), xi = phi * us / std::sqrt(T);
+            BOOST_CHECK_CLOSE_FRACTION(std::abs(tau), sigma(xi) * P, 1e-6);
+            sink += delta(xi) * P * std::sqrt(T);
+            slip += 0.5 * us;
         }
         BOOST_CHECK_CLOSE_FRACTION(m.run.at("energy_budget").at("wall_collisional_W_m2").get<double>(), sink, 1e-6);
         BOOST_TEST(m.run.at("energy_budget").at("wall_unreturned_slip_work_W_m2").get<double>() == 0.0);
-        (phi < 1 ? tau_spin : tau_none) = std::abs(m.value("shear_stress_top"));
+        return std::pair{std::abs(m.value("shear_stress_top")), slip};
+    };
+    const auto sigma_s = [&](double xi) { return (2.0 / 7.0) * c0 * xi / (1 + e); };
+    const auto delta_s = [&](double xi) { return c0 / (1 + e) * ((1 - e * e) + (xi * xi + 2) / 7.0); };
+    const continuum::FlatWallImpacts law(e, 0.5, 0.0);
+    const auto sigma = [&](double xi) { return law.quadrature(xi).sigma_over_xi * xi; };
+    const auto delta = [&](double xi) { return law.quadrature(xi).delta; };
+
+    double tau_spin = 0, tau_none = 0;
+    for (const auto& [spin, phi] : {std::pair{"", 0.5}, {"flat_wall_spin = \"none\"\n", 1.0}}) {
+        BOOST_TEST_CONTEXT("contact slip share " << phi) {
+            // the stick limit: the key, or a friction no impact reaches
+            const Case stick = parse(keys + spin + "flat_wall_impacts = \"stick\"\n", frictional);
+            const continuum::Problem q = continuum::problem_for(stick, continuum::resolve_settings(stick),
+                                                                stick.points.front());
+            for (const auto* w : {&q.bottom.params, &q.top.params}) {
+                BOOST_TEST(w->r5 == (2.0 / 7.0) * phi);
+                BOOST_TEST(w->r7 == (2.0 / 7.0) * phi);
+                BOOST_CHECK_CLOSE_FRACTION(w->r6, 1.0 + (2.0 / 7.0) / (1.0 - e * e), 1e-14);
+                BOOST_TEST(w->slip_dissipation == 0.5 * phi);
+                BOOST_TEST(w->dissipation_e() == e);  // no e_eff on top of the law
+                BOOST_TEST(!w->impacts);
+            }
+            const auto [tau, slip_stick] = check(stick, phi, sigma_s, delta_s);
+            (phi < 1 ? tau_spin : tau_none) = tau;
+            check(parse(keys + spin, with_wall_friction("1.0e6")), phi, sigma_s, delta_s);
+
+            // impacts that slide (the default) at friction 0.5: less traction for the same slip, so more slip
+            const Case slide = parse(keys + spin, frictional);
+            const continuum::Problem qs =
+                continuum::problem_for(slide, continuum::resolve_settings(slide), slide.points.front());
+            BOOST_TEST(qs.bottom.params.impacts != nullptr);
+            BOOST_TEST(qs.bottom.params.impacts->friction() == 0.5);
+            BOOST_TEST(qs.bottom.params.impacts == qs.top.params.impacts);
+            BOOST_TEST(qs.bottom.params.contact_slip_share == phi);
+            const double slip_slide = check(slide, phi, sigma, delta).second;
+            BOOST_TEST_MESSAGE("share " << phi << ", U1.4 mean slip: " << slip_stick << " m/s with impacts sticking, "
+                                        << slip_slide << " m/s sticking and sliding");
+            BOOST_TEST(slip_slide > slip_stick);
+        }
     }
     BOOST_TEST(tau_spin < 0.9 * tau_none);  // rolling grains grip less
 
@@ -505,6 +543,8 @@ BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     const auto xq = continuum::cross_section_problem_for(x, continuum::resolve_settings(x), x.points.front());
     BOOST_TEST(xq.outer.params.r5 == 1.0 / 7.0);
     BOOST_TEST(xq.inner.params.slip_dissipation == 0.25);
+    BOOST_TEST(xq.outer.params.impacts != nullptr);
+    BOOST_TEST(xq.outer.params.contact_slip_share == 0.5);
 
     std::string err = settings_error("[continuum]\nwall_roughness = \"built\"\n");  // lun84: the R8 convention
     BOOST_TEST(contains(err, "wall_roughness"), err);
@@ -515,6 +555,22 @@ BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     err = settings_error("[continuum]\nflat_wall_spin = \"none\"\n");
     BOOST_TEST(contains(err, "flat_wall_spin"), err);
     BOOST_TEST(contains(err, "built"), err);
+    // sliding needs the wall's friction; the stick limit does not
+    err = settings_error(keys, with_wall_friction("0.0"));
+    BOOST_TEST(contains(err, "[walls] friction"), err);
+    BOOST_TEST(contains(err, "flat_wall_impacts = \"stick\""), err);
+    BOOST_TEST(settings_error(keys + "flat_wall_impacts = \"stick\"\n", with_wall_friction("0.0")).empty());
+    err = settings_error("[continuum]\nflat_wall_impacts = \"stick\"\n");
+    BOOST_TEST(contains(err, "flat_wall_impacts"), err);
+    BOOST_TEST(contains(err, "wall_roughness = \"built\""), err);
+    // an elastic plane has no impact-law conditions (R6 diverges), sticking or sliding
+    std::string elastic(frictional);
+    elastic.replace(elastic.find("restitution = 0.9\nroughness"), 17, "restitution = 1.0");
+    for (const char* impacts : {"", "flat_wall_impacts = \"stick\"\n"}) {
+        err = settings_error(keys + impacts, elastic);
+        BOOST_TEST(contains(err, "[walls] restitution"), err);
+        BOOST_TEST(contains(err, "restitution < 1"), err);
+    }
 }
 
 // gap = "inventory": the gap under the load from the grains the particle solvers insert, with the gap

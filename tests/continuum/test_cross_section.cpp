@@ -11,6 +11,8 @@
 #include "fixtures.h"
 #include "granlub/continuum/cross_section_solver.h"
 #include "granlub/continuum/fv_solver.h"
+#include "granlub/continuum/walls/flat_wall.h"
+#include "granlub/continuum/walls/flat_wall_impacts.h"
 #include "granlub/continuum/walls/wall_condition.h"
 
 using namespace granlub::continuum;
@@ -208,4 +210,50 @@ BOOST_AUTO_TEST_CASE(body_forces_give_the_hydrostatic_column_and_load_the_outer_
     BOOST_TEST(std::abs(oq.walls[1].normal - 1.0) < 1e-10);  // the top carries the load
     BOOST_TEST(std::abs(oq.force_balance) < 1e-8);
     BOOST_TEST(std::abs(oq.energy_defect) < 5e-3);
+}
+
+// Plane side walls whose impacts stick and slide (walls/flat_wall_impacts.h; wall_roughness = "built"): the Dual<19>
+// Jacobian through each wall node's xi against central differences, the budgets closing at second order, and per
+// side wall its force and its sink the law's, sum over its nodes of sigma(xi) P and delta(xi) P sqrt(T) (trapezoid
+// rule, as observe() sums), xi = u_s/sqrt(T) from each node's slip and nu.
+BOOST_AUTO_TEST_CASE(sliding_plane_side_walls_follow_the_law_and_close_the_budgets) {
+    CrossSectionProblem p = trough(sawyer(2.0));
+    const FlatWallFactors f = flat_wall_from_impact_law(0.9, 1.0);  // no spin
+    p.outer.params = WallParams{0.9, f.r5, f.r6, f.r7, f.r8, f.slip_dissipation, WallEnergy::SlipWork};
+    p.outer.params.impacts = flat_wall_impacts(0.9, 0.5, kFlatWallBeta0);
+    p.inner = p.outer;
+    const FlatWallImpacts& law = *p.outer.params.impacts;
+    std::vector<double> defects;
+    for (int n : {10, 20, 40}) {
+        CrossSectionSolution s = solve_cross_section(p, grid(n, 5 * n / 2));
+        const auto o = observe(p, s);
+        BOOST_TEST(std::abs(o.force_balance) < 1e-8);
+        defects.push_back(std::abs(o.energy_defect));
+        for (int w : {2, 3}) {
+            const int j = w == 2 ? 0 : s.cells_z;
+            double force = 0, sink = 0;
+            for (int i = 0; i <= s.cells_y; ++i) {
+                const double ds = (i == 0 || i == s.cells_y ? 0.5 : 1.0) / s.cells_y;
+                const std::size_t k = s.at(i, j);
+                const double fp = p.gap.closures->state(s.nu[k]).fp.v, xi = (1 - s.u[k]) * std::sqrt(s.Pi * fp);
+                const auto q = law.quadrature(xi);
+                force += ds * q.sigma_over_xi * xi;
+                sink += ds * q.delta / std::sqrt(s.Pi * fp);  // D/(P U): delta sqrt(T)/U, T/U^2 = 1/(Pi f_p)
+            }
+            BOOST_TEST(o.walls[w].force == force, boost::test_tools::tolerance(1e-6));
+            BOOST_TEST(o.walls[w].sink == sink, boost::test_tools::tolerance(1e-6));
+        }
+        BOOST_TEST_MESSAGE(n << " cells across: energy defect " << o.energy_defect << ", side share " << o.side_share
+                             << ", side slip " << o.walls[2].slip);
+        if (n == 10) {
+            BOOST_TEST(cross_section_jacobian_defect(p, s, 1e-7) < 1e-5);
+            for (std::size_t k = 0; k < s.u.size(); ++k) {
+                s.u[k] += 0.01 * std::sin(7.0 * static_cast<double>(k));
+                s.nu[k] -= 1e-4 * (1 + std::cos(5.0 * static_cast<double>(k)));
+            }
+            BOOST_TEST(cross_section_jacobian_defect(p, s, 1e-7) < 1e-5);
+        }
+    }
+    BOOST_TEST(defects.back() < 1e-3);
+    BOOST_TEST(defects[1] / defects[2] > 3.0);
 }

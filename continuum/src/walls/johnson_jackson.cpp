@@ -22,7 +22,7 @@ public:
         const D1 ng = s.nu * s.g;
         const double ed = w.dissipation_e();
         return {a * ng / s.fmu, 1.5 * a * (1.0 - ed * ed) * ng / s.G, w.slip_dissipation * a * ng * s.fp / s.G,
-                s.fmu * s.fp / s.G};
+                s.fmu * s.fp / s.G, wall_xi_per_slip(s)};
     }
     bool dissipation_scales_with_roughness() const override { return false; }
 };

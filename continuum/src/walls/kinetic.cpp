@@ -25,7 +25,7 @@ public:
         // the T-powers bring fp: b5 = c fpk/((1+e_w) f_mu), b6 = c (1-e_w) fpk/G, b7 ~ fpk fp/G, b8 = f_mu fp/G
         // (fpk = fp without one).
         return {c * s.fpk / ((1.0 + ew) * s.fmu), c * (1.0 - w.dissipation_e()) * s.fpk / s.G,
-                w.slip_dissipation * c * s.fpk * s.fp / ((1.0 + ew) * s.G), s.fmu * s.fp / s.G};
+                w.slip_dissipation * c * s.fpk * s.fp / ((1.0 + ew) * s.G), s.fmu * s.fp / s.G, wall_xi_per_slip(s)};
     }
 };
 }  // namespace

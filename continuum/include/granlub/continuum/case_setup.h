@@ -23,6 +23,7 @@ struct Settings {
     bool roughness_from_bumps = false;  // [continuum] wall_roughness = "bumps" or "built"
     bool plane_walls_from_impact = false;  // [continuum] wall_roughness = "built": plane walls from their impact law
     double flat_wall_contact_slip = 0.5;   // [continuum] flat_wall_spin: torque_balance 1/2, none 1 (walls/flat_wall.h)
+    bool plane_wall_impacts_slide = true;  // [continuum] flat_wall_impacts = "stick_and_slide" (false: "stick")
     double ordering_fraction = 0;     // crystallization criterion; 0 = none
     SolverSettings solver;
     std::shared_ptr<const Closures> closures;
@@ -55,7 +56,8 @@ Settings resolve_settings(const Case& c);
 // A plane wall under "built" takes R5..R8 from its impact law instead (walls/flat_wall.h; plane_wall_params).
 double wall_roughness(const Case& c, const Settings& s, const OperatingPoint& p, const Wall& w, const char* side);
 // A plane wall's parameters from its impact law (wall_roughness = "built"; walls/flat_wall.h), before any
-// explicit r<k> key: R5..R8 and f_t of the law, its restitution, no e_eff (the law holds the friction).
+// explicit r<k> key: R5..R8 and f_t of the law's stick limit, its restitution, no e_eff (the law holds the
+// friction), and with flat_wall_impacts = "stick_and_slide" the law at the wall's friction (flat_wall_impacts.h).
 WallParams plane_wall_params(const Settings& s, const Wall& w);
 // run.wall_roughness of a summary: where R5..R8 came from and each wall's R (R5 for a plane under "built").
 nlohmann::json wall_roughness_record(const Case& c, const Settings& s, const OperatingPoint& p);

@@ -75,6 +75,8 @@ template <int N> Dual<N> chain(const Dual<N>& a, double fv, double fd) {
     for (int k = 0; k < N; ++k) r.d[k] = fd * a.d[k];
     return r;
 }
+// The same for a double, for code templated on the scalar: f(a).
+inline double chain(double /*a*/, double fv, double /*fd*/) { return fv; }
 template <int N> Dual<N> sqrt(const Dual<N>& a) { const double s = std::sqrt(a.v); return chain(a, s, 0.5 / s); }
 template <int N> Dual<N> cbrt(const Dual<N>& a) {
     const double c = std::cbrt(a.v);

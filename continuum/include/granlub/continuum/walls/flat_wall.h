@@ -26,8 +26,9 @@
 // R5 = R7 = (2/7)(1 + beta0) phi and the wall's
 // share of the slip work dissipated f_t = (1 - beta0) phi / 2 (the upper contacts' loss is the bulk's); the
 // T-part of D (R6) does not depend on it. phi = 1 ("none") is the spin-free law above.
-// What it leaves out (docs/measurements/continuum.md, "Flat frictional walls"): impacts that slide (the cap
-// mu_w J_n, reached where |g| > (7/2) mu_w (1 + e_w) c_n / (1 + beta0)).
+// Impacts that slide (the cap mu_w J_n, reached where |g| > (7/2) mu_w (1 + e_w) c_n / (1 + beta0)): these are the
+// law's stick limit, which flat_wall_impacts.h ([continuum] flat_wall_impacts = "stick_and_slide") scales to the whole
+// law at the contact points' slip phi u_s.
 #pragma once
 
 namespace granlub::continuum {

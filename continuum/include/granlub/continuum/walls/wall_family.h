@@ -19,6 +19,8 @@ namespace granlub::continuum {
 //             flow: slip work minus a collisional dissipation that vanishes at e_w = 1.
 enum class WallEnergy { GklR8, SlipWork };
 
+class FlatWallImpacts;  // walls/flat_wall_impacts.h
+
 // One wall's parameters: restitution e_w, roughness factors R5..R8, the slip-dissipation
 // fraction f_t of the R7 term and the energy convention (R8 is read only with GklR8).
 struct WallParams {
@@ -31,11 +33,21 @@ struct WallParams {
     // the positional initialisations above keep their meaning.
     double dissipation_restitution = -1.0;
     double dissipation_e() const { return dissipation_restitution < 0 ? restitution : dissipation_restitution; }
+    // A flat wall's impacts that stick and slide (walls/flat_wall_impacts.h): the traction and the collisional terms
+    // scaled by their ratios to the stick limit at the wall's slip (wall_condition.h); null: the linear condition.
+    std::shared_ptr<const FlatWallImpacts> impacts{};
+    // The share of the grains' slip at which their contact points slip on such a wall ([continuum] flat_wall_spin,
+    // walls/flat_wall.h): the law's xi is the contact points' (read with impacts only).
+    double contact_slip_share = 1.0;
 };
 
 struct WallCoefficients {
     D1 b5, b6, b7, b8;  // values and d/dnu
+    D1 xi_per_slip;     // xi/(|s| sqrt(Pi)), xi = u_s/sqrt(T) (wall_condition.h): wall_xi_per_slip()
 };
+
+// xi_per_slip at the wall: T = P/(rho_p f_p) there (family.h; P the local one), so u_s/sqrt(T) = |s| sqrt(Pi f_p).
+inline D1 wall_xi_per_slip(const ClosureState<D1>& s) { return sqrt(s.fp); }
 
 class WallFamily {
 public:
