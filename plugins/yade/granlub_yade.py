@@ -15,6 +15,9 @@
 #               With a "bumps" object ({"bottom"|"top": {"diameter", "x": [...], "z": [...]}}): rough
 #               walls, fixed spheres centred on the wall's plane (core/include/granlub/case/wall_bumps.h);
 #               the top's bumps move with the plate, under a weight plate as one rigid body with it.
+#               "start_time" (s, default 0): the starting state's time since the grains' cold
+#               start; the bumps come placed for it (the floor's moved U start_time), and the final
+#               state's time counts on from it (core particles.h ParticleState::time).
 #   "collision" binary collisions (grain-grain and grain-wall for every wall material): the
 #               measured normal restitution of the contact law as run, in collision.json.
 #
@@ -105,6 +108,8 @@ def load_params(path):
                 raise ParamError("run.steps = %d is not a multiple of run.%s = %d" % (steps, k, every))
         need(r, "body_force_every", "run", int, positive=True)
         need(r, "verlet_distance", "run", positive=True)
+        if "start_time" in p:
+            need(p, "start_time", "(top level)", non_negative=True)
         sv = p.get("servo")
         if sv is not None:
             for k in ("target_stress", "step", "max_error", "gap_min", "gap_max"):
@@ -799,7 +804,8 @@ class Couette:
             raise RuntimeError("wrote %d wall-force rows and %d snapshots, expected %d and %d"
                                % (state["rows"], state["snapshots"], total // every, total // snap_every))
         write_final_state(os.path.join(self.out, "final_raw.csv"), self.gids, self.L, self.Y0, self.Z0,
-                          O.bodies[self.top].state.pos[1] - self.Y0 - self.t if self.servo else self.H, O.time)
+                          O.bodies[self.top].state.pos[1] - self.Y0 - self.t if self.servo else self.H,
+                          self.p.get("start_time", 0.0) + O.time)
         max_overlap = 0.0
         for i in O.interactions:
             if i.isReal:

@@ -10,10 +10,14 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <sstream>
 #include <string>
 
+#include "deck.h"
 #include "granlub/case/case.h"
+#include "granlub/case/wall_bumps.h"
 #include "granlub/dem/command.h"
+#include "granlub/particles/wall_layer.h"
 #include "granlub/results/results.h"
 #include "granlub/run/sweep.h"
 #include "tiny_cell.h"
@@ -66,12 +70,17 @@ struct Run {
     double slip() const { return (out("slip_bottom") + out("slip_top")) / 1.0; }  // over U = 1 m/s
 };
 
+// The rough cell's time-step check, its half-step run warm-started from the full-step run's final
+// state: 0.04 s at dt, then 0.035 s at dt/2 (2500 and 4400 steps, the least that hold 20 plate updates).
+const char* kWarmRough = "refine_dt = true\nrefine_time = 0.035\n";
+
 const Run& run(const std::string& name) {
     static std::map<std::string, Run> cache;
     if (auto it = cache.find(name); it != cache.end()) return it->second;
     // the troughs: 6 mm wide between side walls, rough floor and top, the sides plane or as the floor
     const std::string text = name == "equal_smooth"  ? cell("", "")
                              : name == "equal_rough" ? cell("", "surface = \"bumps\"")
+                             : name == "warm_rough"  ? cell("", "surface = \"bumps\"", 0.0, 0.04) + kWarmRough
                              : name == "trough_plane_sides"
                                  ? cell("", "surface = \"bumps\"", 10e-3, 0.6)
                              : name == "trough_rough_sides"
@@ -87,7 +96,111 @@ const Run& run(const std::string& name) {
     return cache.emplace(name, std::move(r)).first->second;
 }
 
+// The atoms of one type in a LIGGGHTS data file (data_file: id type diameter density x y z).
+struct DataAtoms {
+    std::vector<double> x, y, z, diameter;
+};
+DataAtoms data_atoms(const std::string& data, int type) {
+    DataAtoms a;
+    std::istringstream in(data.substr(data.find("Atoms\n"), data.find("Velocities") - data.find("Atoms\n")));
+    std::string line;
+    std::getline(in, line);  // "Atoms"
+    for (; std::getline(in, line);) {
+        std::istringstream row(line);
+        long id = 0;
+        int t = 0;
+        double d = 0, rho = 0, x = 0, y = 0, z = 0;
+        if (!(row >> id >> t >> d >> rho >> x >> y >> z) || t != type) continue;
+        a.x.push_back(x), a.y.push_back(y), a.z.push_back(z), a.diameter.push_back(d);
+    }
+    return a;
+}
+
+// The deepest overlap of the grains of a data file with its floor's bumps, over a grain's radius,
+// by run.wall_layer's own check (wall_layer.h), with the bumps where the data file has them.
+double floor_bump_overlap(const std::string& data, const BumpLayer& layout, const ParticleBox& box, double U) {
+    const DataAtoms g = data_atoms(data, 1), b = data_atoms(data, 2);
+    ParticleSet grains;
+    for (std::size_t i = 0; i < g.x.size(); ++i)
+        grains.push_back(g.x[i], g.y[i], g.z[i], 0, 0, 0, 0.5 * g.diameter[i]);
+    BumpLayer bumps = layout;
+    bumps.x = b.x, bumps.across = b.z;
+    const WallLayerWall floor{.side = WallSide::Bottom, .plane = 0.0, .speed = U, .bumps = &bumps};
+    return wall_layer(grains, box, floor, U).max_bump_overlap;
+}
+
 }  // namespace
+
+// The data file puts the moving walls' bumps where a run's starting state had them: the floor's
+// (and the side walls') U t along from their layout for a state of time t, wrapped into the period
+// (wall_bumps.h moved_bumps); at the layout for a cold start; the top's, which do not move along x,
+// at their layout always.
+BOOST_AUTO_TEST_CASE(the_data_file_moves_the_floors_bumps_for_the_starting_state) {
+    const Case c = parse_case(cell("", "surface = \"bumps\"\nsides = \"as_bottom\"", 10e-3, 0.6), "rough.toml",
+                              test::dem_schema());
+    const OperatingPoint& p = c.points.front();
+    const dem::Settings s = dem::resolve_settings(c, p, RunOptions{});
+    BOOST_TEST_REQUIRE((s.bumps_bottom && s.bumps_top && s.bumps_side));
+    const double L = s.box.length, U = p.speed, t = 0.30028;  // U t = 37.5 periods of the 8 mm cell
+    const ParticleSet none;
+    auto bumps_of = [&](double time, int type) {
+        return data_atoms(dem::data_file(none, dem::slice_bounds(s.box, s.box_top()), 2500.0, "test",
+                                         dem::bump_atoms(s, U, time)),
+                          type);
+    };
+    const DataAtoms cold = bumps_of(0.0, dem::kBottom), warm = bumps_of(t, dem::kBottom);
+    BOOST_TEST_REQUIRE(warm.x.size() == s.bumps_bottom->size());
+    for (std::size_t k = 0; k < warm.x.size(); ++k) {
+        BOOST_TEST(cold.x[k] == s.bumps_bottom->x[k]);
+        const double moved = std::fmod(s.bumps_bottom->x[k] + U * t, L);
+        BOOST_TEST(warm.x[k] == moved, boost::test_tools::tolerance(1e-12));
+        BOOST_TEST((warm.x[k] >= 0.0 && warm.x[k] < L));
+        BOOST_TEST(warm.z[k] == s.bumps_bottom->across[k]);
+    }
+    const DataAtoms side = bumps_of(t, dem::kSide);
+    BOOST_TEST_REQUIRE(side.x.size() == 2 * s.bumps_side->size());
+    BOOST_TEST(side.x[0] == std::fmod(s.bumps_side->x[0] + U * t, L), boost::test_tools::tolerance(1e-12));
+    const DataAtoms top = bumps_of(t, dem::kTop);
+    BOOST_TEST_REQUIRE(top.x.size() == s.bumps_top->size());
+    for (std::size_t k = 0; k < top.x.size(); ++k) BOOST_TEST(top.x[k] == s.bumps_top->x[k]);
+}
+
+// A warm start meets its state's grains with the floor's bumps where they left them. The time-step
+// check's half-step run starts from the full-step run's final state (refine_time): its data file's
+// grains overlap its floor's bumps by no more than they overlapped them in that state (by
+// run.wall_layer's check), its own final state's time counts on from the state's, and its wall
+// layer is measured. Found 2026-12-06: every run put the bumps back at their layout, and on
+// cases/sawyer2001_regimes_rough_periodic 120 floor grains started up to 0.35 radii into them.
+BOOST_AUTO_TEST_CASE(a_warm_start_finds_the_floors_bumps_where_its_state_left_them) {
+    const Run& r = run("warm_rough");
+    BOOST_TEST_REQUIRE(r.code == 0);
+    const Case c = parse_case(cell("", "surface = \"bumps\"", 0.0, 0.04) + kWarmRough, "warm_rough.toml",
+                              test::dem_schema());
+    const OperatingPoint& p = c.points.front();
+    const dem::Settings s = dem::resolve_settings(c, p, RunOptions{});
+    const ParticleState from = read_particle_state(r.dir / "dt_full" / kFinalStateFile);
+    BOOST_TEST(from.time >= 0.04);
+    const std::string data = read_file(r.dir / dem::kData);
+    const double start = floor_bump_overlap(data, *s.bumps_bottom, s.box, p.speed);
+    // the state measured against its own bumps, and (for the record) against the layout, where the
+    // runs used to put them back
+    const double own = wall_layer_record(from, s.box, p.speed, &*s.bumps_bottom, nullptr, false)
+                           .at("bottom").at("max_bump_overlap_over_radius").get<double>();
+    ParticleState reset = from;
+    reset.time = 0;
+    const double at_layout = wall_layer_record(reset, s.box, p.speed, &*s.bumps_bottom, nullptr, false)
+                                 .at("bottom").at("max_bump_overlap_over_radius").get<double>();
+    BOOST_TEST_MESSAGE("floor grains into the bumps, over a radius: the state " << own << " (t = " << from.time
+                       << " s), the warm run's first step " << start << ", bumps at their layout " << at_layout);
+    BOOST_TEST(start < kBumpOverlapLimit);
+    BOOST_TEST(std::abs(start - own) < 1e-9, start << " vs " << own);
+    // the answer's final state counts on from dt_full's: 0.035 s and its persistence steps later
+    const ParticleState end = read_particle_state(r.dir / kFinalStateFile);
+    BOOST_TEST(end.time >= from.time + 0.035);
+    const auto& floor = r.s.run.at("wall_layer").at("bottom");
+    BOOST_TEST(!floor.contains("not_measured"), floor.dump());
+    BOOST_TEST(r.s.run.at("wall_layer").at("time_s").get<double>() == end.time);
+}
 
 BOOST_AUTO_TEST_CASE(rough_walls_are_built_and_carry_their_share) {
     const Run& r = run("equal_rough");

@@ -7,13 +7,16 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "granlub/particles/particles.h"
 #include "granlub/results/results.h"
+#include "granlub/yade/settings.h"
 #include "load_checks.h"
 #include "yade_installed.h"
 #include "yade_test_case.h"
@@ -125,14 +128,14 @@ namespace {
 // The rough, spread case below; `sides` adds [walls] lines (the side walls' surface). Bumps on the
 // side walls narrow the tiny cell's insertion box by a bump diameter: the plate then starts at 2.2 H
 // so that the grains fit.
-Case rough_case(const std::string& sides = "") {
+Case rough_case(const std::string& sides = "", const std::string& time = "0.08", const std::string& extra = "") {
     return tiny_case_edits({{"control = \"fill\"", "control = \"load\"\nnormal_stress = 200"},
-                            {"time = 1.5e-3", "time = 0.08"},
+                            {"time = 1.5e-3", "time = " + time},
                             {"snapshots = 30", "snapshots = 20"},
                             {"friction = 0.5\n\n[walls]", "friction = 0.5\nsize_spread = 0.1\n\n[walls]"},
                             {"roughness = 0.5", "roughness = 0.5\nsurface = \"bumps\"" + sides}},
                            "contact_time = 5e-5\nservo_every = 100\nstations = 6\nservo_max_gap = " +
-                               std::string(sides.empty() ? "1.75" : "2.2") + "\n");
+                               std::string(sides.empty() ? "1.75" : "2.2") + "\n" + extra);
 }
 const std::pair<int, fs::path>& rough_run(const std::string& sides = "") {
     static std::map<std::string, std::pair<int, fs::path>> cache;
@@ -185,6 +188,40 @@ BOOST_AUTO_TEST_CASE(the_moving_floors_bumps_hold_the_grains, *boost::unit_test:
     const Summary s = read_summary(dir / "summary.json");
     const auto& floor = s.run.at("wall_layer").at("bottom");
     BOOST_TEST(!floor.contains("not_measured"), floor.dump());
+}
+
+// A piece continued from the last one's final state ([yade] time_max) finds the floor's bumps where
+// that state's grains met them: params.json places them U t along from their layout for the state's
+// time t (wall_bumps.h moved_bumps), the final state's time counts on from t (particles.h
+// ParticleState::time), and the wall layer measures that state against the bumps so placed. The
+// rough case above for 0.02 s, a transient (its plate still falls onto the bed), and one more piece.
+// Found 2026-12-06: every run put the bumps back at their layout under grains that had left them
+// U t along (granlub dem's warm starts alike; tests/liggghts/test_grains_walls.cpp).
+BOOST_AUTO_TEST_CASE(a_continued_piece_finds_the_floors_bumps_where_they_were,
+                     *boost::unit_test::precondition(YadeInstalled())) {
+    const Case c = rough_case("", "0.02", "time_max = 0.04\n");
+    const auto [code, dir] = run_case(c, "rough-continued", 200.0);
+    BOOST_TEST_REQUIRE(code == 0);
+    const Summary s = read_summary(dir / "summary.json");
+    BOOST_TEST_REQUIRE(s.run.at("continuation").at("pieces").get<int>() == 2);
+    // the last piece's parameters: the first piece's end (0.02 s and its persistence steps)
+    const auto params = nlohmann::json::parse(read_text(dir / "params.json"));
+    const double t = params.at("start_time").get<double>();
+    BOOST_TEST(t >= 0.02);
+    const OperatingPoint& p = c.points.front();
+    const Settings st = resolve_settings(c, p, RunOptions{});
+    const auto x = params.at("bumps").at("bottom").at("x").get<std::vector<double>>();
+    BOOST_TEST_REQUIRE(x.size() == st.bumps_bottom->size());
+    for (std::size_t k = 0; k < x.size(); ++k)
+        BOOST_TEST(x[k] == std::fmod(st.bumps_bottom->x[k] + p.speed * t, c.cell.length),
+                   boost::test_tools::tolerance(1e-9));
+    const ParticleState end = read_particle_state(dir / kFinalStateFile);
+    BOOST_TEST(end.time >= t + 0.02);
+    const auto& layer = s.run.at("wall_layer");
+    BOOST_TEST(layer.at("time_s").get<double>() == end.time);
+    BOOST_TEST(!layer.at("bottom").contains("not_measured"), layer.at("bottom").dump());
+    BOOST_TEST_MESSAGE("continued piece from t = " << t << " s: floor grains into the bumps at its end "
+                       << layer.at("bottom").at("max_bump_overlap_over_radius").get<double>() << " radii");
 }
 
 // A weight plate on a rough top (issue 50): the plate and its bumps one rigid body under the load,

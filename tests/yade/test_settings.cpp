@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "granlub/error.h"
 #include "granlub/yade/driver.h"
@@ -269,6 +270,35 @@ BOOST_AUTO_TEST_CASE(parameter_file_carries_the_case) {
     const auto k = collision_params(c, p, s, 1.5);
     BOOST_TEST(k.at("task").get<std::string>() == "collision");
     BOOST_TEST(k.at("impact_speed").get<double>() == 1.5);
+}
+
+// A run from a state of time t (a warm start from granlub dem's, a continued piece) gets the floor's
+// and the side walls' bumps moved U t along from their layout, wrapped into the period (wall_bumps.h
+// moved_bumps), the top's at their layout, and start_time, from which the driver's final state
+// counts on (particles.h ParticleState::time); a cold start gets the layout and 0.
+BOOST_AUTO_TEST_CASE(a_start_from_a_state_moves_the_floors_bumps) {
+    const Case c = tiny_case("roughness = 0.5", "roughness = 0.5\nsurface = \"bumps\"\nsides = \"as_bottom\"");
+    const OperatingPoint& p = c.points.at(0);
+    const Settings s = resolve_settings(c, p, RunOptions{});
+    BOOST_TEST_REQUIRE((s.bumps_bottom && s.bumps_top && s.bumps_side));
+    const ParticleBox box{c.cell.length, c.cell.gap, c.cell.width, false};
+    const double t = 0.30028, L = box.length;  // U t = 76.3 periods of the cell
+    const auto cold = couette_params(c, p, s, box, "/tmp/p.csv");
+    const auto warm = couette_params(c, p, s, box, "/tmp/p.csv", kStartOverlap, t);
+    BOOST_TEST(cold.at("start_time").get<double>() == 0.0);
+    BOOST_TEST(warm.at("start_time").get<double>() == t);
+    const auto x0 = cold.at("bumps").at("bottom").at("x").get<std::vector<double>>();
+    const auto x = warm.at("bumps").at("bottom").at("x").get<std::vector<double>>();
+    BOOST_TEST(x0 == s.bumps_bottom->x, boost::test_tools::per_element());
+    BOOST_TEST_REQUIRE(x.size() == x0.size());
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        BOOST_TEST(x[k] == std::fmod(x0[k] + p.speed * t, L), boost::test_tools::tolerance(1e-12));
+        BOOST_TEST((x[k] >= 0.0 && x[k] < L));
+    }
+    BOOST_TEST(warm.at("bumps").at("bottom").at("z") == cold.at("bumps").at("bottom").at("z"));
+    BOOST_TEST(warm.at("bumps").at("sides").at("x").at(0).get<double>() ==
+                   std::fmod(s.bumps_side->x[0] + p.speed * t, L), boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(warm.at("bumps").at("top") == cold.at("bumps").at("top"));
 }
 
 // Both engines start from [particles] (declared once in core), not from each other's sections.

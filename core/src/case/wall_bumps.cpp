@@ -37,6 +37,16 @@ double bump_diameter(const Case& c, const Wall& w) {
 }
 }  // namespace
 
+BumpLayer moved_bumps(const BumpLayer& b, double shift, double length) {
+    BumpLayer m = b;
+    for (double& x : m.x) {
+        x = std::fmod(x + shift, length);
+        if (x < 0) x += length;
+        if (x >= length) x -= length;  // a rounding of -0 or of a shift just below a period
+    }
+    return m;
+}
+
 double bump_protrusion(const Case& c, const Wall& w) {
     return w.surface == WallSurface::Bumps && w.roughness > 0 ? 0.5 * bump_diameter(c, w) : 0.0;
 }

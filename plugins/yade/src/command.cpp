@@ -92,6 +92,7 @@ InitialParticles warm_start(const Case& c, const RunOptions& o, const OperatingP
     record = {{"from", from.string()}, {"time_s", st.time}, {"gap_m", st.gap}, {"grains", st.particles.size()},
               {"dem_run_id", read_table_run_id(from).value_or("")}};  // which dem run it started from
     init.particles = std::move(st.particles);
+    init.time = st.time;  // the floor's bumps start where dem's grains met them (particles.h)
     return init;
 }
 
@@ -105,8 +106,8 @@ Settings lengthened(const Settings& s, std::int64_t times) {
 
 // One YADE process: the run `s` from the grains in `from`, in the cell `start`, with its progress line.
 void run_piece(const DriverPaths& paths, const Case& c, const OperatingPoint& p, const Settings& s,
-               const ParticleBox& start, const fs::path& from, const fs::path& dir, std::size_t grains,
-               double overlap) {
+               const ParticleBox& start, const fs::path& from, double start_time, const fs::path& dir,
+               std::size_t grains, double overlap) {
     const auto steps = static_cast<double>(s.steps);
     // a guard against hangs (docs/yade-notes.md §5), not a performance limit: a 2-core machine shared
     // by several jobs ran YADE 6x slower than a quiet one
@@ -120,7 +121,7 @@ void run_piece(const DriverPaths& paths, const Case& c, const OperatingPoint& p,
         if (in >> done >> total) progress.update(done, fmt::format("{} grains", grains));
     };
     fs::remove(dir / "driver_summary.json");  // a stale marker must not pass for this run's
-    run_driver(paths, dir, couette_params(c, p, s, start, from, overlap), p.id, timeout, poll);
+    run_driver(paths, dir, couette_params(c, p, s, start, from, overlap, start_time), p.id, timeout, poll);
 }
 
 PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOptions& o, const fs::path& dir) {
@@ -150,6 +151,7 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
     // own transient, which the steady-state search cuts off.
     fs::path from = init.file;
     double wall_s = 0, end_gap = start.gap;  // the last piece's plate at its end
+    double start_time = init.time, end_time = init.time;  // the piece's state's, ParticleState::time
     PointResult r;
     const Continuation k = continue_until_steady(s.until_steady, s.time, "yade " + point_label(p.id, dir), [&](std::int64_t times,
                                                                                               int index) {
@@ -158,12 +160,13 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
             from = dir / "continued_from.csv";
             fs::copy_file(dir / kFinalStateFile, from, fs::copy_options::overwrite_existing);
             start.gap = end_gap;
+            start_time = end_time;
         }
-        run_piece(paths, c, p, piece, start, from, dir, init.particles.size(),
+        run_piece(paths, c, p, piece, start, from, start_time, dir, init.particles.size(),
                   index > 0 ? kContinuedOverlap : kStartOverlap);
         r = reduce_point(c, p, piece, init.box, init.particles.radius, dir, base);
         const ParticleState end = read_particle_state(dir / kFinalRawFile);
-        end_gap = end.gap;
+        end_gap = end.gap, end_time = end.time;
         write_particle_state(dir / kFinalStateFile, end,
                              {fmt::format("final state of granlub yade, case {} point {}", c.name, p.id),
                               "grains after the run, with spins; gap = top wall"});

@@ -68,7 +68,7 @@ json common_params(const Case& c, const OperatingPoint& p, const Settings& s, co
 }  // namespace
 
 json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
-                    const fs::path& initial_file, double overlap) {
+                    const fs::path& initial_file, double overlap, double start_time) {
     json j = common_params(c, p, s, "couette");
     j["cell"] = {{"gap", box.gap}, {"length", box.length}, {"width", box.width}, {"periodic_z", box.periodic_z}};
     j["wall_speed"] = p.speed;
@@ -83,14 +83,17 @@ json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, c
                 {"persistence_intervals", s.persistence_intervals}};
     j["initial_file"] = fs::absolute(initial_file).string();
     j["initial_overlap"] = overlap;
+    j["start_time"] = start_time;
     // rough walls: the bumps' centres in the wall's plane (granlub y = 0, and the top's start; the
-    // side walls' at z = -W/2 and W/2, their heights in "y")
+    // side walls' at z = -W/2 and W/2, their heights in "y") at the run's start: the floor's and the
+    // sides' moved U start_time from their layout, where the starting state's grains met them
     auto layer = [](const BumpLayer& b, const char* across) {
         return json{{"diameter", b.diameter}, {"x", b.x}, {across, b.across}};
     };
-    if (s.bumps_bottom) j["bumps"]["bottom"] = layer(*s.bumps_bottom, "z");
+    const double shift = p.speed * start_time;
+    if (s.bumps_bottom) j["bumps"]["bottom"] = layer(moved_bumps(*s.bumps_bottom, shift, box.length), "z");
     if (s.bumps_top) j["bumps"]["top"] = layer(*s.bumps_top, "z");
-    if (s.bumps_side) j["bumps"]["sides"] = layer(*s.bumps_side, "y");
+    if (s.bumps_side) j["bumps"]["sides"] = layer(moved_bumps(*s.bumps_side, shift, box.length), "y");
     if (s.servo.load) {  // the plate servo of granlub/particles/servo.h, lengths in m
         const ServoSettings& v = s.servo;
         j["servo"] = {{"target_stress", v.target_stress},

@@ -1,6 +1,7 @@
 // Rough walls (wall_bumps.h): the layout and the roughness it builds, and the cases it refuses.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <boost/test/unit_test.hpp>
 
@@ -132,4 +133,21 @@ BOOST_AUTO_TEST_CASE(side_walls_as_the_bottom_carry_its_bumps_up_to_the_top) {
     const std::string m = error_of(rough("roughness = 0.5\nsurface = \"bumps\"\nsides = \"as_bottom\""));
     BOOST_TEST(m.find("[walls] sides") != std::string::npos, m);
     BOOST_TEST(m.find("needs side walls") != std::string::npos, m);
+}
+
+// A layer moved along x stays in the period: the shift wraps as the layout does, a whole number of
+// periods changes nothing, and the layout's other fields stay (what a run from a state starts).
+BOOST_AUTO_TEST_CASE(moved_bumps_wrap_into_the_period) {
+    BumpLayer b;
+    b.diameter = 1.0, b.spacing = 2.0, b.count_x = 4, b.rows = 1;
+    b.x = {0.0, 2.0, 4.0, 6.0}, b.across = {0.1, 0.2, 0.3, 0.4};
+    const double L = 8.0;
+    const BumpLayer m = moved_bumps(b, 3.0 * L + 2.5, L);
+    const std::vector<double> want{2.5, 4.5, 6.5, 0.5};
+    for (std::size_t k = 0; k < 4; ++k) BOOST_TEST(m.x[k] == want[k], tt::tolerance(1e-12));
+    BOOST_TEST(m.across == b.across, tt::per_element());
+    BOOST_TEST(m.diameter == b.diameter);
+    BOOST_TEST(moved_bumps(b, 5.0 * L, L).x == b.x, tt::per_element());
+    for (double x : moved_bumps(b, -0.5, L).x) BOOST_TEST((x >= 0.0 && x < L), x);
+    for (double x : moved_bumps(b, L - 1e-17, L).x) BOOST_TEST((x >= 0.0 && x < L), x);
 }

@@ -70,6 +70,11 @@ std::optional<BumpLayer> wall_bumps(const Case& c, const OperatingPoint& p, cons
 // above the top wall meet no grain. Throws CaseError as wall_bumps, or when y_top holds no row.
 std::optional<BumpLayer> side_bumps(const Case& c, const OperatingPoint& p, const ParticleBox& box, double y_top);
 
+// The layer b moved `shift` m along x from its layout, its x wrapped into [0, length) as the
+// layout's. A wall moving at U has carried its bumps U t in the time t since the layout: a run that
+// starts from a state of time t (particles.h ParticleState::time) places them there.
+BumpLayer moved_bumps(const BumpLayer& b, double shift, double length);
+
 // How far a wall's bumps reach into the gap, m: half their diameter, 0 for a plane (no layout).
 double bump_protrusion(const Case& c, const Wall& w);
 

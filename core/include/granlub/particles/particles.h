@@ -104,7 +104,11 @@ std::vector<std::string> read_particles_comments(const std::filesystem::path& pa
 struct ParticleState {
     ParticleSet particles;
     double gap = 0;   // m, top wall position
-    double time = 0;  // s, simulated time at which the state was taken
+    // s, the simulated time since the grains' cold start: a run that starts from a state counts on
+    // from its time (a chain dt_full -> answer -> continued piece, or dem -> yade, adds up), so that
+    // the moving walls' bumps, U time from their layout, are where the grains met them (wall_bumps.h
+    // moved_bumps; run.wall_layer places them so)
+    double time = 0;
 };
 // A particle engine's state at the end of a point's run, in its point folder: another run's warm
 // start (granlub yade from granlub dem's), and the start of a continued run (until_steady.h).
@@ -121,6 +125,7 @@ struct InitialParticles {
     ParticleBox box;
     std::filesystem::path file;
     bool reused = false;  // true: an existing file with the same key was read
+    double time = 0;      // s, the state's time when the run starts from one (ParticleState), else 0
 };
 
 // The initial configuration of a case point ([cell] geometry = "annulus": ring-frame grains from

@@ -15,9 +15,10 @@
 //     between the bumps onto the plane touches it as on a plane wall. Each grain-wall contact is one
 //     sample (a grain may touch two bumps and the plane); `grains` counts the grains with one or more.
 //     The bumps move with their wall: at the state's time t the floor's are at x0 + U t (mod the
-//     length), their layout at t = 0 (both engines start each run from it); the top's lie in the
-//     plate's plane. If the grains overlap the bumps so placed by more than kBumpOverlapLimit a,
-//     the bumps are not where the engine had them and the wall is not measured.
+//     length), x0 their layout at t = 0, t counted from the grains' cold start (particles.h
+//     ParticleState::time: a run from a state starts its bumps there, wall_bumps.h moved_bumps);
+//     the top's lie in the plate's plane. If the grains overlap the bumps so placed by more than
+//     kBumpOverlapLimit a, the bumps are not where the engine had them and the wall is not measured.
 //
 // Per contact, with v, w the grain's velocity and spin, U_w the wall's speed along x, U the floor's:
 //   g = v - U_w x + w x (-a n)        the relative velocity of the grain's surface at the contact

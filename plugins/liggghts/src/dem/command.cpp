@@ -42,15 +42,16 @@ InsertionOptions insertion(const Case& c, const Settings& s) {
     return ins;
 }
 
-// The deck's final dump (and plate position): the grains with their spins at the end.
-ParticleState read_final_state(const Settings& s, const fs::path& dir) {
+// The deck's final dump (and plate position): the grains with their spins at the end, `start` s
+// after the grains' cold start (the run's starting state's time: ParticleState::time counts on).
+ParticleState read_final_state(const Settings& s, const fs::path& dir, double start) {
     ParticleState st;
     double step = 0;
     const std::size_t n = for_each_snapshot(
         dir / kFinalDump, [&](const ParticleSet& g, double k) { st.particles = g, step = k; }, true);
     if (n != 1) throw SolverError(fmt::format("{}: {} snapshots, expected the final one", (dir / kFinalDump).string(), n));
     st.gap = s.load ? read_final_plate(dir / kFinalPlateFile) : s.box.gap;
-    st.time = step * s.time_step;
+    st.time = start + step * s.time_step;
     return st;
 }
 
@@ -76,14 +77,9 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     const double d_g = c.grains.diameter;
     // load control: room above H for the plate to rise
     const DataBounds bounds = s.ring ? ring_bounds(s, d_g) : bump_bounds(slice_bounds(s.box, s.box_top()), s);
-    std::vector<BumpAtoms> bumps;
-    if (s.bumps_bottom) bumps.push_back({*s.bumps_bottom, kBottom, 0.0, p.speed});
-    if (s.bumps_top) bumps.push_back({*s.bumps_top, kTop, s.plate_start, 0.0});
-    if (s.bumps_side)
-        for (double z : {-0.5 * s.box.width, 0.5 * s.box.width})
-            bumps.push_back({*s.bumps_side, kSide, z, p.speed, true});
     write_file_atomic(dir / kData, data_file(init.particles, bounds, c.grains.density,
-                                             fmt::format("case {} point {} ({})", c.name, p.id, prov), bumps));
+                                             fmt::format("case {} point {} ({})", c.name, p.id, prov),
+                                             bump_atoms(s, p.speed, init.time)));
     if (s.ring && s.ring_mesh) write_ring_meshes(dir, s.annulus, s.plate_start, ring_wall_height(s, d_g), s.ring_facet_count);
     else
         for (const char* mesh : kRingMeshes) fs::remove(dir / mesh);  // an earlier run's, not this deck's
@@ -119,7 +115,7 @@ OneRun run_once(const Case& c, const OperatingPoint& p, const Settings& s, const
     };
     rec.snapshots = dump(kSnapshots);
     rec.persistence = dump(kContactsFile);
-    rec.final_state = read_final_state(s, dir);
+    rec.final_state = read_final_state(s, dir, init.time);
     ParticlePipeline pl{.c = c,
                         .p = p,
                         .box = s.box,
@@ -178,6 +174,7 @@ Continued run_continued(const Case& c, const OperatingPoint& p, const Settings& 
             start.particles = st.particles;
             start.file = dir / kFinalState;
             start.reused = true;
+            start.time = st.time;
             piece = lengthened(s, times);
             if (s.load) piece.plate_start = st.gap;
         }
@@ -254,6 +251,7 @@ Refined refine_dt(const Case& c, const OperatingPoint& p, const Settings& s, con
         start.particles = st.particles;
         start.file = full / kFinalState;
         start.reused = true;
+        start.time = st.time;
         if (s.load) r.settings.back().plate_start = st.gap;
     }
     if (r.runs.size() < 2) r.runs.push_back(run_continued(c, p, r.settings.back(), start, dir, prov));

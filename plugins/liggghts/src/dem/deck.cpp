@@ -27,6 +27,17 @@ DataBounds bump_bounds(DataBounds b, const Settings& s) {
     return b;
 }
 
+std::vector<BumpAtoms> bump_atoms(const Settings& s, double U, double t) {
+    const double L = s.box.length;
+    std::vector<BumpAtoms> bumps;
+    if (s.bumps_bottom) bumps.push_back({moved_bumps(*s.bumps_bottom, U * t, L), kBottom, 0.0, U});
+    if (s.bumps_top) bumps.push_back({*s.bumps_top, kTop, s.plate_start, 0.0});
+    if (s.bumps_side)
+        for (double z : {-0.5 * s.box.width, 0.5 * s.box.width})
+            bumps.push_back({moved_bumps(*s.bumps_side, U * t, L), kSide, z, U, true});
+    return bumps;
+}
+
 std::string data_file(const ParticleSet& p, const DataBounds& b, double density, const std::string& title,
                       const std::vector<BumpAtoms>& bumps) {
     std::size_t atoms = p.size();

@@ -49,7 +49,7 @@ DataBounds slice_bounds(const ParticleBox& box, double top);
 inline constexpr double kBumpDensityFactor = 1e6;
 // A floor's or top's layer lies in the plane y = `plane`, a side wall's in z = `plane`.
 struct BumpAtoms {
-    const BumpLayer& layer;
+    BumpLayer layer;  // where the run starts them
     AtomType type;
     double plane;
     double vx;
@@ -57,6 +57,10 @@ struct BumpAtoms {
     double y(std::size_t k) const { return side ? layer.across[k] : plane; }
     double z(std::size_t k) const { return side ? plane : layer.across[k]; }
 };
+// The point's bumps (floor at speed U, top at the plate's start, side walls at U) for a run that
+// starts at time t (InitialParticles::time, 0 from the initial grains): the moving ones U t along
+// from their layout (wall_bumps.h moved_bumps), where the starting state's grains met them.
+std::vector<BumpAtoms> bump_atoms(const Settings& s, double U, double t);
 // The data file's box below the floor and above the box top: room for the bumps' halves.
 DataBounds bump_bounds(DataBounds b, const Settings& s);
 

@@ -31,8 +31,12 @@ DriverPaths locate_driver();
 // own soft contacts, pressed by the load (until_steady.h), and passes kContinuedOverlap.
 inline constexpr double kStartOverlap = 0.01;
 inline constexpr double kContinuedOverlap = 0.1;
+// `start_time`: the starting state's time (ParticleState::time; 0 from the initial grains): the
+// floor's and side walls' bumps go in moved U start_time from their layout (wall_bumps.h
+// moved_bumps), and the driver's final state counts on from it ("start_time").
 nlohmann::json couette_params(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
-                              const std::filesystem::path& initial_file, double overlap = kStartOverlap);
+                              const std::filesystem::path& initial_file, double overlap = kStartOverlap,
+                              double start_time = 0);
 nlohmann::json collision_params(const Case& c, const OperatingPoint& p, const Settings& s, double impact_speed);
 
 // Writes `params` to dir/params.json, copies the driver into dir (the folder can be rerun by
