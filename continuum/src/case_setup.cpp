@@ -228,6 +228,12 @@ Settings resolve_settings(const Case& c) {
                                                s.wall_energy_source));
     resolve_cross_section_settings(c, s);
     resolve_flat_wall_impacts(c, sec, s);
+    // A plane wall under "built" has its friction in its impact law: with no bumpy wall the key would change nothing.
+    if (s.plane_walls_from_impact && s.wall_e_eff != "none" && c.bottom.surface != WallSurface::Bumps &&
+        c.top.surface != WallSurface::Bumps)
+        sec.fail("wall_friction_restitution",
+                 "every wall here is a plane whose friction is already in its impact law (wall_roughness = \"built\"), "
+                 "so as_grains would change nothing; allowed: \"none\" (or wall_roughness = \"declared\")");
     return s;
 }
 

@@ -466,8 +466,7 @@ BOOST_AUTO_TEST_CASE(wall_roughness_from_the_bumps) {
 // cross-section take the law too; it refuses the walls' families, conventions and frictions it does not fit.
 BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     const std::string keys = "[continuum]\nclosures = \"garzo_dufty\"\nwall_roughness = \"built\"\n"
-                             "friction_restitution = \"chialvo_sundaresan\"\n"
-                             "wall_friction_restitution = \"as_grains\"\n";
+                             "friction_restitution = \"chialvo_sundaresan\"\n";
     const auto with_wall_friction = [](const std::string& mu) {
         std::string c(kCase);
         c.replace(c.find("[walls]\n"), 8, "[walls]\nfriction = " + mu + "\n");
@@ -545,6 +544,14 @@ BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     BOOST_TEST(xq.inner.params.slip_dissipation == 0.25);
     BOOST_TEST(xq.outer.params.impacts != nullptr);
     BOOST_TEST(xq.outer.params.contact_slip_share == 0.5);
+    // bumpy floor and top with their impacts as_grains: the plane side walls keep the law's e_w (no e_eff on top)
+    std::string bumpy(trough);
+    bumpy.replace(bumpy.find("roughness = 0.5\n"), 16, "roughness = 0.5\nsurface = \"bumps\"\n");
+    const Case xb = parse(keys + "geometry = \"cross_section\"\nwall_friction_restitution = \"as_grains\"\n", bumpy);
+    const auto xbq = continuum::cross_section_problem_for(xb, continuum::resolve_settings(xb), xb.points.front());
+    BOOST_TEST(xbq.gap.bottom.params.dissipation_e() < 0.8);  // e_eff(0.9, 0.5) = 0.733 on the bumps
+    BOOST_TEST(xbq.outer.params.dissipation_e() == 0.9);
+    BOOST_TEST(xbq.outer.params.r5 == 1.0 / 7.0);
 
     std::string err = settings_error("[continuum]\nwall_roughness = \"built\"\n");  // lun84: the R8 convention
     BOOST_TEST(contains(err, "wall_roughness"), err);
@@ -552,6 +559,10 @@ BOOST_AUTO_TEST_CASE(built_plane_walls_follow_waltons_impact_law) {
     err = settings_error(keys + "wall_model = \"johnson_jackson\"\n", frictional);
     BOOST_TEST(contains(err, "wall_roughness"), err);
     BOOST_TEST(contains(err, "kinetic"), err);
+    // all walls plane: as_grains would change nothing (the law holds the friction), refused naming the key
+    err = settings_error(keys + "wall_friction_restitution = \"as_grains\"\n", frictional);
+    BOOST_TEST(contains(err, "wall_friction_restitution"), err);
+    BOOST_TEST(contains(err, "change nothing"), err);
     err = settings_error("[continuum]\nflat_wall_spin = \"none\"\n");
     BOOST_TEST(contains(err, "flat_wall_spin"), err);
     BOOST_TEST(contains(err, "built"), err);
