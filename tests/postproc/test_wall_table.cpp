@@ -11,6 +11,7 @@
 #include "granlub/results/file_io.h"
 #include "granlub/results/results.h"
 #include "results/collect.h"
+#include "tables/wall_layer_table.h"
 #include "tables/wall_table.h"
 #include "synthetic.h"
 
@@ -126,6 +127,37 @@ BOOST_AUTO_TEST_CASE(every_solver_s_walls_and_the_continuum_s_map_on_the_particl
     BOOST_TEST(dem_nu.find("steady window") != std::string::npos);
     // its profile is its mid-width column, and the legend says so
     BOOST_TEST(html.find("continuum (mid-width)") != std::string::npos);
+}
+
+// The grains beside each wall (run.wall_layer of the particle runs): a row per run and wall with the record's
+// slip, spin part and contact slip, a wall the run did not measure saying why; the continuum (no record) has
+// no row; no record anywhere, no table.
+BOOST_AUTO_TEST_CASE(the_wall_layer_table_reads_the_particle_runs_records) {
+    auto s = test::make_case("wall_layer_table");
+    for (const char* solver : {"continuum", "dem"}) test::write_solver(s, solver);
+    BOOST_TEST(postproc::wall_layer_table(postproc::collect(s.c, s.o)).rows.empty());
+    for (const OperatingPoint& p : s.c.points)
+        test::patch_run(s, "dem", p.id,
+                        {{"wall_layer",
+                          {{"bottom", {{"grains", 290}, {"slip_over_U", 0.26}, {"slip_over_U_stderr", 0.003},
+                                       {"rolling_over_U", 0.146}, {"rolling_over_U_stderr", 0.009},
+                                       {"contact_slip_over_U", 0.114}, {"contact_slip_over_U_stderr", 0.008},
+                                       {"rolling_share", 0.5615}, {"rolling_fraction", 0.33}}},
+                           {"top", {{"not_measured", "no grain touches the wall"}}}}}});
+    const postproc::Table t = postproc::wall_layer_table(postproc::collect(s.c, s.o));
+    BOOST_TEST_REQUIRE(t.rows.size() == 2 * s.c.points.size());  // the dem's floor and top at every point
+    for (const auto& r : t.rows) {
+        BOOST_TEST(r[0].text == "dem");
+        if (r[2].text == "floor") {
+            BOOST_TEST(r[3].text == "290");
+            BOOST_TEST(r[4].text.starts_with("0.26 ±"), r[4].text);
+            BOOST_TEST(r[6].text.starts_with("0.114 ±"), r[6].text);
+            BOOST_TEST(r[7].text == "0.56");
+        } else {
+            BOOST_TEST(r[2].text == "top");
+            BOOST_TEST(r[3].text == "not measured (no grain touches the wall)");
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -18,6 +18,7 @@
 #include "tables/exponents.h"
 #include "tables/provenance.h"
 #include "tables/run_tables.h"
+#include "tables/wall_layer_table.h"
 #include "tables/wall_table.h"
 
 namespace granlub::postproc {
@@ -208,6 +209,21 @@ void wall_part(Report& rep, const Case& c, const Collection& col) {
              "forces in “What each solver's numbers mean”). “—”: the solver has no such wall, and why.");
 }
 
+// Under the slip figures: the grains beside each wall, from the particle runs' final states (run.wall_layer).
+void wall_layer_part(Report& rep, const Collection& col) {
+    Table t = wall_layer_table(col);
+    if (t.rows.empty()) return;
+    rep.heading("The grains beside each wall: slip, and the part their spin carries back", 3);
+    rep.table(std::move(t));
+    rep.note("From each particle run's final state (one snapshot; the steady snapshots hold no spins), over the grains "
+             "touching the wall: their slip against it (U − v_x at the floor, v_x at the top, over U), the part of it "
+             "their spin carries back (a ω_z), and what is left at their contact points. Rolling share = 1 − contact-"
+             "point slip / slip: 1 for grains rolling without sliding, 0 for grains sliding without spin; contacts "
+             "rolling: the share sliding slower than 0.02 U. A wall condition that sees the grains' slip alone grips "
+             "too hard where they roll (the continuum's flat walls take the spin in: [continuum] flat_wall_spin). "
+             "Errors over the contacts, taken as independent: lower bounds.");
+}
+
 void exponents(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
     Table ex = exponent_table(col, metrics);
     if (ex.rows.empty())
@@ -282,6 +298,7 @@ Report build_report(const Case& c, const Collection& col, const std::vector<Metr
     // regimes after them, the ring after the figures.
     for (const auto& heading : figure_headings()) {
         figure_part(rep, col, figs, heading);
+        if (heading == kSlipHeading) wall_layer_part(rep, col);
         if (heading == kStressHeading) {
             exponents(rep, col, metrics);
             wall_part(rep, c, col);
