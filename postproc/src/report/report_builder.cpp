@@ -197,31 +197,34 @@ void figure_part(Report& rep, const Collection& col, const ReportFigures& figs, 
     }
 }
 
+// A table under its own heading with its note; nothing when it has no rows.
+void titled_table(Report& rep, const char* heading, Table t, const char* note) {
+    if (t.rows.empty()) return;
+    rep.heading(heading, 3);
+    rep.table(std::move(t));
+    rep.note(note);
+}
+
 // Every wall's shear stress where some solver had side walls (tables/wall_table.h).
 void wall_part(Report& rep, const Case& c, const Collection& col) {
-    Table t = wall_stress_table(c, col);
-    if (t.rows.empty()) return;
-    rep.heading("Every wall's shear stress", 3);
-    rep.table(std::move(t));
-    rep.note("The floor and both side walls move at U, the top is still. The side walls' drag over the top's: the "
-             "continuum's own (its walls' forces); a particle run's 2 τ_side H / (τ_top W), over the box's side and "
-             "top areas ([cell] gap, width); in a steady bed the forces balance and both equal 1 − τ_floor/τ_top. Inner and outer side walls differ by the centripetal force where a solver has it (the body "
-             "forces in “What each solver's numbers mean”). “—”: the solver has no such wall, and why.");
+    titled_table(rep, "Every wall's shear stress", wall_stress_table(c, col),
+                 "The floor and both side walls move at U, the top is still. The side walls' drag over the top's: the "
+                 "continuum's own (its walls' forces); a particle run's 2 τ_side H / (τ_top W), over the box's side and "
+                 "top areas ([cell] gap, width); in a steady bed the forces balance and both equal 1 − τ_floor/τ_top. "
+                 "Inner and outer side walls differ by the centripetal force where a solver has it (the body forces in "
+                 "“What each solver's numbers mean”). “—”: the solver has no such wall, and why.");
 }
 
 // Under the slip figures: the grains beside each wall, from the particle runs' final states (run.wall_layer).
 void wall_layer_part(Report& rep, const Collection& col) {
-    Table t = wall_layer_table(col);
-    if (t.rows.empty()) return;
-    rep.heading("The grains beside each wall: slip, and the part their spin carries back", 3);
-    rep.table(std::move(t));
-    rep.note("From each particle run's final state (one snapshot; the steady snapshots hold no spins), over the grains "
-             "touching the wall: their slip against it (U − v_x at the floor, v_x at the top, over U), the part of it "
-             "their spin carries back (a ω_z), and what is left at their contact points. Rolling share = 1 − contact-"
-             "point slip / slip: 1 for grains rolling without sliding, 0 for grains sliding without spin; contacts "
-             "rolling: the share sliding slower than 0.02 U. A wall condition that sees the grains' slip alone grips "
-             "too hard where they roll (the continuum's flat walls take the spin in: [continuum] flat_wall_spin). "
-             "Errors over the contacts, taken as independent: lower bounds.");
+    titled_table(rep, "The grains beside each wall: slip, and the part their spin carries back", wall_layer_table(col),
+                 "From each particle run's final state (one snapshot; the steady snapshots hold no spins), over the "
+                 "grains touching the wall: their slip against it (U − v_x at the floor, v_x at the top, over U), the "
+                 "part of it their spin carries back (a ω_z), and what is left at their contact points. Rolling share = "
+                 "1 − contact-point slip / slip: 1 for grains rolling without sliding, 0 for grains sliding without "
+                 "spin; contacts rolling: the share sliding slower than 0.02 U. A wall condition that sees the grains' "
+                 "slip alone grips too hard where they roll (the continuum's flat walls take the spin in: [continuum] "
+                 "flat_wall_spin). Errors over the contacts, taken as independent: lower bounds.");
 }
 
 void exponents(Report& rep, const Collection& col, const std::vector<MetricRow>& metrics) {
