@@ -164,10 +164,13 @@ PointResult solve_point(const Case& c, const OperatingPoint& p0, const RunOption
         }
         run_piece(paths, c, p, piece, start, from, start_time, dir, init.particles.size(),
                   index > 0 ? kContinuedOverlap : kStartOverlap);
-        r = reduce_point(c, p, piece, init.box, init.particles.radius, dir, base);
-        const ParticleState end = read_particle_state(dir / kFinalRawFile);
-        end_gap = end.gap, end_time = end.time;
-        write_particle_state(dir / kFinalStateFile, end,
+        // the driver's final state, read once: run.wall_layer, and the next piece's start
+        std::optional<ParticleState> end;
+        if (fs::exists(dir / kFinalRawFile)) end = read_particle_state(dir / kFinalRawFile);
+        r = reduce_point(c, p, piece, init.box, init.particles.radius, dir, base, end);
+        if (!end) end = read_particle_state(dir / kFinalRawFile);  // throws, naming the missing file
+        end_gap = end->gap, end_time = end->time;
+        write_particle_state(dir / kFinalStateFile, *end,
                              {fmt::format("final state of granlub yade, case {} point {}", c.name, p.id),
                               "grains after the run, with spins; gap = top wall"});
         fs::remove(dir / kFinalRawFile);

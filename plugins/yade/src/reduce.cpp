@@ -87,7 +87,8 @@ std::size_t read_samples(const fs::path& file, std::size_t n, std::size_t snapsh
 }  // namespace
 
 PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
-                         const std::vector<double>& radius, const fs::path& dir, Summary base) {
+                         const std::vector<double>& radius, const fs::path& dir, Summary base,
+                         std::optional<ParticleState> final_state) {
     const json ds = read_json(dir / "driver_summary.json", "the YADE run did not finish");
     const auto n = ds.at("grains").get<std::size_t>();
     const auto snapshots = ds.at("snapshots").get<std::size_t>();
@@ -116,8 +117,7 @@ PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings&
     rec.snapshots = {(dir / "samples.bin").string(), [&](const SnapshotVisitor& each) {
                          return read_samples(dir / "samples.bin", n, snapshots, snapshot_dt, radius, box, each);
                      }};
-    // the grains with their spins at the end (run.wall_layer), as the driver left them
-    if (fs::exists(dir / kFinalRawFile)) rec.final_state = read_particle_state(dir / kFinalRawFile);
+    rec.final_state = std::move(final_state);  // the grains with their spins at the end: run.wall_layer
     // contact persistence after the run (flow_regime.h), as granlub dem measures it
     const auto persistence_snapshots = ds.value("persistence_snapshots", std::size_t{0});
     const double persistence_dt = dt * static_cast<double>(s.persistence_every);

@@ -39,7 +39,7 @@ Table wall_layer_table(const Collection& col) {
                                                                               : "";
                 if (!w || !why.empty()) {
                     row.push_back({fmt::format("not measured ({})", why.empty() ? "no record" : why), cls});
-                    for (int k = 0; k < 5; ++k) row.push_back({"", cls});
+                    row.resize(t.header.size(), {"", cls});
                 } else {
                     any = true;
                     row.push_back({num(field(*w, "grains"), 4), cls});

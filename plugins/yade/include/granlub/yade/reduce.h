@@ -9,11 +9,12 @@
 //                        grains in the order of the initial file (deleted once coarse-grained)
 //   plate.csv            control = load: plate position (m) after each servo window; reduced
 //                        to gap.csv and run.load_control as `granlub dem` (granlub/particles/load_control.h)
-//   final_raw.csv        the grains with their spins at the end (core particles.h's state format):
-//                        run.wall_layer (granlub/particles/wall_layer.h); the command makes it the
-//                        point's final_state.csv
+//   final_raw.csv        the grains with their spins at the end (core particles.h's state format),
+//                        read once by the command: passed here for run.wall_layer
+//                        (granlub/particles/wall_layer.h), then the point's final_state.csv
 #pragma once
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "granlub/case/case.h"
@@ -32,8 +33,10 @@ WallForceSeries read_wall_forces(const std::filesystem::path& file);
 
 // Builds the point's profile and summary (summary starts as `base`, from make_summary()).
 // `radius` gives each grain's radius in file order. Throws SolverError on missing or
-// inconsistent driver output.
+// inconsistent driver output. `final_state`: the driver's final_raw.csv, read by the caller (none: the wall
+// layer is recorded as not measured).
 PointResult reduce_point(const Case& c, const OperatingPoint& p, const Settings& s, const ParticleBox& box,
-                         const std::vector<double>& radius, const std::filesystem::path& dir, Summary base);
+                         const std::vector<double>& radius, const std::filesystem::path& dir, Summary base,
+                         std::optional<ParticleState> final_state = {});
 
 }  // namespace granlub::yade
