@@ -76,6 +76,13 @@ std::optional<BumpLayer> wall_bumps(const Case& c, const OperatingPoint& p, cons
     double n = std::max(1.0, std::round(L / l));
     if (!fits(n)) n = std::floor(L / b.diameter);
     if (!fits(n)) fail(fmt::format("the periodic length {:g} m holds no bump of {:g} m", L, b.diameter));
+    // a layer no engine could hold (and no count a size_t holds): refused before any cast or allocation
+    const auto too_many = [&](double bumps, const char* along) {
+        if (bumps > kMaxBumpsPerLayer)
+            fail(fmt::format("{:g} bumps {} ([cell] length {:g} m, width {:g} m): more than {:g} in one layer", bumps,
+                             along, L, box.width, kMaxBumpsPerLayer));
+    };
+    too_many(n, "in a row along the flow");
     b.count_x = static_cast<std::size_t>(n);
     b.spacing = L / n;
     b.roughness = b.spacing / (b.diameter + d);
@@ -94,6 +101,7 @@ std::optional<BumpLayer> wall_bumps(const Case& c, const OperatingPoint& p, cons
     if (box.periodic_z) {
         // rows alternate their offset: an even count keeps the period; stretched, never squeezed
         // (squeezed rows would overlap); one row when two do not fit
+        too_many(n * std::floor(box.width / row * (1 + 1e-12)), "in the layer");
         auto rows = static_cast<std::size_t>(std::floor(box.width / row * (1 + 1e-12)));
         rows = rows >= 2 ? rows - rows % 2 : 1;
         b.rows = rows;
@@ -101,6 +109,7 @@ std::optional<BumpLayer> wall_bumps(const Case& c, const OperatingPoint& p, cons
     } else {
         const double span = box.width - b.diameter;  // centres from -W/2 + d_w/2 to W/2 - d_w/2
         if (span < 0) fail(fmt::format("bumps of {:g} m are wider than the cell ({:g} m)", b.diameter, box.width));
+        too_many(n * (std::floor(span / row) + 1), "in the layer");
         b.rows = static_cast<std::size_t>(std::floor(span / row)) + 1;
         b.row_spacing = row;
     }
@@ -120,7 +129,12 @@ std::optional<BumpLayer> side_bumps(const Case& c, const OperatingPoint& p, cons
     std::optional<BumpLayer> b = wall_bumps(c, p, p.bottom, "bottom", box);
     if (!b) return std::nullopt;
     b->row_spacing = b->spacing * std::sqrt(3.0) / 2.0;
-    b->rows = static_cast<std::size_t>(std::floor(y_top / b->row_spacing * (1 + 1e-12)));
+    const double rows = std::floor(y_top / b->row_spacing * (1 + 1e-12));
+    if (rows * static_cast<double>(b->count_x) > kMaxBumpsPerLayer)
+        c.section("walls").fail("sides", fmt::format("point {}: {:g} rows of bumps up a side wall to its top ({:g} m): "
+                                                     "more than {:g} bumps in one layer",
+                                                     p.id, rows, y_top, kMaxBumpsPerLayer));
+    b->rows = static_cast<std::size_t>(rows);
     if (b->rows == 0)
         c.section("walls").fail("sides", fmt::format("point {}: the side walls' rows of bumps are {:g} m apart; the "
                                                      "cell's top ({:g} m) holds none",

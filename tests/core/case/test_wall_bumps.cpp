@@ -91,6 +91,12 @@ BOOST_AUTO_TEST_CASE(walls_that_cannot_be_built_are_refused_with_the_key_and_wha
     m = error_of(rough("roughness = 0.5\nsurface = \"bumps\"",
                        with("width = 0.0", "width = 0.01\nannulus_radius = 0.02\ngeometry = \"annulus\"")));
     BOOST_TEST(m.find("in a slice only") != std::string::npos, m);
+    // a layer of more bumps than any cell holds (an absurd length: found by the case fuzzer as a cast of 2e67 to
+    // an integer) is refused before it is counted, naming the length
+    m = error_of(rough("roughness = 0.5\nsurface = \"bumps\"", with("length = 20.0e-3", "length = 1.5e64")));
+    BOOST_TEST(m.find("[walls] roughness = 0.5") != std::string::npos, m);
+    BOOST_TEST(m.find("[cell] length 1.5e+64 m") != std::string::npos, m);
+    BOOST_TEST(m.find("more than 1e+07 in one layer") != std::string::npos, m);
     // a spread beyond what the insertion handles
     m = error_of(with("restitution = 0.9", "restitution = 0.9\nsize_spread = 0.3"));
     BOOST_TEST(m.find("[grains] size_spread = 0.3") != std::string::npos, m);

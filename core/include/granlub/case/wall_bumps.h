@@ -70,6 +70,10 @@ std::optional<BumpLayer> wall_bumps(const Case& c, const OperatingPoint& p, cons
 // above the top wall meet no grain. Throws CaseError as wall_bumps, or when y_top holds no row.
 std::optional<BumpLayer> side_bumps(const Case& c, const OperatingPoint& p, const ParticleBox& box, double y_top);
 
+// The most bumps one wall's layer may have: far beyond any cell a particle engine runs here, and refused before
+// the layout is counted into integers or allocated (an absurd [cell] length or width).
+inline constexpr double kMaxBumpsPerLayer = 1e7;
+
 // The layer b moved `shift` m along x from its layout, its x wrapped into [0, length) as the
 // layout's. A wall moving at U has carried its bumps U t in the time t since the layout: a run that
 // starts from a state of time t (particles.h ParticleState::time) places them there.
