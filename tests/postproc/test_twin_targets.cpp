@@ -1,7 +1,8 @@
 // The continuum against its periodic-width particle twin (report/twin_part.h): on a synthetic twin
 // whose continuum meets some targets and misses others, each verdict; the constant μ fails the rise
 // when the DEM's μ rises; a transient DEM point is listed, not judged; a case with side walls has no
-// such part; on equal grains the summary names the continuum's scope instead of a model difference.
+// such part; on equal grains the summary names the continuum's scope instead of a model difference; the bed
+// between the walls (each run's core) is read alike from both solvers.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include "granlub/results/run_status.h"
 #include "report/summary.h"
 #include "results/collect.h"
+#include "tables/twin_core_table.h"
 #include "tables/twin_targets.h"
 #include "synthetic.h"
 
@@ -222,6 +224,42 @@ BOOST_AUTO_TEST_CASE(a_transient_dem_point_is_listed_not_judged) {
     BOOST_TEST(table.rows[0][1].text == "1 of 2 judged; 1 of 3 points not judged (no steady DEM result): U4.0 "
                                         "(transient)",
                table.rows[0][1].text);
+}
+
+// The bed between the walls: each run's core (y/H 1/3 to 2/3) through the bulk table's reduction, the DEM's with its
+// errors and the continuum's exact. The synthetic profiles are straight, u/U = 0.9 - 0.8 y/H, so the core's shear
+// rate is 0.8 U/H (H each run's own gap), P = 1000 Pa, and T/U² is uniform: the expected I, μ, T/(dγ̇)² and
+// μ √(T/(dγ̇)²) follow from the inputs alone.
+BOOST_AUTO_TEST_CASE(bed_between_the_walls_read_alike_from_both_solvers) {
+    auto s = twin("twin_core");
+    const auto col = postproc::collect(s.c, s.o);
+    const auto t = postproc::twin_targets(s.c, col);
+    const auto table = postproc::twin_core_table(s.c, col, t);
+    BOOST_TEST_REQUIRE(table.rows.size() == 6u);  // 3 judged points x (dem, continuum)
+    const double d = s.c.grains.diameter, rho = s.c.grains.density;
+    const double mu_dem[] = {0.30, 0.36, 0.45}, mu_cont[] = {0.31, 0.37, 0.43}, gap_dem[] = {5.05e-3, 5.12e-3, 5.05e-3};
+    const auto leading = [](const std::string& cell) { return std::stod(cell.substr(0, cell.find(' '))); };
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double U = s.c.points[i].speed;
+        for (const bool dem : {true, false}) {
+            const auto& row = table.rows[2 * i + (dem ? 0 : 1)];
+            BOOST_TEST(row[1].text == (dem ? "dem" : "continuum"));
+            const double H = dem ? gap_dem[i] : 5.0e-3, mu = dem ? mu_dem[i] : mu_cont[i], T = dem ? 0.012 : 0.010;
+            const double gdot = 0.8 * U / H, Ts = T * U * U / (d * gdot * d * gdot);
+            const double expect[] = {gdot * d / std::sqrt(1000.0 / rho), mu, dem || i != 1 ? 0.55 : 0.60, Ts,
+                                     mu * std::sqrt(Ts)};
+            for (std::size_t k = 0; k < 5; ++k) {
+                const std::string& cell = row[2 + k].text;
+                BOOST_TEST(std::abs(leading(cell) / expect[k] - 1) < 6e-3, row[0].text << " " << row[1].text << " column "
+                                                                                     << k << ": " << cell << " against "
+                                                                                     << expect[k]);
+                BOOST_TEST((cell.find("±") != std::string::npos) == dem, cell);
+            }
+        }
+    }
+    BOOST_TEST_REQUIRE(postproc::compare(s.c, s.o) == 0);
+    const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
+    BOOST_TEST(md.find("### The bed between the walls") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(no_twin_part_with_side_walls) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "granlub/error.h"
 #include "granlub/results/run_status.h"
@@ -60,12 +61,16 @@ struct CoreStations {
 CoreStations core_stations(const Profile& p, double from, double to) {
     CoreStations c;
     const auto& y = p.column("y_over_H");
+    const std::vector<double> no_error(y.size(), 0.0);  // a continuum's profile: exact values
+    const auto error = [&](const char* column) -> const std::vector<double>& {
+        return p.has(column) ? p.column(column) : no_error;
+    };
     const auto& u = p.column("u_over_U");
-    const auto& ue = p.column("u_over_U_stderr");
+    const auto& ue = error("u_over_U_stderr");
     const auto& nu = p.column("solid_fraction");
-    const auto& nue = p.column("solid_fraction_stderr");
+    const auto& nue = error("solid_fraction_stderr");
     const auto& T = p.column("temperature_over_U2");
-    const auto& Te = p.column("temperature_over_U2_stderr");
+    const auto& Te = error("temperature_over_U2_stderr");
     for (std::size_t i = 0; i < y.size(); ++i) {
         if (y[i] < from || y[i] > to) continue;
         c.y.push_back(y[i]), c.u.push_back(u[i]), c.ue.push_back(ue[i]);
@@ -138,6 +143,41 @@ NearWallTemperature near_wall_temperature(const Profile& p, double gap, double d
     t.bottom = band_mean(p, "temperature_over_U2", floor, floor + band, how, t.stations_bottom);
     t.top = band_mean(p, "temperature_over_U2", top - band, top, how, t.stations_top);
     return t;
+}
+
+namespace {
+
+Measured output(const std::map<std::string, Scalar>& outs, const std::string& name, const std::string& source) {
+    const auto it = outs.find(name);
+    if (it == outs.end()) throw Error(fmt::format("{}: no output '{}'", source, name));
+    return {it->second.value, it->second.stderr_.value_or(0.0)};
+}
+
+std::optional<Measured> flow_number(const nlohmann::json& fr, const std::string& name) {
+    if (!fr.contains(name) || !fr.at(name).is_number()) return std::nullopt;
+    const std::string e = name + "_stderr";
+    return Measured{fr.at(name).get<double>(), fr.contains(e) && fr.at(e).is_number() ? fr.at(e).get<double>() : 0.0};
+}
+
+}  // namespace
+
+CoreRun core_run(const Profile& profile, double U, const std::map<std::string, Scalar>& outs,
+                 const nlohmann::json& flow_regime, double case_gap, double protrusion_bottom, double protrusion_top,
+                 const std::string& source) {
+    CoreRun r;
+    r.protrusion_bottom = protrusion_bottom, r.protrusion_top = protrusion_top;
+    r.profile = &profile;
+    r.speed = U;
+    r.gap = outs.count("gap") ? outs.at("gap").value : case_gap;  // under load the mean plate gap
+    r.normal_bottom = output(outs, "normal_stress_bottom", source);
+    r.normal_top = output(outs, "normal_stress_top", source);
+    r.shear_bottom = output(outs, "shear_stress_bottom", source);
+    r.shear_top = output(outs, "shear_stress_top", source);
+    r.z_core = flow_number(flow_regime, "coordination_number_core");
+    r.z_bulk = flow_number(flow_regime, "coordination_number");
+    if (outs.count("slip_bottom") && outs.count("slip_top"))
+        r.slip_bottom = output(outs, "slip_bottom", source), r.slip_top = output(outs, "slip_top", source);
+    return r;
 }
 
 CoreRheology core_rheology(const CoreRun& run, double diameter, double density) {

@@ -19,12 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-Measured output(const std::map<std::string, Scalar>& outs, const std::string& name, const std::string& source) {
-    const auto it = outs.find(name);
-    if (it == outs.end()) throw Error(fmt::format("{}: no output '{}'", source, name));
-    return {it->second.value, it->second.stderr_.value_or(0.0)};
-}
-
 // the outputs of a check run's record in run.dt_refinement: name -> {value, stderr}
 std::map<std::string, Scalar> record_outputs(const nlohmann::json& run) {
     std::map<std::string, Scalar> outs;
@@ -36,34 +30,10 @@ std::map<std::string, Scalar> record_outputs(const nlohmann::json& run) {
     return outs;
 }
 
-std::optional<Measured> flow_number(const nlohmann::json& fr, const std::string& name) {
-    if (!fr.contains(name) || !fr.at(name).is_number()) return std::nullopt;
-    const std::string e = name + "_stderr";
-    return Measured{fr.at(name).get<double>(), fr.contains(e) && fr.at(e).is_number() ? fr.at(e).get<double>() : 0.0};
-}
-
 // the bumps' protrusion at each wall of a point (bump_protrusion, wall_bumps.h: the continuum's too)
 struct Protrusion {
     double bottom = 0, top = 0;
 };
-
-CoreRun core_run(const Profile& profile, double U, const std::map<std::string, Scalar>& outs,
-                 const nlohmann::json& flow_regime, double case_gap, const Protrusion& bumps, const std::string& source) {
-    CoreRun r;
-    r.protrusion_bottom = bumps.bottom, r.protrusion_top = bumps.top;
-    r.profile = &profile;
-    r.speed = U;
-    r.gap = outs.count("gap") ? outs.at("gap").value : case_gap;  // under load the mean plate gap
-    r.normal_bottom = output(outs, "normal_stress_bottom", source);
-    r.normal_top = output(outs, "normal_stress_top", source);
-    r.shear_bottom = output(outs, "shear_stress_bottom", source);
-    r.shear_top = output(outs, "shear_stress_top", source);
-    r.z_core = flow_number(flow_regime, "coordination_number_core");
-    r.z_bulk = flow_number(flow_regime, "coordination_number");
-    if (outs.count("slip_bottom") && outs.count("slip_top"))
-        r.slip_bottom = output(outs, "slip_bottom", source), r.slip_top = output(outs, "slip_top", source);
-    return r;
-}
 
 // Delta-t verdict of a point, from its status and its record
 std::string dt_check(const Summary& s) {
@@ -115,7 +85,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
         const auto& fr = s.run.contains("flow_regime") ? s.run.at("flow_regime") : no_record;
         const Protrusion bumps{bump_protrusion(c, p.bottom), bump_protrusion(c, p.top)};
         const CoreRheology a =
-            core_rheology(core_run(*res.profile, p.speed, s.outputs, fr, c.cell.gap, bumps, src), d, rho);
+            core_rheology(core_run(*res.profile, p.speed, s.outputs, fr, c.cell.gap, bumps.bottom, bumps.top, src), d, rho);
         // the run the answer was checked against, reduced the same way
         std::optional<CoreRheology> b;
         double check_dt = 0;
@@ -124,7 +94,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
             if (!chk.run) throw Error(fmt::format("{}: run.dt_refinement names no check run", src));
             const Profile cp = read_profile(dir / (chk.second_halving ? kDtHalfProfile : kDtCheckProfile));
             const auto& cfr = chk.run->contains("flow_regime") ? chk.run->at("flow_regime") : no_record;
-            b = core_rheology(core_run(cp, p.speed, record_outputs(*chk.run), cfr, c.cell.gap, bumps, src), d, rho);
+            b = core_rheology(core_run(cp, p.speed, record_outputs(*chk.run), cfr, c.cell.gap, bumps.bottom, bumps.top, src), d, rho);
             check_dt = chk.run->at("time_step_s").get<double>();
         }
         const auto change = [&](auto field) -> std::optional<double> {

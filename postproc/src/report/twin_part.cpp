@@ -5,6 +5,7 @@
 #include "granlub/results/results.h"
 
 #include "formats/format.h"
+#include "tables/twin_core_table.h"
 #include "tables/twin_targets.h"
 #include "tables/twin_thresholds.h"
 
@@ -64,6 +65,11 @@ void add_twin_part(Report& rep, const Case& c, const Collection& col) {
     if (!t.rises.empty()) {
         rep.heading("μ's rise with speed", 3);
         rep.table(twin_rise_table(t));
+    }
+    if (const Table core = twin_core_table(c, col, t); !core.rows.empty()) {
+        rep.heading("The bed between the walls", 3);
+        rep.table(core);
+        rep.note(twin_core_note());
     }
     for (const auto& p : t.points) {
         if (!p.judged) continue;

@@ -11,9 +11,12 @@
 // how uniform the shear rate is over it (the two halves' slopes) rather than choosing the band.
 #pragma once
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "granlub/results/results.h"
 
@@ -101,6 +104,15 @@ struct CoreRheology {
     std::optional<WallLayers> walls;       // when the run recorded both slips
 };
 
+// A run's CoreRun from its result files: its profile, U, its summary's outputs (`gap`, else case_gap for a solver
+// that keeps the gap fixed; the walls' stresses and, when both are there, slips, each with its standard error, 0
+// when it has none), its run.flow_regime record (Z; an empty object when it has none) and each wall's bump
+// protrusion (bump_protrusion, wall_bumps.h). Every solver's results read alike: the bulk table's DEM runs, and the
+// report's twin (the continuum's too). Throws Error naming `source` and a missing output.
+CoreRun core_run(const Profile& profile, double U, const std::map<std::string, Scalar>& outputs,
+                 const nlohmann::json& flow_regime, double case_gap, double protrusion_bottom, double protrusion_top,
+                 const std::string& source);
+
 // The time-step rule of the particle pipeline (granlub/results/run_status.h), which judges a point by
 // its mean solid fraction and its walls' shear stresses, applied to the core: nu may move by
 // kDtMaxSolidFractionChange; mu and I each by kDtMaxRelativeStressChange, or by more when within
@@ -109,8 +121,9 @@ struct CoreRheology {
 // with the step while the stresses do not, and I moves with them.
 std::vector<std::string> core_dt_unconverged(const CoreRheology& answer, const CoreRheology& check);
 
-// Throws Error naming what is missing (a profile column, fewer than 3 stations in the core, a
-// non-positive shear rate or pressure).
+// A profile without the _stderr columns (a continuum's) reads with zero errors: its means exact, its line fitted
+// unweighted (the scatter about it the slope's error). Throws Error naming what is missing (a profile column, fewer
+// than 6 stations in the core, a non-positive shear rate or pressure).
 CoreRheology core_rheology(const CoreRun& run, double diameter, double density);
 
 }  // namespace granlub
