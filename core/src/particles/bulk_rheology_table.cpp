@@ -30,11 +30,6 @@ std::map<std::string, Scalar> record_outputs(const nlohmann::json& run) {
     return outs;
 }
 
-// the bumps' protrusion at each wall of a point (bump_protrusion, wall_bumps.h: the continuum's too)
-struct Protrusion {
-    double bottom = 0, top = 0;
-};
-
 // Delta-t verdict of a point, from its status and its record
 std::string dt_check(const Summary& s) {
     if (!s.run.contains("dt_refinement")) return "not-checked";
@@ -83,9 +78,11 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
         const std::string src = (dir / "summary.json").string();
         const nlohmann::json no_record = nlohmann::json::object();
         const auto& fr = s.run.contains("flow_regime") ? s.run.at("flow_regime") : no_record;
-        const Protrusion bumps{bump_protrusion(c, p.bottom), bump_protrusion(c, p.top)};
+        // the bumps' protrusion at each wall (bump_protrusion, wall_bumps.h: the continuum's too)
+        const double bump_bottom = bump_protrusion(c, p.bottom), bump_top = bump_protrusion(c, p.top);
         const CoreRheology a =
-            core_rheology(core_run(*res.profile, p.speed, s.outputs, fr, c.cell.gap, bumps.bottom, bumps.top, src), d, rho);
+            core_rheology(core_run(*res.profile, p.speed, s.outputs, fr, c.cell.gap, bump_bottom, bump_top, src), d,
+                          rho);
         // the run the answer was checked against, reduced the same way
         std::optional<CoreRheology> b;
         double check_dt = 0;
@@ -94,7 +91,8 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
             if (!chk.run) throw Error(fmt::format("{}: run.dt_refinement names no check run", src));
             const Profile cp = read_profile(dir / (chk.second_halving ? kDtHalfProfile : kDtCheckProfile));
             const auto& cfr = chk.run->contains("flow_regime") ? chk.run->at("flow_regime") : no_record;
-            b = core_rheology(core_run(cp, p.speed, record_outputs(*chk.run), cfr, c.cell.gap, bumps.bottom, bumps.top, src), d, rho);
+            b = core_rheology(
+                core_run(cp, p.speed, record_outputs(*chk.run), cfr, c.cell.gap, bump_bottom, bump_top, src), d, rho);
             check_dt = chk.run->at("time_step_s").get<double>();
         }
         const auto change = [&](auto field) -> std::optional<double> {

@@ -35,7 +35,8 @@ std::vector<Cell> core_row(const Case& c, const Run& r) {
         const double ts = k.temperature_scaled.value, f = k.friction.value * std::sqrt(ts);
         const double fe = f * std::hypot(k.friction.error / k.friction.value, 0.5 * k.temperature_scaled.error / ts);
         const bool exact = !r.profile->has("u_over_U_stderr");
-        for (const Measured& m : {k.inertial_number, k.friction, k.solid_fraction, k.temperature_scaled, Measured{f, fe}})
+        for (const Measured& m :
+             {k.inertial_number, k.friction, k.solid_fraction, k.temperature_scaled, Measured{f, fe}})
             row.push_back({value(m, exact), ""});
     } catch (const Error& e) {
         row.push_back({fmt::format("core not read: {}", e.what()), "unknown"});
