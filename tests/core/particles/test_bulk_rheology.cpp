@@ -90,6 +90,36 @@ BOOST_AUTO_TEST_CASE(a_straight_core_gives_its_slope_whatever_the_walls_do) {
     BOOST_TEST(r.shear_rate.error == 1e-3 / std::sqrt(sxx) * kU / kH, tt::tolerance(1e-6));
 }
 
+// A continuum's profile has no _stderr columns: it reads with zero errors (exact means, an unweighted line whose
+// error is its scatter: 0 on a straight one), and core_run takes the stresses, gap and slips from its outputs.
+BOOST_AUTO_TEST_CASE(a_profile_without_errors_reads_exact) {
+    std::vector<double> y, u, nu, T;
+    for (int k = 0; k <= 40; ++k) {
+        y.push_back(k / 40.0), u.push_back(0.9 - 0.8 * y.back()), nu.push_back(0.57), T.push_back(4e-4);
+    }
+    Profile p;
+    p.add("y_over_H", y).add("u_over_U", u).add("solid_fraction", nu).add("temperature_over_U2", T);
+    const std::map<std::string, Scalar> outs = {
+        {"normal_stress_bottom", {kP, std::nullopt, "Pa"}}, {"normal_stress_top", {kP, std::nullopt, "Pa"}},
+        {"shear_stress_bottom", {900.0, std::nullopt, "Pa"}}, {"shear_stress_top", {900.0, std::nullopt, "Pa"}},
+        {"slip_bottom", {0.3, std::nullopt, "m/s"}},          {"slip_top", {0.3, std::nullopt, "m/s"}},
+        {"gap", {kH, std::nullopt, "m"}}};
+    const CoreRun run = core_run(p, kU, outs, nlohmann::json::object(), 0.02, 0.0, 0.0, "continuum summary");
+    BOOST_TEST(run.gap == kH);  // the solved gap, not the case's 0.02
+    BOOST_TEST(!run.z_core.has_value());
+    const CoreRheology r = core_rheology(run, kD, kRho);
+    BOOST_TEST(r.shear_rate.value == 0.8 * kU / kH, tt::tolerance(1e-9));
+    BOOST_TEST(r.shear_rate.error == 0.0, tt::tolerance(1e-9));
+    BOOST_TEST(r.friction.value == 0.4, tt::tolerance(1e-12));
+    BOOST_TEST(r.friction.error == 0.0);
+    BOOST_TEST(r.solid_fraction.error == 0.0);
+    BOOST_TEST(r.walls.has_value());  // both slips given
+    auto fixed_gap = outs;  // a solver that keeps the gap fixed writes none: the case's
+    fixed_gap.erase("gap");
+    BOOST_TEST(core_run(p, kU, fixed_gap, nlohmann::json::object(), 0.02, 0, 0, "x").gap == 0.02);
+    BOOST_CHECK_THROW(core_run(p, kU, {}, nlohmann::json::object(), kH, 0, 0, "empty summary"), Error);
+}
+
 BOOST_AUTO_TEST_CASE(a_curved_core_shows_in_the_halves_and_the_error) {
     // u/U = 1 - y^2: the slope steepens upward (-2 y), so the upper half shears faster
     const Profile p = synthetic(61, [](double y) { return 1.0 - y * y; }, 0.55, 4e-4);
