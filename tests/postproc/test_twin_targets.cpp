@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include <boost/test/unit_test.hpp>
+#include <fmt/format.h>
 
 #include "granlub/postproc/command.h"
 #include "granlub/results/results.h"
@@ -234,7 +235,8 @@ BOOST_AUTO_TEST_CASE(bed_between_the_walls_read_alike_from_both_solvers) {
     auto s = twin("twin_core");
     const auto col = postproc::collect(s.c, s.o);
     const auto t = postproc::twin_targets(s.c, col);
-    const auto table = postproc::twin_core_table(s.c, col, t);
+    const auto cores = postproc::twin_cores(s.c, col, t);
+    const auto table = postproc::twin_core_table(cores);
     BOOST_TEST_REQUIRE(table.rows.size() == 6u);  // 3 judged points x (dem, continuum)
     const double d = s.c.grains.diameter, rho = s.c.grains.density;
     const double mu_dem[] = {0.30, 0.36, 0.45}, mu_cont[] = {0.31, 0.37, 0.43}, gap_dem[] = {5.05e-3, 5.12e-3, 5.05e-3};
@@ -257,9 +259,27 @@ BOOST_AUTO_TEST_CASE(bed_between_the_walls_read_alike_from_both_solvers) {
             }
         }
     }
+    // The answer first: the largest relative differences in I (the gaps' ratio) and μ, and the continuum's f2/f1
+    // against the DEM's (μ ratio x sqrt(0.010/0.012) x the gaps' ratio)
+    double dI = 0, dmu = 0, dlo = 1, dhi = -1;
+    for (std::size_t i = 0; i < 3; ++i) {
+        dI = std::max(dI, std::abs(gap_dem[i] / 5.0e-3 - 1));
+        dmu = std::max(dmu, std::abs(mu_cont[i] / mu_dem[i] - 1));
+        const double rel = mu_cont[i] / mu_dem[i] * std::sqrt(0.010 / 0.012) * 5.0e-3 / gap_dem[i] - 1;
+        dlo = std::min(dlo, rel), dhi = std::max(dhi, rel);
+    }
+    const std::string answer = postproc::twin_core_summary(cores);
+    BOOST_TEST(answer.find(fmt::format("At the 3 points where both cores were read, the continuum's core is within "
+                                       "{:.0f} % of the DEM's in I and {:.0f} % in μ",
+                                       100 * dI, 100 * dmu)) != std::string::npos,
+               answer);
+    BOOST_TEST(answer.find(fmt::format("({:+.0f} … {:+.0f} %)", 100 * dlo, 100 * dhi)) != std::string::npos, answer);
+    BOOST_TEST(answer.find("its T does not, for the closures' f2/f1") != std::string::npos, answer);  // |d| > 10 %
+
     BOOST_TEST_REQUIRE(postproc::compare(s.c, s.o) == 0);
     const std::string md = test::slurp(s.o.results_root / "report" / "report.md");
     BOOST_TEST(md.find("### The bed between the walls") != std::string::npos);
+    BOOST_TEST(md.find(answer) != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(no_twin_part_with_side_walls) {

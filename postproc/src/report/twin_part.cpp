@@ -66,9 +66,10 @@ void add_twin_part(Report& rep, const Case& c, const Collection& col) {
         rep.heading("μ's rise with speed", 3);
         rep.table(twin_rise_table(t));
     }
-    if (const Table core = twin_core_table(c, col, t); !core.rows.empty()) {
+    if (const auto cores = twin_cores(c, col, t); !cores.empty()) {
         rep.heading("The bed between the walls", 3);
-        rep.table(core);
+        if (const std::string answer = twin_core_summary(cores); !answer.empty()) rep.text(answer);
+        rep.table(twin_core_table(cores));
         rep.note(twin_core_note());
     }
     for (const auto& p : t.points) {

@@ -1,5 +1,6 @@
 #include "tables/twin_core_table.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -7,7 +8,6 @@
 
 #include "granlub/case/wall_bumps.h"
 #include "granlub/error.h"
-#include "granlub/particles/bulk_rheology.h"
 
 #include "formats/format.h"
 
@@ -21,8 +21,10 @@ std::string value(const Measured& m, bool exact) {
     return value_pm(m.value, exact ? std::nullopt : std::optional<double>(m.error), 3);
 }
 
-std::vector<Cell> core_row(const Case& c, const Run& r) {
-    std::vector<Cell> row{{r.point->id, ""}, {r.solver, ""}};
+TwinCore read_core(const Case& c, const Run& r) {
+    TwinCore k;
+    k.run = &r;
+    k.exact = !r.profile->has("u_over_U_stderr");
     const nlohmann::json none = nlohmann::json::object();
     const nlohmann::json& fr = r.summary->run.contains("flow_regime") ? r.summary->run.at("flow_regime") : none;
     try {
@@ -30,36 +32,72 @@ std::vector<Cell> core_row(const Case& c, const Run& r) {
         const CoreRun run = core_run(*r.profile, p.speed, r.summary->outputs, fr, c.cell.gap,
                                      bump_protrusion(c, p.bottom), bump_protrusion(c, p.top),
                                      (r.dir / "summary.json").string());
-        const CoreRheology k = core_rheology(run, c.grains.diameter, c.grains.density);
-        // mu sqrt(T~): relative errors of mu and half that of T~, in quadrature
-        const double ts = k.temperature_scaled.value, f = k.friction.value * std::sqrt(ts);
-        const double fe = f * std::hypot(k.friction.error / k.friction.value, 0.5 * k.temperature_scaled.error / ts);
-        const bool exact = !r.profile->has("u_over_U_stderr");
-        for (const Measured& m :
-             {k.inertial_number, k.friction, k.solid_fraction, k.temperature_scaled, Measured{f, fe}})
-            row.push_back({value(m, exact), ""});
+        k.core = core_rheology(run, c.grains.diameter, c.grains.density);
+        const Measured &mu = k.core->friction, &ts = k.core->temperature_scaled;
+        const double f = mu.value * std::sqrt(ts.value);
+        k.f2_over_f1 = {f, f * std::hypot(mu.error / mu.value, 0.5 * ts.error / ts.value)};
     } catch (const Error& e) {
-        row.push_back({fmt::format("core not read: {}", e.what()), "unknown"});
+        k.why = e.what();
     }
-    return row;
+    return k;
 }
+
+std::string percent(double x) { return fmt::format("{:.0f} %", 100 * x); }
 
 }  // namespace
 
-Table twin_core_table(const Case& c, const Collection& col, const TwinTargets& t) {
-    Table table;
-    table.header = {"point", "solver", "I", "μ", "ν", "T/(dγ̇)²", "μ √(T/(dγ̇)²)"};
+std::vector<TwinCore> twin_cores(const Case& c, const Collection& col, const TwinTargets& t) {
+    std::vector<TwinCore> out;
     for (const TwinPoint& p : t.points) {
         if (!p.judged) continue;
-        for (const std::string& s : {t.solvers.particles, t.solvers.model}) {
-            const Run& r = col.run(s, p.point->id);
-            if (!r.usable()) continue;
-            auto row = core_row(c, r);
-            row.resize(table.header.size(), {"", row.back().cls});
-            table.rows.push_back(std::move(row));
+        for (const std::string& s : {t.solvers.particles, t.solvers.model})
+            if (const Run& r = col.run(s, p.point->id); r.usable()) out.push_back(read_core(c, r));
+    }
+    return out;
+}
+
+Table twin_core_table(const std::vector<TwinCore>& cores) {
+    Table table;
+    table.header = {"point", "solver", "I", "μ", "ν", "T/(dγ̇)²", "μ √(T/(dγ̇)²)"};
+    for (const TwinCore& k : cores) {
+        std::vector<Cell> row{{k.run->point->id, ""}, {k.run->solver, ""}};
+        if (!k.core) {
+            row.push_back({fmt::format("core not read: {}", k.why), "unknown"});
+            row.resize(table.header.size(), {"", "unknown"});
+        } else {
+            for (const Measured& m : {k.core->inertial_number, k.core->friction, k.core->solid_fraction,
+                                      k.core->temperature_scaled, k.f2_over_f1})
+                row.push_back({value(m, k.exact), ""});
         }
+        table.rows.push_back(std::move(row));
     }
     return table;
+}
+
+std::string twin_core_summary(const std::vector<TwinCore>& cores) {
+    double dI = 0, dmu = 0, lo = INFINITY, hi = -INFINITY, dlo = INFINITY, dhi = -INFINITY, flo = INFINITY,
+           fhi = -INFINITY;
+    int n = 0;
+    for (std::size_t i = 0; i + 1 < cores.size(); ++i) {
+        const TwinCore &a = cores[i], &b = cores[i + 1];  // the DEM's, then the continuum's, at one point
+        if (a.run->point != b.run->point || !a.core || !b.core) continue;
+        ++n, ++i;
+        dI = std::max(dI, std::abs(b.core->inertial_number.value / a.core->inertial_number.value - 1));
+        dmu = std::max(dmu, std::abs(b.core->friction.value / a.core->friction.value - 1));
+        lo = std::min(lo, b.f2_over_f1.value), hi = std::max(hi, b.f2_over_f1.value);
+        flo = std::min(flo, a.f2_over_f1.value), fhi = std::max(fhi, a.f2_over_f1.value);
+        const double d = b.f2_over_f1.value / a.f2_over_f1.value - 1;
+        dlo = std::min(dlo, d), dhi = std::max(dhi, d);
+    }
+    if (n == 0) return "";
+    return fmt::format(
+        "At the {} point{} where both cores were read, the continuum's core is within {} of the DEM's in I and {} in "
+        "μ; its μ √(T/(dγ̇)²) is {}–{} against the DEM's {}–{} ({:+.0f} … {:+.0f} %){}",
+        n, n == 1 ? "" : "s", percent(dI), percent(dmu), num(lo, 3), num(hi, 3), num(flo, 3), num(fhi, 3), 100 * dlo,
+        100 * dhi,
+        dI <= 0.1 && dmu <= 0.1 && std::max(std::abs(dlo), std::abs(dhi)) > 0.1
+            ? ": the bed's shear and stress ratio agree, its T does not, for the closures' f2/f1 and not the walls."
+            : ".");
 }
 
 std::string twin_core_note() {

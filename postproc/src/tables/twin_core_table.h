@@ -3,15 +3,36 @@
 // that the continuum's bulk closures are seen apart from its walls: I, μ, ν, T/(dγ̇)² and μ √(T/(dγ̇)²), kinetic
 // theory's f2/f1 at the core's ν.
 #pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "granlub/particles/bulk_rheology.h"
+
 #include "formats/report.h"
 #include "results/collect.h"
 #include "tables/twin_targets.h"
 
 namespace granlub::postproc {
 
-// One row per judged point and twin solver (the DEM, then the continuum); a run whose core cannot be read (it does
-// not shear, too few stations) says why. Empty when no point is judged.
-Table twin_core_table(const Case& c, const Collection& col, const TwinTargets& t);
+// One run's core: its rheology, or why it could not be read (it does not shear, too few stations).
+struct TwinCore {
+    const Run* run = nullptr;
+    std::optional<CoreRheology> core;
+    Measured f2_over_f1;  // μ √(T/(dγ̇)²), its error from μ's and half T/(dγ̇)²'s in quadrature
+    bool exact = false;   // a profile without standard errors (a continuum's)
+    std::string why;      // when core is empty
+};
+
+// The DEM's and the continuum's core at each judged point, in that order; runs without a usable result left out.
+std::vector<TwinCore> twin_cores(const Case& c, const Collection& col, const TwinTargets& t);
+
+// One row per core; empty when there is none.
+Table twin_core_table(const std::vector<TwinCore>& cores);
+
+// The answer first, from the points where both cores were read: how far the continuum's I and μ lie from the DEM's
+// (the largest relative difference), and its μ √(T/(dγ̇)²) against theirs; "" when no point has both.
+std::string twin_core_summary(const std::vector<TwinCore>& cores);
 
 // The table's note: what the core is and what its last column tells.
 std::string twin_core_note();
