@@ -101,16 +101,18 @@ std::optional<BumpLayer> wall_bumps(const Case& c, const OperatingPoint& p, cons
     if (box.periodic_z) {
         // rows alternate their offset: an even count keeps the period; stretched, never squeezed
         // (squeezed rows would overlap); one row when two do not fit
-        too_many(n * std::floor(box.width / row * (1 + 1e-12)), "in the layer");
-        auto rows = static_cast<std::size_t>(std::floor(box.width / row * (1 + 1e-12)));
+        const double fit = std::floor(box.width / row * (1 + 1e-12));
+        too_many(n * fit, "in the layer");
+        auto rows = static_cast<std::size_t>(fit);
         rows = rows >= 2 ? rows - rows % 2 : 1;
         b.rows = rows;
         b.row_spacing = box.width / static_cast<double>(rows);
     } else {
         const double span = box.width - b.diameter;  // centres from -W/2 + d_w/2 to W/2 - d_w/2
         if (span < 0) fail(fmt::format("bumps of {:g} m are wider than the cell ({:g} m)", b.diameter, box.width));
-        too_many(n * (std::floor(span / row) + 1), "in the layer");
-        b.rows = static_cast<std::size_t>(std::floor(span / row)) + 1;
+        const double fit = std::floor(span / row) + 1;
+        too_many(n * fit, "in the layer");
+        b.rows = static_cast<std::size_t>(fit);
         b.row_spacing = row;
     }
     const double z0 = box.periodic_z ? -0.5 * box.width + 0.5 * b.row_spacing

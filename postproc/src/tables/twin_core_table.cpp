@@ -75,27 +75,28 @@ Table twin_core_table(const std::vector<TwinCore>& cores) {
 }
 
 std::string twin_core_summary(const std::vector<TwinCore>& cores) {
-    double dI = 0, dmu = 0, lo = INFINITY, hi = -INFINITY, dlo = INFINITY, dhi = -INFINITY, flo = INFINITY,
-           fhi = -INFINITY;
+    struct Range {
+        double lo = INFINITY, hi = -INFINITY;
+        void add(double x) { lo = std::min(lo, x), hi = std::max(hi, x); }
+        double largest() const { return std::max(std::abs(lo), std::abs(hi)); }
+    } dI, dmu, model, dem, df;  // relative differences (model/DEM - 1) and the two f2/f1
     int n = 0;
     for (std::size_t i = 0; i + 1 < cores.size(); ++i) {
         const TwinCore &a = cores[i], &b = cores[i + 1];  // the DEM's, then the continuum's, at one point
         if (a.run->point != b.run->point || !a.core || !b.core) continue;
         ++n, ++i;
-        dI = std::max(dI, std::abs(b.core->inertial_number.value / a.core->inertial_number.value - 1));
-        dmu = std::max(dmu, std::abs(b.core->friction.value / a.core->friction.value - 1));
-        lo = std::min(lo, b.f2_over_f1.value), hi = std::max(hi, b.f2_over_f1.value);
-        flo = std::min(flo, a.f2_over_f1.value), fhi = std::max(fhi, a.f2_over_f1.value);
-        const double d = b.f2_over_f1.value / a.f2_over_f1.value - 1;
-        dlo = std::min(dlo, d), dhi = std::max(dhi, d);
+        dI.add(b.core->inertial_number.value / a.core->inertial_number.value - 1);
+        dmu.add(b.core->friction.value / a.core->friction.value - 1);
+        model.add(b.f2_over_f1.value), dem.add(a.f2_over_f1.value);
+        df.add(b.f2_over_f1.value / a.f2_over_f1.value - 1);
     }
     if (n == 0) return "";
     return fmt::format(
         "At the {} point{} where both cores were read, the continuum's core is within {} of the DEM's in I and {} in "
         "μ; its μ √(T/(dγ̇)²) is {}–{} against the DEM's {}–{} ({:+.0f} … {:+.0f} %){}",
-        n, n == 1 ? "" : "s", percent(dI), percent(dmu), num(lo, 3), num(hi, 3), num(flo, 3), num(fhi, 3), 100 * dlo,
-        100 * dhi,
-        dI <= 0.1 && dmu <= 0.1 && std::max(std::abs(dlo), std::abs(dhi)) > 0.1
+        n, n == 1 ? "" : "s", percent(dI.largest()), percent(dmu.largest()), num(model.lo, 3), num(model.hi, 3),
+        num(dem.lo, 3), num(dem.hi, 3), 100 * df.lo, 100 * df.hi,
+        dI.largest() <= 0.1 && dmu.largest() <= 0.1 && df.largest() > 0.1
             ? ": the bed's shear and stress ratio agree, its T does not, for the closures' f2/f1 and not the walls."
             : ".");
 }
