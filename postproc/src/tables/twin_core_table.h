@@ -31,7 +31,9 @@ std::vector<TwinCore> twin_cores(const Case& c, const Collection& col, const Twi
 Table twin_core_table(const std::vector<TwinCore>& cores);
 
 // The answer first, from the points where both cores were read: how far the continuum's I and μ lie from the DEM's
-// (the largest relative difference), and its μ √(T/(dγ̇)²) against theirs; "" when no point has both.
+// (the largest relative difference), its μ √(T/(dγ̇)²) against theirs and in the DEM's standard errors, and a
+// verdict on T where the bed agrees (I and μ within 10 %) and f2/f1 does not (beyond 10 % and 2 of the DEM's
+// standard errors at every point); "" when no point has both.
 std::string twin_core_summary(const std::vector<TwinCore>& cores);
 
 // The table's note: what the core is and what its last column tells.
