@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granlub/error.h"
+#include "granlub/particles/seed_mean.h"
 #include "granlub/results/run_status.h"
 
 namespace granlub {
@@ -238,6 +239,49 @@ std::vector<std::string> core_dt_unconverged(const CoreRheology& a, const CoreRh
     if (moved(a.friction, b.friction)) out.emplace_back("mu");
     if (std::abs(a.solid_fraction.value - b.solid_fraction.value) > kDtMaxSolidFractionChange) out.emplace_back("nu");
     return out;
+}
+
+CoreRheology pool_core_rheology(const std::vector<CoreRheology>& m) {
+    if (m.empty()) throw Error("pooled core rheology: no member");
+    for (const CoreRheology& x : m)
+        if (x.stations != m.front().stations)
+            throw Error(fmt::format("pooled core rheology: the members' cores hold {} and {} stations", m.front().stations,
+                                    x.stations));
+    const auto measured = [&](auto field) {
+        std::vector<double> v;
+        std::vector<std::optional<double>> se;
+        for (const CoreRheology& x : m) v.push_back(field(x).value), se.push_back(field(x).error);
+        const SeedMean p = seed_mean(v, se);
+        return Measured{p.mean, std::max(p.seed_stderr, p.block_stderr.value_or(0))};
+    };
+    const auto mean = [&](auto field) {
+        double s = 0;
+        for (const CoreRheology& x : m) s += field(x);
+        return s / static_cast<double>(m.size());
+    };
+    CoreRheology r = m.front();
+    r.shear_rate = measured([](const CoreRheology& x) { return x.shear_rate; });
+    r.pressure = measured([](const CoreRheology& x) { return x.pressure; });
+    r.shear_stress = measured([](const CoreRheology& x) { return x.shear_stress; });
+    r.inertial_number = measured([](const CoreRheology& x) { return x.inertial_number; });
+    r.friction = measured([](const CoreRheology& x) { return x.friction; });
+    r.solid_fraction = measured([](const CoreRheology& x) { return x.solid_fraction; });
+    r.temperature_scaled = measured([](const CoreRheology& x) { return x.temperature_scaled; });
+    r.shear_rate_halves = mean([](const CoreRheology& x) { return x.shear_rate_halves; });
+    r.wall_shear_imbalance = mean([](const CoreRheology& x) { return x.wall_shear_imbalance; });
+    r.wall_normal_imbalance = mean([](const CoreRheology& x) { return x.wall_normal_imbalance; });
+    const bool all_z = std::all_of(m.begin(), m.end(), [&](const CoreRheology& x) {
+        return x.coordination && x.coordination_core == m.front().coordination_core;
+    });
+    r.coordination = std::nullopt;
+    if (all_z) r.coordination = measured([](const CoreRheology& x) { return *x.coordination; });
+    r.walls = std::nullopt;
+    if (std::all_of(m.begin(), m.end(), [](const CoreRheology& x) { return x.walls.has_value(); }))
+        r.walls = WallLayers{measured([](const CoreRheology& x) { return x.walls->slip_bottom; }),
+                             measured([](const CoreRheology& x) { return x.walls->slip_top; }),
+                             measured([](const CoreRheology& x) { return x.walls->T_bottom; }),
+                             measured([](const CoreRheology& x) { return x.walls->T_top; })};
+    return r;
 }
 
 }  // namespace granlub

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "granlub/case/wall_bumps.h"
@@ -12,6 +13,7 @@
 #include "granlub/particles/bulk_rheology.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
+#include "granlub/run/sweep.h"
 
 namespace granlub {
 
@@ -46,6 +48,42 @@ std::string core_dt_check(const CoreRheology& answer, const CoreRheology& check)
     return moved.empty() ? "converged" : fmt::format("unconverged:{}", fmt::join(moved, ";"));
 }
 
+// A run's core and its Delta-t check's core, reduced alike (core_run, core_rheology): the check's profile is the
+// run's dt_full/ (dt_half/ after a second halving) profile, its outputs its record in run.dt_refinement.
+struct PointCores {
+    CoreRheology answer;
+    std::optional<CoreRheology> check;
+    double check_dt = 0;
+};
+
+std::string src_of(const fs::path& dir) { return (dir / "summary.json").string(); }
+
+PointCores point_cores(const fs::path& dir, const Summary& s, const Profile& profile, double speed, const Case& c,
+                       double bump_bottom, double bump_top) {
+    const double d = c.grains.diameter, rho = c.grains.density;
+    const std::string src = src_of(dir);
+    const nlohmann::json no_record = nlohmann::json::object();
+    const auto& fr = s.run.contains("flow_regime") ? s.run.at("flow_regime") : no_record;
+    PointCores pc;
+    pc.answer = core_rheology(core_run(profile, speed, s.outputs, fr, c.cell.gap, bump_bottom, bump_top, src), d, rho);
+    if (s.run.contains("dt_refinement")) {
+        const DtCheckRun chk = dt_check_run(s.run.at("dt_refinement"));
+        if (!chk.run) throw Error(fmt::format("{}: run.dt_refinement names no check run", src));
+        const Profile cp = read_profile(dir / (chk.second_halving ? kDtHalfProfile : kDtCheckProfile));
+        const auto& cfr = chk.run->contains("flow_regime") ? chk.run->at("flow_regime") : no_record;
+        pc.check = core_rheology(
+            core_run(cp, speed, record_outputs(*chk.run), cfr, c.cell.gap, bump_bottom, bump_top, src), d, rho);
+        pc.check_dt = chk.run->at("time_step_s").get<double>();
+    }
+    return pc;
+}
+
+// The seeds a point's files pool (run.seeds.pooled, seed_pool.h): empty for a point run with one seed.
+std::vector<std::uint64_t> pooled_seeds(const Summary& s) {
+    if (!s.run.contains("seeds") || !s.run.at("seeds").contains("pooled")) return {};
+    return s.run.at("seeds").at("pooled").get<std::vector<std::uint64_t>>();
+}
+
 std::string num(double v) { return fmt::format("{:.6g}", v); }
 std::string opt_num(const std::optional<double>& v) { return v ? num(*v) : std::string(); }
 
@@ -62,7 +100,6 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
     BulkTable t;
     const ResultKey key = result_key(c, solver);
     std::string rows;
-    const double d = c.grains.diameter, rho = c.grains.density;
     for (const auto& p : c.points) {
         const fs::path dir = result_dir(results_root, solver, p.id);
         const LoadedResult res = load_result(dir, key);
@@ -75,33 +112,48 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
             continue;
         }
         const Summary& s = *res.summary;
-        const std::string src = (dir / "summary.json").string();
-        const nlohmann::json no_record = nlohmann::json::object();
-        const auto& fr = s.run.contains("flow_regime") ? s.run.at("flow_regime") : no_record;
         // the bumps' protrusion at each wall (bump_protrusion, wall_bumps.h: the continuum's too)
         const double bump_bottom = bump_protrusion(c, p.bottom), bump_top = bump_protrusion(c, p.top);
-        const CoreRheology a =
-            core_rheology(core_run(*res.profile, p.speed, s.outputs, fr, c.cell.gap, bump_bottom, bump_top, src), d,
-                          rho);
-        // the run the answer was checked against, reduced the same way
-        std::optional<CoreRheology> b;
-        double check_dt = 0;
-        if (s.run.contains("dt_refinement")) {
-            const DtCheckRun chk = dt_check_run(s.run.at("dt_refinement"));
-            if (!chk.run) throw Error(fmt::format("{}: run.dt_refinement names no check run", src));
-            const Profile cp = read_profile(dir / (chk.second_halving ? kDtHalfProfile : kDtCheckProfile));
-            const auto& cfr = chk.run->contains("flow_regime") ? chk.run->at("flow_regime") : no_record;
-            b = core_rheology(
-                core_run(cp, p.speed, record_outputs(*chk.run), cfr, c.cell.gap, bump_bottom, bump_top, src), d, rho);
-            check_dt = chk.run->at("time_step_s").get<double>();
+        const auto reduce = [&](const fs::path& run_dir, const Summary& rs, const Profile& profile) {
+            return point_cores(run_dir, rs, profile, p.speed, c, bump_bottom, bump_top);
+        };
+        const std::vector<std::uint64_t> seeds = pooled_seeds(s);
+        PointCores pc;
+        std::string dt_verdict;
+        if (seeds.size() < 2) {
+            pc = reduce(dir, s, *res.profile);
+            dt_verdict = dt_check(s);
+        } else {  // each member reduced alone, then pooled (pool_core_rheology)
+            std::vector<CoreRheology> answers, checks;
+            for (const std::uint64_t seed : seeds) {
+                const fs::path mdir = dir / realisation_folder(seed);
+                const LoadedResult m = load_result(mdir, key);
+                if (m.status.state != ResultState::Complete)
+                    throw Error(fmt::format("{}: pooled seed {} is no longer complete at {}", src_of(dir), seed,
+                                            mdir.string()));
+                const PointCores one = reduce(mdir, *m.summary, *m.profile);
+                answers.push_back(one.answer);
+                if (one.check) checks.push_back(*one.check);
+                pc.check_dt = one.check_dt;
+                const std::string v = dt_check(*m.summary);
+                if (dt_verdict.empty() || dt_verdict == "converged") dt_verdict = v;
+            }
+            pc.answer = pool_core_rheology(answers);
+            if (checks.size() == answers.size()) pc.check = pool_core_rheology(checks);
+            t.notes.push_back(fmt::format("point {}: the cores of seeds {} each reduced, then pooled (errors: the larger "
+                                          "of the seeds' standard error and their own combined)",
+                                          p.id, fmt::join(seeds, ", ")));
         }
+        const CoreRheology& a = pc.answer;
+        const std::optional<CoreRheology>& b = pc.check;
+        const double check_dt = pc.check_dt;
         const auto change = [&](auto field) -> std::optional<double> {
             if (!b) return std::nullopt;
             return field(a) - field(*b);
         };
         const double gap = s.outputs.count("gap") ? s.outputs.at("gap").value : c.cell.gap;
         std::vector<std::string> v = {
-            p.id, num(p.speed), num(p.normal_stress), to_string(read_regime(s.run).status), dt_check(s),
+            p.id, num(p.speed), num(p.normal_stress), to_string(read_regime(s.run).status), dt_verdict,
             b ? core_dt_check(a, *b) : std::string("not-checked"),
             num(s.run.value("time_step_s", 0.0)), b ? num(check_dt) : std::string(), num(gap),
             std::to_string(s.run.value("atoms", std::size_t{0})), num(a.core_from), num(a.core_to),
@@ -125,6 +177,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
                 v.push_back(num(m.value)), v.push_back(num(m.error));
         else
             v.insert(v.end(), std::size(kWallColumns), std::string());
+        v.push_back(seeds.size() < 2 ? std::string("1") : std::to_string(seeds.size()));
         rows += fmt::format("{}\n", fmt::join(v, ","));
         ++t.rows;
     }
@@ -133,7 +186,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
     head += fmt::format("# from {}; columns, units and method: cases/bulk_shear/README.md\n",
                         (results_root / solver).string());
     for (const auto& n : t.notes) head += "# " + n + "\n";
-    t.csv = head + fmt::format("{},{}\n", fmt::join(kColumns, ","), fmt::join(kWallColumns, ",")) + rows;
+    t.csv = head + fmt::format("{},{},seeds\n", fmt::join(kColumns, ","), fmt::join(kWallColumns, ",")) + rows;
     return t;
 }
 

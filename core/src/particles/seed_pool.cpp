@@ -13,6 +13,7 @@
 
 #include "granlub/case/case.h"
 #include "granlub/error.h"
+#include "granlub/particles/seed_mean.h"
 #include "granlub/results/failure_record.h"
 #include "granlub/results/run_status.h"
 #include "granlub/run/sweep.h"
@@ -30,29 +31,6 @@ struct Member {
     Profile profile;
     Regime regime;
 };
-
-// The mean, the seeds' standard error and the block errors combined of one quantity over the members.
-struct Pooled {
-    double mean = 0;
-    double seed_stderr = 0;
-    std::optional<double> block_stderr;  // when every member has its own
-};
-
-Pooled pool(const std::vector<double>& v, const std::vector<std::optional<double>>& se) {
-    const auto n = static_cast<double>(v.size());
-    Pooled p;
-    for (double x : v) p.mean += x;
-    p.mean /= n;
-    double ss = 0;
-    for (double x : v) ss += (x - p.mean) * (x - p.mean);
-    if (v.size() > 1) p.seed_stderr = std::sqrt(ss / (n - 1) / n);
-    if (std::all_of(se.begin(), se.end(), [](const auto& e) { return e.has_value(); })) {
-        double s2 = 0;
-        for (const auto& e : se) s2 += *e * *e;
-        p.block_stderr = std::sqrt(s2) / n;
-    }
-    return p;
-}
 
 // Why a member of the set is not pooled.
 std::string missing_reason(const fs::path& dir, const ResultStatus& st) {
@@ -101,7 +79,7 @@ Profile pooled_profile(const std::vector<Member>& m) {
                 v.push_back(x.profile.column(name)[i]);
                 se.push_back(has_se ? std::optional<double>(x.profile.column(se_name)[i]) : std::nullopt);
             }
-            const Pooled p = pool(v, se);
+            const SeedMean p = seed_mean(v, se);
             mean[i] = p.mean;
             seed_se[i] = m.size() > 1 ? p.seed_stderr : (has_se ? *se.front() : 0.0);
             block[i] = p.block_stderr.value_or(0);
@@ -126,7 +104,7 @@ Profile pooled_profile(const std::vector<Member>& m) {
 // error (one member: its own error; the same value in every member without an error: none);
 // block_stderr the members' own errors combined.
 Scalar pooled_scalar(const std::vector<double>& v, const std::vector<std::optional<double>>& se) {
-    const Pooled p = pool(v, se);
+    const SeedMean p = seed_mean(v, se);
     Scalar s;
     s.value = p.mean;
     const bool constant = std::all_of(v.begin(), v.end(), [&](double x) { return x == v.front(); });

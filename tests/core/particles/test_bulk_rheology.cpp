@@ -5,9 +5,11 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,6 +20,7 @@
 #include "granlub/error.h"
 #include "granlub/particles/bulk_rheology.h"
 #include "granlub/particles/bulk_rheology_table.h"
+#include "granlub/particles/seed_pool.h"
 #include "granlub/results/file_io.h"
 #include "granlub/results/results.h"
 #include "granlub/results/run_status.h"
@@ -53,6 +56,62 @@ CoreRun run_of(const Profile& p, double tau_bottom = 900.0, double tau_top = 900
     r.shear_top = {tau_top, 5.0};
     r.z_bulk = Measured{3.9, 0.01};
     return r;
+}
+
+// A complete, steady DEM result of point p at dir: u/U = 0.9 - slope y over the gap (the answer's slope, then its
+// Delta-t check's in dt_full/), walls 1000 Pa and 400 Pa (the check's 380 Pa), the check's nu-bar change dnu; with a
+// seed, the result of that member of a set of seeds.
+void write_checked_point(const std::filesystem::path& dir, const Case& c, const OperatingPoint& p, double slope,
+                         double check_slope, double dnu, std::optional<std::uint64_t> seed = std::nullopt) {
+    std::filesystem::create_directories(dir / kDtCheckDir);
+    const auto linear = [](double k) { return [k](double y) { return 0.9 - k * y; }; };
+    write_file_atomic(dir / kDtCheckProfile, profile_csv(synthetic(61, linear(check_slope), 0.577, 4e-4)));
+    Summary s = make_summary(c, p, "dem", seed);
+    s.set("normal_stress_bottom", 1000.0, "Pa", 10.0).set("normal_stress_top", 1000.0, "Pa", 10.0);
+    s.set("shear_stress_bottom", 400.0, "Pa", 4.0).set("shear_stress_top", 400.0, "Pa", 4.0);
+    s.set("slip_bottom", 0.1, "m/s", 0.0).set("slip_top", 0.1, "m/s", 0.0).set("gap", 5.0e-3, "m", 1e-6);
+    s.set("mean_solid_fraction", 0.58, "").set("max_solid_fraction", 0.65, "");
+    const nlohmann::json check_outputs = {{"normal_stress_bottom", {{"value", 1000.0}, {"stderr", 10.0}}},
+                                          {"normal_stress_top", {{"value", 1000.0}, {"stderr", 10.0}}},
+                                          {"shear_stress_bottom", {{"value", 380.0}, {"stderr", 4.0}}},
+                                          {"shear_stress_top", {{"value", 380.0}, {"stderr", 4.0}}},
+                                          {"gap", {{"value", 5.0e-3}}}};
+    s.run = {{"time_step_s", 1e-6},
+             {"atoms", 1234},
+             {"flow_regime", {{"coordination_number", 3.5}, {"coordination_number_core", 4.1}}},
+             {"dt_refinement",
+              {{"mean_solid_fraction", {{"change", dnu}}},
+               {"shear_stress_bottom", {{"relative_change", 0.05}, {"z", 3.0}}},
+               {"shear_stress_top", {{"relative_change", 0.05}, {"z", 3.0}}},
+               {"full_step_run",
+                {{"time_step_s", 2e-6},
+                 {"status", "steady"},
+                 {"outputs", check_outputs},
+                 {"flow_regime", {{"coordination_number", 3.6}, {"coordination_number_core", 4.3}}}}}}}};
+    set_regime(s.run, RegimeStatus::Steady);
+    write_result(dir, synthetic(61, linear(slope), 0.58, 4e-4), s);
+}
+
+// The one row of a table's text, by its header's names (the comment lines skipped).
+std::map<std::string, std::string> only_row(const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line;
+    std::vector<std::string> lines;
+    while (std::getline(in, line))
+        if (line.rfind('#', 0) != 0) lines.push_back(line);
+    BOOST_REQUIRE(lines.size() == 2u);
+    const auto split = [](const std::string& s) {
+        std::vector<std::string> out;
+        std::stringstream ss(s);
+        for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
+        if (!s.empty() && s.back() == ',') out.emplace_back();
+        return out;
+    };
+    const auto h = split(lines[0]), v = split(lines[1]);
+    BOOST_REQUIRE(h.size() == v.size());
+    std::map<std::string, std::string> m;
+    for (std::size_t i = 0; i < h.size(); ++i) m[h[i]] = v[i];
+    return m;
 }
 
 }  // namespace
@@ -180,58 +239,14 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
     const Case c = parse_case(test::with("control = \"fill\"", "control = \"load\""), "t.toml", Schema::common());
     const OperatingPoint& p = c.points.front();  // U = 1 m/s, 1000 Pa; gap 5 mm, d = 1 mm, rho = 2500
     const fs::path dir = result_dir(tmp.path, "dem", p.id);
-    fs::create_directories(dir / kDtCheckDir);
-    const auto linear = [](double slope) { return [slope](double y) { return 0.9 - slope * y; }; };
-    write_file_atomic(dir / kDtCheckProfile, profile_csv(synthetic(61, linear(0.7), 0.577, 4e-4)));
-    const auto write = [&](double dnu) {
-        Summary s = make_summary(c, p, "dem");
-        s.set("normal_stress_bottom", 1000.0, "Pa", 10.0).set("normal_stress_top", 1000.0, "Pa", 10.0);
-        s.set("shear_stress_bottom", 400.0, "Pa", 4.0).set("shear_stress_top", 400.0, "Pa", 4.0);
-        s.set("slip_bottom", 0.1, "m/s", 0.0).set("slip_top", 0.1, "m/s", 0.0).set("gap", 5.0e-3, "m", 1e-6);
-        s.set("mean_solid_fraction", 0.58, "").set("max_solid_fraction", 0.65, "");
-        const nlohmann::json check_outputs = {{"normal_stress_bottom", {{"value", 1000.0}, {"stderr", 10.0}}},
-                                              {"normal_stress_top", {{"value", 1000.0}, {"stderr", 10.0}}},
-                                              {"shear_stress_bottom", {{"value", 380.0}, {"stderr", 4.0}}},
-                                              {"shear_stress_top", {{"value", 380.0}, {"stderr", 4.0}}},
-                                              {"gap", {{"value", 5.0e-3}}}};
-        s.run = {{"time_step_s", 1e-6},
-                 {"atoms", 1234},
-                 {"flow_regime", {{"coordination_number", 3.5}, {"coordination_number_core", 4.1}}},
-                 {"dt_refinement",
-                  {{"mean_solid_fraction", {{"change", dnu}}},
-                   {"shear_stress_bottom", {{"relative_change", 0.05}, {"z", 3.0}}},
-                   {"shear_stress_top", {{"relative_change", 0.05}, {"z", 3.0}}},
-                   {"full_step_run",
-                    {{"time_step_s", 2e-6},
-                     {"status", "steady"},
-                     {"outputs", check_outputs},
-                     {"flow_regime", {{"coordination_number", 3.6}, {"coordination_number_core", 4.3}}}}}}}};
-        set_regime(s.run, RegimeStatus::Steady);
-        write_result(dir, synthetic(61, linear(0.8), 0.58, 4e-4), s);
-    };
+    const auto write = [&](double dnu) { write_checked_point(dir, c, p, 0.8, 0.7, dnu); };
     const auto row = [&]() {
         const BulkTable t = bulk_rheology_table(c, tmp.path, "dem");
         BOOST_TEST(t.rows == 1u);
         BOOST_TEST(t.notes.size() == 1u);  // the second point has no result
         BOOST_TEST(t.csv.find("# point U2.0 left out: no result") != std::string::npos, t.csv);
         BOOST_TEST(t.csv.find(std::string("# format ") + kBulkTableFormat) == 0u);
-        std::istringstream in(t.csv);
-        std::string line, header;
-        std::vector<std::string> lines;
-        while (std::getline(in, line))
-            if (line.rfind('#', 0) != 0) lines.push_back(line);
-        BOOST_REQUIRE(lines.size() == 2u);
-        const auto split = [](const std::string& s) {
-            std::vector<std::string> out;
-            std::stringstream ss(s);
-            for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
-            if (!s.empty() && s.back() == ',') out.emplace_back();
-            return out;
-        };
-        const auto h = split(lines[0]), v = split(lines[1]);
-        BOOST_REQUIRE(h.size() == v.size());
-        std::map<std::string, std::string> m;
-        for (std::size_t i = 0; i < h.size(); ++i) m[h[i]] = v[i];
+        const std::map<std::string, std::string> m = only_row(t.csv);
         // the one reader (read_bulk_table) takes what the writer wrote
         const BulkRows back = parse_bulk_table(t.csv, "written");
         BOOST_REQUIRE(back.rows.size() == 1u);
@@ -268,6 +283,54 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
     m = row();
     BOOST_TEST(m.at("status") == "dt-unconverged");
     BOOST_TEST(m.at("dt_check") == "unconverged");
+}
+
+// A point answered by several seeds: each member's core and its check's are reduced alone and then pooled, so the
+// row's error sees how the seeds scatter; the pooled point's own files (seed_pool.h) hold no check to reduce.
+BOOST_AUTO_TEST_CASE(a_point_of_several_seeds_pools_each_seeds_core) {
+    namespace fs = std::filesystem;
+    const test::TmpDir tmp("bulk_table_seeds");
+    const Case c = parse_case(test::with("control = \"fill\"", "control = \"load\""), "t.toml", Schema::common());
+    const OperatingPoint& p = c.points.front();  // U = 1 m/s, 1000 Pa; gap 5 mm, d = 1 mm, rho = 2500
+    const fs::path dir = result_dir(tmp.path, "dem", p.id);
+    write_checked_point(dir / "seed-1", c, p, 0.8, 0.7, 0.001, 1);
+    write_checked_point(dir / "seed-2", c, p, 1.0, 0.9, 0.001, 2);
+    pool_seeds(dir, {1, 2}, result_key(c, "dem"));
+    BOOST_REQUIRE(!fs::exists(dir / kDtCheckProfile));  // what the single-seed reading would need
+    const BulkTable t = bulk_rheology_table(c, tmp.path, "dem");
+    BOOST_TEST(t.csv.find("# point U1.0: the cores of seeds 1, 2 each reduced") != std::string::npos, t.csv);
+    const auto m = only_row(t.csv);
+    const double H = 5e-3, I_per_slope = 1e-3 / H / std::sqrt(1000.0 / 2500.0);  // I of a core slope of 1 (u/U per y/H)
+    BOOST_TEST(m.at("seeds") == "2");
+    BOOST_TEST(std::stod(m.at("I")) == 0.9 * I_per_slope, tt::tolerance(1e-5));
+    // two seeds 0.2 apart in slope: their standard error, 0.1, is far above their own (1e-3 per station)
+    BOOST_TEST(std::stod(m.at("I_err")) == 0.1 * I_per_slope, tt::tolerance(1e-3));
+    BOOST_TEST(std::stod(m.at("I_dt_change")) == 0.1 * I_per_slope, tt::tolerance(1e-5));
+    // each seed's I moved 11-13 % with the step, but by 0.7 of the combined errors the seeds' scatter sets: converged
+    BOOST_TEST(m.at("core_dt_check") == "converged");
+    BOOST_TEST(m.at("status") == "steady");
+    BOOST_TEST(m.at("dt_check") == "converged");
+    BOOST_TEST(std::stod(m.at("mu")) == 0.4, tt::tolerance(1e-5));
+    BOOST_TEST(std::stod(m.at("mu_err")) > 0.0);  // the members' own errors combined when they agree
+}
+
+// The pooled error: the larger of the seeds' scatter and the members' own errors combined.
+BOOST_AUTO_TEST_CASE(a_pooled_core_keeps_the_larger_error) {
+    CoreRheology a, b;
+    a.stations = b.stations = 20;
+    a.friction = {0.40, 0.010};
+    b.friction = {0.41, 0.010};  // scatter 0.005 < own errors combined 0.0071
+    a.inertial_number = {0.03, 0.0005};
+    b.inertial_number = {0.05, 0.0005};  // scatter 0.01 > own 0.00035
+    const CoreRheology pooled = pool_core_rheology({a, b});
+    BOOST_TEST(pooled.friction.value == 0.405, tt::tolerance(1e-12));
+    BOOST_TEST(pooled.friction.error == std::sqrt(2.0) * 0.01 / 2, tt::tolerance(1e-12));
+    BOOST_TEST(pooled.inertial_number.value == 0.04, tt::tolerance(1e-12));
+    BOOST_TEST(pooled.inertial_number.error == 0.01, tt::tolerance(1e-12));
+    BOOST_TEST(!pooled.coordination.has_value());
+    b.stations = 19;
+    BOOST_CHECK_THROW(pool_core_rheology({a, b}), Error);
+    BOOST_CHECK_THROW(pool_core_rheology({}), Error);
 }
 
 // The walls' layers: the mean T/U^2 over the stations within 2 d of each wall's bump tops (d_w/2 inside the planes),

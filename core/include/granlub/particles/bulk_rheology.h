@@ -126,4 +126,12 @@ std::vector<std::string> core_dt_unconverged(const CoreRheology& answer, const C
 // than 6 stations in the core, a non-positive shear rate or pressure).
 CoreRheology core_rheology(const CoreRun& run, double diameter, double density);
 
+// The cores of a point's seeds (seeds.h), each reduced alone by core_rheology, as one: every measured quantity the
+// mean over the members (seed_mean.h), its error the larger of the seeds' standard error and the members' own errors
+// combined. Our choice, not the seeds' pool's (which keeps the seeds' standard error): the core's I wanders over a
+// run more slowly than a run's blocks see (cases/bulk_shear/README.md), so only the seeds' scatter shows it, but
+// the scatter of a few seeds can be small by chance. Z and the walls' layers pooled when every member has them.
+// Throws Error when members is empty or their cores differ in stations.
+CoreRheology pool_core_rheology(const std::vector<CoreRheology>& members);
+
 }  // namespace granlub
