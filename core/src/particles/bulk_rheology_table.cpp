@@ -78,9 +78,10 @@ PointCores point_cores(const fs::path& dir, const Summary& s, const Profile& pro
     return pc;
 }
 
-// The seeds a point's files pool (run.seeds.pooled, seed_pool.h): empty for a point run with one seed.
-std::vector<std::uint64_t> pooled_seeds(const Summary& s) {
-    if (!s.run.contains("seeds") || !s.run.at("seeds").contains("pooled")) return {};
+// The seeds a point's files pool (run.seeds.pooled, seed_pool.h), nullopt for a point run with one seed (its own
+// files). A pool may hold one member while the set's others are missing (status "incomplete").
+std::optional<std::vector<std::uint64_t>> pooled_seeds(const Summary& s) {
+    if (!s.run.contains("seeds") || !s.run.at("seeds").contains("pooled")) return std::nullopt;
     return s.run.at("seeds").at("pooled").get<std::vector<std::uint64_t>>();
 }
 
@@ -117,15 +118,15 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
         const auto reduce = [&](const fs::path& run_dir, const Summary& rs, const Profile& profile) {
             return point_cores(run_dir, rs, profile, p.speed, c, bump_bottom, bump_top);
         };
-        const std::vector<std::uint64_t> seeds = pooled_seeds(s);
+        const std::optional<std::vector<std::uint64_t>> seeds = pooled_seeds(s);
         PointCores pc;
         std::string dt_verdict;
-        if (seeds.size() < 2) {
+        if (!seeds || seeds->empty()) {
             pc = reduce(dir, s, *res.profile);
             dt_verdict = dt_check(s);
-        } else {  // each member reduced alone, then pooled (pool_core_rheology)
+        } else {  // each member reduced alone, then pooled (pool_core_rheology): the pool's own files hold no check
             std::vector<CoreRheology> answers, checks;
-            for (const std::uint64_t seed : seeds) {
+            for (const std::uint64_t seed : *seeds) {
                 const fs::path mdir = dir / realisation_folder(seed);
                 const LoadedResult m = load_result(mdir, key);
                 if (m.status.state != ResultState::Complete)
@@ -142,7 +143,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
             if (checks.size() == answers.size()) pc.check = pool_core_rheology(checks);
             t.notes.push_back(fmt::format("point {}: the cores of seeds {} each reduced, then pooled (errors: the larger "
                                           "of the seeds' standard error and their own combined)",
-                                          p.id, fmt::join(seeds, ", ")));
+                                          p.id, fmt::join(*seeds, ", ")));
         }
         const CoreRheology& a = pc.answer;
         const std::optional<CoreRheology>& b = pc.check;
@@ -177,7 +178,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
                 v.push_back(num(m.value)), v.push_back(num(m.error));
         else
             v.insert(v.end(), std::size(kWallColumns), std::string());
-        v.push_back(seeds.size() < 2 ? std::string("1") : std::to_string(seeds.size()));
+        v.push_back(seeds && !seeds->empty() ? std::to_string(seeds->size()) : std::string("1"));
         rows += fmt::format("{}\n", fmt::join(v, ","));
         ++t.rows;
     }

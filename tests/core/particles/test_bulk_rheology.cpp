@@ -92,6 +92,20 @@ void write_checked_point(const std::filesystem::path& dir, const Case& c, const 
     write_result(dir, synthetic(61, linear(slope), 0.58, 4e-4), s);
 }
 
+// A load-controlled test case, its first point (U = 1 m/s, 1000 Pa; gap 5 mm, d = 1 mm, rho = 2500) and where the
+// DEM's result of that point lies in a fresh results folder.
+struct TableCase {
+    test::TmpDir tmp;
+    Case c;
+    OperatingPoint p;
+    std::filesystem::path dir;
+    explicit TableCase(const std::string& name)
+        : tmp(name),
+          c(parse_case(test::with("control = \"fill\"", "control = \"load\""), "t.toml", Schema::common())),
+          p(c.points.front()),
+          dir(result_dir(tmp.path, "dem", p.id)) {}
+};
+
 // The one row of a table's text, by its header's names (the comment lines skipped).
 std::map<std::string, std::string> only_row(const std::string& csv) {
     std::istringstream in(csv);
@@ -235,10 +249,8 @@ BOOST_AUTO_TEST_CASE(a_line_fit_weights_by_the_errors) {
 // point without results is left out and named; a check that moved nu beyond the rule labels the row.
 BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
     namespace fs = std::filesystem;
-    const test::TmpDir tmp("bulk_table");
-    const Case c = parse_case(test::with("control = \"fill\"", "control = \"load\""), "t.toml", Schema::common());
-    const OperatingPoint& p = c.points.front();  // U = 1 m/s, 1000 Pa; gap 5 mm, d = 1 mm, rho = 2500
-    const fs::path dir = result_dir(tmp.path, "dem", p.id);
+    const TableCase t_("bulk_table");
+    const auto& [tmp, c, p, dir] = t_;
     const auto write = [&](double dnu) { write_checked_point(dir, c, p, 0.8, 0.7, dnu); };
     const auto row = [&]() {
         const BulkTable t = bulk_rheology_table(c, tmp.path, "dem");
@@ -289,10 +301,8 @@ BOOST_AUTO_TEST_CASE(the_table_reads_each_point_and_its_check) {
 // row's error sees how the seeds scatter; the pooled point's own files (seed_pool.h) hold no check to reduce.
 BOOST_AUTO_TEST_CASE(a_point_of_several_seeds_pools_each_seeds_core) {
     namespace fs = std::filesystem;
-    const test::TmpDir tmp("bulk_table_seeds");
-    const Case c = parse_case(test::with("control = \"fill\"", "control = \"load\""), "t.toml", Schema::common());
-    const OperatingPoint& p = c.points.front();  // U = 1 m/s, 1000 Pa; gap 5 mm, d = 1 mm, rho = 2500
-    const fs::path dir = result_dir(tmp.path, "dem", p.id);
+    const TableCase t_("bulk_table_seeds");
+    const auto& [tmp, c, p, dir] = t_;
     write_checked_point(dir / "seed-1", c, p, 0.8, 0.7, 0.001, 1);
     write_checked_point(dir / "seed-2", c, p, 1.0, 0.9, 0.001, 2);
     pool_seeds(dir, {1, 2}, result_key(c, "dem"));
@@ -312,6 +322,14 @@ BOOST_AUTO_TEST_CASE(a_point_of_several_seeds_pools_each_seeds_core) {
     BOOST_TEST(m.at("dt_check") == "converged");
     BOOST_TEST(std::stod(m.at("mu")) == 0.4, tt::tolerance(1e-5));
     BOOST_TEST(std::stod(m.at("mu_err")) > 0.0);  // the members' own errors combined when they agree
+    // a set of three with one member done: a pool of one, read through its member, labelled incomplete (no answer)
+    fs::remove_all(dir / "seed-2");
+    pool_seeds(dir, {1, 2, 3}, result_key(c, "dem"));
+    const auto one = only_row(bulk_rheology_table(c, tmp.path, "dem").csv);
+    BOOST_TEST(one.at("seeds") == "1");
+    BOOST_TEST(one.at("status") == "incomplete");
+    BOOST_TEST(std::stod(one.at("I")) == 0.8 * I_per_slope, tt::tolerance(1e-5));
+    BOOST_TEST(one.at("core_dt_check") == "unconverged:I");  // seed 1 alone: 0.8 against 0.7, its own errors
 }
 
 // The pooled error: the larger of the seeds' scatter and the members' own errors combined.
