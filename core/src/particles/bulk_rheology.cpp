@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "granlub/case/wall_bumps.h"
 #include "granlub/error.h"
 #include "granlub/particles/seed_mean.h"
 #include "granlub/results/run_status.h"
@@ -181,6 +182,16 @@ CoreRun core_run(const Profile& profile, double U, const std::map<std::string, S
     return r;
 }
 
+CoreRheology run_core(const Case& c, const OperatingPoint& p, const Profile& profile,
+                      const std::map<std::string, Scalar>& outputs, const nlohmann::json& record,
+                      const std::string& source) {
+    const nlohmann::json none = nlohmann::json::object();
+    const nlohmann::json& fr = record.contains("flow_regime") ? record.at("flow_regime") : none;
+    return core_rheology(core_run(profile, p.speed, outputs, fr, c.cell.gap, bump_protrusion(c, p.bottom),
+                                  bump_protrusion(c, p.top), source),
+                         c.grains.diameter, c.grains.density);
+}
+
 CoreRheology core_rheology(const CoreRun& run, double diameter, double density) {
     if (!run.profile) throw Error("core rheology: no profile");
     CoreRheology r;
@@ -250,7 +261,10 @@ CoreRheology pool_core_rheology(const std::vector<CoreRheology>& m) {
     const auto measured = [&](auto field) {
         std::vector<double> v;
         std::vector<std::optional<double>> se;
-        for (const CoreRheology& x : m) v.push_back(field(x).value), se.push_back(field(x).error);
+        for (const CoreRheology& x : m) {
+            const Measured f = field(x);
+            v.push_back(f.value), se.push_back(f.error);
+        }
         const SeedMean p = seed_mean(v, se);
         return Measured{p.mean, std::max(p.seed_stderr, p.block_stderr.value_or(0))};
     };

@@ -8,7 +8,6 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
-#include "granlub/case/wall_bumps.h"
 #include "granlub/error.h"
 #include "granlub/particles/bulk_rheology.h"
 #include "granlub/results/results.h"
@@ -58,21 +57,16 @@ struct PointCores {
 
 std::string src_of(const fs::path& dir) { return (dir / "summary.json").string(); }
 
-PointCores point_cores(const fs::path& dir, const Summary& s, const Profile& profile, double speed, const Case& c,
-                       double bump_bottom, double bump_top) {
-    const double d = c.grains.diameter, rho = c.grains.density;
+PointCores point_cores(const fs::path& dir, const Summary& s, const Profile& profile, const Case& c,
+                       const OperatingPoint& p) {
     const std::string src = src_of(dir);
-    const nlohmann::json no_record = nlohmann::json::object();
-    const auto& fr = s.run.contains("flow_regime") ? s.run.at("flow_regime") : no_record;
     PointCores pc;
-    pc.answer = core_rheology(core_run(profile, speed, s.outputs, fr, c.cell.gap, bump_bottom, bump_top, src), d, rho);
+    pc.answer = run_core(c, p, profile, s.outputs, s.run, src);
     if (s.run.contains("dt_refinement")) {
         const DtCheckRun chk = dt_check_run(s.run.at("dt_refinement"));
         if (!chk.run) throw Error(fmt::format("{}: run.dt_refinement names no check run", src));
         const Profile cp = read_profile(dir / (chk.second_halving ? kDtHalfProfile : kDtCheckProfile));
-        const auto& cfr = chk.run->contains("flow_regime") ? chk.run->at("flow_regime") : no_record;
-        pc.check = core_rheology(
-            core_run(cp, speed, record_outputs(*chk.run), cfr, c.cell.gap, bump_bottom, bump_top, src), d, rho);
+        pc.check = run_core(c, p, cp, record_outputs(*chk.run), *chk.run, src);
         pc.check_dt = chk.run->at("time_step_s").get<double>();
     }
     return pc;
@@ -113,16 +107,11 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
             continue;
         }
         const Summary& s = *res.summary;
-        // the bumps' protrusion at each wall (bump_protrusion, wall_bumps.h: the continuum's too)
-        const double bump_bottom = bump_protrusion(c, p.bottom), bump_top = bump_protrusion(c, p.top);
-        const auto reduce = [&](const fs::path& run_dir, const Summary& rs, const Profile& profile) {
-            return point_cores(run_dir, rs, profile, p.speed, c, bump_bottom, bump_top);
-        };
         const std::optional<std::vector<std::uint64_t>> seeds = pooled_seeds(s);
         PointCores pc;
         std::string dt_verdict;
         if (!seeds || seeds->empty()) {
-            pc = reduce(dir, s, *res.profile);
+            pc = point_cores(dir, s, *res.profile, c, p);
             dt_verdict = dt_check(s);
         } else {  // each member reduced alone, then pooled (pool_core_rheology): the pool's own files hold no check
             std::vector<CoreRheology> answers, checks;
@@ -132,7 +121,7 @@ BulkTable bulk_rheology_table(const Case& c, const fs::path& results_root, const
                 if (m.status.state != ResultState::Complete)
                     throw Error(fmt::format("{}: pooled seed {} is no longer complete at {}", src_of(dir), seed,
                                             mdir.string()));
-                const PointCores one = reduce(mdir, *m.summary, *m.profile);
+                const PointCores one = point_cores(mdir, *m.summary, *m.profile, c, p);
                 answers.push_back(one.answer);
                 if (one.check) checks.push_back(*one.check);
                 pc.check_dt = one.check_dt;

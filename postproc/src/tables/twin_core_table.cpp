@@ -4,9 +4,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
-#include "granlub/case/wall_bumps.h"
 #include "granlub/error.h"
 
 #include "formats/format.h"
@@ -25,14 +23,8 @@ TwinCore read_core(const Case& c, const Run& r) {
     TwinCore k;
     k.run = &r;
     k.exact = !r.profile->has("u_over_U_stderr");
-    const nlohmann::json none = nlohmann::json::object();
-    const nlohmann::json& fr = r.summary->run.contains("flow_regime") ? r.summary->run.at("flow_regime") : none;
     try {
-        const OperatingPoint& p = *r.point;
-        const CoreRun run = core_run(*r.profile, p.speed, r.summary->outputs, fr, c.cell.gap,
-                                     bump_protrusion(c, p.bottom), bump_protrusion(c, p.top),
-                                     (r.dir / "summary.json").string());
-        k.core = core_rheology(run, c.grains.diameter, c.grains.density);
+        k.core = run_core(c, *r.point, *r.profile, r.summary->outputs, r.summary->run, (r.dir / "summary.json").string());
         const Measured &mu = k.core->friction, &ts = k.core->temperature_scaled;
         const double f = mu.value * std::sqrt(ts.value);
         k.f2_over_f1 = {f, f * std::hypot(mu.error / mu.value, 0.5 * ts.error / ts.value)};

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "granlub/case/case.h"
 #include "granlub/results/results.h"
 
 namespace granlub {
@@ -112,6 +113,14 @@ struct CoreRheology {
 CoreRun core_run(const Profile& profile, double U, const std::map<std::string, Scalar>& outputs,
                  const nlohmann::json& flow_regime, double case_gap, double protrusion_bottom, double protrusion_top,
                  const std::string& source);
+
+// The core of one run of point p of case c, as every reader takes it (the bulk table's answers and their Delta-t checks,
+// the report's twins): core_run on the run's profile and outputs, its record's `flow_regime` (none: no Z) and the
+// case's bump protrusions, then core_rheology at the grains' mean diameter and density. `record` is the run's
+// summary.run, or a check's record in run.dt_refinement.
+CoreRheology run_core(const Case& c, const OperatingPoint& p, const Profile& profile,
+                      const std::map<std::string, Scalar>& outputs, const nlohmann::json& record,
+                      const std::string& source);
 
 // The time-step rule of the particle pipeline (granlub/results/run_status.h), which judges a point by
 // its mean solid fraction and its walls' shear stresses, applied to the core: nu may move by
